@@ -1,0 +1,122 @@
+// The canonical command vocabulary: what the interpreter tells the motion
+// side. Commands are small values; positions are machine coordinates in mm,
+// feeds in mm/min, times in seconds. Each command carries its source line.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <variant>
+
+#include "core/axes.hpp"
+
+namespace skipnc::canon {
+
+// The plane of an arc: first and second axis of the plane, and the normal
+// axis (helical motion). G17: X Y (Z), G18: Z X (Y), G19: Y Z (X).
+struct Plane {
+  int a0 = 0;
+  int a1 = 1;
+  int normal = 2;
+  friend bool operator==(const Plane&, const Plane&) = default;
+};
+
+struct Rapid {
+  AxisVec target;
+  bool linear = true;  // false: each axis at its own rapid rate (non-linear positioning)
+};
+
+struct Feed {
+  AxisVec target;
+  double feed_mm_per_min = 0.0;
+  bool exact_stop = false;  // come to rest at the end (G09, G61)
+};
+
+struct Arc {
+  AxisVec target;
+  double center0 = 0.0;  // centre on plane.a0, machine coordinates
+  double center1 = 0.0;  // centre on plane.a1
+  Plane plane;
+  bool ccw = false;      // G03
+  int extra_turns = 0;   // full turns before the end point (0 for ordinary arcs)
+  double feed_mm_per_min = 0.0;
+  bool exact_stop = false;
+};
+
+struct Dwell {
+  double seconds = 0.0;
+};
+
+// A PMC signal address: X0.4, G12.3, ...
+struct SignalAddr {
+  char area = 'X';
+  std::uint16_t byte = 0;
+  std::uint8_t bit = 0;
+  friend bool operator==(const SignalAddr&, const SignalAddr&) = default;
+};
+
+enum class SkipKind : std::uint8_t { kSkip, kMultiStep, kTorque };
+enum class SkipStop : std::uint8_t { kImmediate, kDecelerate };
+enum class SkipLatch : std::uint8_t {
+  kExact,    // the instant of the edge, inside the servo cycle (high-speed skip)
+  kSampled,  // the first servo sample at which the input is seen, plus a delay
+};
+
+// Everything the motion side needs to monitor a skip block; the dialect and
+// the parameters have been applied by the interpreter.
+struct SkipSpec {
+  SkipKind kind = SkipKind::kSkip;
+  int p = -1;                     // the P word as written, -1 when absent
+  static constexpr int kMaxInputs = 12;
+  int input_count = 0;            // inputs that end the block
+  SignalAddr inputs[kMaxInputs];
+  bool active_low = false;        // SK0: input active at 0
+  bool edge = false;              // TSG: a new active edge is required
+  bool active_at_start_ends = true;  // level input already active at block start ends it
+  bool ignore_inputs = false;     // machine lock / Z-axis cancel: run to the end point
+  bool torque_ends = false;       // P98 / P99
+  int torque_axis = -1;
+  double torque_limit_pct = 0.0;
+  double torque_delay_s = 0.0;
+  SkipStop stop = SkipStop::kImmediate;
+  bool accel = false;             // SKF = 1: automatic acceleration/deceleration applies
+  SkipLatch latch = SkipLatch::kExact;
+  double latch_delay_s = 0.0;     // kSampled only
+  bool servo_delay_comp = true;   // latch the actual (not the commanded) position
+  bool alarm_on_miss = false;     // K1
+};
+
+struct Skip {
+  AxisVec target;
+  double feed_mm_per_min = 0.0;
+  SkipSpec spec;
+};
+
+// Non-motion commands: recorded, printed, and (where they affect the run)
+// acted on by the machine.
+struct Spindle {
+  double rpm = 0.0;
+  int direction = 0;  // 1 = M03, -1 = M04, 0 = stopped
+};
+struct ToolSelect {
+  int tool = 0;
+};
+struct MCode {
+  int code = 0;
+};
+enum class StopKind : std::uint8_t { kProgramStop, kOptionalStop, kProgramEnd, kRewindEnd };
+struct Stop {
+  StopKind kind = StopKind::kProgramEnd;
+};
+struct Message {
+  std::string text;
+};
+
+using Command = std::variant<Rapid, Feed, Arc, Dwell, Skip, Spindle, ToolSelect, MCode, Stop,
+                             Message>;
+
+struct Stamped {
+  Command cmd;
+  std::uint32_t line = 0;
+};
+
+}  // namespace skipnc::canon

@@ -1,0 +1,25 @@
+// Data files compiled into the binary (data/ in the source tree): dialect
+// tables, built-in machines and scenes.
+#pragma once
+
+#include <optional>
+#include <span>
+#include <string_view>
+
+namespace skipnc {
+
+struct EmbeddedFile {
+  std::string_view path;     // relative to data/, e.g. "dialects/fanuc.toml"
+  std::string_view content;
+};
+
+std::span<const EmbeddedFile> embedded_files() noexcept;
+
+inline std::optional<std::string_view> embedded_file(std::string_view path) noexcept {
+  for (const auto& f : embedded_files()) {
+    if (f.path == path) return f.content;
+  }
+  return std::nullopt;
+}
+
+}  // namespace skipnc

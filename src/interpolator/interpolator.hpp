@@ -1,0 +1,65 @@
+// The per-tick sampler: the real-time path. Every call is noexcept and does
+// not allocate. Budget: well under 1 us per tick on a 2-core x86 server (see
+// bench/README.md, BM_Tick).
+#pragma once
+
+#include <cstdint>
+
+#include "core/axes.hpp"
+#include "planner/planner.hpp"
+
+namespace skipnc::interp {
+
+class Interpolator {
+ public:
+  explicit Interpolator(planner::Planner& queue) noexcept;
+
+  // Advances the command by one servo period and returns the commanded
+  // position at the end of it. Segments end and begin inside a period; the
+  // remainder of the period is carried into the next segment.
+  const AxisVec& tick() noexcept;
+
+  const AxisVec& position() const noexcept { return pos_; }
+  // Commanded velocity at the end of the last tick, mm/s per axis.
+  const AxisVec& velocity() const noexcept { return vel_; }
+  double path_speed() const noexcept { return speed_; }
+  // True when no segment is active and the queue is empty.
+  bool idle() const noexcept;
+  // Source line and tag of the active segment (of the last one when idle).
+  std::uint32_t line() const noexcept { return line_; }
+  std::uint32_t tag() const noexcept { return tag_; }
+
+  // Scales the rate at which profile time advances (feed override, feed hold
+  // at 0). Takes effect at the next tick.
+  void set_time_scale(double scale) noexcept { scale_ = scale; }
+
+  // Skip: the command stops where it is now; the rest of the active segment
+  // and everything queued is discarded.
+  void stop_now() noexcept;
+  // Skip: the command decelerates from its present speed along the present
+  // direction at `decel_mm_s2` to rest; the queue is discarded.
+  void decelerate(double decel_mm_s2) noexcept;
+  // Sets the command position (after a follow-up: torque skip ends the block
+  // at the mechanical stop position). Clears the queue.
+  void set_position(const AxisVec& pos) noexcept;
+
+ private:
+  planner::Planner& queue_;
+  planner::Segment* seg_ = nullptr;
+  double seg_time_ = 0.0;  // time inside the active segment, s
+  AxisVec pos_;
+  AxisVec vel_;
+  double speed_ = 0.0;
+  double scale_ = 1.0;
+  std::uint32_t line_ = 0;
+  std::uint32_t tag_ = 0;
+  // Deceleration ramp after a skip (replaces the segment).
+  bool ramp_ = false;
+  AxisVec ramp_start_;
+  AxisVec ramp_dir_;
+  double ramp_v0_ = 0.0;
+  double ramp_decel_ = 0.0;
+  double ramp_t_ = 0.0;
+};
+
+}  // namespace skipnc::interp

@@ -1,0 +1,126 @@
+// Lookahead planner: turns moves (machine coordinates) into a queue of
+// segments with closed-form trapezoidal profiles. Planning (push) happens
+// outside the servo tick; the interpolator only evaluates segments.
+//
+// Limits respected: per-axis velocity and acceleration, path feed, the
+// centripetal acceleration of arcs (v^2/r within the smallest acceleration of
+// the plane's axes), and at each junction a velocity change per axis of at
+// most a_i * period (so the per-sample acceleration never exceeds a_i).
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "canon/canon.hpp"
+#include "core/axes.hpp"
+
+namespace skipnc::planner {
+
+struct AxisLimits {
+  double max_velocity_mm_s = 500.0;   // cutting-feed upper limit of the axis
+  double rapid_mm_s = 500.0;          // rapid traverse rate of the axis
+  double max_accel_mm_s2 = 2000.0;
+};
+
+struct Limits {
+  int axis_count = 3;
+  std::array<AxisLimits, kMaxAxes> axes{};
+  double period_s = 0.001;
+  double max_feed_mm_s = 20000.0 / 60.0;  // path cutting-feed clamp
+};
+
+struct Move {
+  enum class Kind : std::uint8_t { kLine, kRapid, kRapidNonLinear, kArc, kDwell };
+  Kind kind = Kind::kLine;
+  AxisVec target;                 // machine coordinates, mm
+  double feed_mm_s = 0.0;         // kLine and kArc: requested path speed
+  // kArc:
+  double center0 = 0.0;
+  double center1 = 0.0;
+  canon::Plane plane;
+  bool ccw = false;
+  int extra_turns = 0;
+  // kDwell:
+  double dwell_s = 0.0;
+  bool exact_stop = false;        // velocity is zero at the end of this move
+  bool no_accel = false;          // no automatic acc/dec: the path speed steps to the feed
+                                  // at the start and stays there (G31 with SKF = 0)
+  std::uint32_t line = 0;
+  std::uint32_t tag = 0;          // caller's identifier, carried to the segment
+};
+
+// A planned segment. Geometry is fixed at push time; the profile (entry and
+// exit speed) may still be raised by lookahead until the segment starts.
+struct Segment {
+  Move::Kind kind = Move::Kind::kLine;
+  AxisVec start;
+  AxisVec end;
+  AxisVec unit;            // kLine/kRapid: direction; kRapidNonLinear: per-axis sign
+  double length = 0.0;     // path length, mm (kRapidNonLinear: longest axis time basis)
+  // kArc geometry
+  canon::Plane plane;
+  double center0 = 0.0, center1 = 0.0, radius = 0.0;
+  double start_angle = 0.0, sweep = 0.0;  // radians, signed (ccw positive)
+  double helix_per_rad = 0.0;             // normal-axis travel per radian
+  AxisVec linear_per_mm;                  // other axes' travel per mm of path (arcs)
+  // Profile
+  double v_entry = 0.0, v_exit = 0.0, v_cruise = 0.0;  // mm/s
+  double accel = 0.0;      // mm/s^2 along the path (infinite when no_accel)
+  double t_acc = 0.0, t_cruise = 0.0, t_dec = 0.0;
+  double duration = 0.0;   // seconds
+  double v_max = 0.0;      // requested speed after limits
+  double v_entry_max = 0.0;
+  bool exact_stop = false;
+  bool no_accel = false;
+  bool started = false;
+  // kRapidNonLinear: one trapezoid per axis, all starting together.
+  std::array<double, kMaxAxes> axis_t_acc{}, axis_t_total{}, axis_v{}, axis_a{};
+  std::uint32_t line = 0;
+  std::uint32_t tag = 0;
+
+  // Distance along the path at time t in [0, duration].
+  double distance_at(double t) const noexcept;
+  // Path speed at time t.
+  double speed_at(double t) const noexcept;
+  // Machine position at time t in [0, duration].
+  AxisVec position_at(double t) const noexcept;
+  // Unit tangent (direction of motion per mm of path) at time t.
+  AxisVec tangent_at(double t) const noexcept;
+};
+
+// A fixed-capacity ring of segments shared by the planner (producer, outside
+// the tick) and the interpolator (consumer, inside the tick).
+class Planner {
+ public:
+  Planner(const Limits& limits, std::size_t capacity = 256);
+
+  const Limits& limits() const noexcept { return limits_; }
+  bool full() const noexcept { return count_ == ring_.size(); }
+  bool empty() const noexcept { return count_ == 0; }
+  std::size_t size() const noexcept { return count_; }
+
+  // Appends a move that starts where the previous one ends (or at `start`
+  // for the first one / after reset). Zero-length moves are dropped (a zero
+  // dwell likewise). Precondition: !full().
+  void push(const Move& move);
+  // The position the next pushed move starts from.
+  const AxisVec& tail_position() const noexcept { return tail_; }
+  // Forgets all queued segments and sets the start of the next move.
+  void reset(const AxisVec& position) noexcept;
+
+  // Consumer side (noexcept, no allocation).
+  Segment* front() noexcept { return count_ ? &ring_[head_] : nullptr; }
+  void pop_front() noexcept;
+
+ private:
+  void replan() noexcept;
+  Limits limits_;
+  std::vector<Segment> ring_;
+  std::size_t head_ = 0;
+  std::size_t count_ = 0;
+  AxisVec tail_;
+};
+
+}  // namespace skipnc::planner
