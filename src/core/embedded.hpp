@@ -15,11 +15,13 @@ struct EmbeddedFile {
 
 std::span<const EmbeddedFile> embedded_files() noexcept;
 
-inline std::optional<std::string_view> embedded_file(std::string_view path) noexcept {
+// The entry for `path`, or nullptr. Its `path` view is static: safe to keep
+// in error locations.
+inline const EmbeddedFile* embedded_entry(std::string_view path) noexcept {
   for (const auto& f : embedded_files()) {
-    if (f.path == path) return f.content;
+    if (f.path == path) return &f;
   }
-  return std::nullopt;
+  return nullptr;
 }
 
 }  // namespace skipnc

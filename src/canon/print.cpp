@@ -1,0 +1,95 @@
+#include "canon/print.hpp"
+
+#include <iterator>
+#include <type_traits>
+
+namespace skipnc::canon {
+namespace {
+
+void axes_to(fmt::memory_buffer& out, const AxisVec& v, const AxisNames& axes) {
+  for (int i = 0; i < axes.count; ++i) {
+    // +0.0 for -0.0 so that the text does not depend on the sign of zero.
+    fmt::format_to(std::back_inserter(out), " {}{}", axes.names[i], v[i] + 0.0);
+  }
+}
+
+const char* stop_name(StopKind k) {
+  switch (k) {
+    case StopKind::kProgramStop: return "M00";
+    case StopKind::kOptionalStop: return "M01";
+    case StopKind::kProgramEnd: return "M02";
+    case StopKind::kRewindEnd: return "M30";
+  }
+  return "?";
+}
+
+}  // namespace
+
+void format_to(fmt::memory_buffer& out, const Stamped& s, const AxisNames& axes) {
+  auto it = std::back_inserter(out);
+  fmt::format_to(it, "{} ", s.line);
+  std::visit(
+      [&](const auto& c) {
+        using T = std::decay_t<decltype(c)>;
+        if constexpr (std::is_same_v<T, Rapid>) {
+          fmt::format_to(it, "RAPID");
+          axes_to(out, c.target, axes);
+          if (!c.linear) fmt::format_to(it, " NONLINEAR");
+        } else if constexpr (std::is_same_v<T, Feed>) {
+          fmt::format_to(it, "FEED");
+          axes_to(out, c.target, axes);
+          fmt::format_to(it, " F{}", c.feed_mm_per_min);
+          if (c.exact_stop) fmt::format_to(it, " EXACT");
+        } else if constexpr (std::is_same_v<T, Arc>) {
+          fmt::format_to(it, "{}", c.ccw ? "ARC_CCW" : "ARC_CW");
+          axes_to(out, c.target, axes);
+          fmt::format_to(it, " C{}={} C{}={} F{}", axes.names[c.plane.a0], c.center0 + 0.0,
+                         axes.names[c.plane.a1], c.center1 + 0.0, c.feed_mm_per_min);
+          if (c.extra_turns != 0) fmt::format_to(it, " TURNS{}", c.extra_turns);
+          if (c.exact_stop) fmt::format_to(it, " EXACT");
+        } else if constexpr (std::is_same_v<T, Dwell>) {
+          fmt::format_to(it, "DWELL {}", c.seconds);
+        } else if constexpr (std::is_same_v<T, Skip>) {
+          const SkipSpec& sp = c.spec;
+          fmt::format_to(it, "SKIP");
+          axes_to(out, c.target, axes);
+          fmt::format_to(it, " F{} KIND={}", c.feed_mm_per_min,
+                         sp.kind == SkipKind::kSkip        ? "skip"
+                         : sp.kind == SkipKind::kMultiStep ? "multi_step"
+                                                           : "torque");
+          if (sp.p >= 0) fmt::format_to(it, " P{}", sp.p);
+          for (int i = 0; i < sp.input_count; ++i) {
+            fmt::format_to(it, " IN={}{}.{}", sp.inputs[i].area, sp.inputs[i].byte,
+                           static_cast<int>(sp.inputs[i].bit));
+          }
+          if (sp.torque_ends) {
+            fmt::format_to(it, " TORQUE_AXIS={} LIMIT={}% DELAY={}", axes.names[sp.torque_axis],
+                           sp.torque_limit_pct, sp.torque_delay_s);
+          }
+          fmt::format_to(it, " {}{}{}{}", sp.active_low ? "LOW" : "HIGH", sp.edge ? " EDGE" : " LEVEL",
+                         sp.stop == SkipStop::kImmediate ? " STOP=immediate" : " STOP=decelerate",
+                         sp.alarm_on_miss ? " K1" : "");
+        } else if constexpr (std::is_same_v<T, Spindle>) {
+          fmt::format_to(it, "SPINDLE S{} {}", c.rpm,
+                         c.direction > 0 ? "CW" : c.direction < 0 ? "CCW" : "OFF");
+        } else if constexpr (std::is_same_v<T, ToolSelect>) {
+          fmt::format_to(it, "TOOL T{}", c.tool);
+        } else if constexpr (std::is_same_v<T, MCode>) {
+          fmt::format_to(it, "MCODE M{}", c.code);
+        } else if constexpr (std::is_same_v<T, Stop>) {
+          fmt::format_to(it, "STOP {}", stop_name(c.kind));
+        } else if constexpr (std::is_same_v<T, Message>) {
+          fmt::format_to(it, "MESSAGE {}", c.text);
+        }
+      },
+      s.cmd);
+  out.push_back('\n');
+}
+
+std::string to_string(const Stamped& cmd, const AxisNames& axes) {
+  fmt::memory_buffer b;
+  format_to(b, cmd, axes);
+  return std::string(b.data(), b.size() - 1);
+}
+
+}  // namespace skipnc::canon

@@ -1,0 +1,325 @@
+#include "cli/commands.hpp"
+
+#include <atomic>
+#include <chrono>
+#include <csignal>
+#include <cstdio>
+#include <filesystem>
+#include <fmt/format.h>
+#include <iostream>
+
+#include <unistd.h>
+
+#include "canon/print.hpp"
+#include "cli/session.hpp"
+#include "core/embedded.hpp"
+#include "machine/simulator.hpp"
+#include "report/report.hpp"
+
+namespace skipnc::cli {
+namespace {
+
+std::atomic<bool> g_interrupt{false};
+
+extern "C" void on_signal(int) { g_interrupt.store(true); }
+
+std::string program_name_of(const std::string& path) { return path; }
+
+int start_failure(const RunArgs& a, const Error& e, const Session* s) {
+  std::cerr << "skipnc: " << describe(e, s ? &s->dialect : nullptr) << "\n";
+  if (!a.report.empty()) {
+    report::ReportInput in;
+    in.program = a.program;
+    in.dialect = s && !s->dialect.name.empty() ? s->dialect.name : a.dialect;
+    in.machine = s && !s->machine.axes.empty() ? &s->machine : nullptr;
+    in.dialect_table = s && !s->dialect.name.empty() ? &s->dialect : nullptr;
+    in.start_error = e;
+    auto w = report::write_atomic(a.report, report::to_json(in));
+    if (!w) std::cerr << "skipnc: " << w.error().detail << "\n";
+  }
+  return 2;
+}
+
+std::string fmt_axes(const AxisVec& v, const config::MachineConfig& m) {
+  std::string out;
+  for (int i = 0; i < m.axis_count(); ++i) {
+    out += fmt::format("{}{}{:.4f}", out.empty() ? "" : " ", m.axes[static_cast<std::size_t>(i)].name, v[i] + 0.0);
+  }
+  return out;
+}
+
+void print_summary(std::FILE* f, const machine::RunResult& r, const Session& s,
+                   const std::string& program) {
+  const auto& m = s.machine;
+  fmt::print(f, "{} on {} ({}): ", program, m.name, s.dialect.name);
+  switch (r.status) {
+    case machine::RunStatus::kCompleted: fmt::print(f, "completed"); break;
+    case machine::RunStatus::kAlarm: fmt::print(f, "ALARM"); break;
+    case machine::RunStatus::kInterrupted: fmt::print(f, "interrupted"); break;
+  }
+  fmt::print(f, " after {:.3f} s of machine time\n", r.time_s);
+  if (r.alarm) fmt::print(f, "  {}\n", describe(*r.alarm, &s.dialect));
+  for (const auto& sk : r.skips) {
+    fmt::print(f, "  line {:>4}  {:<28} ", sk.line, sk.block.substr(0, 28));
+    if (sk.triggered) {
+      fmt::print(f, "{} at {:.4f} s  stored {}  stopped {}\n", sk.signal.empty() ? "signal" : sk.signal,
+                 sk.time_s, fmt_axes(sk.position, m), fmt_axes(sk.end_position, m));
+    } else {
+      fmt::print(f, "no signal: ran to its end point {}\n", fmt_axes(sk.position, m));
+    }
+  }
+  for (const auto& msg : r.messages) fmt::print(f, "  message: {}\n", msg);
+  fmt::print(f, "  final position {}\n", fmt_axes(r.final_work, m));
+}
+
+struct Outcome {
+  int code = 0;
+  machine::RunResult result;
+};
+
+// Runs a loaded session; writes report and trace. Returns the exit code.
+int execute(const RunArgs& a, Session& s, interp::Setup setup, bool explain) {
+  std::vector<VarRef> vars;
+  for (const auto& v : a.vars) {
+    auto r = parse_var_ref(v);
+    if (!r) return start_failure(a, r.error(), &s);
+    vars.push_back(*r);
+  }
+  std::unique_ptr<report::CsvTrace> trace;
+  if (!a.trace.empty()) {
+    trace = std::make_unique<report::CsvTrace>(a.trace, s.machine, nullptr);
+    auto o = trace->open();
+    if (!o) return start_failure(a, o.error(), &s);
+  }
+  std::signal(SIGINT, on_signal);
+  std::signal(SIGTERM, on_signal);
+  machine::Simulator sim(s.machine, s.dialect, *s.params, s.scene);
+  machine::RunOptions opts;
+  opts.trace = trace.get();
+  opts.interrupt = &g_interrupt;
+  const bool tty = ::isatty(STDERR_FILENO) != 0 && !a.quiet;
+  const auto wall0 = std::chrono::steady_clock::now();
+  bool progress_shown = false;
+  if (tty) {
+    opts.progress = [&](double t, std::uint32_t line) {
+      const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
+      if (wall < 1.0) return;
+      std::fprintf(stderr, "\r  %.0f s simulated, line %u ...", t, line);
+      progress_shown = true;
+    };
+  }
+  auto res = sim.run(setup, opts);
+  if (progress_shown) std::fprintf(stderr, "\r%60s\r", "");
+  if (!res) return start_failure(a, res.error(), &s);
+  report::ReportInput in;
+  in.program = a.program;
+  in.dialect = s.dialect.name;
+  in.machine = &s.machine;
+  in.dialect_table = &s.dialect;
+  in.result = std::move(*res);
+  for (const auto& v : vars) {
+    Result<interp::Value> val = v.name.empty() ? sim.interpreter()->read_variable(v.number)
+                                               : sim.interpreter()->read_named(v.name);
+    std::optional<double> out;
+    if (val && !val->vacant) out = val->v;
+    in.variables.emplace_back(v.key, out);
+  }
+  int rc = in.result.status == machine::RunStatus::kCompleted ? 0 : 1;
+  if (trace) {
+    auto f = trace->finish();
+    if (!f) {
+      std::cerr << "skipnc: " << f.error().detail << "\n";
+      rc = rc == 0 ? 1 : rc;
+    }
+  }
+  if (!a.report.empty()) {
+    auto w = report::write_atomic(a.report, report::to_json(in));
+    if (!w) {
+      std::cerr << "skipnc: " << w.error().detail << "\n";
+      rc = rc == 0 ? 1 : rc;
+    }
+  }
+  std::FILE* out = a.report == "-" || a.trace == "-" ? stderr : stdout;
+  if (explain) {
+    return rc;
+  }
+  if (in.result.alarm) std::cerr << "skipnc: " << describe(*in.result.alarm, &s.dialect) << "\n";
+  if (!a.quiet) print_summary(out, in.result, s, a.program);
+  return rc;
+}
+
+interp::Setup make_setup(const RunArgs& a, Session& s) {
+  interp::Setup setup;
+  setup.machine = &s.machine;
+  setup.dialect = &s.dialect;
+  setup.params = s.params.get();
+  setup.program_path = a.program;
+  setup.program_name = program_name_of(a.program);
+  setup.include_dirs = a.include;
+  setup.dprnt_path = a.dprnt;
+  return setup;
+}
+
+class PrintSink final : public interp::CommandSink {
+ public:
+  explicit PrintSink(const config::MachineConfig& m) {
+    axes_.count = m.axis_count();
+    for (int i = 0; i < axes_.count; ++i) axes_.names[i] = m.axes[static_cast<std::size_t>(i)].name;
+    buf_.reserve(1 << 17);
+  }
+  ~PrintSink() override { flush(); }
+  void emit(const canon::Stamped& c) override {
+    canon::format_to(buf_, c, axes_);
+    if (buf_.size() > (1 << 16)) flush();
+  }
+  void flush() {
+    std::fwrite(buf_.data(), 1, buf_.size(), stdout);
+    buf_.clear();
+  }
+
+ private:
+  canon::AxisNames axes_;
+  fmt::memory_buffer buf_;
+};
+
+}  // namespace
+
+int run_command(const RunArgs& a) {
+  Session s;
+  auto o = open_session(SessionOptions{a.machine, a.dialect, a.scene, a.params}, s);
+  if (!o) return start_failure(a, o.error(), &s);
+  return execute(a, s, make_setup(a, s), false);
+}
+
+int canon_command(const RunArgs& a) {
+  Session s;
+  auto o = open_session(SessionOptions{a.machine, a.dialect, "", a.params}, s);
+  if (!o) return start_failure(a, o.error(), &s);
+  auto in = interp::Interpreter::create(make_setup(a, s), AxisVec{});
+  if (!in) return start_failure(a, in.error(), &s);
+  PrintSink sink(s.machine);
+  for (;;) {
+    auto st = (*in)->step(sink);
+    if (!st) {
+      sink.flush();
+      std::cerr << "skipnc: " << describe(st.error(), &s.dialect) << "\n";
+      return 1;
+    }
+    if (*st == interp::Step::kEnd) break;
+    if (*st == interp::Step::kSync) {
+      // Without a machine a skip block reaches its end point.
+      interp::SyncState sync;
+      sync.machine_position = (*in)->position();
+      sync.actual_position = sync.machine_position;
+      sync.skip_done = true;
+      sync.latch_machine = sync.machine_position;
+      auto r = (*in)->sync(sync);
+      if (!r && r.error().id != AlarmId::kSkipMiss) {
+        sink.flush();
+        std::cerr << "skipnc: " << describe(r.error(), &s.dialect) << "\n";
+        return 1;
+      }
+    }
+  }
+  sink.flush();
+  return 0;
+}
+
+int dialects_command() {
+  for (const auto& name : config::builtin_dialect_names()) {
+    auto d = config::builtin_dialect(name);
+    if (!d) continue;
+    const auto& sw = d->sw;
+    fmt::print("{:<11} {}\n", d->name, d->title);
+    fmt::print("            skip inputs P{}..P{}, stop {}, miss {}, feed {}, torque skip {}\n",
+               sw.skip_p_first, sw.skip_p_first + sw.skip_p_count - 1,
+               sw.skip_stop == canon::SkipStop::kImmediate ? "immediate" : "with deceleration",
+               sw.skip_miss_alarm_default ? "alarm" : "no alarm",
+               sw.skip_feed == config::SkipFeedRule::kModal          ? "F or modal F"
+               : sw.skip_feed == config::SkipFeedRule::kBlockOrParam ? "F or parameter, modal F kept"
+                                                                     : "parameter switch",
+               sw.torque_skip ? "P98/P99" : "no");
+    fmt::print("            alarm on G31 in cutter compensation: {} {}\n",
+               d->alarm(AlarmId::kSkipInCutterComp).code, d->alarm(AlarmId::kSkipInCutterComp).message);
+  }
+  return 0;
+}
+
+int demo_command(const RunArgs& args) {
+  RunArgs a = args;
+  a.program = "probe_demo.nc";
+  a.quiet = true;
+  Session s;
+  auto o = open_session(SessionOptions{"mill3", "", "", {}}, s);
+  if (!o) return start_failure(a, o.error(), &s);
+  const EmbeddedFile* prog = embedded_entry("demo/probe_demo.nc");
+  const EmbeddedFile* scene = embedded_entry("demo/probe_demo.toml");
+  if (prog == nullptr || scene == nullptr) {
+    return start_failure(a, Error{AlarmId::kInternal, "demo files missing from the build", {}, -1}, &s);
+  }
+  auto sc = machine::parse_scene(scene->content, scene->path, s.machine, s.dialect, *s.params);
+  if (!sc) return start_failure(a, sc.error(), &s);
+  s.scene = std::move(*sc);
+  interp::Setup setup = make_setup(a, s);
+  setup.program_path.clear();
+  setup.program_text = std::string(prog->content);
+  a.vars = {"100", "101", "102", "5223"};
+  machine::Simulator sim(s.machine, s.dialect, *s.params, s.scene);
+  std::cout << "skipnc demo: a touch probe finds the top of a part on the built-in mill3 (fanuc).\n"
+            << "The scene puts the part's top face at Z-23.8 (machine); the probe is wired to X0.4.\n\n"
+            << "Program:\n";
+  for (std::size_t i = 0, line = 1; i < prog->content.size(); ++line) {
+    const auto nl = prog->content.find('\n', i);
+    const auto text = prog->content.substr(i, nl == std::string_view::npos ? std::string_view::npos : nl - i);
+    fmt::print("  {:>3}  {}\n", line, text);
+    if (nl == std::string_view::npos) break;
+    i = nl + 1;
+  }
+  std::unique_ptr<report::CsvTrace> trace;
+  if (!a.trace.empty()) {
+    trace = std::make_unique<report::CsvTrace>(a.trace, s.machine, nullptr);
+    auto t = trace->open();
+    if (!t) return start_failure(a, t.error(), &s);
+  }
+  machine::RunOptions opts;
+  opts.trace = trace.get();
+  auto res = sim.run(setup, opts);
+  if (!res) return start_failure(a, res.error(), &s);
+  if (trace) (void)trace->finish();
+  const auto& r = *res;
+  std::cout << "\nWhat happened:\n";
+  for (const auto& sk : r.skips) {
+    const double over = sk.position[2] - sk.end_position[2];
+    fmt::print("  line {:>2}  {:<22}  {} at t = {:.4f} s: Z stored in #5063 = {:.4f}; "
+               "the axis stopped at Z{:.4f} ({:.4f} mm past the touch)\n",
+               sk.line, sk.block, sk.triggered ? "probe signal " + sk.signal : std::string("no signal"),
+               sk.time_s, sk.position[2], sk.end_position[2], over);
+  }
+  auto var = [&](int n) {
+    auto v = sim.interpreter()->read_variable(n);
+    return v && !v->vacant ? v->v : 0.0;
+  };
+  fmt::print("\n  first touch  #100 = {:.4f}\n  second touch #101 = {:.4f}  (slower, so it stops closer)\n"
+             "  G54 Z offset #5223 = {:.4f}  (written by G10 L2 P1)\n",
+             var(100), var(101), var(5223));
+  for (const auto& m : r.messages) fmt::print("  message: {}\n", m);
+  fmt::print("\n{} after {:.3f} s of machine time; final position {}\n",
+             r.status == machine::RunStatus::kCompleted ? "Completed" : "Stopped by an alarm", r.time_s,
+             fmt_axes(r.final_work, s.machine));
+  if (r.alarm) std::cout << "  " << describe(*r.alarm, &s.dialect) << "\n";
+  if (!a.report.empty()) {
+    report::ReportInput in;
+    in.program = a.program;
+    in.dialect = s.dialect.name;
+    in.machine = &s.machine;
+    in.dialect_table = &s.dialect;
+    in.result = r;
+    for (int n : {100, 101, 102, 5223}) in.variables.emplace_back(std::to_string(n), var(n));
+    auto w = report::write_atomic(a.report, report::to_json(in));
+    if (!w) std::cerr << "skipnc: " << w.error().detail << "\n";
+  }
+  std::cout << "\nTry it yourself: skipnc run PROGRAM --scene SCENE --report report.json --var 5063\n";
+  return r.status == machine::RunStatus::kCompleted ? 0 : 1;
+}
+
+}  // namespace skipnc::cli

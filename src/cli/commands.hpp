@@ -1,0 +1,28 @@
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace skipnc::cli {
+
+struct RunArgs {
+  std::string program;
+  std::string machine = "mill3";
+  std::string scene;
+  std::string dialect;
+  std::vector<std::string> params;
+  std::vector<std::string> vars;
+  std::string report;
+  std::string trace;
+  std::vector<std::string> include;
+  std::string dprnt;
+  bool quiet = false;
+  bool progress = true;
+};
+
+int run_command(const RunArgs& a);
+int canon_command(const RunArgs& a);
+int demo_command(const RunArgs& a);
+int dialects_command();
+
+}  // namespace skipnc::cli

@@ -1,0 +1,53 @@
+// skipnc: command line (spec/cli.md).
+#include <CLI/CLI.hpp>
+#include <iostream>
+
+#include "cli/commands.hpp"
+
+int main(int argc, char** argv) {
+  using skipnc::cli::RunArgs;
+  CLI::App app{"skipnc: a CNC kernel and simulated machine built around the G31 skip function"};
+  app.require_subcommand(1);
+  app.set_version_flag("--version", "skipnc 0.1.0");
+
+  RunArgs run_args;
+  auto* run = app.add_subcommand("run", "run a part program on a simulated machine");
+  run->add_option("program", run_args.program, "part program file")->required();
+  run->add_option("-m,--machine", run_args.machine, "machine file or built-in machine (mill3)");
+  run->add_option("-s,--scene", run_args.scene, "scene file (TOML)");
+  run->add_option("-d,--dialect", run_args.dialect, "fanuc, nct, mitsubishi, compass");
+  run->add_option("-p,--param", run_args.params, "parameter N=V or N#B=V (repeatable)");
+  run->add_option("--var", run_args.vars, "report variable V (5061, #5061, #<name>)");
+  run->add_option("--report", run_args.report, "write the JSON report here (- for stdout)");
+  run->add_option("--trace", run_args.trace, "write the per-cycle CSV trace here");
+  run->add_option("-I,--include", run_args.include, "subprogram folder (repeatable)");
+  run->add_option("--dprnt", run_args.dprnt, "file for DPRNT output (POPEN/PCLOS)");
+  run->add_flag("-q,--quiet", run_args.quiet, "no summary on standard output");
+
+  RunArgs canon_args;
+  auto* canon = app.add_subcommand("canon", "print the canonical command stream, without motion");
+  canon->add_option("program", canon_args.program, "part program file")->required();
+  canon->add_option("-m,--machine", canon_args.machine, "machine file or built-in machine");
+  canon->add_option("-d,--dialect", canon_args.dialect, "dialect");
+  canon->add_option("-p,--param", canon_args.params, "parameter N=V or N#B=V (repeatable)");
+  canon->add_option("-I,--include", canon_args.include, "subprogram folder (repeatable)");
+
+  RunArgs demo_args;
+  auto* demo = app.add_subcommand("demo", "run the built-in probing demo and explain it");
+  demo->add_option("--report", demo_args.report, "also write the JSON report here");
+  demo->add_option("--trace", demo_args.trace, "also write the per-cycle CSV trace here");
+
+  auto* dialects = app.add_subcommand("dialects", "list the dialects and what differs");
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int rc = app.exit(e);
+    return rc == 0 ? 0 : 2;
+  }
+  if (run->parsed()) return skipnc::cli::run_command(run_args);
+  if (canon->parsed()) return skipnc::cli::canon_command(canon_args);
+  if (demo->parsed()) return skipnc::cli::demo_command(demo_args);
+  if (dialects->parsed()) return skipnc::cli::dialects_command();
+  return 2;
+}

@@ -1,0 +1,82 @@
+#include "cli/session.hpp"
+
+#include <charconv>
+#include <filesystem>
+
+#include "config/skip_inputs.hpp"
+#include "report/report.hpp"
+
+namespace skipnc::cli {
+
+Result<void> open_session(const SessionOptions& o, Session& s) {
+  std::error_code ec;
+  const bool is_file = o.machine.find('/') != std::string::npos || o.machine.ends_with(".toml") ||
+                       std::filesystem::is_regular_file(o.machine, ec);
+  auto m = is_file ? config::load_machine_file(o.machine) : config::builtin_machine(o.machine);
+  if (!m) return std::unexpected(m.error());
+  s.machine = std::move(*m);
+  const std::string dname = o.dialect.empty() ? s.machine.dialect : o.dialect;
+  auto d = config::builtin_dialect(dname);
+  if (!d) return std::unexpected(d.error());
+  s.dialect = std::move(*d);
+  s.machine.dialect = dname;
+  s.params = std::make_unique<config::Parameters>(&s.dialect);
+  for (const auto& p : s.machine.params) {
+    auto r = s.params->apply(p);
+    if (!r) return r;
+  }
+  for (const auto& text : o.params) {
+    auto setting = config::Parameters::parse_setting(text);
+    if (!setting) return std::unexpected(setting.error());
+    auto r = s.params->apply(*setting);
+    if (!r) {
+      Error e = r.error();
+      e.id = AlarmId::kUsage;
+      e.detail = "--param " + text + ": " + e.detail;
+      return std::unexpected(e);
+    }
+  }
+  auto chk = config::check_skip_addresses(s.dialect, *s.params);
+  if (!chk) return chk;
+  if (!o.scene.empty()) {
+    auto sc = machine::load_scene_file(o.scene, s.machine, s.dialect, *s.params);
+    if (!sc) return std::unexpected(sc.error());
+    s.scene = std::move(*sc);
+  }
+  return {};
+}
+
+Result<VarRef> parse_var_ref(const std::string& text) {
+  VarRef v;
+  std::string_view t = text;
+  if (!t.empty() && t.front() == '#') t.remove_prefix(1);
+  v.key = std::string(t);
+  if (t.size() >= 2 && t.front() == '<' && t.back() == '>') {
+    v.name = std::string(t.substr(1, t.size() - 2));
+    return v;
+  }
+  auto r = std::from_chars(t.data(), t.data() + t.size(), v.number);
+  if (r.ec != std::errc{} || r.ptr != t.data() + t.size() || v.number < 0) {
+    return fail(AlarmId::kUsage, "--var " + text + ": expected a variable number (5061, #5061) or #<name>");
+  }
+  return v;
+}
+
+std::string describe(const Error& e, const config::Dialect* d) {
+  const report::AlarmView v = report::view_alarm(e, d);
+  std::string out;
+  if (!e.loc.file.empty()) {
+    out += std::string(e.loc.file);
+    if (e.loc.line > 0) out += ":" + std::to_string(e.loc.line);
+    if (e.loc.column > 0) out += ":" + std::to_string(e.loc.column);
+    out += ": ";
+  }
+  if (e.id == AlarmId::kConfig || e.id == AlarmId::kUsage) {
+    out += "error: " + e.detail;
+  } else {
+    out += "alarm " + v.code + " (" + std::to_string(v.number) + "): " + v.message;
+  }
+  return out;
+}
+
+}  // namespace skipnc::cli

@@ -1,0 +1,46 @@
+// What every command needs before it runs: machine, dialect, parameters and
+// scene, loaded and checked, with errors that name file, line and column.
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "config/dialect.hpp"
+#include "config/machine_config.hpp"
+#include "machine/scene.hpp"
+
+namespace skipnc::cli {
+
+struct SessionOptions {
+  std::string machine = "mill3";  // file or built-in name
+  std::string dialect;            // empty: the machine's
+  std::string scene;              // empty: no scene
+  std::vector<std::string> params;
+};
+
+struct Session {
+  config::MachineConfig machine;
+  config::Dialect dialect;
+  std::unique_ptr<config::Parameters> params;
+  machine::Scene scene;
+};
+
+// The machine is loaded first so that a dialect error can still be reported
+// with the dialect's numbers where possible. `partial` receives whatever was
+// loaded before an error.
+[[nodiscard]] Result<void> open_session(const SessionOptions& o, Session& s);
+
+// "#5061", "5061", "#<NC.SysVars.G31.LCS.X>" -> number or name.
+struct VarRef {
+  std::string key;   // as reported (without '#')
+  int number = -1;
+  std::string name;  // for #<name>
+};
+[[nodiscard]] Result<VarRef> parse_var_ref(const std::string& text);
+
+// "file:line:column: CODE message" for standard error.
+std::string describe(const Error& e, const config::Dialect* d);
+
+}  // namespace skipnc::cli

@@ -1,0 +1,306 @@
+#include "config/machine_config.hpp"
+
+#include <charconv>
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include "config/toml_util.hpp"
+#include "core/embedded.hpp"
+
+namespace skipnc::config {
+namespace {
+
+Result<AxisConfig> load_axis(const toml::table& t, std::string_view origin) {
+  auto keys = check_keys(t,
+                         {"name", "min", "max", "rapid", "max_feed", "accel", "kp", "feedforward",
+                          "torque_per_mm", "torque_max"},
+                         origin, "[[axis]]");
+  if (!keys) return std::unexpected(keys.error());
+  AxisConfig a;
+  const auto* name = t.get("name");
+  if (!name) return config_error(t, origin, "[[axis]] needs a name (\"X\", \"Y\", ...)");
+  auto s = get_string(*name, origin, "name");
+  if (!s) return std::unexpected(s.error());
+  if (s->size() != 1 || std::string_view("XYZABCUVW").find((*s)[0]) == std::string_view::npos) {
+    return config_error(*name, origin, "axis name must be one of X Y Z A B C U V W");
+  }
+  a.name = (*s)[0];
+  struct Field {
+    std::string_view key;
+    double* out;
+    double min, max;
+  };
+  const Field fields[] = {
+      {"min", &a.min_mm, -1e6, 1e6},           {"max", &a.max_mm, -1e6, 1e6},
+      {"rapid", &a.rapid_mm_min, 1e-3, 1e7},   {"max_feed", &a.max_feed_mm_min, 1e-3, 1e7},
+      {"accel", &a.accel_mm_s2, 1e-3, 1e7},    {"kp", &a.kp_per_s, 0.0, 1e5},
+      {"feedforward", &a.feedforward, 0.0, 1.0}, {"torque_per_mm", &a.torque_pct_per_mm, 0, 1e9},
+      {"torque_max", &a.torque_max_pct, 1, 1e4},
+  };
+  for (const auto& f : fields) {
+    if (const auto* n = t.get(f.key)) {
+      auto v = get_number(*n, origin, f.key, f.min, f.max);
+      if (!v) return std::unexpected(v.error());
+      *f.out = *v;
+    }
+  }
+  if (a.min_mm >= a.max_mm) {
+    return config_error(t, origin, std::string("axis ") + a.name + ": min must be below max");
+  }
+  return a;
+}
+
+Result<AxisVec> load_axis_values(const toml::node& node, const MachineConfig& m,
+                                 std::string_view origin, std::string_view what) {
+  const auto* t = node.as_table();
+  if (!t) return config_error(node, origin, std::string(what) + " must be a table of axis values");
+  AxisVec v;
+  for (const auto& [key, n] : *t) {
+    const int i = key.str().size() == 1 ? m.axis_index(key.str()[0]) : -1;
+    if (i < 0) {
+      return config_error(n, origin, std::string(what) + ": '" + std::string(key.str()) +
+                                         "' is not an axis of this machine");
+    }
+    auto d = get_number(n, origin, key.str(), -1e6, 1e6);
+    if (!d) return std::unexpected(d.error());
+    v[i] = *d;
+  }
+  return v;
+}
+
+Result<void> load_offsets(const toml::table& t, MachineConfig& m, std::string_view origin) {
+  static constexpr std::string_view kNames[] = {"EXT", "G54", "G55", "G56", "G57", "G58", "G59"};
+  for (const auto& [key, node] : t) {
+    int idx = -1;
+    for (int i = 0; i < 7; ++i) {
+      if (key.str() == kNames[i]) idx = i;
+    }
+    if (idx < 0) {
+      return config_error(node, origin, "unknown work offset '" + std::string(key.str()) +
+                                            "' (known: EXT, G54 ... G59)");
+    }
+    auto v = load_axis_values(node, m, origin, key.str());
+    if (!v) return std::unexpected(v.error());
+    m.work_offsets[static_cast<std::size_t>(idx)] = *v;
+  }
+  return {};
+}
+
+Result<void> load_tools(const toml::table& t, MachineConfig& m, std::string_view origin) {
+  for (const auto& [key, node] : t) {
+    int number = 0;
+    const auto k = key.str();
+    auto [p, ec] = std::from_chars(k.data(), k.data() + k.size(), number);
+    if (ec != std::errc{} || p != k.data() + k.size() || number < 1 ||
+        number > m.tool_offset_count) {
+      return config_error(node, origin, "tool offset number '" + std::string(k) +
+                                            "' must be 1.." + std::to_string(m.tool_offset_count));
+    }
+    const auto* tab = node.as_table();
+    if (!tab) return config_error(node, origin, "tool offset must be a table");
+    auto keys = check_keys(*tab, {"length", "length_wear", "radius", "radius_wear"}, origin,
+                           "a tool offset");
+    if (!keys) return keys;
+    ToolOffset o;
+    for (const auto& [tk, tn] : *tab) {
+      auto v = get_number(tn, origin, tk.str(), -1e5, 1e5);
+      if (!v) return std::unexpected(v.error());
+      if (tk.str() == "length") o.length_geometry = *v;
+      else if (tk.str() == "length_wear") o.length_wear = *v;
+      else if (tk.str() == "radius") o.radius_geometry = *v;
+      else o.radius_wear = *v;
+    }
+    m.tool_offsets[number] = o;
+  }
+  return {};
+}
+
+}  // namespace
+
+int MachineConfig::axis_index(char letter) const noexcept {
+  for (std::size_t i = 0; i < axes.size(); ++i) {
+    if (axes[i].name == letter) return static_cast<int>(i);
+  }
+  return -1;
+}
+
+Result<MachineConfig> parse_machine(std::string_view text, std::string_view origin) {
+  auto parsed = parse_toml(text, origin);
+  if (!parsed) return std::unexpected(parsed.error());
+  const toml::table& t = *parsed;
+  auto keys = check_keys(t,
+                         {"name", "dialect", "servo_period_ms", "inch", "in_position_mm",
+                          "persistent_variables", "latch", "axis", "parameters", "work_offsets",
+                          "tool_offsets", "limits"},
+                         origin, "a machine file");
+  if (!keys) return std::unexpected(keys.error());
+  MachineConfig m;
+  m.origin = std::string(origin);
+  if (const auto* n = t.get("name")) {
+    auto s = get_string(*n, origin, "name");
+    if (!s) return std::unexpected(s.error());
+    m.name = *s;
+  }
+  if (const auto* n = t.get("dialect")) {
+    auto s = get_string(*n, origin, "dialect");
+    if (!s) return std::unexpected(s.error());
+    m.dialect = *s;
+  }
+  if (const auto* n = t.get("servo_period_ms")) {
+    auto v = get_number(*n, origin, "servo_period_ms", 0.0625, 100.0);
+    if (!v) return std::unexpected(v.error());
+    m.period_ns = static_cast<std::int64_t>(std::llround(*v * 1e6));
+  }
+  if (const auto* n = t.get("inch")) {
+    auto v = get_bool(*n, origin, "inch");
+    if (!v) return std::unexpected(v.error());
+    m.inch_machine = *v;
+  }
+  if (const auto* n = t.get("in_position_mm")) {
+    auto v = get_number(*n, origin, "in_position_mm", 1e-9, 10.0);
+    if (!v) return std::unexpected(v.error());
+    m.in_position_mm = *v;
+  }
+  if (const auto* n = t.get("persistent_variables")) {
+    auto s = get_string(*n, origin, "persistent_variables");
+    if (!s) return std::unexpected(s.error());
+    m.persistent_vars = *s;
+  }
+  const auto* axes = t.get("axis");
+  if (!axes || !axes->as_array() || axes->as_array()->empty()) {
+    return config_error(axes ? *axes : static_cast<const toml::node&>(t), origin,
+                        "a machine needs at least one [[axis]]");
+  }
+  for (const auto& e : *axes->as_array()) {
+    const auto* at = e.as_table();
+    if (!at) return config_error(e, origin, "[[axis]] must be a table");
+    auto a = load_axis(*at, origin);
+    if (!a) return std::unexpected(a.error());
+    if (m.axis_index(a->name) >= 0) {
+      return config_error(e, origin, std::string("axis ") + a->name + " is defined twice");
+    }
+    if (m.axes.size() == static_cast<std::size_t>(kMaxAxes)) {
+      return config_error(e, origin, "at most " + std::to_string(kMaxAxes) + " axes");
+    }
+    m.axes.push_back(*a);
+  }
+  if (const auto* n = t.get("latch")) {
+    const auto* lt = n->as_table();
+    if (!lt) return config_error(*n, origin, "[latch] must be a table");
+    auto k = check_keys(*lt, {"mode", "delay_ms", "servo_delay_compensation"}, origin, "[latch]");
+    if (!k) return std::unexpected(k.error());
+    if (const auto* mode = lt->get("mode")) {
+      auto s = get_string(*mode, origin, "mode");
+      if (!s) return std::unexpected(s.error());
+      if (*s == "exact") m.latch = canon::SkipLatch::kExact;
+      else if (*s == "sampled") m.latch = canon::SkipLatch::kSampled;
+      else return config_error(*mode, origin, "latch mode must be \"exact\" or \"sampled\"");
+    }
+    if (const auto* d = lt->get("delay_ms")) {
+      auto v = get_number(*d, origin, "delay_ms", 0.0, 1000.0);
+      if (!v) return std::unexpected(v.error());
+      m.latch_delay_s = *v * 1e-3;
+    }
+    if (const auto* c = lt->get("servo_delay_compensation")) {
+      auto v = get_bool(*c, origin, "servo_delay_compensation");
+      if (!v) return std::unexpected(v.error());
+      m.servo_delay_comp = *v;
+    }
+  }
+  if (const auto* n = t.get("parameters")) {
+    const auto* pt = n->as_table();
+    if (!pt) return config_error(*n, origin, "[parameters] must be a table");
+    for (const auto& [key, node] : *pt) {
+      // Kept as text "N" or "N#B" = value; checked against the dialect when the
+      // run is set up (the dialect may be overridden on the command line).
+      auto v = get_number(node, origin, key.str(), -1e300, 1e300);
+      if (!v) return std::unexpected(v.error());
+      const auto k = key.str();
+      int number = 0, bit = -1;
+      const auto hash = k.find('#');
+      auto r = std::from_chars(k.data(), k.data() + (hash == std::string_view::npos ? k.size() : hash), number);
+      bool ok = r.ec == std::errc{} && r.ptr == k.data() + (hash == std::string_view::npos ? k.size() : hash);
+      if (ok && hash != std::string_view::npos) {
+        auto r2 = std::from_chars(k.data() + hash + 1, k.data() + k.size(), bit);
+        ok = r2.ec == std::errc{} && r2.ptr == k.data() + k.size() && bit >= 0 && bit <= 7 &&
+             (*v == 0 || *v == 1);
+      }
+      if (!ok || number <= 0) {
+        return config_error(node, origin, "parameter '" + std::string(k) +
+                                              "' must be N = value or N#B = 0/1");
+      }
+      m.params.push_back(ParamSetting{number, bit, *v, loc_of(node, origin)});
+    }
+  }
+  if (const auto* n = t.get("work_offsets")) {
+    const auto* wt = n->as_table();
+    if (!wt) return config_error(*n, origin, "[work_offsets] must be a table");
+    auto r = load_offsets(*wt, m, origin);
+    if (!r) return std::unexpected(r.error());
+  }
+  if (const auto* n = t.get("tool_offsets")) {
+    const auto* tt = n->as_table();
+    if (!tt) return config_error(*n, origin, "[tool_offsets] must be a table");
+    auto r = load_tools(*tt, m, origin);
+    if (!r) return std::unexpected(r.error());
+  }
+  if (const auto* n = t.get("limits")) {
+    const auto* lt = n->as_table();
+    if (!lt) return config_error(*n, origin, "[limits] must be a table");
+    auto k = check_keys(*lt, {"max_time_s", "max_macro_statements", "max_macro_levels",
+                              "max_subprogram_levels"},
+                        origin, "[limits]");
+    if (!k) return std::unexpected(k.error());
+    for (const auto& [key, node] : *lt) {
+      auto v = get_number(node, origin, key.str(), 1, 1e12);
+      if (!v) return std::unexpected(v.error());
+      if (key.str() == "max_time_s") {
+        m.limits.max_ticks = static_cast<std::int64_t>(*v * 1e9 / static_cast<double>(m.period_ns));
+      } else if (key.str() == "max_macro_statements") {
+        m.limits.max_macro_statements = static_cast<std::int64_t>(*v);
+      } else if (key.str() == "max_macro_levels") {
+        m.limits.max_macro_levels = static_cast<int>(*v);
+      } else {
+        m.limits.max_subprogram_levels = static_cast<int>(*v);
+      }
+    }
+  }
+  return m;
+}
+
+Result<MachineConfig> load_machine_file(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return fail(AlarmId::kConfig, "cannot read machine file '" + path + "'");
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return parse_machine(ss.str(), path);
+}
+
+Result<MachineConfig> builtin_machine(std::string_view name) {
+  const EmbeddedFile* f = embedded_entry("machines/" + std::string(name) + ".toml");
+  if (!f) {
+    std::string known;
+    for (const auto& n : builtin_machine_names()) known += (known.empty() ? "" : ", ") + n;
+    return fail(AlarmId::kUsage,
+                "no machine file or built-in machine '" + std::string(name) + "' (built-in: " +
+                    known + ")");
+  }
+  auto m = parse_machine(f->content, f->path);
+  if (m) m->origin = "built-in " + std::string(name);
+  return m;
+}
+
+std::vector<std::string> builtin_machine_names() {
+  std::vector<std::string> names;
+  for (const auto& f : embedded_files()) {
+    if (f.path.starts_with("machines/")) {
+      std::string n(f.path.substr(9));
+      n.resize(n.size() - 5);
+      names.push_back(n);
+    }
+  }
+  return names;
+}
+
+}  // namespace skipnc::config

@@ -1,0 +1,108 @@
+// The machine file: axes and their limits, servo model, dialect, parameter
+// overrides, offsets. Strict: an unknown key or a value out of range is an
+// error with file, line and column at load time.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <map>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "canon/canon.hpp"
+#include "config/dialect.hpp"
+#include "core/axes.hpp"
+#include "core/diag.hpp"
+
+namespace skipnc::config {
+
+struct AxisConfig {
+  char name = 'X';
+  double min_mm = -500.0;            // stroke limits, machine coordinates
+  double max_mm = 500.0;
+  double rapid_mm_min = 30000.0;
+  double max_feed_mm_min = 20000.0;
+  double accel_mm_s2 = 2000.0;
+  // Servo: velocity = feedforward * commanded velocity + kp * following error.
+  double kp_per_s = 30.0;
+  double feedforward = 0.0;          // 0..1
+  // Motor torque, % of rated: torque_per_mm * following error while the axis
+  // is held by a stop; the servo's own torque limit is torque_max_pct.
+  double torque_pct_per_mm = 100.0;
+  double torque_max_pct = 300.0;
+};
+
+struct ToolOffset {
+  double length_geometry = 0.0;  // H
+  double length_wear = 0.0;
+  double radius_geometry = 0.0;  // D
+  double radius_wear = 0.0;
+};
+
+// One parameter setting of the machine file or the command line.
+struct ParamSetting {
+  int number = 0;
+  int bit = -1;  // -1: the whole parameter
+  double value = 0.0;
+  SourceLoc loc;
+};
+
+struct Limits {
+  std::int64_t max_ticks = 3'600'000'000;  // simulated time limit (1000 h at 1 ms)
+  std::int64_t max_macro_statements = 100'000'000;
+  int max_macro_levels = 4;
+  int max_subprogram_levels = 10;
+};
+
+struct MachineConfig {
+  std::string name = "mill3";
+  std::string origin;                 // file it came from, or "built-in mill3"
+  std::string dialect = "fanuc";
+  std::int64_t period_ns = 1'000'000;
+  std::vector<AxisConfig> axes;
+  std::vector<ParamSetting> params;   // overrides of the dialect's defaults, in order
+  // Work offsets: [0] external (EXT / G54 common shift), [1..6] G54..G59, mm.
+  std::array<AxisVec, 7> work_offsets{};
+  std::map<int, ToolOffset> tool_offsets;  // by offset number
+  int tool_offset_count = 200;
+  bool inch_machine = false;
+  canon::SkipLatch latch = canon::SkipLatch::kExact;
+  double latch_delay_s = 0.0;         // sampled latch: detection delay after the sample
+  bool servo_delay_comp = true;       // latch the actual position (else the commanded)
+  double in_position_mm = 0.0005;     // in-position width for exact stop
+  std::string persistent_vars;        // file for #500-#999; empty: not kept
+  Limits limits;
+
+  int axis_count() const noexcept { return static_cast<int>(axes.size()); }
+  // Index of an axis by letter, -1 when absent.
+  int axis_index(char letter) const noexcept;
+};
+
+[[nodiscard]] Result<MachineConfig> parse_machine(std::string_view toml_text,
+                                                  std::string_view origin);
+[[nodiscard]] Result<MachineConfig> load_machine_file(const std::string& path);
+// "mill3" and the other built-in machines (data/machines/<name>.toml).
+[[nodiscard]] Result<MachineConfig> builtin_machine(std::string_view name);
+std::vector<std::string> builtin_machine_names();
+
+// Effective parameters: dialect defaults, then the machine file, then the
+// command line. Values are checked against the dialect's ranges.
+class Parameters {
+ public:
+  Parameters() = default;
+  explicit Parameters(const Dialect* dialect) : dialect_(dialect) {}
+
+  double get(int number) const noexcept;
+  bool bit(int number, int b) const noexcept;
+  [[nodiscard]] Result<void> apply(const ParamSetting& s);
+  // "6200#7=1" or "1174=200" (command line)
+  [[nodiscard]] static Result<ParamSetting> parse_setting(std::string_view text);
+  const std::map<int, double>& overrides() const noexcept { return values_; }
+
+ private:
+  const Dialect* dialect_ = nullptr;
+  std::map<int, double> values_;
+};
+
+}  // namespace skipnc::config

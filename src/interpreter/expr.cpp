@@ -1,0 +1,221 @@
+// Expression evaluation with Fanuc Custom Macro B rules:
+// - a vacant variable stays vacant only when referenced alone (#2 = #1);
+//   in arithmetic it counts as 0;
+// - EQ and NE tell vacant from 0; GT GE LT LE treat vacant as 0;
+// - AND OR XOR are bitwise on whole numbers; MOD keeps the dividend's sign;
+// - angles are degrees; FIX truncates toward zero, FUP rounds away from it.
+#include <cmath>
+#include <cstdint>
+#include <limits>
+
+#include "interpreter/impl.hpp"
+
+namespace skipnc::interp {
+namespace {
+
+constexpr double kRad = 3.14159265358979323846 / 180.0;
+
+double round_half_away(double x) noexcept { return std::round(x); }
+
+}  // namespace
+
+Result<int> Interpreter::Impl::var_number(gcode::ExprId lhs) {
+  const gcode::ExprNode& n = blk.nodes[static_cast<std::size_t>(lhs)];
+  auto v = eval(n.a);
+  if (!v) return std::unexpected(v.error());
+  const double x = round_half_away(v->num());
+  if (v->vacant || !(std::fabs(x) < 1e9)) {
+    return fail(AlarmId::kIllegalVariable, "variable number is vacant or out of range",
+                loc(n.column));
+  }
+  return static_cast<int>(x);
+}
+
+Result<void> Interpreter::Impl::assign(gcode::ExprId lhs, Value v) {
+  const gcode::ExprNode& n = blk.nodes[static_cast<std::size_t>(lhs)];
+  if (!v.vacant && !std::isfinite(v.v)) {
+    return fail(AlarmId::kOverflow, "the value to store is not a finite number", loc(n.column));
+  }
+  if (n.op == gcode::Op::kNamedVar) {
+    return write_named_var(blk.names[static_cast<std::size_t>(n.name)], v, loc(n.column));
+  }
+  auto num = var_number(lhs);
+  if (!num) return std::unexpected(num.error());
+  return write_var(*num, v, loc(n.column));
+}
+
+Result<Value> Interpreter::Impl::eval(gcode::ExprId id) {
+  if (id < 0 || static_cast<std::size_t>(id) >= blk.nodes.size()) {
+    return fail(AlarmId::kMacroFormat, "missing expression", loc(cur_col));
+  }
+  const gcode::ExprNode& n = blk.nodes[static_cast<std::size_t>(id)];
+  using gcode::Op;
+  switch (n.op) {
+    case Op::kNumber:
+      return Value::of(n.value);
+    case Op::kVar: {
+      auto num = var_number(id);
+      if (!num) return std::unexpected(num.error());
+      return read_var(*num, loc(n.column));
+    }
+    case Op::kNamedVar:
+      return read_named_var(blk.names[static_cast<std::size_t>(n.name)], loc(n.column));
+    case Op::kNeg: {
+      auto a = eval(n.a);
+      if (!a) return a;
+      return Value::of(-a->num());
+    }
+    case Op::kFunc:
+      break;
+    default: {
+      auto a = eval(n.a);
+      if (!a) return a;
+      auto b = eval(n.b);
+      if (!b) return b;
+      const double x = a->num();
+      const double y = b->num();
+      auto whole = [](double d) { return static_cast<std::int64_t>(round_half_away(d)); };
+      auto bit_ok = [](double d) { return std::fabs(d) < 9.0e15; };
+      switch (n.op) {
+        case Op::kAdd:
+        case Op::kSub:
+        case Op::kMul:
+        case Op::kDiv: {
+          if (n.op == Op::kDiv && y == 0.0) {
+            return fail(AlarmId::kDivisionByZero, "division by zero", loc(n.column));
+          }
+          const double r = n.op == Op::kAdd   ? x + y
+                           : n.op == Op::kSub ? x - y
+                           : n.op == Op::kMul ? x * y
+                                              : x / y;
+          if (!std::isfinite(r)) return fail(AlarmId::kOverflow, "result out of range", loc(n.column));
+          return Value::of(r);
+        }
+        case Op::kMod: {
+          if (!bit_ok(x) || !bit_ok(y)) {
+            return fail(AlarmId::kOverflow, "MOD operand too large", loc(n.column));
+          }
+          const std::int64_t k = whole(y);
+          if (k == 0) return fail(AlarmId::kDivisionByZero, "MOD by zero", loc(n.column));
+          return Value::of(static_cast<double>(whole(x) % k));
+        }
+        case Op::kAnd:
+        case Op::kOr:
+        case Op::kXor: {
+          if (!bit_ok(x) || !bit_ok(y)) {
+            return fail(AlarmId::kOverflow, "logical operand too large", loc(n.column));
+          }
+          const std::int64_t p = whole(x), q = whole(y);
+          const std::int64_t r = n.op == Op::kAnd ? (p & q) : n.op == Op::kOr ? (p | q) : (p ^ q);
+          return Value::of(static_cast<double>(r));
+        }
+        case Op::kEq:
+          return Value::of((a->vacant == b->vacant && (a->vacant || x == y)) ? 1.0 : 0.0);
+        case Op::kNe:
+          return Value::of((a->vacant == b->vacant && (a->vacant || x == y)) ? 0.0 : 1.0);
+        case Op::kGt: return Value::of(x > y ? 1.0 : 0.0);
+        case Op::kGe: return Value::of(x >= y ? 1.0 : 0.0);
+        case Op::kLt: return Value::of(x < y ? 1.0 : 0.0);
+        case Op::kLe: return Value::of(x <= y ? 1.0 : 0.0);
+        default:
+          return fail(AlarmId::kMacroFormat, "unknown operator", loc(n.column));
+      }
+    }
+  }
+  // Functions.
+  auto a = eval(n.a);
+  if (!a) return a;
+  const double x = a->num();
+  auto bad = [&](const char* what) {
+    return fail(AlarmId::kIllegalArgument, what, loc(n.column));
+  };
+  using gcode::Func;
+  double r = 0.0;
+  switch (n.fn) {
+    case Func::kSin: r = std::sin(x * kRad); break;
+    case Func::kCos: r = std::cos(x * kRad); break;
+    case Func::kTan: {
+      const double m = std::fmod(std::fabs(x), 180.0);
+      if (m == 90.0) return bad("TAN of 90 degrees");
+      r = std::tan(x * kRad);
+      break;
+    }
+    case Func::kAsin:
+      if (x < -1.0 || x > 1.0) return bad("ASIN of a value outside -1..1");
+      r = std::asin(x) / kRad;
+      break;
+    case Func::kAcos:
+      if (x < -1.0 || x > 1.0) return bad("ACOS of a value outside -1..1");
+      r = std::acos(x) / kRad;
+      break;
+    case Func::kAtan:
+      if (n.b != gcode::kNoExpr) {
+        auto b = eval(n.b);
+        if (!b) return b;
+        if (x == 0.0 && b->num() == 0.0) return bad("ATAN[0]/[0]");
+        r = std::atan2(x, b->num()) / kRad;
+        if (r < 0.0) r += 360.0;  // Fanuc: 0 to 360 degrees (parameter NAT = 0)
+      } else {
+        r = std::atan(x) / kRad;
+      }
+      break;
+    case Func::kSqrt:
+      if (x < 0.0) return bad("SQRT of a negative value");
+      r = std::sqrt(x);
+      break;
+    case Func::kAbs: r = std::fabs(x); break;
+    case Func::kRound: r = round_half_away(x); break;
+    case Func::kFix: r = std::trunc(x); break;
+    case Func::kFup: r = x >= 0 ? std::ceil(x) : std::floor(x); break;
+    case Func::kLn:
+      if (x <= 0.0) return bad("LN of a value that is not positive");
+      r = std::log(x);
+      break;
+    case Func::kExp: r = std::exp(x); break;
+    case Func::kPow: {
+      if (n.b == gcode::kNoExpr) return bad("POW needs two arguments");
+      auto b = eval(n.b);
+      if (!b) return b;
+      const double y = b->num();
+      if (x < 0.0 && y != std::trunc(y)) return bad("POW of a negative base to a fractional power");
+      if (x == 0.0 && y <= 0.0) return bad("POW of zero to a power that is not positive");
+      r = std::pow(x, y);
+      break;
+    }
+    case Func::kBin: {
+      // BCD -> binary
+      if (x < 0 || x != std::trunc(x) || x > 9.0e15) return bad("BIN of a value that is not BCD");
+      auto v = static_cast<std::uint64_t>(x);
+      std::uint64_t out = 0, mul = 1;
+      while (v != 0) {
+        const std::uint64_t d = v & 0xF;
+        if (d > 9) return bad("BIN of a value that is not BCD");
+        out += d * mul;
+        mul *= 10;
+        v >>= 4;
+      }
+      r = static_cast<double>(out);
+      break;
+    }
+    case Func::kBcd: {
+      if (x < 0 || x != std::trunc(x) || x > 9.0e15) return bad("BCD of a negative or fractional value");
+      auto v = static_cast<std::uint64_t>(x);
+      std::uint64_t out = 0;
+      int shift = 0;
+      while (v != 0 && shift < 64) {
+        out |= (v % 10) << shift;
+        v /= 10;
+        shift += 4;
+      }
+      r = static_cast<double>(out);
+      break;
+    }
+    case Func::kAdp:
+    case Func::kNone:
+      return fail(AlarmId::kMacroFormat, "function not available in this control", loc(n.column));
+  }
+  if (!std::isfinite(r)) return fail(AlarmId::kOverflow, "result out of range", loc(n.column));
+  return Value::of(r);
+}
+
+}  // namespace skipnc::interp

@@ -1,0 +1,200 @@
+// Internal state of the interpreter, shared by its translation units:
+//   interpreter.cpp  program flow: blocks, frames, calls, loops, sync
+//   expr.cpp         expression evaluation and the vacant rules
+//   sysvars.cpp      system variables (#3000.., #4000.., #5000..)
+//   ncblock.cpp      address words, modal groups, offsets, data setting
+//   motion.cpp       rapid, feed, arc, dwell, skip commands
+#pragma once
+
+#include <array>
+#include <cstdio>
+#include <memory>
+#include <optional>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include "gcode/ast.hpp"
+#include "gcode/parser.hpp"
+#include "gcode/source.hpp"
+#include "interpreter/interpreter.hpp"
+
+namespace skipnc::interp {
+
+// A file of programs: the main program file or one found on the include path.
+struct ProgramFile {
+  std::string path;
+  std::string display;  // shown in errors (file name as given)
+  std::unique_ptr<gcode::Source> src;
+  // O numbers found so far and the position of the block after them.
+  std::unordered_map<std::int64_t, gcode::SourcePos> programs;
+  bool scanned = false;  // every O number of the file is in `programs`
+  // Sequence numbers seen, for GOTO / M99 P (bounded).
+  std::unordered_map<std::int64_t, gcode::SourcePos> labels;
+};
+
+struct Loop {
+  int id = 0;
+  gcode::SourcePos pos;  // the WHILE block
+};
+
+// One level of the call stack.
+struct Frame {
+  ProgramFile* file = nullptr;
+  gcode::SourcePos start;         // first block of the program
+  gcode::SourcePos resume;        // next block to read when this frame runs again
+  std::int64_t program = 0;       // O number (0: main program without one)
+  int repeats_left = 0;           // M98 L / G65 L
+  bool macro = false;             // G65/G66 call: owns a local-variable level
+  bool modal_call = false;        // a G66 call (no re-entry of the modal macro inside)
+  std::vector<Loop> loops;
+};
+
+// One word's value after evaluation.
+struct WordVal {
+  double value = 0.0;
+  bool has_point = false;
+  bool is_expr = false;
+  bool round_in_word = false;  // the expression is ROUND[...]
+  std::uint32_t column = 0;
+};
+
+// The words of one block, by address.
+struct Words {
+  std::array<std::optional<WordVal>, 26> w;
+  int g_count = 0;
+  std::array<int, 16> g{};            // G codes x10 (G54.1 -> 541)
+  std::array<std::uint32_t, 16> g_col{};
+  int m_count = 0;
+  std::array<int, 3> m{};
+  bool has(char c) const noexcept { return w[static_cast<std::size_t>(c - 'A')].has_value(); }
+  const WordVal& at(char c) const noexcept { return *w[static_cast<std::size_t>(c - 'A')]; }
+  std::optional<WordVal>& slot(char c) noexcept { return w[static_cast<std::size_t>(c - 'A')]; }
+  bool has_g(int code) const noexcept {
+    for (int i = 0; i < g_count; ++i) {
+      if (g[static_cast<std::size_t>(i)] == code) return true;
+    }
+    return false;
+  }
+};
+
+// What the interpreter is waiting for at a synchronisation point.
+enum class Pending : std::uint8_t { kNone, kRerun, kSkip };
+
+struct PendingSkip {
+  SkipRecord record;
+  AxisVec target;               // programmed end point, machine coordinates
+  bool alarm_on_miss = false;
+  SourceLoc loc;
+  std::array<std::string, canon::SkipSpec::kMaxInputs> input_names;
+};
+
+struct Interpreter::Impl {
+  Setup setup;
+  const config::MachineConfig& mc;
+  const config::Dialect& dialect;
+  const config::Parameters& params;
+  int axis_count = 0;
+  std::array<char, kMaxAxes> axis_letter{};
+  std::array<int, 26> axis_of_letter{};  // -1 when the letter is not an axis
+
+  std::vector<std::unique_ptr<ProgramFile>> files;
+  std::vector<Frame> frames;
+  gcode::Block blk;
+  gcode::RawBlock raw;
+  std::string raw_text;          // copy of the current block's text (skip records)
+  gcode::SourcePos block_pos;    // position of the current block
+  Pending pending = Pending::kNone;
+  PendingSkip pending_skip;
+  bool rerun = false;            // re-executing the block after a sync
+  bool need_sync = false;        // set by a read of a live value
+  bool motion_since_sync = false;
+  bool ended = false;
+  std::uint32_t cur_line = 0;
+  std::uint32_t cur_col = 1;
+
+  ModalState modal;
+  AxisVec pos;                   // commanded machine position, mm
+  std::array<AxisVec, 7> work_offsets{};  // EXT, G54..G59 (mm)
+  AxisVec local_shift;           // G52
+  AxisVec g92_shift;             // G92
+  AxisVec tool_pos_offset;       // G45-G48 accumulated (dialects that have them)
+  double length_offset = 0.0;    // active tool length offset (mm), on length_axis
+  int length_axis = 2;
+  std::vector<config::ToolOffset> tools;  // index = offset number
+  VariableStore vars;
+  AxisVec skip_work;             // #5061.. (program units)
+  AxisVec skip_machine;
+  bool have_skip = false;
+  SyncState last_sync;
+  std::vector<std::string> messages;
+  std::vector<SkipRecord> skips;
+  std::int64_t statements = 0;
+  std::int64_t parts_count = 0;
+  std::int64_t parts_required = 0;
+  double timer_ms_base = 0.0;    // #3001 = time - base
+  double timer_h_base = 0.0;     // #3002
+  // G66
+  std::int64_t modal_macro_program = 0;
+  std::array<Value, kLocalCount + 1> modal_macro_args{};
+  std::FILE* dprnt = nullptr;
+  bool dprnt_open = false;
+
+  Impl(const Setup& s);
+  ~Impl();
+
+  // interpreter.cpp
+  Result<void> init(const AxisVec& start);
+  Result<Step> step(CommandSink& out);
+  Result<Step> execute(CommandSink& out);
+  Result<Step> execute_statement(CommandSink& out);
+  Result<bool> read_block();
+  Result<void> find_program(std::int64_t number, ProgramFile*& file, gcode::SourcePos& pos);
+  Result<void> jump_to_label(std::int64_t n, SourceLoc where);
+  Result<void> call(std::int64_t program, int repeats, bool macro, SourceLoc where);
+  Result<Step> return_from_sub(std::optional<std::int64_t> label, SourceLoc where);
+  Result<void> macro_call(const Words& words, std::int64_t program, int repeats, bool modal_call,
+                          SourceLoc where);
+  Result<void> sync(const SyncState& s);
+  SourceLoc loc(std::uint32_t column) const noexcept {
+    return SourceLoc{frames.empty() ? std::string_view(setup.program_name)
+                                    : std::string_view(frames.back().file->display),
+                     cur_line, column};
+  }
+  Result<void> count_statement(SourceLoc where);
+
+  // expr.cpp
+  Result<Value> eval(gcode::ExprId id);
+  Result<int> var_number(gcode::ExprId lhs);
+  Result<void> assign(gcode::ExprId lhs, Value v);
+
+  // sysvars.cpp
+  Result<Value> read_var(int n, SourceLoc where);
+  Result<void> write_var(int n, Value v, SourceLoc where);
+  Result<Value> read_named_var(const std::string& name, SourceLoc where);
+  Result<void> write_named_var(const std::string& name, Value v, SourceLoc where);
+
+  // ncblock.cpp
+  Result<void> collect_words(Words& words);
+  Result<Step> execute_nc(const Words& words, CommandSink& out);
+  double unit_mm() const noexcept { return modal.units == Units::kInch ? 25.4 : 1.0; }
+  double word_length(const WordVal& w, bool rotary) const noexcept;  // program units
+  double offset_total(int axis) const noexcept;                     // mm
+  double work_of(int axis, double machine_mm) const noexcept;       // program units
+  double machine_of(int axis, double work_units) const noexcept;    // mm
+  Result<void> set_tool_length(const Words& words, LengthComp mode);
+  Result<void> data_setting(const Words& words, SourceLoc where);
+
+  // motion.cpp
+  Result<Step> motion(const Words& words, CommandSink& out, bool skip, bool g53);
+  Result<Step> skip_block(const Words& words, const AxisVec& target, AxisMask moved,
+                          CommandSink& out);
+  Result<void> arc(const Words& words, const AxisVec& target, CommandSink& out);
+  Result<void> dwell(const Words& words, CommandSink& out);
+  Result<void> reference_return(const Words& words, int g, CommandSink& out);
+  Result<Step> canned_cycle(const Words& words, CommandSink& out);
+  double feed_mm_per_min() const noexcept { return modal.feed * unit_mm(); }
+  void emit(CommandSink& out, canon::Command cmd);
+};
+
+}  // namespace skipnc::interp

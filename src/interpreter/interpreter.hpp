@@ -1,0 +1,106 @@
+// The interpreter: reads blocks, keeps the modal state, offsets and macro
+// variables, runs the control flow and calls, and emits canonical commands.
+// It never sees the planner: at a synchronisation point (a skip block, a
+// macro read of a live position) it returns Step::kSync, the caller drains
+// the motion and hands back what happened through sync().
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "canon/canon.hpp"
+#include "config/dialect.hpp"
+#include "config/machine_config.hpp"
+#include "core/axes.hpp"
+#include "core/diag.hpp"
+#include "interpreter/modal.hpp"
+#include "interpreter/variables.hpp"
+
+namespace skipnc::interp {
+
+struct Setup {
+  const config::MachineConfig* machine = nullptr;
+  const config::Dialect* dialect = nullptr;
+  const config::Parameters* params = nullptr;
+  std::string program_path;               // the main program file
+  std::string program_text;               // used instead of the file when program_path is empty
+  std::string program_name = "program";   // shown in errors and reports
+  std::vector<std::string> include_dirs;  // subprogram lookup; the program's folder when empty
+  std::string dprnt_path;                 // DPRNT output file; empty: DPRNT lines go to messages only
+};
+
+class CommandSink {
+ public:
+  virtual ~CommandSink() = default;
+  virtual void emit(const canon::Stamped& cmd) = 0;
+};
+
+// What the motion side reports at a synchronisation point.
+struct SyncState {
+  AxisVec machine_position;   // where the command rests now (machine coordinates)
+  AxisVec actual_position;    // where the axes are (servo feedback)
+  double time_s = 0.0;
+  // After a skip block:
+  bool skip_done = false;
+  bool triggered = false;
+  bool torque_reached = false;
+  AxisVec latch_machine;      // machine coordinates stored by the skip
+  int input_index = -1;       // which selected input ended the block (-1: none/torque)
+};
+
+// One executed skip block, as the report shows it.
+struct SkipRecord {
+  std::uint32_t line = 0;
+  std::string block;            // the block's text
+  canon::SkipKind kind = canon::SkipKind::kSkip;
+  int p = -1;
+  std::string signal;           // input that ended the block, "" when none
+  bool triggered = false;
+  double time_s = 0.0;
+  AxisVec position;             // stored (work coordinates, program units)
+  AxisVec machine_position;     // the same instant, machine coordinates
+  AxisVec end_position;         // where the axes came to rest, work coordinates
+};
+
+enum class Step : std::uint8_t { kContinue, kSync, kEnd };
+
+class Interpreter {
+ public:
+  [[nodiscard]] static Result<std::unique_ptr<Interpreter>> create(const Setup& setup,
+                                                                   const AxisVec& start_machine);
+  ~Interpreter();
+
+  // Executes the next block (or the rest of it after a sync) and emits its
+  // commands. kSync: drain the motion, then call sync(). kEnd: M02/M30/%.
+  [[nodiscard]] Result<Step> step(CommandSink& out);
+  // Completes a synchronisation. Fails with the dialect's alarm when a skip
+  // block ended without a signal and K1 (or the miss parameter) asks for it.
+  [[nodiscard]] Result<void> sync(const SyncState& state);
+
+  // Reads a variable as a macro would (system variables included); for
+  // --var. Does not synchronise: live positions are those of the last sync.
+  [[nodiscard]] Result<Value> read_variable(int number) const;
+  [[nodiscard]] Result<Value> read_named(std::string_view name) const;
+
+  const ModalState& modal() const noexcept;
+  // Machine coordinates -> work coordinates in program units, with the
+  // offsets active now.
+  AxisVec work_from_machine(const AxisVec& machine) const noexcept;
+  const std::vector<std::string>& messages() const noexcept;
+  const std::vector<SkipRecord>& skips() const noexcept;
+  std::uint32_t line() const noexcept;     // line of the block being executed
+  const AxisVec& position() const noexcept; // commanded machine position
+  // Writes #500-#999 when they changed (atomic). Called once at the end.
+  [[nodiscard]] Result<void> save_persistent() const;
+
+  struct Impl;
+
+ private:
+  explicit Interpreter(std::unique_ptr<Impl> impl);
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace skipnc::interp

@@ -1,0 +1,494 @@
+// Address words and modal groups. Order of execution inside one block
+// (Fanuc): messages; G65 call; F S T; modal G codes (units first); data
+// setting and coordinate shifts (G10 G52 G92); dwell; motion; M codes.
+#include <algorithm>
+#include <cmath>
+
+#include "interpreter/impl.hpp"
+
+namespace skipnc::interp {
+namespace {
+
+enum class Group : std::uint8_t {
+  kNone, k00, k01, k02, k03, k05, k06, k07, k08, k09, k10, k12, k14, k15
+};
+
+struct GDef {
+  int code;  // x10
+  Group group;
+};
+
+// The G codes this interpreter executes. Anything else is an improper G code.
+constexpr GDef kGCodes[] = {
+    {0, Group::k01},    {10, Group::k01},   {20, Group::k01},   {30, Group::k01},
+    {40, Group::k00},   {90, Group::k00},   {100, Group::k00},  {170, Group::k02},
+    {180, Group::k02},  {190, Group::k02},  {200, Group::k06},  {210, Group::k06},
+    {280, Group::k00},  {300, Group::k00},  {310, Group::k00},  {400, Group::k07},
+    {410, Group::k07},  {420, Group::k07},  {430, Group::k08},  {440, Group::k08},
+    {450, Group::k00},  {460, Group::k00},  {470, Group::k00},  {480, Group::k00},
+    {490, Group::k08},  {520, Group::k00},  {530, Group::k00},  {540, Group::k14},
+    {550, Group::k14},  {560, Group::k14},  {570, Group::k14},  {580, Group::k14},
+    {590, Group::k14},  {610, Group::k15},  {640, Group::k15},  {650, Group::k00},
+    {660, Group::k12},  {670, Group::k12},  {800, Group::k09},  {900, Group::k03},
+    {910, Group::k03},  {920, Group::k00},  {940, Group::k05},  {950, Group::k05},
+    {980, Group::k10},  {990, Group::k10},
+};
+
+Group group_of(int code) {
+  for (const auto& d : kGCodes) {
+    if (d.code == code) return d.group;
+  }
+  return Group::kNone;
+}
+
+std::string g_name(int code) {
+  return "G" + std::to_string(code / 10) + (code % 10 ? "." + std::to_string(code % 10) : "");
+}
+
+}  // namespace
+
+double Interpreter::Impl::word_length(const WordVal& w, bool rotary) const noexcept {
+  (void)rotary;
+  if (w.is_expr || w.has_point || params.bit(3401, 0)) return w.value;
+  // Without a decimal point a length is in least input increments.
+  const double increment = modal.units == Units::kInch ? 0.0001 : 0.001;
+  return w.value * increment;
+}
+
+double Interpreter::Impl::offset_total(int axis) const noexcept {
+  double o = work_offsets[0][axis] + work_offsets[static_cast<std::size_t>(modal.work)][axis] +
+             local_shift[axis] + g92_shift[axis] + tool_pos_offset[axis];
+  if (axis == length_axis) o += length_offset;
+  return o;
+}
+
+double Interpreter::Impl::work_of(int axis, double machine_mm) const noexcept {
+  return (machine_mm - offset_total(axis)) / unit_mm();
+}
+
+double Interpreter::Impl::machine_of(int axis, double work_units) const noexcept {
+  return work_units * unit_mm() + offset_total(axis);
+}
+
+Result<void> Interpreter::Impl::collect_words(Words& words) {
+  for (const gcode::Word& w : blk.words) {
+    WordVal v;
+    v.column = w.column;
+    v.has_point = w.has_point;
+    v.is_expr = w.is_expr;
+    if (w.is_expr) {
+      auto e = eval(w.expr);
+      if (!e) return std::unexpected(e.error());
+      if (e->vacant) continue;  // a vacant variable in a word: the word is omitted
+      if (!std::isfinite(e->v)) {
+        return fail(AlarmId::kOverflow, std::string("value of ") + w.letter + " is not finite",
+                    loc(w.column));
+      }
+      v.value = e->v;
+      const gcode::ExprNode& top = blk.nodes[static_cast<std::size_t>(w.expr)];
+      v.round_in_word = top.op == gcode::Op::kFunc && top.fn == gcode::Func::kRound;
+      if (v.round_in_word) {
+        // ROUND in an address rounds to the address's least input increment.
+        auto inner = eval(top.a);
+        if (!inner) return std::unexpected(inner.error());
+        const double inc = modal.units == Units::kInch ? 0.0001 : 0.001;
+        v.value = std::round(inner->num() / inc) * inc;
+      }
+    } else {
+      v.value = w.value;
+    }
+    if (w.letter == 'G') {
+      if (words.g_count == static_cast<int>(words.g.size())) {
+        return fail(AlarmId::kGCodeConflict, "too many G codes in one block", loc(w.column));
+      }
+      const double code10 = std::round(v.value * 10.0);
+      if (std::fabs(v.value * 10.0 - code10) > 1e-6 || code10 < 0 || code10 > 9999) {
+        return fail(AlarmId::kUnknownGCode, "G" + std::to_string(v.value), loc(w.column));
+      }
+      words.g[static_cast<std::size_t>(words.g_count)] = static_cast<int>(code10);
+      words.g_col[static_cast<std::size_t>(words.g_count++)] = w.column;
+      continue;
+    }
+    if (w.letter == 'M') {
+      if (words.m_count == 3) {
+        return fail(AlarmId::kTooManyMCodes, "more than 3 M codes in one block", loc(w.column));
+      }
+      if (v.value != std::trunc(v.value) || v.value < 0 || v.value > 99999999) {
+        return fail(AlarmId::kUnknownMCode, "M" + std::to_string(v.value), loc(w.column));
+      }
+      words.m[static_cast<std::size_t>(words.m_count++)] = static_cast<int>(v.value);
+      continue;
+    }
+    auto& slot = words.slot(w.letter);
+    if (slot) {
+      return fail(AlarmId::kWordRepeated, std::string("address ") + w.letter + " twice in one block",
+                  loc(w.column));
+    }
+    slot = v;
+  }
+  return {};
+}
+
+Result<void> Interpreter::Impl::set_tool_length(const Words& words, LengthComp mode) {
+  if (mode == LengthComp::kOff) {
+    length_offset = 0.0;
+    modal.h = 0;
+    return {};
+  }
+  int h = modal.h;
+  if (words.has('H')) {
+    const double v = words.at('H').value;
+    if (v != std::trunc(v) || v < 0 || v > mc.tool_offset_count) {
+      return fail(AlarmId::kIllegalOffsetNumber, "H" + std::to_string(v), loc(words.at('H').column));
+    }
+    h = static_cast<int>(v);
+  }
+  modal.h = h;
+  const auto& t = tools[static_cast<std::size_t>(h)];
+  const double len = h == 0 ? 0.0 : t.length_geometry + t.length_wear;
+  length_offset = mode == LengthComp::kPlus ? len : -len;
+  return {};
+}
+
+// G10: programmable data input. L2 Pn: work offset n (0 = EXT, 1-6 = G54-G59);
+// L10/L11: H geometry/wear; L12/L13: D geometry/wear; L1: H wear (memory A).
+// G90 sets, G91 adds.
+Result<void> Interpreter::Impl::data_setting(const Words& words, SourceLoc where) {
+  if (!words.has('L')) return fail(AlarmId::kBadValue, "G10 needs L", where);
+  const int l = static_cast<int>(words.at('L').value);
+  const bool inc = modal.distance == Distance::kIncremental;
+  if (!words.has('P')) return fail(AlarmId::kBadValue, "G10 needs P", where);
+  const double pv = words.at('P').value;
+  if (l == 2 || l == 20) {
+    if (l == 20 || pv != std::trunc(pv) || pv < 0 || pv > 6) {
+      return fail(AlarmId::kIllegalOffsetNumber,
+                  "G10 L" + std::to_string(l) + " P" + std::to_string(pv) +
+                      ": work offsets are P0 (EXT) and P1-P6 (G54-G59)",
+                  loc(words.at('P').column));
+    }
+    AxisVec& o = work_offsets[static_cast<std::size_t>(pv)];
+    for (int i = 0; i < axis_count; ++i) {
+      const char c = axis_letter[static_cast<std::size_t>(i)];
+      if (!words.has(c)) continue;
+      const double mm = word_length(words.at(c), false) * unit_mm();
+      o[i] = inc ? o[i] + mm : mm;
+    }
+    return {};
+  }
+  if (l == 1 || (l >= 10 && l <= 13)) {
+    if (pv != std::trunc(pv) || pv < 1 || pv > mc.tool_offset_count) {
+      return fail(AlarmId::kIllegalOffsetNumber, "G10 P" + std::to_string(pv),
+                  loc(words.at('P').column));
+    }
+    if (!words.has('R')) return fail(AlarmId::kBadValue, "G10 L" + std::to_string(l) + " needs R", where);
+    auto& t = tools[static_cast<std::size_t>(pv)];
+    double* f = l == 10 ? &t.length_geometry
+                : l == 11 || l == 1 ? &t.length_wear
+                : l == 12 ? &t.radius_geometry
+                          : &t.radius_wear;
+    const double mm = word_length(words.at('R'), false) * unit_mm();
+    *f = inc ? *f + mm : mm;
+    return {};
+  }
+  return fail(AlarmId::kBadValue, "G10 L" + std::to_string(l) + " is not supported", where);
+}
+
+Result<Step> Interpreter::Impl::execute_nc(const Words& words, CommandSink& out) {
+  for (const auto& c : blk.comments) {
+    const std::string& t = blk.names[static_cast<std::size_t>(c.text)];
+    if (t.size() >= 4 && t.compare(0, 4, "MSG,") == 0) messages.push_back(t.substr(4));
+  }
+  if (blk.has_n) modal.seq = static_cast<int>(blk.n % 100000000);
+
+  // Classify the G codes.
+  bool g65 = false, g31 = false, g53 = false, g04 = false, g10 = false, g28 = false, g52 = false,
+       g92 = false, g09 = false;
+  int g45 = 0;
+  ModalState next = modal;
+  std::optional<Motion> motion_code;
+  for (int i = 0; i < words.g_count; ++i) {
+    const int code = words.g[static_cast<std::size_t>(i)];
+    const Group grp = group_of(code);
+    const SourceLoc at = loc(words.g_col[static_cast<std::size_t>(i)]);
+    if (grp == Group::kNone) return fail(AlarmId::kUnknownGCode, g_name(code), at);
+    switch (code) {
+      case 0: motion_code = Motion::kRapid; break;
+      case 10: motion_code = Motion::kLinear; break;
+      case 20: motion_code = Motion::kCwArc; break;
+      case 30: motion_code = Motion::kCcwArc; break;
+      case 40: g04 = true; break;
+      case 90: g09 = true; break;
+      case 100: g10 = true; break;
+      case 170: next.plane = PlaneSel::kXY; break;
+      case 180: next.plane = PlaneSel::kZX; break;
+      case 190: next.plane = PlaneSel::kYZ; break;
+      case 200: next.units = Units::kInch; break;
+      case 210: next.units = Units::kMetric; break;
+      case 280: g28 = true; break;
+      case 300: g28 = true; break;
+      case 310: g31 = true; break;
+      case 400: next.cutter = CutterComp::kOff; break;
+      case 410: next.cutter = CutterComp::kLeft; break;
+      case 420: next.cutter = CutterComp::kRight; break;
+      case 430: next.length = LengthComp::kPlus; break;
+      case 440: next.length = LengthComp::kMinus; break;
+      case 490: next.length = LengthComp::kOff; break;
+      case 450: case 460: case 470: case 480:
+        if (!dialect.sw.tool_position_offset) {
+          return fail(AlarmId::kUnknownGCode, g_name(code) + " (tool position offset) is not a code of this control", at);
+        }
+        g45 = code / 10;
+        break;
+      case 520: g52 = true; break;
+      case 530: g53 = true; break;
+      case 540: case 550: case 560: case 570: case 580: case 590:
+        next.work = (code - 530) / 10;
+        break;
+      case 610: next.path = PathMode::kExactStop; break;
+      case 640: next.path = PathMode::kContinuous; break;
+      case 650: g65 = true; break;
+      case 660: next.modal_macro = true; break;
+      case 670: next.modal_macro = false; break;
+      case 800: next.cycle = Cycle::kNone; break;
+      case 900: next.distance = Distance::kAbsolute; break;
+      case 910: next.distance = Distance::kIncremental; break;
+      case 920: g92 = true; break;
+      case 940: next.feed_mode = FeedMode::kPerMinute; break;
+      case 950: next.feed_mode = FeedMode::kPerRev; break;
+      case 980: next.ret = ReturnLevel::kInitial; break;
+      case 990: next.ret = ReturnLevel::kR; break;
+      default: return fail(AlarmId::kUnknownGCode, g_name(code), at);
+    }
+  }
+  const SourceLoc block_loc = loc(cur_col);
+
+  // Macro calls take every other word as an argument.
+  if (g65 || (next.modal_macro && !modal.modal_macro)) {
+    if (!words.has('P')) {
+      return fail(AlarmId::kProgramNotFound, g65 ? "G65 needs P (program number)" : "G66 needs P", block_loc);
+    }
+    const double p = words.at('P').value;
+    int repeats = 1;
+    if (words.has('L')) repeats = static_cast<int>(words.at('L').value);
+    if (p != std::trunc(p) || p < 1 || p > 99999999 || repeats < 1) {
+      return fail(AlarmId::kProgramNotFound, "P" + std::to_string(p), loc(words.at('P').column));
+    }
+    if (g65) {
+      auto c = macro_call(words, static_cast<std::int64_t>(p), repeats, false, block_loc);
+      if (!c) return std::unexpected(c.error());
+      return Step::kContinue;
+    }
+    // G66: remember the call; it runs after each move block.
+    modal_macro_program = static_cast<std::int64_t>(p);
+    modal_macro_args.fill(Value::null());
+    static constexpr char kArgs[] = "ABCDEFHIJKMQRSTUVWXYZ";
+    static constexpr int kNums[] = {1, 2, 3, 7, 8, 9, 11, 4, 5, 6, 13, 17, 18, 19, 20, 21, 22, 23, 24, 25, 26};
+    for (std::size_t i = 0; i < sizeof kNums / sizeof kNums[0]; ++i) {
+      if (words.has(kArgs[i])) modal_macro_args[static_cast<std::size_t>(kNums[i])] = Value::of(words.at(kArgs[i]).value);
+    }
+    modal.modal_macro = true;
+    return Step::kContinue;
+  }
+
+  // Addresses that mean nothing here are refused, so a typo is not ignored.
+  for (int c = 0; c < 26; ++c) {
+    const char letter = static_cast<char>('A' + c);
+    if (!words.w[static_cast<std::size_t>(c)] || axis_of_letter[static_cast<std::size_t>(c)] >= 0) continue;
+    if (std::string_view("FSTHDPQRKLIJE").find(letter) != std::string_view::npos) continue;
+    return fail(AlarmId::kIllegalAddress,
+                std::string("address ") + letter + " is not an address of this machine",
+                loc(words.at(letter).column));
+  }
+
+  // F S T
+  if (words.has('F')) {
+    const double f = words.at('F').value;
+    if (f < 0) return fail(AlarmId::kBadValue, "negative F", loc(words.at('F').column));
+    if (!(g31 && dialect.sw.skip_feed == config::SkipFeedRule::kBlockOrParam)) next.feed = f;
+  }
+  if (words.has('S')) {
+    next.spindle = words.at('S').value;
+    emit(out, canon::Spindle{next.spindle, 0});
+  }
+  if (words.has('T')) {
+    next.tool = static_cast<int>(words.at('T').value);
+    emit(out, canon::ToolSelect{next.tool});
+  }
+  if (words.has('D')) {
+    const double d = words.at('D').value;
+    if (d != std::trunc(d) || d < 0 || d > mc.tool_offset_count) {
+      return fail(AlarmId::kIllegalOffsetNumber, "D" + std::to_string(d), loc(words.at('D').column));
+    }
+    next.d = static_cast<int>(d);
+  }
+  if (next.plane != modal.plane && modal.cutter != CutterComp::kOff) {
+    return fail(AlarmId::kPlaneChangeInComp, "plane change with G41/G42 active", block_loc);
+  }
+  if (motion_code) next.motion = *motion_code;
+
+  // Commit the modal part of the block: from here on the block's words are
+  // interpreted in its own modes (G20/G21, G90/G91, G54...).
+  const ModalState before = modal;
+  modal = next;
+  auto undo = [&](Error e) -> Result<Step> {
+    modal = before;
+    return std::unexpected(std::move(e));
+  };
+  if (modal.length != before.length || (words.has('H') && modal.length != LengthComp::kOff)) {
+    auto r = set_tool_length(words, modal.length);
+    if (!r) return undo(r.error());
+  }
+  for (int i = 0; i < words.m_count; ++i) {
+    const int m = words.m[static_cast<std::size_t>(i)];
+    if (m == 3 || m == 4 || m == 5) emit(out, canon::Spindle{modal.spindle, m == 3 ? 1 : m == 4 ? -1 : 0});
+  }
+
+  bool moved = false;
+  if (g10) {
+    auto r = data_setting(words, block_loc);
+    if (!r) return undo(r.error());
+  } else if (g52 || g92) {
+    for (int i = 0; i < axis_count; ++i) {
+      const char c = axis_letter[static_cast<std::size_t>(i)];
+      if (!words.has(c)) continue;
+      const double v = word_length(words.at(c), false) * unit_mm();
+      if (g52) {
+        local_shift[i] = v;
+      } else {
+        // G92: the current position becomes v in the work system.
+        g92_shift[i] = 0.0;
+        g92_shift[i] = pos[i] - v - offset_total(i);
+      }
+    }
+  } else if (g04) {
+    auto r = dwell(words, out);
+    if (!r) return undo(r.error());
+  } else if (g28) {
+    auto r = reference_return(words, 28, out);
+    if (!r) return undo(r.error());
+    moved = true;
+  } else {
+    bool any_axis = false;
+    for (int i = 0; i < axis_count; ++i) any_axis = any_axis || words.has(axis_letter[static_cast<std::size_t>(i)]);
+    const bool arc_words = modal.motion == Motion::kCwArc || modal.motion == Motion::kCcwArc
+                               ? (words.has('I') || words.has('J') || words.has('K') || words.has('R'))
+                               : false;
+    if (g31 || any_axis || arc_words || g45 != 0) {
+      if (g45 != 0) {
+        // G45-G48: the move is extended (G45, G47) or shortened (G46, G48)
+        // by the D offset; G47/G48 by twice the offset.
+        const auto& t = tools[static_cast<std::size_t>(modal.d)];
+        const double r = modal.d == 0 ? 0.0 : t.radius_geometry + t.radius_wear;
+        const double k = (g45 == 45 ? 1.0 : g45 == 46 ? -1.0 : g45 == 47 ? 2.0 : -2.0) * r;
+        for (int i = 0; i < axis_count; ++i) {
+          const char c = axis_letter[static_cast<std::size_t>(i)];
+          if (!words.has(c)) continue;
+          const double inc = words.at(c).value;
+          const double sign = inc > 0 ? 1.0 : inc < 0 ? -1.0 : 1.0;
+          tool_pos_offset[i] -= sign * k;
+        }
+      }
+      auto m = motion(words, out, g31, g53);
+      if (!m) return undo(m.error());
+      if (*m == Step::kSync) return Step::kSync;
+      moved = true;
+    }
+  }
+  if (g09) {
+    // Exact stop for this block only: already the case for rapids; the
+    // planner ends feed moves at rest when exact_stop is set (see motion.cpp).
+  }
+
+  // M codes after the motion.
+  for (int i = 0; i < words.m_count; ++i) {
+    const int m = words.m[static_cast<std::size_t>(i)];
+    modal.last_m = m;
+    switch (m) {
+      case 0:
+        emit(out, canon::Stop{canon::StopKind::kProgramStop});
+        break;
+      case 1:
+        emit(out, canon::Stop{canon::StopKind::kOptionalStop});
+        break;
+      case 2:
+      case 30:
+        emit(out, canon::Stop{m == 2 ? canon::StopKind::kProgramEnd : canon::StopKind::kRewindEnd});
+        ++parts_count;
+        ended = true;
+        return Step::kEnd;
+      case 98: {
+        if (!words.has('P')) return fail(AlarmId::kProgramNotFound, "M98 needs P", block_loc);
+        const double p = words.at('P').value;
+        if (p != std::trunc(p) || p < 1 || p > 99999999) {
+          return fail(AlarmId::kProgramNotFound, "M98 P" + std::to_string(p), loc(words.at('P').column));
+        }
+        auto program = static_cast<std::int64_t>(p);
+        int repeats = 1;
+        if (words.has('L')) {
+          repeats = static_cast<int>(words.at('L').value);
+        } else if (program > 9999) {
+          // M98 Pxxxxyyyy: the first digits repeat, the last four name the program.
+          repeats = static_cast<int>(program / 10000);
+          program %= 10000;
+        }
+        if (repeats < 1) return Step::kContinue;
+        auto c = call(program, repeats, false, block_loc);
+        if (!c) return std::unexpected(c.error());
+        return Step::kContinue;
+      }
+      case 99: {
+        std::optional<std::int64_t> label;
+        if (words.has('P')) label = static_cast<std::int64_t>(words.at('P').value);
+        return return_from_sub(label, block_loc);
+      }
+      case 3: case 4: case 5:
+        break;
+      default:
+        emit(out, canon::MCode{m});
+        break;
+    }
+  }
+
+  // G66: the modal macro runs after each block that moved.
+  if (moved && modal.modal_macro && modal_macro_program != 0 &&
+      !(frames.size() > 1 && frames.back().modal_call)) {
+    Words none;
+    auto c = macro_call(none, modal_macro_program, 1, true, block_loc);
+    if (!c) return std::unexpected(c.error());
+  }
+  return Step::kContinue;
+}
+
+// G65 / G66: argument specification I (A B C D E F H I J K M Q R S T U V W
+// X Y Z -> #1..#26). A value without decimal point is taken as written.
+Result<void> Interpreter::Impl::macro_call(const Words& words, std::int64_t program, int repeats,
+                                           bool modal_call, SourceLoc where) {
+  std::array<Value, kLocalCount + 1> args{};
+  if (modal_call) {
+    args = modal_macro_args;
+  } else {
+    static constexpr char kArgs[] = "ABCDEFHIJKMQRSTUVWXYZ";
+    static constexpr int kNums[] = {1, 2, 3, 7, 8, 9, 11, 4, 5, 6, 13, 17, 18, 19, 20, 21, 22, 23, 24, 25, 26};
+    for (std::size_t i = 0; i < sizeof kNums / sizeof kNums[0]; ++i) {
+      if (words.has(kArgs[i])) args[static_cast<std::size_t>(kNums[i])] = Value::of(words.at(kArgs[i]).value);
+    }
+    if (words.has('G')) {
+      return fail(AlarmId::kIllegalArgumentAddress, "G as a macro argument", where);
+    }
+    // Argument specification II: I J K repeated (the parser keeps one word
+    // per address, so repeated I/J/K are refused as repeated words).
+  }
+  auto c = call(program, repeats, true, where);
+  if (!c) return c;
+  frames.back().modal_call = modal_call;
+  vars.push_level();
+  auto& locals = vars.locals();
+  locals = args;
+  return {};
+}
+
+void Interpreter::Impl::emit(CommandSink& out, canon::Command cmd) {
+  out.emit(canon::Stamped{std::move(cmd), cur_line});
+}
+
+}  // namespace skipnc::interp

@@ -1,0 +1,114 @@
+#include "interpreter/variables.hpp"
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+
+#include <fcntl.h>
+#include <unistd.h>
+
+namespace skipnc::interp {
+
+VariableStore::VariableStore() { locals_.emplace_back(); }
+
+void VariableStore::push_level() { locals_.emplace_back(); }
+
+void VariableStore::pop_level() {
+  if (locals_.size() > 1) locals_.pop_back();
+}
+
+Value VariableStore::get(int n) const noexcept {
+  if (is_local(n)) return locals_.back()[static_cast<std::size_t>(n)];
+  if (is_common(n)) return common_[static_cast<std::size_t>(n - 100)];
+  if (is_persistent(n)) return persistent_[static_cast<std::size_t>(n - 500)];
+  return Value::null();
+}
+
+void VariableStore::set(int n, Value v) noexcept {
+  if (is_local(n)) {
+    locals_.back()[static_cast<std::size_t>(n)] = v;
+  } else if (is_common(n)) {
+    common_[static_cast<std::size_t>(n - 100)] = v;
+  } else if (is_persistent(n)) {
+    persistent_[static_cast<std::size_t>(n - 500)] = v;
+    persistent_dirty_ = true;
+  }
+}
+
+Value VariableStore::get_named(const std::string& name) const noexcept {
+  if (auto it = named_.find(name); it != named_.end()) return it->second;
+  return Value::null();
+}
+
+void VariableStore::set_named(const std::string& name, Value v) { named_[name] = v; }
+
+void VariableStore::clear_common() noexcept { common_.fill(Value::null()); }
+
+// File format: one line per non-vacant variable, "#<n> = <value>" with 17
+// significant digits; comment lines start with ';'. Unknown content is an
+// error with its line, so a damaged file is never half-used.
+Result<void> load_persistent(const std::string& path, std::array<Value, 500>& out) {
+  std::ifstream in(path);
+  if (!in) {
+    if (errno == ENOENT) return {};  // first run: nothing kept yet
+    return fail(AlarmId::kConfig, "cannot read persistent variables '" + path + "'");
+  }
+  std::array<Value, 500> vals{};
+  std::string line;
+  std::uint32_t lineno = 0;
+  while (std::getline(in, line)) {
+    ++lineno;
+    if (line.empty() || line[0] == ';') continue;
+    int n = 0;
+    double v = 0.0;
+    char tail = 0;
+    if (std::sscanf(line.c_str(), "#%d = %lf %c", &n, &v, &tail) != 2 || n < 500 || n > 999) {
+      return fail(AlarmId::kConfig,
+                  "persistent variable file '" + path + "': line " + std::to_string(lineno) +
+                      " is not '#<500-999> = <number>'",
+                  SourceLoc{{}, lineno, 1});
+    }
+    vals[static_cast<std::size_t>(n - 500)] = Value::of(v);
+  }
+  out = vals;
+  return {};
+}
+
+Result<void> save_persistent(const std::string& path, const std::array<Value, 500>& values) {
+  std::string text = "; skipnc persistent macro variables #500-#999\n";
+  char buf[64];
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    if (values[i].vacant) continue;
+    std::snprintf(buf, sizeof buf, "#%zu = %.17g\n", i + 500, values[i].v);
+    text += buf;
+  }
+  const std::string tmp = path + ".tmp";
+  const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  if (fd < 0) {
+    return fail(AlarmId::kFileAccess, "cannot write '" + tmp + "': " + std::strerror(errno));
+  }
+  std::size_t done = 0;
+  while (done < text.size()) {
+    const ssize_t w = ::write(fd, text.data() + done, text.size() - done);
+    if (w < 0) {
+      if (errno == EINTR) continue;
+      ::close(fd);
+      ::unlink(tmp.c_str());
+      return fail(AlarmId::kFileAccess, "cannot write '" + tmp + "': " + std::strerror(errno));
+    }
+    done += static_cast<std::size_t>(w);
+  }
+  if (::fsync(fd) != 0 || ::close(fd) != 0) {
+    ::unlink(tmp.c_str());
+    return fail(AlarmId::kFileAccess, "cannot flush '" + tmp + "'");
+  }
+  if (std::rename(tmp.c_str(), path.c_str()) != 0) {
+    ::unlink(tmp.c_str());
+    return fail(AlarmId::kFileAccess, "cannot replace '" + path + "': " + std::strerror(errno));
+  }
+  return {};
+}
+
+}  // namespace skipnc::interp

@@ -1,0 +1,72 @@
+// Custom macro variables: local (#1-#33, one set per macro call level),
+// common (#100-#199, #500-#999) and the vacant value. System variables are
+// answered by the interpreter, which knows the state they describe.
+#pragma once
+
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include "core/diag.hpp"
+
+namespace skipnc::interp {
+
+// A macro value: a number, or vacant (#0, never assigned).
+struct Value {
+  double v = 0.0;
+  bool vacant = true;
+  static constexpr Value of(double x) noexcept { return Value{x, false}; }
+  static constexpr Value null() noexcept { return Value{0.0, true}; }
+  // In arithmetic a vacant value counts as 0.
+  constexpr double num() const noexcept { return vacant ? 0.0 : v; }
+  friend constexpr bool operator==(const Value&, const Value&) = default;
+};
+
+inline constexpr int kLocalCount = 33;
+
+class VariableStore {
+ public:
+  VariableStore();
+
+  // Call levels: 0 is the main program; each G65/G66 call opens one.
+  void push_level();
+  void pop_level();
+  int level() const noexcept { return static_cast<int>(locals_.size()) - 1; }
+  std::array<Value, kLocalCount + 1>& locals() noexcept { return locals_.back(); }
+
+  // Ordinary variables (not system): #1-#33, #100-#199, #500-#999.
+  static bool is_local(int n) noexcept { return n >= 1 && n <= kLocalCount; }
+  static bool is_common(int n) noexcept { return n >= 100 && n <= 199; }
+  static bool is_persistent(int n) noexcept { return n >= 500 && n <= 999; }
+  Value get(int n) const noexcept;
+  void set(int n, Value v) noexcept;
+
+  // Named variables (#<name>), created on first write.
+  Value get_named(const std::string& name) const noexcept;
+  void set_named(const std::string& name, Value v);
+
+  // Reset clears #100-#199 (Fanuc: vacant at reset); #500-#999 are kept.
+  void clear_common() noexcept;
+  const std::array<Value, 500>& persistent() const noexcept { return persistent_; }
+  std::array<Value, 500>& persistent() noexcept { return persistent_; }
+  bool persistent_dirty() const noexcept { return persistent_dirty_; }
+
+ private:
+  std::vector<std::array<Value, kLocalCount + 1>> locals_;
+  std::array<Value, 100> common_{};       // #100-#199
+  std::array<Value, 500> persistent_{};   // #500-#999
+  bool persistent_dirty_ = false;
+  std::unordered_map<std::string, Value> named_;
+};
+
+// Reads and writes the persistent-variable file (#500-#999). Writing is
+// atomic: a temporary file in the same folder, flushed and renamed.
+[[nodiscard]] Result<void> load_persistent(const std::string& path, std::array<Value, 500>& out);
+[[nodiscard]] Result<void> save_persistent(const std::string& path,
+                                           const std::array<Value, 500>& values);
+
+}  // namespace skipnc::interp

@@ -1,0 +1,216 @@
+#include "kernel/kernel.hpp"
+
+#include <cmath>
+#include <type_traits>
+
+namespace skipnc::kernel {
+
+Kernel::Kernel(const KernelConfig& cfg)
+    : cfg_(cfg), planner_(cfg.limits, cfg.queue_capacity), interp_(planner_) {}
+
+void Kernel::set_position(const AxisVec& machine) noexcept {
+  interp_.set_position(machine);
+  cmd_ = machine;
+  cmd_prev_ = machine;
+  actual_prev_ = machine;
+}
+
+void Kernel::push(const canon::Stamped& stamped) {
+  planner::Move m;
+  m.line = stamped.line;
+  m.tag = next_tag_++;
+  if (next_tag_ == 0) next_tag_ = 1;
+  std::visit(
+      [&](const auto& c) {
+        using T = std::decay_t<decltype(c)>;
+        if constexpr (std::is_same_v<T, canon::Rapid>) {
+          m.kind = c.linear ? planner::Move::Kind::kRapid : planner::Move::Kind::kRapidNonLinear;
+          m.target = c.target;
+          m.exact_stop = true;
+        } else if constexpr (std::is_same_v<T, canon::Feed>) {
+          m.kind = planner::Move::Kind::kLine;
+          m.target = c.target;
+          m.feed_mm_s = c.feed_mm_per_min / 60.0;
+          m.exact_stop = c.exact_stop;
+        } else if constexpr (std::is_same_v<T, canon::Arc>) {
+          m.kind = planner::Move::Kind::kArc;
+          m.target = c.target;
+          m.feed_mm_s = c.feed_mm_per_min / 60.0;
+          m.center0 = c.center0;
+          m.center1 = c.center1;
+          m.plane = c.plane;
+          m.ccw = c.ccw;
+          m.extra_turns = c.extra_turns;
+          m.exact_stop = c.exact_stop;
+        } else if constexpr (std::is_same_v<T, canon::Dwell>) {
+          m.kind = planner::Move::Kind::kDwell;
+          m.target = planner_.tail_position();
+          m.dwell_s = c.seconds;
+        } else if constexpr (std::is_same_v<T, canon::Skip>) {
+          m.kind = planner::Move::Kind::kLine;
+          m.target = c.target;
+          m.feed_mm_s = c.feed_mm_per_min / 60.0;
+          m.exact_stop = true;
+          m.no_accel = !c.spec.accel;
+          skip_ = SkipResult{};
+          skip_.active = true;
+          skip_.spec = c.spec;
+          skip_.target = c.target;
+          skip_.line = stamped.line;
+          skip_tag_ = m.tag;
+          skip_started_ = false;
+          skip_stopping_ = false;
+          skip_latch_pending_ = false;
+          torque_since_s_ = -1.0;
+        } else {
+          m.kind = planner::Move::Kind::kDwell;  // not reached: other commands are not queued
+          m.dwell_s = 0.0;
+          m.target = planner_.tail_position();
+        }
+      },
+      stamped.cmd);
+  planner_.push(m);
+}
+
+bool Kernel::input_active(int index, bool level) const noexcept {
+  (void)index;
+  return level != skip_.spec.active_low;
+}
+
+void Kernel::trigger(double frac, const TickInput& in, int input, bool torque) noexcept {
+  skip_.triggered = true;
+  skip_.input_index = input;
+  skip_.torque_reached = torque;
+  skip_.time_s = cfg_.clock.seconds(tick_, frac);
+  skip_.latch_actual = lerp(actual_prev_, in.actual, frac);
+  skip_.latch_command = lerp(cmd_prev_, cmd_, frac);
+  if (torque) {
+    // The block ends from the mechanical stop position: the command follows
+    // up to where the axis is held, and that is what is stored.
+    skip_.latch_machine = in.actual;
+    interp_.set_position(in.actual);
+    cmd_ = in.actual;
+    skip_stopping_ = true;
+    return;
+  }
+  skip_.latch_machine = skip_.spec.servo_delay_comp ? skip_.latch_actual : skip_.latch_command;
+  if (skip_.spec.latch == canon::SkipLatch::kSampled && skip_.spec.latch_delay_s > 0.0) {
+    skip_latch_pending_ = true;
+    skip_latch_due_s_ = skip_.time_s + skip_.spec.latch_delay_s;
+  }
+  if (skip_.spec.stop == canon::SkipStop::kImmediate) {
+    interp_.stop_now();
+  } else {
+    // Linear deceleration at the path's acceleration limit (the smallest
+    // a_i / |u_i| over the moving axes).
+    const AxisVec& v = interp_.velocity();
+    const double speed = norm(v, cfg_.limits.axis_count);
+    double a = 0.0;
+    if (speed > 0.0) {
+      a = 1e300;
+      for (int i = 0; i < cfg_.limits.axis_count; ++i) {
+        const double u = std::fabs(v[i]) / speed;
+        if (u > 1e-12) a = std::fmin(a, cfg_.limits.axes[static_cast<std::size_t>(i)].max_accel_mm_s2 / u);
+      }
+    }
+    if (a > 0.0 && a < 1e300) {
+      interp_.decelerate(a);
+    } else {
+      interp_.stop_now();
+    }
+  }
+  skip_stopping_ = true;
+}
+
+void Kernel::monitor_skip(const TickInput& in) noexcept {
+  if (!skip_.active || skip_.done) return;
+  const canon::SkipSpec& spec = skip_.spec;
+  if (!skip_started_) {
+    if (interp_.tag() == skip_tag_) {
+      skip_started_ = true;
+      // An input already active when the block starts.
+      if (!spec.ignore_inputs && !spec.edge && spec.active_at_start_ends) {
+        for (int i = 0; i < spec.input_count; ++i) {
+          if (input_active(i, signals_.get(spec.inputs[i]))) {
+            trigger(0.0, in, i, false);
+            return;
+          }
+        }
+      }
+    } else if (interp_.idle()) {
+      // The skip move had no length: it ends at once, without a signal.
+      skip_started_ = true;
+    } else {
+      return;
+    }
+  }
+  if (!skip_.triggered) {
+    if (!spec.ignore_inputs) {
+      for (int e = 0; e < in.edge_count; ++e) {
+        const SignalEdge& edge = in.edges[static_cast<std::size_t>(e)];
+        for (int i = 0; i < spec.input_count; ++i) {
+          if (!(edge.addr == spec.inputs[i]) || !input_active(i, edge.level)) continue;
+          // An edge into the active state: level and edge detection alike.
+          const double frac = spec.latch == canon::SkipLatch::kExact ? edge.frac : 1.0;
+          trigger(frac, in, i, false);
+          return;
+        }
+      }
+    }
+    if (spec.torque_ends && spec.torque_axis >= 0) {
+      const double torque = std::fabs(in.torque_pct[spec.torque_axis]);
+      const double now_s = cfg_.clock.seconds(tick_);
+      if (torque >= spec.torque_limit_pct) {
+        if (torque_since_s_ < 0.0) torque_since_s_ = now_s;
+        if (now_s - torque_since_s_ >= spec.torque_delay_s - 1e-12) {
+          trigger(1.0, in, -1, true);
+          return;
+        }
+      } else {
+        torque_since_s_ = -1.0;
+      }
+    }
+  }
+  if (skip_latch_pending_) {
+    const double t0 = cfg_.clock.seconds(tick_ - 1);
+    const double t1 = cfg_.clock.seconds(tick_);
+    if (skip_latch_due_s_ <= t1) {
+      const double frac = std::fmin(1.0, std::fmax(0.0, (skip_latch_due_s_ - t0) / (t1 - t0)));
+      skip_.latch_actual = lerp(actual_prev_, in.actual, frac);
+      skip_.latch_command = lerp(cmd_prev_, cmd_, frac);
+      skip_.latch_machine =
+          spec.servo_delay_comp ? skip_.latch_actual : skip_.latch_command;
+      skip_.time_s = skip_latch_due_s_;
+      skip_latch_pending_ = false;
+    }
+  }
+}
+
+void Kernel::tick(const TickInput& in, TickOutput& out) noexcept {
+  ++tick_;
+  monitor_skip(in);
+  for (int e = 0; e < in.edge_count; ++e) {
+    const SignalEdge& edge = in.edges[static_cast<std::size_t>(e)];
+    signals_.set(edge.addr, edge.level);
+  }
+  cmd_prev_ = cmd_;
+  cmd_ = interp_.tick();
+  actual_prev_ = in.actual;
+  bool inpos = true;
+  for (int i = 0; i < cfg_.limits.axis_count; ++i) {
+    inpos = inpos && std::fabs(cmd_[i] - in.actual[i]) <= cfg_.in_position_mm;
+  }
+  in_position_ = inpos;
+  if (skip_.active && !skip_.done && skip_started_ && !skip_latch_pending_ &&
+      interp_.idle() && in_position_) {
+    skip_.done = true;
+    skip_.stop_position = cmd_;
+  }
+  out.commanded = cmd_;
+  out.velocity = interp_.velocity();
+  out.path_speed = interp_.path_speed();
+  out.line = interp_.line();
+  out.skip_active = skip_.active && !skip_.done;
+}
+
+}  // namespace skipnc::kernel

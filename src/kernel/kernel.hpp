@@ -1,0 +1,124 @@
+// The kernel: motion queue, interpolator and skip monitor behind one call per
+// servo period. This is the real-time boundary: tick() is noexcept, does not
+// allocate and does no I/O; its capacity is fixed at construction.
+//
+// Timing contract, per servo period k (time t_k = k * period):
+//   inputs:  actual axis positions at t_k, motor torque at t_k, and every
+//            input-signal edge in (t_{k-1}, t_k] with its exact instant;
+//   outputs: the commanded position for t_{k+1}.
+// Between samples the kernel takes actual and commanded positions as linear
+// in time, so a latch is placed at the edge's instant inside the period.
+#pragma once
+
+#include <array>
+#include <cstdint>
+
+#include "canon/canon.hpp"
+#include "core/axes.hpp"
+#include "core/time.hpp"
+#include "interpolator/interpolator.hpp"
+#include "kernel/signals.hpp"
+#include "planner/planner.hpp"
+
+namespace skipnc::kernel {
+
+struct SignalEdge {
+  canon::SignalAddr addr;
+  bool level = false;  // the level after the edge
+  double frac = 1.0;   // instant inside the period: t_{k-1} + frac * period, frac in (0, 1]
+};
+
+struct TickInput {
+  AxisVec actual;
+  AxisVec torque_pct;
+  static constexpr int kMaxEdges = 32;
+  int edge_count = 0;
+  std::array<SignalEdge, kMaxEdges> edges{};
+};
+
+struct TickOutput {
+  AxisVec commanded;      // position for the next period
+  AxisVec velocity;       // commanded velocity, mm/s
+  double path_speed = 0.0;
+  std::uint32_t line = 0; // source line of the active motion
+  bool skip_active = false;
+};
+
+struct SkipResult {
+  bool active = false;      // a skip block is queued or running
+  bool done = false;        // finished: triggered or reached its end point, and at rest
+  bool triggered = false;
+  bool torque_reached = false;
+  int input_index = -1;
+  double time_s = 0.0;      // instant of the latch
+  AxisVec latch_machine;    // stored position (machine coordinates)
+  AxisVec latch_actual;     // actual position at the signal instant
+  AxisVec latch_command;    // commanded position at the signal instant
+  AxisVec stop_position;    // commanded position where the axes came to rest
+  canon::SkipSpec spec;
+  AxisVec target;
+  std::uint32_t line = 0;
+};
+
+struct KernelConfig {
+  planner::Limits limits;
+  ServoClock clock;
+  std::size_t queue_capacity = 256;
+  double in_position_mm = 0.0005;
+};
+
+class Kernel {
+ public:
+  explicit Kernel(const KernelConfig& cfg);
+
+  // --- outside the tick -------------------------------------------------
+  // Room for one more block (a block may queue a few moves, e.g. G28).
+  bool can_accept() const noexcept {
+    return planner_.size() + 4 <= cfg_.queue_capacity && !skip_.active;
+  }
+  // Queues a motion or dwell command (other commands are not the kernel's).
+  void push(const canon::Stamped& cmd);
+  // Sets the position of an idle machine (start-up, after a follow-up).
+  void set_position(const AxisVec& machine) noexcept;
+
+  // --- the tick -----------------------------------------------------------
+  void tick(const TickInput& in, TickOutput& out) noexcept;
+
+  // --- state ---------------------------------------------------------------
+  Tick now() const noexcept { return tick_; }
+  const ServoClock& clock() const noexcept { return cfg_.clock; }
+  // No motion queued or running and every axis within the in-position width.
+  bool idle() const noexcept { return motion_idle() && in_position_; }
+  bool motion_idle() const noexcept { return interp_.idle(); }
+  const SkipResult& skip() const noexcept { return skip_; }
+  void clear_skip() noexcept { skip_ = SkipResult{}; }
+  const AxisVec& command() const noexcept { return cmd_; }
+  const SignalImage& signals() const noexcept { return signals_; }
+  // Sets a signal outside the tick (initial scene state).
+  void preset_signal(const canon::SignalAddr& a, bool on) noexcept { signals_.set(a, on); }
+
+ private:
+  bool input_active(int index, bool level) const noexcept;
+  void monitor_skip(const TickInput& in) noexcept;
+  void trigger(double frac, const TickInput& in, int input, bool torque) noexcept;
+
+  KernelConfig cfg_;
+  planner::Planner planner_;
+  interp::Interpolator interp_;
+  SignalImage signals_;
+  Tick tick_ = 0;
+  AxisVec cmd_;        // command for t_k (output at tick k-1)
+  AxisVec cmd_prev_;   // command for t_{k-1}
+  AxisVec actual_prev_;
+  bool in_position_ = true;
+  std::uint32_t next_tag_ = 1;
+  std::uint32_t skip_tag_ = 0;
+  SkipResult skip_;
+  bool skip_started_ = false;
+  bool skip_stopping_ = false;
+  bool skip_latch_pending_ = false;   // sampled latch: waiting for the delay
+  double skip_latch_due_s_ = 0.0;
+  double torque_since_s_ = -1.0;
+};
+
+}  // namespace skipnc::kernel

@@ -1,0 +1,130 @@
+#include "machine/plant.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace skipnc::machine {
+
+Plant::Plant(const config::MachineConfig& m, const Scene& scene, ServoClock clock)
+    : m_(m), scene_(scene), clock_(clock), n_(m.axis_count()) {
+  for (int i = 0; i < n_; ++i) {
+    const double kp = m.axes[static_cast<std::size_t>(i)].kp_per_s;
+    decay_[static_cast<std::size_t>(i)] = kp > 0 ? std::exp(-kp * clock_.period_s()) : 0.0;
+  }
+  auto signal_for = [&](const canon::SignalAddr& a) -> Signal& {
+    for (auto& s : signals_) {
+      if (s.addr == a) return s;
+    }
+    signals_.push_back(Signal{a, false, {}});
+    return signals_.back();
+  };
+  for (std::size_t i = 0; i < scene_.triggers.size(); ++i) {
+    sources_.push_back(Source{true, i, false});
+    signal_for(scene_.triggers[i].signal).sources.push_back(sources_.size() - 1);
+  }
+  for (std::size_t i = 0; i < scene_.pulses.size(); ++i) {
+    sources_.push_back(Source{false, i, false});
+    signal_for(scene_.pulses[i].signal).sources.push_back(sources_.size() - 1);
+  }
+  events_.reserve(sources_.size() * 2 + 4);
+}
+
+void Plant::reset(const AxisVec& position) {
+  actual_ = position;
+  torque_ = AxisVec{};
+  for (auto& s : sources_) {
+    if (s.is_trigger) {
+      const Trigger& t = scene_.triggers[s.index];
+      s.on = trigger_on(t, actual_[t.axis]);
+    } else {
+      const Pulse& p = scene_.pulses[s.index];
+      s.on = p.at_time_s <= 0.0 && p.duration_s > 0.0;
+    }
+  }
+  for (auto& sig : signals_) {
+    sig.level = false;
+    for (auto k : sig.sources) sig.level = sig.level || sources_[k].on;
+  }
+}
+
+void Plant::advance(Tick k, const AxisVec& from, const AxisVec& to,
+                    kernel::TickInput& in) noexcept {
+  const double T = clock_.period_s();
+  const AxisVec before = actual_;
+  for (int i = 0; i < n_; ++i) {
+    const auto& ax = m_.axes[static_cast<std::size_t>(i)];
+    const double kp = ax.kp_per_s;
+    double a1;
+    if (kp <= 0.0) {
+      a1 = to[i];  // ideal servo: the axis is where it is commanded
+    } else {
+      // e' = (1 - ff) * vc - kp * e, exact over the period.
+      const double vc = (to[i] - from[i]) / T;
+      const double e0 = from[i] - actual_[i];
+      const double ess = (1.0 - ax.feedforward) * vc / kp;
+      const double e1 = ess + (e0 - ess) * decay_[static_cast<std::size_t>(i)];
+      a1 = to[i] - e1;
+    }
+    for (const Stop& st : scene_.stops) {
+      if (st.axis != i) continue;
+      if (st.decreasing ? (a1 < st.at && before[i] >= st.at) : (a1 > st.at && before[i] <= st.at)) {
+        a1 = st.at;
+      } else if (st.decreasing ? (before[i] >= st.at && a1 < st.at) : false) {
+        a1 = st.at;
+      }
+    }
+    actual_[i] = a1;
+    const double fe = to[i] - a1;
+    torque_[i] = std::clamp(ax.torque_pct_per_mm * fe, -ax.torque_max_pct, ax.torque_max_pct);
+  }
+  in.actual = actual_;
+  in.torque_pct = torque_;
+  in.edge_count = 0;
+  if (sources_.empty()) return;
+
+  // Source events inside the period, in time order.
+  events_.clear();
+  const double t0 = clock_.seconds(k - 1);
+  for (std::size_t s = 0; s < sources_.size(); ++s) {
+    const Source& src = sources_[s];
+    if (src.is_trigger) {
+      const Trigger& t = scene_.triggers[src.index];
+      const double p0 = before[t.axis], p1 = actual_[t.axis];
+      const bool on1 = trigger_on(t, p1);
+      if (on1 != src.on) {
+        double frac = 1.0;
+        if (p1 != p0) frac = std::clamp((t.at - p0) / (p1 - p0), 0.0, 1.0);
+        if (frac <= 0.0) frac = std::nextafter(0.0, 1.0);
+        events_.push_back(Event{frac, s, on1});
+      }
+    } else {
+      const Pulse& p = scene_.pulses[src.index];
+      const double on_t = p.at_time_s, off_t = p.at_time_s + p.duration_s;
+      auto frac_of = [&](double t) { return (t - t0) / T; };
+      const double f_on = frac_of(on_t), f_off = frac_of(off_t);
+      if (p.duration_s > 0.0 && f_on > 0.0 && f_on <= 1.0) events_.push_back(Event{f_on, s, true});
+      if (p.duration_s > 0.0 && f_off > 0.0 && f_off <= 1.0) events_.push_back(Event{f_off, s, false});
+    }
+  }
+  if (events_.empty()) return;
+  std::sort(events_.begin(), events_.end(),
+            [](const Event& a, const Event& b) { return a.frac < b.frac; });
+  for (const Event& e : events_) {
+    sources_[e.source].on = e.on;
+    for (auto& sig : signals_) {
+      bool level = false;
+      bool mine = false;
+      for (auto idx : sig.sources) {
+        level = level || sources_[idx].on;
+        mine = mine || idx == e.source;
+      }
+      if (!mine || level == sig.level) continue;
+      sig.level = level;
+      if (in.edge_count < kernel::TickInput::kMaxEdges) {
+        in.edges[static_cast<std::size_t>(in.edge_count++)] = kernel::SignalEdge{sig.addr, level, e.frac};
+      }
+    }
+  }
+}
+
+}  // namespace skipnc::machine

@@ -1,0 +1,78 @@
+// The simulated plant: one servo axis per machine axis, and the scene's
+// signal sources and stops. It produces exactly what a real machine gives
+// the kernel each period: actual positions, motor torque and input edges
+// with their instants.
+//
+// Servo model (per axis): the command ramps linearly over the period; the
+// axis velocity is feedforward * command velocity + kp * following error,
+// integrated exactly over the period. Between samples the actual position is
+// taken as linear, and signal edges are placed on that line. A stop clamps
+// the axis; torque is torque_per_mm * following error, up to torque_max.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "config/machine_config.hpp"
+#include "core/axes.hpp"
+#include "core/time.hpp"
+#include "kernel/kernel.hpp"
+#include "machine/scene.hpp"
+
+namespace skipnc::machine {
+
+class Plant {
+ public:
+  Plant(const config::MachineConfig& m, const Scene& scene, ServoClock clock);
+
+  void reset(const AxisVec& position);
+  // Levels of the scene's signals at the present state (for the kernel's image).
+  template <class F>
+  void for_each_signal(F&& f) const {
+    for (const auto& s : signals_) f(s.addr, s.level);
+  }
+  // Advances from t_{k-1} to t_k while the command ramps from `from` to `to`,
+  // and fills `in` for the kernel's tick k.
+  void advance(Tick k, const AxisVec& from, const AxisVec& to, kernel::TickInput& in) noexcept;
+
+  const AxisVec& actual() const noexcept { return actual_; }
+  const AxisVec& torque() const noexcept { return torque_; }
+  // Is the signal at `index` (scene order of distinct signals) on?
+  std::size_t signal_count() const noexcept { return signals_.size(); }
+  const canon::SignalAddr& signal_addr(std::size_t i) const noexcept { return signals_[i].addr; }
+  bool signal_level(std::size_t i) const noexcept { return signals_[i].level; }
+
+ private:
+  struct Source {
+    bool is_trigger = true;
+    std::size_t index = 0;  // into scene triggers / pulses
+    bool on = false;
+  };
+  struct Signal {
+    canon::SignalAddr addr;
+    bool level = false;
+    std::vector<std::size_t> sources;  // indices into sources_
+  };
+  bool trigger_on(const Trigger& t, double pos) const noexcept {
+    return t.decreasing ? pos < t.at : pos > t.at;
+  }
+
+  const config::MachineConfig& m_;
+  Scene scene_;
+  ServoClock clock_;
+  int n_ = 0;
+  AxisVec actual_;
+  AxisVec torque_;
+  std::array<double, kMaxAxes> decay_{};  // exp(-kp * T)
+  std::vector<Source> sources_;
+  std::vector<Signal> signals_;
+  struct Event {
+    double frac;
+    std::size_t source;
+    bool on;
+  };
+  std::vector<Event> events_;  // reserved once; reused each period
+};
+
+}  // namespace skipnc::machine

@@ -1,0 +1,155 @@
+#include "machine/scene.hpp"
+
+#include <fstream>
+#include <sstream>
+
+#include "config/skip_inputs.hpp"
+#include "config/toml_util.hpp"
+
+namespace skipnc::machine {
+
+using config::check_keys;
+using config::config_error;
+using config::get_number;
+using config::get_string;
+
+namespace {
+
+Result<canon::SignalAddr> signal_of(const toml::table& t, std::string_view origin,
+                                    const config::Dialect& d, const config::Parameters& p,
+                                    std::string& name) {
+  const auto* n = t.get("signal");
+  if (!n) return config_error(t, origin, "needs signal = \"X0.4\" (or SKIP, SKIP1..SKIP12)");
+  auto s = get_string(*n, origin, "signal");
+  if (!s) return std::unexpected(s.error());
+  auto a = config::parse_signal_name(*s, d, p);
+  if (!a) {
+    return config_error(*n, origin,
+                        "signal '" + *s + "' is not X<0-127>.<0-7>, G<0-511>.<0-7>, SKIP or SKIP1..SKIP12");
+  }
+  name = *s;
+  return *a;
+}
+
+Result<int> axis_of(const toml::table& t, std::string_view origin, const config::MachineConfig& m) {
+  const auto* n = t.get("axis");
+  if (!n) return config_error(t, origin, "needs axis = \"X\" (a machine axis)");
+  auto s = get_string(*n, origin, "axis");
+  if (!s) return std::unexpected(s.error());
+  const int i = s->size() == 1 ? m.axis_index((*s)[0]) : -1;
+  if (i < 0) return config_error(*n, origin, "axis '" + *s + "' is not an axis of this machine");
+  return i;
+}
+
+Result<bool> direction_of(const toml::table& t, std::string_view origin) {
+  const auto* n = t.get("direction");
+  if (!n) return config_error(t, origin, "needs direction = \"decreasing\" or \"increasing\"");
+  auto s = get_string(*n, origin, "direction");
+  if (!s) return std::unexpected(s.error());
+  if (*s == "decreasing") return true;
+  if (*s == "increasing") return false;
+  return config_error(*n, origin, "direction must be \"decreasing\" or \"increasing\"");
+}
+
+Result<double> number_of(const toml::table& t, std::string_view key, std::string_view origin,
+                         double min, double max) {
+  const auto* n = t.get(key);
+  if (!n) return config_error(t, origin, "needs " + std::string(key));
+  return get_number(*n, origin, key, min, max);
+}
+
+template <class F>
+Result<void> each_table(const toml::table& root, std::string_view key, std::string_view origin,
+                        F&& f) {
+  const auto* n = root.get(key);
+  if (!n) return {};
+  const auto* arr = n->as_array();
+  if (!arr) return config_error(*n, origin, "[[" + std::string(key) + "]] must be an array of tables");
+  for (const auto& e : *arr) {
+    const auto* t = e.as_table();
+    if (!t) return config_error(e, origin, "[[" + std::string(key) + "]] must be a table");
+    auto r = f(*t);
+    if (!r) return r;
+  }
+  return {};
+}
+
+}  // namespace
+
+Result<Scene> parse_scene(std::string_view text, std::string_view origin,
+                          const config::MachineConfig& m, const config::Dialect& d,
+                          const config::Parameters& p) {
+  auto parsed = config::parse_toml(text, origin);
+  if (!parsed) return std::unexpected(parsed.error());
+  const toml::table& root = *parsed;
+  auto keys = check_keys(root, {"trigger", "pulse", "stop"}, origin, "a scene file");
+  if (!keys) return std::unexpected(keys.error());
+  Scene s;
+  s.origin = std::string(origin);
+  auto r = each_table(root, "trigger", origin, [&](const toml::table& t) -> Result<void> {
+    auto k = check_keys(t, {"signal", "axis", "at", "direction"}, origin, "[[trigger]]");
+    if (!k) return k;
+    Trigger tr;
+    auto sig = signal_of(t, origin, d, p, tr.signal_name);
+    if (!sig) return std::unexpected(sig.error());
+    tr.signal = *sig;
+    auto ax = axis_of(t, origin, m);
+    if (!ax) return std::unexpected(ax.error());
+    tr.axis = *ax;
+    auto at = number_of(t, "at", origin, -1e6, 1e6);
+    if (!at) return std::unexpected(at.error());
+    tr.at = *at;
+    auto dir = direction_of(t, origin);
+    if (!dir) return std::unexpected(dir.error());
+    tr.decreasing = *dir;
+    s.triggers.push_back(tr);
+    return {};
+  });
+  if (!r) return std::unexpected(r.error());
+  r = each_table(root, "pulse", origin, [&](const toml::table& t) -> Result<void> {
+    auto k = check_keys(t, {"signal", "at_time", "duration"}, origin, "[[pulse]]");
+    if (!k) return k;
+    Pulse pu;
+    auto sig = signal_of(t, origin, d, p, pu.signal_name);
+    if (!sig) return std::unexpected(sig.error());
+    pu.signal = *sig;
+    auto at = number_of(t, "at_time", origin, 0.0, 1e9);
+    if (!at) return std::unexpected(at.error());
+    pu.at_time_s = *at;
+    auto dur = number_of(t, "duration", origin, 0.0, 1e9);
+    if (!dur) return std::unexpected(dur.error());
+    pu.duration_s = *dur;
+    s.pulses.push_back(pu);
+    return {};
+  });
+  if (!r) return std::unexpected(r.error());
+  r = each_table(root, "stop", origin, [&](const toml::table& t) -> Result<void> {
+    auto k = check_keys(t, {"axis", "at", "direction"}, origin, "[[stop]]");
+    if (!k) return k;
+    Stop st;
+    auto ax = axis_of(t, origin, m);
+    if (!ax) return std::unexpected(ax.error());
+    st.axis = *ax;
+    auto at = number_of(t, "at", origin, -1e6, 1e6);
+    if (!at) return std::unexpected(at.error());
+    st.at = *at;
+    auto dir = direction_of(t, origin);
+    if (!dir) return std::unexpected(dir.error());
+    st.decreasing = *dir;
+    s.stops.push_back(st);
+    return {};
+  });
+  if (!r) return std::unexpected(r.error());
+  return s;
+}
+
+Result<Scene> load_scene_file(const std::string& path, const config::MachineConfig& m,
+                              const config::Dialect& d, const config::Parameters& p) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return fail(AlarmId::kConfig, "cannot read scene file '" + path + "'");
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return parse_scene(ss.str(), path, m, d, p);
+}
+
+}  // namespace skipnc::machine

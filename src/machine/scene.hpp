@@ -1,0 +1,53 @@
+// The scene: what the machine touches (spec/cli.md, scene TOML v1).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "canon/canon.hpp"
+#include "config/dialect.hpp"
+#include "config/machine_config.hpp"
+#include "core/diag.hpp"
+
+namespace skipnc::machine {
+
+// A level signal, on while the axis's actual position is beyond a plane.
+struct Trigger {
+  canon::SignalAddr signal;
+  std::string signal_name;   // as written
+  int axis = 0;
+  double at = 0.0;           // machine coordinate, mm
+  bool decreasing = true;    // on while axis < at (else while axis > at)
+};
+
+// A timed pulse.
+struct Pulse {
+  canon::SignalAddr signal;
+  std::string signal_name;
+  double at_time_s = 0.0;
+  double duration_s = 0.0;
+};
+
+// A rigid stop: the axis cannot pass it.
+struct Stop {
+  int axis = 0;
+  double at = 0.0;
+  bool decreasing = true;    // blocks motion toward smaller coordinates (axis >= at)
+};
+
+struct Scene {
+  std::string origin;
+  std::vector<Trigger> triggers;
+  std::vector<Pulse> pulses;
+  std::vector<Stop> stops;
+};
+
+[[nodiscard]] Result<Scene> parse_scene(std::string_view toml_text, std::string_view origin,
+                                        const config::MachineConfig& m,
+                                        const config::Dialect& d, const config::Parameters& p);
+[[nodiscard]] Result<Scene> load_scene_file(const std::string& path,
+                                            const config::MachineConfig& m,
+                                            const config::Dialect& d,
+                                            const config::Parameters& p);
+
+}  // namespace skipnc::machine

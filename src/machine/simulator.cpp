@@ -1,0 +1,205 @@
+#include "machine/simulator.hpp"
+
+#include <cmath>
+#include <type_traits>
+
+namespace skipnc::machine {
+
+kernel::KernelConfig kernel_config(const config::MachineConfig& m) {
+  kernel::KernelConfig k;
+  k.clock.period_ns = m.period_ns;
+  k.limits.axis_count = m.axis_count();
+  k.limits.period_s = k.clock.period_s();
+  double max_feed = 0.0;
+  for (int i = 0; i < m.axis_count(); ++i) {
+    const auto& a = m.axes[static_cast<std::size_t>(i)];
+    auto& l = k.limits.axes[static_cast<std::size_t>(i)];
+    l.max_velocity_mm_s = a.max_feed_mm_min / 60.0;
+    l.rapid_mm_s = a.rapid_mm_min / 60.0;
+    l.max_accel_mm_s2 = a.accel_mm_s2;
+    max_feed = std::fmax(max_feed, a.max_feed_mm_min);
+  }
+  k.limits.max_feed_mm_s = max_feed / 60.0;
+  k.in_position_mm = m.in_position_mm;
+  return k;
+}
+
+namespace {
+
+// Routes the interpreter's commands: motion to the kernel, the rest recorded.
+class Router final : public interp::CommandSink {
+ public:
+  explicit Router(kernel::Kernel& k) : k_(k) {}
+  void emit(const canon::Stamped& c) override {
+    std::visit(
+        [&](const auto& cmd) {
+          using T = std::decay_t<decltype(cmd)>;
+          if constexpr (std::is_same_v<T, canon::Rapid> || std::is_same_v<T, canon::Feed> ||
+                        std::is_same_v<T, canon::Arc> || std::is_same_v<T, canon::Dwell> ||
+                        std::is_same_v<T, canon::Skip>) {
+            k_.push(c);
+          } else if constexpr (std::is_same_v<T, canon::Message>) {
+            messages.push_back(cmd.text);
+          }
+        },
+        c.cmd);
+  }
+  std::vector<std::string> messages;
+
+ private:
+  kernel::Kernel& k_;
+};
+
+Error stroke_alarm(const config::MachineConfig& m, int axis, double pos, std::string_view file,
+                   std::uint32_t line) {
+  const auto& a = m.axes[static_cast<std::size_t>(axis)];
+  const bool plus = pos > a.max_mm;
+  Error e;
+  e.id = AlarmId::kStrokeLimit;
+  e.detail = std::string(plus ? "+" : "-") + a.name + " at " + std::to_string(pos) +
+             " mm, beyond the stroke limit " + std::to_string(plus ? a.max_mm : a.min_mm) + " mm";
+  e.loc = SourceLoc{file, line, 1};
+  return e;
+}
+
+}  // namespace
+
+Simulator::Simulator(const config::MachineConfig& m, const config::Dialect& d,
+                     const config::Parameters& p, const Scene& scene)
+    : m_(m), d_(d), p_(p), scene_(scene) {}
+
+Result<RunResult> Simulator::run(const interp::Setup& setup, const RunOptions& opts) {
+  RunResult res;
+  const AxisVec home{};
+  auto created = interp::Interpreter::create(setup, home);
+  if (!created) return std::unexpected(created.error());
+  interp_ = std::move(*created);
+  interp::Interpreter& in = *interp_;
+
+  kernel::Kernel k(kernel_config(m_));
+  Plant plant(m_, scene_, k.clock());
+  k.set_position(home);
+  plant.reset(home);
+  plant.for_each_signal([&](const canon::SignalAddr& a, bool on) { k.preset_signal(a, on); });
+  Router router(k);
+
+  const int n = m_.axis_count();
+  kernel::TickInput tin;
+  kernel::TickOutput tout;
+  tout.commanded = home;
+  AxisVec cmd_prev = home;
+  bool waiting = false;     // the interpreter waits for a sync
+  bool ending = false;      // the program ended; the machine finishes its motion
+  double next_progress = 1.0;
+  const std::string_view file = setup.program_name;
+
+  auto alarm = [&](Error e) {
+    res.status = RunStatus::kAlarm;
+    res.alarm = std::move(e);
+  };
+  // A program error stops the reading of blocks; the motion already queued
+  // is finished first, as if the blocks ran one by one, so the stopping
+  // point does not depend on how far the planner had read ahead.
+  std::optional<Error> program_alarm;
+
+  for (;;) {
+    // Feed the kernel until it is full or the interpreter must wait.
+    while (!waiting && !ending && k.can_accept()) {
+      auto st = in.step(router);
+      if (!st) {
+        program_alarm = st.error();
+        ending = true;
+        break;
+      }
+      if (*st == interp::Step::kSync) waiting = true;
+      if (*st == interp::Step::kEnd) ending = true;
+    }
+    if (res.status != RunStatus::kCompleted) break;
+
+    // One servo period.
+    const AxisVec& cmd = tout.commanded;
+    plant.advance(k.now() + 1, cmd_prev, cmd, tin);
+    cmd_prev = cmd;
+    k.tick(tin, tout);
+    if (opts.trace != nullptr) {
+      TraceRow r;
+      r.tick = k.now();
+      r.time_s = k.clock().seconds(k.now());
+      r.commanded = &cmd_prev;
+      r.actual = &plant.actual();
+      r.torque = &plant.torque();
+      r.feed_mm_per_min = tout.path_speed * 60.0;
+      r.line = tout.line;
+      r.plant = &plant;
+      opts.trace->row(r);
+    }
+    for (int i = 0; i < n; ++i) {
+      const auto& a = m_.axes[static_cast<std::size_t>(i)];
+      const double c = tout.commanded[i];
+      if (c > a.max_mm + 1e-9 || c < a.min_mm - 1e-9) {
+        alarm(stroke_alarm(m_, i, c, file, tout.line));
+        break;
+      }
+    }
+    if (res.status != RunStatus::kCompleted) break;
+
+    if (waiting && k.idle() && (!k.skip().active || k.skip().done)) {
+      interp::SyncState s;
+      s.machine_position = k.command();
+      s.actual_position = plant.actual();
+      s.time_s = k.clock().seconds(k.now());
+      const kernel::SkipResult& sk = k.skip();
+      if (sk.active) {
+        s.skip_done = true;
+        s.triggered = sk.triggered;
+        s.torque_reached = sk.torque_reached;
+        s.latch_machine = sk.latch_machine;
+        s.input_index = sk.input_index;
+        if (sk.triggered) s.time_s = sk.time_s;
+        s.machine_position = sk.stop_position;
+      }
+      k.clear_skip();
+      waiting = false;
+      auto r = in.sync(s);
+      if (!r) {
+        alarm(r.error());
+        break;
+      }
+    }
+    if (ending && k.idle()) {
+      if (program_alarm) alarm(*program_alarm);
+      break;
+    }
+    if (k.now() >= m_.limits.max_ticks) {
+      alarm(Error{AlarmId::kTimeLimit,
+                  "the run passed limits.max_time_s of simulated time", SourceLoc{file, in.line(), 1}, -1});
+      break;
+    }
+    if (opts.interrupt != nullptr && opts.interrupt->load(std::memory_order_relaxed)) {
+      res.status = RunStatus::kInterrupted;
+      res.alarm = Error{AlarmId::kInterrupted, "stopped by a signal", SourceLoc{file, in.line(), 1}, -1};
+      break;
+    }
+    if (opts.progress) {
+      const double t = k.clock().seconds(k.now());
+      if (t >= next_progress) {
+        opts.progress(t, in.line());
+        next_progress = t + 1.0;
+      }
+    }
+  }
+  res.ticks = k.now();
+  res.time_s = k.clock().seconds(k.now());
+  res.final_machine = k.command();
+  res.final_work = in.work_from_machine(res.final_machine);
+  res.skips = in.skips();
+  res.messages = in.messages();
+  for (auto& msg : router.messages) res.messages.push_back(msg);
+  if (res.status == RunStatus::kCompleted || res.status == RunStatus::kAlarm) {
+    auto saved = in.save_persistent();
+    if (!saved && res.status == RunStatus::kCompleted) alarm(saved.error());
+  }
+  return res;
+}
+
+}  // namespace skipnc::machine

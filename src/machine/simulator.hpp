@@ -1,0 +1,81 @@
+// The simulated machine: interpreter, kernel and plant, run servo period by
+// servo period until the program ends or raises an alarm.
+#pragma once
+
+#include <atomic>
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "config/dialect.hpp"
+#include "config/machine_config.hpp"
+#include "interpreter/interpreter.hpp"
+#include "kernel/kernel.hpp"
+#include "machine/plant.hpp"
+#include "machine/scene.hpp"
+
+namespace skipnc::machine {
+
+// One servo period as the trace shows it.
+struct TraceRow {
+  Tick tick = 0;
+  double time_s = 0.0;
+  const AxisVec* commanded = nullptr;
+  const AxisVec* actual = nullptr;
+  const AxisVec* torque = nullptr;
+  double feed_mm_per_min = 0.0;
+  std::uint32_t line = 0;
+  const Plant* plant = nullptr;  // signal levels
+};
+
+class TraceSink {
+ public:
+  virtual ~TraceSink() = default;
+  virtual void row(const TraceRow& r) = 0;
+};
+
+enum class RunStatus : std::uint8_t { kCompleted, kAlarm, kInterrupted };
+
+struct RunResult {
+  RunStatus status = RunStatus::kCompleted;
+  std::optional<Error> alarm;
+  AxisVec final_machine;
+  AxisVec final_work;
+  double time_s = 0.0;
+  Tick ticks = 0;
+  std::vector<interp::SkipRecord> skips;
+  std::vector<std::string> messages;
+  std::vector<std::pair<std::string, std::optional<double>>> variables;  // filled by the caller
+};
+
+struct RunOptions {
+  TraceSink* trace = nullptr;
+  const std::atomic<bool>* interrupt = nullptr;
+  // Called about every simulated second with (simulated seconds, line).
+  std::function<void(double, std::uint32_t)> progress;
+};
+
+class Simulator {
+ public:
+  Simulator(const config::MachineConfig& m, const config::Dialect& d,
+            const config::Parameters& p, const Scene& scene);
+
+  // Runs the program. Errors that stop the run are in the result (alarm);
+  // the returned error is for a run that could not start.
+  [[nodiscard]] Result<RunResult> run(const interp::Setup& setup, const RunOptions& opts);
+  // The interpreter of the last run (for variables after the run).
+  interp::Interpreter* interpreter() noexcept { return interp_.get(); }
+
+ private:
+  const config::MachineConfig& m_;
+  const config::Dialect& d_;
+  const config::Parameters& p_;
+  const Scene& scene_;
+  std::unique_ptr<interp::Interpreter> interp_;
+};
+
+kernel::KernelConfig kernel_config(const config::MachineConfig& m);
+
+}  // namespace skipnc::machine

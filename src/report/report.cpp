@@ -1,0 +1,224 @@
+#include "report/report.hpp"
+
+#include <cerrno>
+#include <cmath>
+#include <cstring>
+#include <iostream>
+
+#include <fcntl.h>
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+#include <unistd.h>
+
+#include "config/skip_inputs.hpp"
+
+namespace skipnc::report {
+
+using nlohmann::ordered_json;
+
+AlarmView view_alarm(const Error& e, const config::Dialect* d) {
+  AlarmView v;
+  if (d != nullptr) {
+    const config::AlarmText& t = d->alarm(e.id);
+    v.number = t.number;
+    v.code = t.code;
+    v.message = t.message;
+  } else {
+    v.code = std::string(alarm_key(e.id));
+    v.message = std::string(alarm_key(e.id));
+  }
+  if (e.id == AlarmId::kUserAlarm && e.user_number >= 0) {
+    // #3000 = n: the control shows alarm 3000 + n with the program's message.
+    v.number = (v.number > 0 ? v.number : 3000) + e.user_number;
+    v.code = (v.code.empty() ? std::string("MC") : v.code) + fmt::format("{:04d}", e.user_number);
+    v.message = e.detail.empty() ? v.message : e.detail;
+    return v;
+  }
+  if (!e.detail.empty()) v.message += ": " + e.detail;
+  return v;
+}
+
+namespace {
+
+ordered_json axes_json(const AxisVec& v, const config::MachineConfig* m) {
+  ordered_json o = ordered_json::object();
+  if (m == nullptr) return o;
+  for (int i = 0; i < m->axis_count(); ++i) {
+    o[std::string(1, m->axes[static_cast<std::size_t>(i)].name)] = v[i] + 0.0;
+  }
+  return o;
+}
+
+const char* kind_name(canon::SkipKind k) {
+  switch (k) {
+    case canon::SkipKind::kSkip: return "skip";
+    case canon::SkipKind::kMultiStep: return "multi_step";
+    case canon::SkipKind::kTorque: return "torque";
+  }
+  return "skip";
+}
+
+}  // namespace
+
+std::string to_json(const ReportInput& in) {
+  ordered_json j;
+  j["format"] = "skipnc-report/1";
+  j["program"] = in.program;
+  j["dialect"] = in.dialect;
+  const machine::RunResult& r = in.result;
+  const Error* err = in.start_error ? &*in.start_error : (r.alarm ? &*r.alarm : nullptr);
+  j["status"] = in.start_error                                ? "alarm"
+                : r.status == machine::RunStatus::kCompleted ? "completed"
+                : r.status == machine::RunStatus::kInterrupted ? "interrupted"
+                                                                : "alarm";
+  if (err != nullptr) {
+    const AlarmView v = view_alarm(*err, in.dialect_table);
+    ordered_json a;
+    a["number"] = v.number;
+    a["code"] = v.code;
+    a["message"] = v.message;
+    a["file"] = err->loc.file.empty() ? ordered_json(nullptr) : ordered_json(std::string(err->loc.file));
+    a["line"] = err->loc.line == 0 ? ordered_json(nullptr) : ordered_json(err->loc.line);
+    a["column"] = err->loc.column == 0 ? ordered_json(nullptr) : ordered_json(err->loc.column);
+    a["key"] = std::string(alarm_key(err->id));
+    j["alarm"] = a;
+  } else {
+    j["alarm"] = nullptr;
+  }
+  ordered_json skips = ordered_json::array();
+  for (const auto& s : r.skips) {
+    ordered_json o;
+    o["line"] = s.line;
+    o["block"] = s.block;
+    o["kind"] = kind_name(s.kind);
+    o["p"] = s.p >= 0 ? ordered_json(s.p) : ordered_json(nullptr);
+    o["signal"] = s.signal.empty() ? ordered_json(nullptr) : ordered_json(s.signal);
+    o["triggered"] = s.triggered;
+    o["time"] = s.time_s;
+    o["position"] = axes_json(s.position, in.machine);
+    o["machine_position"] = axes_json(s.machine_position, in.machine);
+    o["end_position"] = axes_json(s.end_position, in.machine);
+    skips.push_back(o);
+  }
+  j["skips"] = skips;
+  ordered_json vars = ordered_json::object();
+  for (const auto& [k, v] : in.variables) vars[k] = v ? ordered_json(*v) : ordered_json(nullptr);
+  j["variables"] = vars;
+  ordered_json fin;
+  fin["position"] = axes_json(r.final_work, in.machine);
+  fin["machine_position"] = axes_json(r.final_machine, in.machine);
+  fin["time"] = r.time_s;
+  j["final"] = fin;
+  j["messages"] = r.messages;
+  if (in.machine != nullptr) j["machine"] = in.machine->name;
+  return j.dump(2) + "\n";
+}
+
+Result<void> write_atomic(const std::string& path, const std::string& text) {
+  if (path == "-") {
+    std::cout << text << std::flush;
+    return {};
+  }
+  const std::string tmp = path + ".tmp";
+  const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  if (fd < 0) {
+    return fail(AlarmId::kFileAccess, "cannot write '" + tmp + "': " + std::strerror(errno));
+  }
+  std::size_t done = 0;
+  while (done < text.size()) {
+    const ssize_t w = ::write(fd, text.data() + done, text.size() - done);
+    if (w < 0) {
+      if (errno == EINTR) continue;
+      ::close(fd);
+      ::unlink(tmp.c_str());
+      return fail(AlarmId::kFileAccess, "cannot write '" + tmp + "': " + std::strerror(errno));
+    }
+    done += static_cast<std::size_t>(w);
+  }
+  if (::fsync(fd) != 0 || ::close(fd) != 0 || std::rename(tmp.c_str(), path.c_str()) != 0) {
+    ::unlink(tmp.c_str());
+    return fail(AlarmId::kFileAccess, "cannot write '" + path + "': " + std::strerror(errno));
+  }
+  return {};
+}
+
+CsvTrace::CsvTrace(std::string path, const config::MachineConfig& m, const machine::Plant*)
+    : path_(std::move(path)), tmp_(path_ + ".tmp"), m_(m) {}
+
+CsvTrace::~CsvTrace() {
+  if (f_ != nullptr) {
+    std::fclose(f_);
+    ::unlink(tmp_.c_str());
+  }
+}
+
+Result<void> CsvTrace::open() {
+  f_ = path_ == "-" ? stdout : std::fopen(tmp_.c_str(), "wb");
+  if (f_ == nullptr) {
+    return fail(AlarmId::kFileAccess, "cannot write trace '" + tmp_ + "': " + std::strerror(errno));
+  }
+  buf_.reserve(1 << 16);
+  return {};
+}
+
+void CsvTrace::header(const machine::TraceRow& r) {
+  buf_ += "time_s,line,feed_mm_min";
+  for (const char* kind : {"cmd", "act", "torque"}) {
+    for (const auto& a : m_.axes) {
+      buf_ += ',';
+      buf_ += a.name;
+      buf_ += '_';
+      buf_ += kind;
+    }
+  }
+  if (r.plant != nullptr) {
+    for (std::size_t i = 0; i < r.plant->signal_count(); ++i) {
+      buf_ += ',';
+      buf_ += config::signal_name(r.plant->signal_addr(i));
+    }
+  }
+  buf_ += '\n';
+  header_done_ = true;
+}
+
+void CsvTrace::row(const machine::TraceRow& r) {
+  if (f_ == nullptr || failed_) return;
+  if (!header_done_) header(r);
+  auto it = std::back_inserter(buf_);
+  fmt::format_to(it, "{},{},{}", r.time_s, r.line, r.feed_mm_per_min);
+  const int n = m_.axis_count();
+  for (const AxisVec* v : {r.commanded, r.actual, r.torque}) {
+    for (int i = 0; i < n; ++i) fmt::format_to(it, ",{}", (*v)[i] + 0.0);
+  }
+  if (r.plant != nullptr) {
+    for (std::size_t i = 0; i < r.plant->signal_count(); ++i) {
+      buf_ += r.plant->signal_level(i) ? ",1" : ",0";
+    }
+  }
+  buf_ += '\n';
+  if (buf_.size() > (1 << 16)) {
+    if (std::fwrite(buf_.data(), 1, buf_.size(), f_) != buf_.size()) failed_ = true;
+    buf_.clear();
+  }
+}
+
+Result<void> CsvTrace::finish() {
+  if (f_ == nullptr) return {};
+  if (!buf_.empty() && std::fwrite(buf_.data(), 1, buf_.size(), f_) != buf_.size()) failed_ = true;
+  buf_.clear();
+  if (f_ == stdout) {
+    std::fflush(f_);
+    f_ = nullptr;
+    return {};
+  }
+  const bool ok = !failed_ && std::fflush(f_) == 0 && ::fsync(::fileno(f_)) == 0;
+  std::fclose(f_);
+  f_ = nullptr;
+  if (!ok || std::rename(tmp_.c_str(), path_.c_str()) != 0) {
+    ::unlink(tmp_.c_str());
+    return fail(AlarmId::kFileAccess, "cannot write trace '" + path_ + "'");
+  }
+  return {};
+}
+
+}  // namespace skipnc::report
