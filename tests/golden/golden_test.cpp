@@ -1,0 +1,101 @@
+// Golden tests: every tests/golden/<feature>/<case>.nc is run as a user
+// would run it, and compared with what is stored beside it:
+//   <case>.canon        expected `skipnc canon` output, exactly;
+//   <case>.json         expected report fields (a subset of the report; numbers
+//                       within "tolerance", default 1e-6), plus "exit" (the
+//                       exit status) and "args" (extra command-line words);
+//   <case>.scene.toml   the scene for the run (optional);
+//   <case>.machine.toml the machine for the run and for canon (optional).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+
+#include "support/run_cli.hpp"
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+using skipnc::test::read_file;
+using skipnc::test::run_cli;
+
+namespace {
+
+std::vector<fs::path> golden_cases() {
+  std::vector<fs::path> cases;
+  const fs::path root = fs::path(SKIPNC_SOURCE_DIR) / "tests" / "golden";
+  for (const auto& e : fs::recursive_directory_iterator(root)) {
+    if (e.is_regular_file() && e.path().extension() == ".nc") cases.push_back(e.path());
+  }
+  std::sort(cases.begin(), cases.end());
+  return cases;
+}
+
+std::string case_name(const fs::path& p) {
+  const fs::path root = fs::path(SKIPNC_SOURCE_DIR) / "tests" / "golden";
+  std::string n = fs::relative(p, root).replace_extension().string();
+  for (char& c : n) {
+    if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+  }
+  return n;
+}
+
+// Every key of `want` must be in `got` with an equal value.
+void expect_subset(const json& want, const json& got, const std::string& path, double tol) {
+  if (want.is_object()) {
+    ASSERT_TRUE(got.is_object()) << path << ": expected an object, got " << got.dump();
+    for (auto it = want.begin(); it != want.end(); ++it) {
+      ASSERT_TRUE(got.contains(it.key())) << path << "." << it.key() << " missing in " << got.dump();
+      expect_subset(it.value(), got[it.key()], path + "." + it.key(), tol);
+    }
+  } else if (want.is_array()) {
+    ASSERT_TRUE(got.is_array()) << path << ": expected an array, got " << got.dump();
+    ASSERT_EQ(want.size(), got.size()) << path << ": " << got.dump();
+    for (std::size_t i = 0; i < want.size(); ++i) {
+      expect_subset(want[i], got[i], path + "[" + std::to_string(i) + "]", tol);
+    }
+  } else if (want.is_number() && got.is_number()) {
+    EXPECT_NEAR(want.get<double>(), got.get<double>(), tol) << path;
+  } else {
+    EXPECT_EQ(want, got) << path;
+  }
+}
+
+class Golden : public ::testing::TestWithParam<fs::path> {};
+
+TEST_P(Golden, MatchesStoredResult) {
+  const fs::path nc = GetParam();
+  const fs::path canon = fs::path(nc).replace_extension(".canon");
+  const fs::path expect = fs::path(nc).replace_extension(".json");
+  const fs::path scene = fs::path(nc).replace_extension(".scene.toml");
+  const fs::path machine = fs::path(nc).replace_extension(".machine.toml");
+  ASSERT_TRUE(fs::exists(canon) || fs::exists(expect)) << nc << " has no .canon or .json beside it";
+  if (fs::exists(canon)) {
+    std::vector<std::string> args = {"canon", nc.string()};
+    if (fs::exists(machine)) args.insert(args.end(), {"-m", machine.string()});
+    const auto r = run_cli(args);
+    EXPECT_EQ(r.out, read_file(canon)) << "canon output of " << nc;
+  }
+  if (fs::exists(expect)) {
+    const json want = json::parse(read_file(expect));
+    skipnc::test::TempDir tmp;
+    const fs::path report = tmp.path / "report.json";
+    std::vector<std::string> args = {"run", nc.string(), "--report", report.string(), "-q"};
+    if (fs::exists(scene)) args.insert(args.end(), {"--scene", scene.string()});
+    if (fs::exists(machine)) args.insert(args.end(), {"-m", machine.string()});
+    if (want.contains("args")) {
+      for (const auto& a : want["args"]) args.push_back(a.get<std::string>());
+    }
+    const auto r = run_cli(args);
+    EXPECT_EQ(r.exit_code, want.value("exit", 0)) << "exit status of " << nc;
+    ASSERT_TRUE(fs::exists(report)) << "no report written for " << nc;
+    const json got = json::parse(read_file(report));
+    const double tol = want.value("tolerance", 1e-6);
+    if (want.contains("report")) expect_subset(want["report"], got, "report", tol);
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Cases, Golden, ::testing::ValuesIn(golden_cases()),
+                         [](const auto& info) { return case_name(info.param); });
+
+}  // namespace

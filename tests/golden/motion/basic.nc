@@ -1,0 +1,12 @@
+(G00, G01, G02/G03, G04 and the decimal-point rule on the built-in mill3)
+G21 G90 G17 G54
+G0 X10. Y20. Z5.
+G1 Z-1. F200.
+G1 X30 Y20.
+G91 G1 X5. Y-5.
+G90 G3 X15.03 Y25. R10.
+G2 X15.03 Y25. I-5. J0
+G4 X1.5
+G4 X1500
+G4 P250
+M30
