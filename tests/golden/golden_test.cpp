@@ -96,6 +96,6 @@ TEST_P(Golden, MatchesStoredResult) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Cases, Golden, ::testing::ValuesIn(golden_cases()),
-                         [](const auto& info) { return case_name(info.param); });
+                         [](const auto& param_info) { return case_name(param_info.param); });
 
 }  // namespace
