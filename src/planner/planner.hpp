@@ -79,6 +79,11 @@ struct Segment {
   std::array<double, kMaxAxes> axis_t_acc{}, axis_t_total{}, axis_v{}, axis_a{};
   std::uint32_t line = 0;
   std::uint32_t tag = 0;
+  double d_acc = 0.0;        // path length of the acceleration phase, mm
+  double radius_end = 0.0;   // kArc: radius at the end point (`radius` is the start's);
+                             // the radius varies linearly with the swept angle
+  double centripetal = 0.0;  // kArc: centripetal acceleration of the plane at v_max, mm/s^2
+  int basis_axis = 0;        // kRapidNonLinear: the axis that takes longest
 
   // Distance along the path at time t in [0, duration].
   double distance_at(double t) const noexcept;
@@ -88,6 +93,9 @@ struct Segment {
   AxisVec position_at(double t) const noexcept;
   // Unit tangent (direction of motion per mm of path) at time t.
   AxisVec tangent_at(double t) const noexcept;
+  // Machine velocity at time t, mm/s per axis (speed_at * tangent_at, or the
+  // per-axis profiles of kRapidNonLinear).
+  AxisVec velocity_at(double t) const noexcept;
 };
 
 // A fixed-capacity ring of segments shared by the planner (producer, outside
@@ -116,11 +124,13 @@ class Planner {
 
  private:
   void replan() noexcept;
+  Segment& at(std::size_t k) noexcept { return ring_[(head_ + k) % ring_.size()]; }
   Limits limits_;
   std::vector<Segment> ring_;
   std::size_t head_ = 0;
   std::size_t count_ = 0;
   AxisVec tail_;
+  double front_entry_ = 0.0;  // exit speed of the last popped segment (entry of the front)
 };
 
 }  // namespace skipnc::planner
