@@ -1,0 +1,128 @@
+// Driving the skipnc kernel from your own servo loop, without the simulator.
+//
+// Each servo period your loop reads the drives (actual positions, torque) and
+// the probe input (with the instant of any edge), calls Kernel::tick once, and
+// writes the commanded positions to the drives. Outside the tick, the
+// interpreter is stepped to keep the kernel's queue full; at a skip block it
+// waits until the kernel reports the skip done, then continues from where the
+// axes stopped.
+//
+// Here the "drives" are ideal (the axis is where it was commanded one period
+// ago) and the "probe" is a surface at Z = -2.5 mm seen by the loop itself.
+// Build: part of the project (target skipnc_embedding_example).
+#include <cmath>
+#include <cstdio>
+
+#include "config/dialect.hpp"
+#include "config/machine_config.hpp"
+#include "interpreter/interpreter.hpp"
+#include "kernel/kernel.hpp"
+#include "machine/simulator.hpp"  // kernel_config(): limits from a machine file
+
+namespace {
+
+// Routes the interpreter's motion commands to the kernel.
+class ToKernel final : public skipnc::interp::CommandSink {
+ public:
+  explicit ToKernel(skipnc::kernel::Kernel& k) : k_(k) {}
+  void emit(const skipnc::canon::Stamped& c) override {
+    if (std::holds_alternative<skipnc::canon::Rapid>(c.cmd) ||
+        std::holds_alternative<skipnc::canon::Feed>(c.cmd) ||
+        std::holds_alternative<skipnc::canon::Arc>(c.cmd) ||
+        std::holds_alternative<skipnc::canon::Dwell>(c.cmd) ||
+        std::holds_alternative<skipnc::canon::Skip>(c.cmd)) {
+      k_.push(c);
+    }
+  }
+
+ private:
+  skipnc::kernel::Kernel& k_;
+};
+
+}  // namespace
+
+int main() {
+  using namespace skipnc;
+  auto machine = config::builtin_machine("mill3");
+  auto dialect = config::builtin_dialect("fanuc");
+  if (!machine || !dialect) return 2;
+  config::Parameters params(&*dialect);
+
+  interp::Setup setup;
+  setup.machine = &*machine;
+  setup.dialect = &*dialect;
+  setup.params = &params;
+  setup.program_name = "embedded.nc";
+  setup.program_text =
+      "G21 G90 G54\n"
+      "G0 X5. Y5. Z0\n"
+      "G31 Z-10. F120.\n"
+      "#100 = #5063\n"
+      "G91 G0 Z3.\n"
+      "M30\n";
+  auto interpreter = interp::Interpreter::create(setup, AxisVec{});
+  if (!interpreter) return 2;
+  interp::Interpreter& in = **interpreter;
+
+  kernel::Kernel k(machine::kernel_config(*machine));
+  k.set_position(AxisVec{});
+  ToKernel sink(k);
+
+  const canon::SignalAddr probe{'X', 0, 4};
+  const double surface_z = -2.5;
+  kernel::TickInput tick_in;
+  kernel::TickOutput tick_out;
+  AxisVec drive = AxisVec{};  // what the drives report: last period's command
+  bool probe_on = false;
+  bool waiting = false, ending = false;
+
+  for (int period = 0; period < 1'000'000; ++period) {
+    // Outside the tick: keep the queue full.
+    while (!waiting && !ending && k.can_accept()) {
+      auto st = in.step(sink);
+      if (!st) {
+        std::fprintf(stderr, "alarm at line %u: %s\n", st.error().loc.line, st.error().detail.c_str());
+        return 1;
+      }
+      waiting = *st == interp::Step::kSync;
+      ending = *st == interp::Step::kEnd;
+    }
+
+    // The servo period: read the drives and the probe...
+    const double z0 = tick_in.actual[2];
+    tick_in.actual = drive;
+    tick_in.edge_count = 0;
+    const bool on = drive[2] < surface_z;
+    if (on != probe_on) {
+      // The instant inside the period where Z crossed the surface.
+      const double frac = (surface_z - z0) / (drive[2] - z0);
+      tick_in.edges[0] = kernel::SignalEdge{probe, on, frac};
+      tick_in.edge_count = 1;
+      probe_on = on;
+    }
+    // ...one call into the kernel...
+    k.tick(tick_in, tick_out);
+    // ...and write the command to the drives (they reach it by the next period).
+    drive = tick_out.commanded;
+
+    // Outside the tick again: complete a skip.
+    if (waiting && k.idle() && (!k.skip().active || k.skip().done)) {
+      interp::SyncState s;
+      s.machine_position = k.skip().active ? k.skip().stop_position : k.command();
+      s.actual_position = drive;
+      s.skip_done = k.skip().active;
+      s.triggered = k.skip().triggered;
+      s.latch_machine = k.skip().latch_machine;
+      s.input_index = k.skip().input_index;
+      s.time_s = k.skip().time_s;
+      k.clear_skip();
+      waiting = false;
+      if (auto r = in.sync(s); !r) return 1;
+    }
+    if (ending && k.idle()) break;
+  }
+  auto z = in.read_variable(100);
+  std::printf("probe touched at Z %.6f (#100); final Z %.6f after %lld periods\n",
+              z ? z->v : 0.0, in.position()[2], static_cast<long long>(k.now()));
+  return z && std::abs(z->v - surface_z) < 1e-9 ? 0 : 1;
+}
