@@ -1,17 +1,29 @@
 #include "canon/print.hpp"
 
+#include <charconv>
 #include <iterator>
 #include <type_traits>
 
 namespace skipnc::canon {
 namespace {
 
+// The shortest text that reads back to the same double (std::to_chars), the
+// hot part of `skipnc canon`; -0.0 is written as 0.
+void number_to(fmt::memory_buffer& out, double v) {
+  char buf[32];
+  const auto r = std::to_chars(buf, buf + sizeof buf, v + 0.0);
+  out.append(buf, r.ptr);
+}
+
 void axes_to(fmt::memory_buffer& out, const AxisVec& v, const AxisNames& axes) {
   for (int i = 0; i < axes.count; ++i) {
-    // +0.0 for -0.0 so that the text does not depend on the sign of zero.
-    fmt::format_to(std::back_inserter(out), " {}{}", axes.names[i], v[i] + 0.0);
+    out.push_back(' ');
+    out.push_back(axes.names[i]);
+    number_to(out, v[i]);
   }
 }
+
+void text_to(fmt::memory_buffer& out, std::string_view s) { out.append(s.data(), s.data() + s.size()); }
 
 const char* stop_name(StopKind k) {
   switch (k) {
@@ -26,27 +38,41 @@ const char* stop_name(StopKind k) {
 }  // namespace
 
 void format_to(fmt::memory_buffer& out, const Stamped& s, const AxisNames& axes) {
-  auto it = std::back_inserter(out);
-  fmt::format_to(it, "{} ", s.line);
+  auto it = fmt::appender(out);
+  {
+    char buf[16];
+    const auto r = std::to_chars(buf, buf + sizeof buf, s.line);
+    out.append(buf, r.ptr);
+    out.push_back(' ');
+  }
   std::visit(
       [&](const auto& c) {
         using T = std::decay_t<decltype(c)>;
         if constexpr (std::is_same_v<T, Rapid>) {
-          fmt::format_to(it, "RAPID");
+          text_to(out, "RAPID");
           axes_to(out, c.target, axes);
-          if (!c.linear) fmt::format_to(it, " NONLINEAR");
+          if (!c.linear) text_to(out, " NONLINEAR");
         } else if constexpr (std::is_same_v<T, Feed>) {
-          fmt::format_to(it, "FEED");
+          text_to(out, "FEED");
           axes_to(out, c.target, axes);
-          fmt::format_to(it, " F{}", c.feed_mm_per_min);
-          if (c.exact_stop) fmt::format_to(it, " EXACT");
+          text_to(out, " F");
+          number_to(out, c.feed_mm_per_min);
+          if (c.exact_stop) text_to(out, " EXACT");
         } else if constexpr (std::is_same_v<T, Arc>) {
-          fmt::format_to(it, "{}", c.ccw ? "ARC_CCW" : "ARC_CW");
+          text_to(out, c.ccw ? "ARC_CCW" : "ARC_CW");
           axes_to(out, c.target, axes);
-          fmt::format_to(it, " C{}={} C{}={} F{}", axes.names[c.plane.a0], c.center0 + 0.0,
-                         axes.names[c.plane.a1], c.center1 + 0.0, c.feed_mm_per_min);
+          text_to(out, " C");
+          out.push_back(axes.names[c.plane.a0]);
+          out.push_back('=');
+          number_to(out, c.center0);
+          text_to(out, " C");
+          out.push_back(axes.names[c.plane.a1]);
+          out.push_back('=');
+          number_to(out, c.center1);
+          text_to(out, " F");
+          number_to(out, c.feed_mm_per_min);
           if (c.extra_turns != 0) fmt::format_to(it, " TURNS{}", c.extra_turns);
-          if (c.exact_stop) fmt::format_to(it, " EXACT");
+          if (c.exact_stop) text_to(out, " EXACT");
         } else if constexpr (std::is_same_v<T, Dwell>) {
           fmt::format_to(it, "DWELL {}", c.seconds);
         } else if constexpr (std::is_same_v<T, Skip>) {
