@@ -81,7 +81,8 @@ int main() {
     while (!waiting && !ending && k.can_accept()) {
       auto st = in.step(sink);
       if (!st) {
-        std::fprintf(stderr, "alarm at line %u: %s\n", st.error().loc.line, st.error().detail.c_str());
+        std::fprintf(stderr, "alarm at line %u: %s\n", st.error().loc.line,
+                     st.error().detail.c_str());
         return 1;
       }
       waiting = *st == interp::Step::kSync;
@@ -122,7 +123,7 @@ int main() {
     if (ending && k.idle()) break;
   }
   auto z = in.read_variable(100);
-  std::printf("probe touched at Z %.6f (#100); final Z %.6f after %lld periods\n",
-              z ? z->v : 0.0, in.position()[2], static_cast<long long>(k.now()));
+  std::printf("probe touched at Z %.6f (#100); final Z %.6f after %lld periods\n", z ? z->v : 0.0,
+              in.position()[2], static_cast<long long>(k.now()));
   return z && std::abs(z->v - surface_z) < 1e-9 ? 0 : 1;
 }

@@ -45,7 +45,8 @@ void expect_subset(const json& want, const json& got, const std::string& path, d
   if (want.is_object()) {
     ASSERT_TRUE(got.is_object()) << path << ": expected an object, got " << got.dump();
     for (auto it = want.begin(); it != want.end(); ++it) {
-      ASSERT_TRUE(got.contains(it.key())) << path << "." << it.key() << " missing in " << got.dump();
+      ASSERT_TRUE(got.contains(it.key()))
+          << path << "." << it.key() << " missing in " << got.dump();
       expect_subset(it.value(), got[it.key()], path + "." + it.key(), tol);
     }
   } else if (want.is_array()) {
