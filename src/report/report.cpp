@@ -1,6 +1,7 @@
 #include "report/report.hpp"
 
 #include <cerrno>
+#include <charconv>
 #include <cmath>
 #include <cstring>
 #include <iostream>
@@ -181,14 +182,35 @@ void CsvTrace::header(const machine::TraceRow& r) {
   header_done_ = true;
 }
 
+namespace {
+
+// Shortest round-trip text of a number (the trace's hot path).
+void append_number(std::string& buf, double v) {
+  char tmp[32];
+  const auto r = std::to_chars(tmp, tmp + sizeof tmp, v + 0.0);
+  buf.append(tmp, r.ptr);
+}
+
+}  // namespace
+
 void CsvTrace::row(const machine::TraceRow& r) {
   if (f_ == nullptr || failed_) return;
   if (!header_done_) header(r);
-  auto it = std::back_inserter(buf_);
-  fmt::format_to(it, "{},{},{}", r.time_s, r.line, r.feed_mm_per_min);
+  append_number(buf_, r.time_s);
+  buf_ += ',';
+  {
+    char tmp[16];
+    const auto res = std::to_chars(tmp, tmp + sizeof tmp, r.line);
+    buf_.append(tmp, res.ptr);
+  }
+  buf_ += ',';
+  append_number(buf_, r.feed_mm_per_min);
   const int n = m_.axis_count();
   for (const AxisVec* v : {r.commanded, r.actual, r.torque}) {
-    for (int i = 0; i < n; ++i) fmt::format_to(it, ",{}", (*v)[i] + 0.0);
+    for (int i = 0; i < n; ++i) {
+      buf_ += ',';
+      append_number(buf_, (*v)[i]);
+    }
   }
   if (r.plant != nullptr) {
     for (std::size_t i = 0; i < r.plant->signal_count(); ++i) {

@@ -1,0 +1,72 @@
+#!/usr/bin/env bash
+# Side-by-side measurements of skipnc and LinuxCNC (the peer kit in
+# ../shared/peers/linuxcnc), in one run, on this machine. Prints tables; see
+# bench/README.md for the last results.
+#
+# Usage: bench/compare.sh [--quick]
+#   needs: build/ with -DSKIPNC_BENCH=ON (scripts/build.sh then
+#   cmake -S . -B build -DSKIPNC_BENCH=ON && cmake --build build), and as root
+#   the peer kit installs linuxcnc-uspace itself.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+root=$PWD
+kit=${PEER_KIT:-$root/../shared/peers/linuxcnc}
+bin=$root/build/skipnc
+quick=0
+[ "${1:-}" = "--quick" ] && quick=1
+sizes="1000000"; reps=3; big=10000000
+[ $quick = 1 ] && { sizes="100000"; reps=1; big=1000000; }
+work=$(mktemp -d "${TMPDIR:-/tmp}/skipnc-bench.XXXXXX")
+trap 'rm -rf "$work"' EXIT
+
+echo "host: $(lscpu | sed -n 's/^Model name: *//p'), $(nproc) cpus"
+echo "skipnc: $(git -C "$root" rev-parse --short HEAD)"
+
+echo
+echo "== 1. interpreter throughput: rs274 -g (A) vs skipnc canon (B), output to /dev/null"
+"$kit/peer.sh" --skip-probe --sizes "$sizes" --reps "$reps" --vs "$bin canon {file}" "$work/peer" \
+  | sed -n '/^== 1/,/^B\/A_wall/p'
+
+echo
+echo "== 2. memory: skipnc canon of a $big-block program (peak RSS)"
+python3 "$kit/gen_motion.py" "$big" 1 > "$work/big.ngc"
+/usr/bin/time -f "%M" -o "$work/rss" "$bin" canon "$work/big.ngc" > /dev/null
+echo "blocks $big  file $(( $(stat -c %s "$work/big.ngc") / 1048576 )) MiB  peak RSS $(( $(cat "$work/rss") / 1024 )) MiB"
+rm -f "$work/big.ngc"
+
+echo
+echo "== 3. simulation speed: simulated seconds per wall second"
+python3 - "$work/hour.nc" <<'PY'
+import sys, random
+# About one hour of 3-axis machining: pockets of lines and arcs at F1200-3000.
+rnd = random.Random(1)
+out = ["G21 G90 G17 G54", "G0 X0 Y0 Z5."]
+t = 0.0
+x = y = 0.0
+while t < 3600.0:
+    f = rnd.choice([1200, 2000, 3000])
+    nx, ny = rnd.uniform(-200, 200), rnd.uniform(-200, 200)
+    out.append(f"G1 X{nx:.3f} Y{ny:.3f} Z{rnd.uniform(-5, 0):.3f} F{f}.")
+    t += (((nx - x) ** 2 + (ny - y) ** 2) ** 0.5) / (f / 60.0)
+    x, y = nx, ny
+out.append("M30")
+open(sys.argv[1], "w").write("\n".join(out) + "\n")
+PY
+for trace in off on; do
+  args=(run "$work/hour.nc" --report "$work/hour.json" -q)
+  [ $trace = on ] && args+=(--trace "$work/hour.csv")
+  start=$(date +%s.%N)
+  "$bin" "${args[@]}"
+  end=$(date +%s.%N)
+  sim=$(python3 -c "import json;print(json.load(open('$work/hour.json'))['final']['time'])")
+  python3 -c "w=$end-$start; print(f'trace {\"$trace\":3}  simulated {$sim:.0f} s  wall {w:.2f} s  ratio {$sim/w:,.0f}x real time')"
+  rm -f "$work/hour.csv"
+done
+
+echo
+echo "== 4. kernel tick cost (planner sampling + skip monitor, no I/O)"
+"$root/build/bench/skipnc_tick_latency" $([ $quick = 1 ] && echo 200000 || echo 2000000)
+
+echo
+echo "== 5. latch accuracy (skipnc modes beside LinuxCNC's G38.2 figures)"
+python3 "$root/bench/latch_table.py" "$bin"
