@@ -38,7 +38,7 @@ Result<void> load_switches(const toml::table& t, std::string_view origin, Switch
                           "skip_edge_rising_only", "skip_feed", "skip_feed_param",
                           "skip_feed_switch_param", "skip_g53_allowed", "torque_skip",
                           "multi_step", "next_block_from_stop", "tool_position_offset",
-                          "calculator_decimal_default"},
+                          "calculator_decimal_default", "macro_bracket_depth"},
                          origin, "[switches]");
   if (!keys) return keys;
   for (const auto& [key, node] : t) {
@@ -70,6 +70,7 @@ Result<void> load_switches(const toml::table& t, std::string_view origin, Switch
     else if (k == "next_block_from_stop") r = as_bool(sw.next_block_from_stop);
     else if (k == "tool_position_offset") r = as_bool(sw.tool_position_offset);
     else if (k == "calculator_decimal_default") r = as_bool(sw.calculator_decimal_default);
+    else if (k == "macro_bracket_depth") r = as_int(sw.macro_bracket_depth, 1, 64);
     else if (k == "skip_stop" || k == "skip_feed") {
       auto s = get_string(node, origin, k);
       if (!s) return std::unexpected(s.error());

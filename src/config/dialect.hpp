@@ -50,6 +50,7 @@ struct SkipVariables {
 };
 
 struct Switches {
+  int macro_bracket_depth = 5;          // [ ] nesting in a macro expression (Fanuc: 5, PS0118)
   int skip_p_first = 1;                 // P value of the first skip input (Fanuc 1, NCT 0)
   int skip_p_count = 12;                // number of selectable inputs
   bool skip_p_required_range = true;    // P outside range is an alarm

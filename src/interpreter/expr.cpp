@@ -1,9 +1,19 @@
-// Expression evaluation with Fanuc Custom Macro B rules:
+// Expression evaluation with Fanuc Custom Macro B rules (docs/macro.md):
+// - values are IEEE doubles, as the 15i/30i state ("double-precision real
+//   data ... as laid down in the applicable IEEE standard", 15i operator's
+//   manual B-63324EN, custom macro, limitations); EQ and NE compare exactly,
+//   the manual tells the programmer to allow for errors himself
+//   (IF [ABS[#1-#2] LT 0.1]); no tolerance is added here;
 // - a vacant variable stays vacant only when referenced alone (#2 = #1);
 //   in arithmetic it counts as 0;
 // - EQ and NE tell vacant from 0; GT GE LT LE treat vacant as 0;
 // - AND OR XOR are bitwise on whole numbers; MOD keeps the dividend's sign;
-// - angles are degrees; FIX truncates toward zero, FUP rounds away from it.
+// - angles are degrees; FIX truncates toward zero, FUP rounds away from it;
+//   ROUND rounds half away from zero, and inside an address word to the
+//   address's least input increment;
+// - ASIN gives 270..90 and ATAN 0..360 degrees, or -90..90 and -180..180
+//   with parameter 6004#0 NAT = 1; TAN of an odd multiple of 90 degrees is a
+//   division by zero (TAN is SIN/COS).
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -15,7 +25,9 @@ namespace {
 
 constexpr double kRad = 3.14159265358979323846 / 180.0;
 
-double round_half_away(double x) noexcept { return std::round(x); }
+double round_half_away(double x) noexcept {
+  return std::round(x);
+}
 
 }  // namespace
 
@@ -23,10 +35,10 @@ Result<int> Interpreter::Impl::var_number(gcode::ExprId lhs) {
   const gcode::ExprNode& n = blk.nodes[static_cast<std::size_t>(lhs)];
   auto v = eval(n.a);
   if (!v) return std::unexpected(v.error());
+  // #[#i] with #i vacant is #0; a fraction is rounded.
   const double x = round_half_away(v->num());
-  if (v->vacant || !(std::fabs(x) < 1e9)) {
-    return fail(AlarmId::kIllegalVariable, "variable number is vacant or out of range",
-                loc(n.column));
+  if (!(std::fabs(x) < 1e9)) {
+    return fail(AlarmId::kIllegalVariable, "variable number out of range", loc(n.column));
   }
   return static_cast<int>(x);
 }
@@ -63,7 +75,7 @@ Result<Value> Interpreter::Impl::eval(gcode::ExprId id) {
     case Op::kNeg: {
       auto a = eval(n.a);
       if (!a) return a;
-      return Value::of(-a->num());
+      return Value::of(0.0 - a->num());  // -#1 with #1 vacant is 0, not -0
     }
     case Op::kFunc:
       break;
@@ -88,8 +100,9 @@ Result<Value> Interpreter::Impl::eval(gcode::ExprId id) {
                            : n.op == Op::kSub ? x - y
                            : n.op == Op::kMul ? x * y
                                               : x / y;
-          if (!std::isfinite(r)) return fail(AlarmId::kOverflow, "result out of range", loc(n.column));
-          return Value::of(r);
+          if (!std::isfinite(r))
+            return fail(AlarmId::kOverflow, "result out of range", loc(n.column));
+          return Value::of(r + 0.0);  // no -0
         }
         case Op::kMod: {
           if (!bit_ok(x) || !bit_ok(y)) {
@@ -113,10 +126,14 @@ Result<Value> Interpreter::Impl::eval(gcode::ExprId id) {
           return Value::of((a->vacant == b->vacant && (a->vacant || x == y)) ? 1.0 : 0.0);
         case Op::kNe:
           return Value::of((a->vacant == b->vacant && (a->vacant || x == y)) ? 0.0 : 1.0);
-        case Op::kGt: return Value::of(x > y ? 1.0 : 0.0);
-        case Op::kGe: return Value::of(x >= y ? 1.0 : 0.0);
-        case Op::kLt: return Value::of(x < y ? 1.0 : 0.0);
-        case Op::kLe: return Value::of(x <= y ? 1.0 : 0.0);
+        case Op::kGt:
+          return Value::of(x > y ? 1.0 : 0.0);
+        case Op::kGe:
+          return Value::of(x >= y ? 1.0 : 0.0);
+        case Op::kLt:
+          return Value::of(x < y ? 1.0 : 0.0);
+        case Op::kLe:
+          return Value::of(x <= y ? 1.0 : 0.0);
         default:
           return fail(AlarmId::kMacroFormat, "unknown operator", loc(n.column));
       }
@@ -126,23 +143,29 @@ Result<Value> Interpreter::Impl::eval(gcode::ExprId id) {
   auto a = eval(n.a);
   if (!a) return a;
   const double x = a->num();
-  auto bad = [&](const char* what) {
-    return fail(AlarmId::kIllegalArgument, what, loc(n.column));
-  };
+  auto bad = [&](const char* what) { return fail(AlarmId::kIllegalArgument, what, loc(n.column)); };
   using gcode::Func;
   double r = 0.0;
   switch (n.fn) {
-    case Func::kSin: r = std::sin(x * kRad); break;
-    case Func::kCos: r = std::cos(x * kRad); break;
+    case Func::kSin:
+      r = std::sin(x * kRad);
+      break;
+    case Func::kCos:
+      r = std::cos(x * kRad);
+      break;
     case Func::kTan: {
       const double m = std::fmod(std::fabs(x), 180.0);
-      if (m == 90.0) return bad("TAN of 90 degrees");
+      if (m == 90.0) {
+        return fail(AlarmId::kDivisionByZero, "TAN of an odd multiple of 90 degrees",
+                    loc(n.column));
+      }
       r = std::tan(x * kRad);
       break;
     }
     case Func::kAsin:
       if (x < -1.0 || x > 1.0) return bad("ASIN of a value outside -1..1");
       r = std::asin(x) / kRad;
+      if (!nat && r < 0.0) r += 360.0;  // NAT = 0: 270..90
       break;
     case Func::kAcos:
       if (x < -1.0 || x > 1.0) return bad("ACOS of a value outside -1..1");
@@ -154,24 +177,36 @@ Result<Value> Interpreter::Impl::eval(gcode::ExprId id) {
         if (!b) return b;
         if (x == 0.0 && b->num() == 0.0) return bad("ATAN[0]/[0]");
         r = std::atan2(x, b->num()) / kRad;
-        if (r < 0.0) r += 360.0;  // Fanuc: 0 to 360 degrees (parameter NAT = 0)
       } else {
         r = std::atan(x) / kRad;
       }
+      if (!nat && r < 0.0) r += 360.0;  // NAT = 0: 0..360
       break;
     case Func::kSqrt:
       if (x < 0.0) return bad("SQRT of a negative value");
       r = std::sqrt(x);
       break;
-    case Func::kAbs: r = std::fabs(x); break;
-    case Func::kRound: r = round_half_away(x); break;
-    case Func::kFix: r = std::trunc(x); break;
-    case Func::kFup: r = x >= 0 ? std::ceil(x) : std::floor(x); break;
+    case Func::kAbs:
+      r = std::fabs(x);
+      break;
+    case Func::kRound:
+      r = word_round_increment > 0.0
+              ? round_half_away(x / word_round_increment) * word_round_increment
+              : round_half_away(x);
+      break;
+    case Func::kFix:
+      r = std::trunc(x);
+      break;
+    case Func::kFup:
+      r = x >= 0 ? std::ceil(x) : std::floor(x);
+      break;
     case Func::kLn:
       if (x <= 0.0) return bad("LN of a value that is not positive");
       r = std::log(x);
       break;
-    case Func::kExp: r = std::exp(x); break;
+    case Func::kExp:
+      r = std::exp(x);
+      break;
     case Func::kPow: {
       if (n.b == gcode::kNoExpr) return bad("POW needs two arguments");
       auto b = eval(n.b);
@@ -198,7 +233,8 @@ Result<Value> Interpreter::Impl::eval(gcode::ExprId id) {
       break;
     }
     case Func::kBcd: {
-      if (x < 0 || x != std::trunc(x) || x > 9.0e15) return bad("BCD of a negative or fractional value");
+      if (x < 0 || x != std::trunc(x) || x > 9.0e15)
+        return bad("BCD of a negative or fractional value");
       auto v = static_cast<std::uint64_t>(x);
       std::uint64_t out = 0;
       int shift = 0;
@@ -211,11 +247,15 @@ Result<Value> Interpreter::Impl::eval(gcode::ExprId id) {
       break;
     }
     case Func::kAdp:
+      // ADP: the value of an argument written without a decimal point, as
+      // if written with one (X10 -> #24 = 0.010 -> ADP[#24] = 10).
+      r = x / (modal.units == Units::kInch ? 0.0001 : 0.001);
+      break;
     case Func::kNone:
       return fail(AlarmId::kMacroFormat, "function not available in this control", loc(n.column));
   }
   if (!std::isfinite(r)) return fail(AlarmId::kOverflow, "result out of range", loc(n.column));
-  return Value::of(r);
+  return Value::of(r + 0.0);  // no -0
 }
 
 }  // namespace skipnc::interp

@@ -1,5 +1,7 @@
 // Internal state of the interpreter, shared by its translation units:
-//   interpreter.cpp  program flow: blocks, frames, calls, loops, sync
+//   interpreter.cpp  reading and executing blocks, sync, the public interface
+//   macro_flow.cpp   macro statements: assignment, IF, GOTO, WHILE/DO/END, DPRNT
+//   macro_call.cpp   program lookup, M98/G65/G66 calls, M99 returns, arguments
 //   expr.cpp         expression evaluation and the vacant rules
 //   sysvars.cpp      system variables (#3000.., #4000.., #5000..)
 //   ncblock.cpp      address words, modal groups, offsets, data setting
@@ -29,14 +31,22 @@ struct ProgramFile {
   // O numbers found so far and the position of the block after them.
   std::unordered_map<std::int64_t, gcode::SourcePos> programs;
   bool scanned = false;  // every O number of the file is in `programs`
-  // Sequence numbers seen, for GOTO / M99 P (bounded).
-  std::unordered_map<std::int64_t, gcode::SourcePos> labels;
+  // Sequence numbers of each program of the file, in file order, keyed by
+  // the offset of the program's first block. Filled by one scan of the
+  // program the first time a GOTO or M99 P searches it.
+  std::unordered_map<std::uint64_t, std::vector<std::pair<std::int64_t, gcode::SourcePos>>> labels;
 };
 
 struct Loop {
   int id = 0;
-  gcode::SourcePos pos;  // the WHILE block
+  gcode::SourcePos pos;       // the WHILE (or DO) block
+  std::uint64_t end = 0;      // offset of its END block, once known
+  bool end_known = false;
 };
+
+// Additional work coordinate systems G54.1 P1-P300 follow EXT and G54-G59.
+inline constexpr int kExtraWorkSystems = 300;
+inline constexpr int kWorkSystems = 7 + kExtraWorkSystems;
 
 // One level of the call stack.
 struct Frame {
@@ -55,7 +65,6 @@ struct WordVal {
   double value = 0.0;
   bool has_point = false;
   bool is_expr = false;
-  bool round_in_word = false;  // the expression is ROUND[...]
   std::uint32_t column = 0;
 };
 
@@ -115,7 +124,8 @@ struct Interpreter::Impl {
 
   ModalState modal;
   AxisVec pos;                   // commanded machine position, mm
-  std::array<AxisVec, 7> work_offsets{};  // EXT, G54..G59 (mm)
+  // EXT, G54..G59, then G54.1 P1..P300 (mm); modal.work indexes it.
+  std::vector<AxisVec> work_offsets;
   AxisVec local_shift;           // G52
   AxisVec g92_shift;             // G92
   AxisVec tool_pos_offset;       // G45-G48 accumulated (dialects that have them)
@@ -134,11 +144,23 @@ struct Interpreter::Impl {
   std::int64_t parts_required = 0;
   double timer_ms_base = 0.0;    // #3001 = time - base
   double timer_h_base = 0.0;     // #3002
+  double last_e = 0.0;           // #4108
+  std::array<Value, 3> control_vars{};  // #3003 #3004 #3005
+  bool nat = false;              // 6004#0 NAT: signed ranges of ATAN / ASIN
+  gcode::ParseLimits parse_limits;
+  // ROUND inside an address word rounds to this increment (0: to a whole
+  // number, as in a macro statement). Set while a word is evaluated.
+  double word_round_increment = 0.0;
+  // Arguments of the G65/G66 block being executed (#1-#33), in block order.
+  std::array<Value, kLocalCount + 1> call_args{};
+  bool call_block = false;
   // G66
   std::int64_t modal_macro_program = 0;
   std::array<Value, kLocalCount + 1> modal_macro_args{};
-  std::FILE* dprnt = nullptr;
+  // DPRNT: lines between POPEN and PCLOS, written whole at the end of the run.
+  std::string dprnt_text;
   bool dprnt_open = false;
+  bool dprnt_used = false;
 
   Impl(const Setup& s);
   ~Impl();
@@ -147,14 +169,7 @@ struct Interpreter::Impl {
   Result<void> init(const AxisVec& start);
   Result<Step> step(CommandSink& out);
   Result<Step> execute(CommandSink& out);
-  Result<Step> execute_statement(CommandSink& out);
   Result<bool> read_block();
-  Result<void> find_program(std::int64_t number, ProgramFile*& file, gcode::SourcePos& pos);
-  Result<void> jump_to_label(std::int64_t n, SourceLoc where);
-  Result<void> call(std::int64_t program, int repeats, bool macro, SourceLoc where);
-  Result<Step> return_from_sub(std::optional<std::int64_t> label, SourceLoc where);
-  Result<void> macro_call(const Words& words, std::int64_t program, int repeats, bool modal_call,
-                          SourceLoc where);
   Result<void> sync(const SyncState& s);
   SourceLoc loc(std::uint32_t column) const noexcept {
     return SourceLoc{frames.empty() ? std::string_view(setup.program_name)
@@ -162,6 +177,26 @@ struct Interpreter::Impl {
                      cur_line, column};
   }
   Result<void> count_statement(SourceLoc where);
+
+  // macro_flow.cpp
+  Result<Step> execute_statement(CommandSink& out);
+  Result<bool> condition(gcode::ExprId cond, SourceLoc where);
+  // GOTO / M99 P: the first N n after the block at offset `from`, else the first one.
+  Result<void> jump_to_label(std::int64_t n, std::uint64_t from, SourceLoc where);
+  Result<void> find_loop_end(Loop& l);
+  Result<void> leave_loops_for(std::uint64_t target);
+  Result<void> print_line(SourceLoc where);
+  Result<void> write_dprnt() const;
+
+  // macro_call.cpp
+  Result<void> find_program(std::int64_t number, ProgramFile*& file, gcode::SourcePos& pos,
+                            SourceLoc where);
+  Result<void> call(std::int64_t program, int repeats, bool macro, SourceLoc where);
+  Result<Step> return_from_sub(std::optional<std::int64_t> label, SourceLoc where);
+  Result<void> macro_call(std::int64_t program, int repeats, bool modal_call, SourceLoc where);
+  Result<void> collect_argument(const gcode::Word& w, const WordVal& v, int& ijk_set,
+                                int& ijk_last);
+  bool in_modal_call() const noexcept;
 
   // expr.cpp
   Result<Value> eval(gcode::ExprId id);
@@ -171,6 +206,7 @@ struct Interpreter::Impl {
   // sysvars.cpp
   Result<Value> read_var(int n, SourceLoc where);
   Result<void> write_var(int n, Value v, SourceLoc where);
+  double* tool_field(int n) noexcept;
   Result<Value> read_named_var(const std::string& name, SourceLoc where);
   Result<void> write_named_var(const std::string& name, Value v, SourceLoc where);
 

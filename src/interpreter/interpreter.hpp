@@ -93,7 +93,9 @@ class Interpreter {
   const std::vector<SkipRecord>& skips() const noexcept;
   std::uint32_t line() const noexcept;     // line of the block being executed
   const AxisVec& position() const noexcept; // commanded machine position
-  // Writes #500-#999 when they changed (atomic). Called once at the end.
+  // Writes #500-#999 when they changed, and the DPRNT file when --dprnt
+  // named one and the program opened it (POPEN); each file atomically.
+  // Called once at the end of a run.
   [[nodiscard]] Result<void> save_persistent() const;
 
   struct Impl;

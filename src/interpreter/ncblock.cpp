@@ -28,7 +28,7 @@ constexpr GDef kGCodes[] = {
     {450, Group::k00},  {460, Group::k00},  {470, Group::k00},  {480, Group::k00},
     {490, Group::k08},  {520, Group::k00},  {530, Group::k00},  {540, Group::k14},
     {550, Group::k14},  {560, Group::k14},  {570, Group::k14},  {580, Group::k14},
-    {590, Group::k14},  {610, Group::k15},  {640, Group::k15},  {650, Group::k00},
+    {590, Group::k14},  {541, Group::k14},  {610, Group::k15},  {640, Group::k15},  {650, Group::k00},
     {660, Group::k12},  {670, Group::k12},  {800, Group::k09},  {900, Group::k03},
     {910, Group::k03},  {920, Group::k00},  {940, Group::k05},  {950, Group::k05},
     {980, Group::k10},  {990, Group::k10},
@@ -70,14 +70,33 @@ double Interpreter::Impl::machine_of(int axis, double work_units) const noexcept
   return work_units * unit_mm() + offset_total(axis);
 }
 
+// Evaluates the words of an NC block. In a G65/G66 block every address but
+// G, P and L is a macro argument (see collect_argument); elsewhere an
+// address may appear once.
 Result<void> Interpreter::Impl::collect_words(Words& words) {
+  call_block = false;
+  for (const gcode::Word& w : blk.words) {
+    if (w.letter == 'G' && !w.is_expr && (w.value == 65.0 || w.value == 66.0)) {
+      call_block = true;
+      call_args.fill(Value::null());
+      break;
+    }
+  }
+  int ijk_set = -1, ijk_last = -1;
   for (const gcode::Word& w : blk.words) {
     WordVal v;
     v.column = w.column;
     v.has_point = w.has_point;
     v.is_expr = w.is_expr;
     if (w.is_expr) {
+      // ROUND in an address rounds to the address's least input increment
+      // (lengths: 0.001 mm, 0.0001 inch); elsewhere to a whole number.
+      const bool length = axis_of_letter[static_cast<std::size_t>(w.letter - 'A')] >= 0 ||
+                          w.letter == 'I' || w.letter == 'J' || w.letter == 'K' ||
+                          w.letter == 'R' || w.letter == 'Q';
+      word_round_increment = length ? (modal.units == Units::kInch ? 0.0001 : 0.001) : 0.0;
       auto e = eval(w.expr);
+      word_round_increment = 0.0;
       if (!e) return std::unexpected(e.error());
       if (e->vacant) continue;  // a vacant variable in a word: the word is omitted
       if (!std::isfinite(e->v)) {
@@ -85,17 +104,13 @@ Result<void> Interpreter::Impl::collect_words(Words& words) {
                     loc(w.column));
       }
       v.value = e->v;
-      const gcode::ExprNode& top = blk.nodes[static_cast<std::size_t>(w.expr)];
-      v.round_in_word = top.op == gcode::Op::kFunc && top.fn == gcode::Func::kRound;
-      if (v.round_in_word) {
-        // ROUND in an address rounds to the address's least input increment.
-        auto inner = eval(top.a);
-        if (!inner) return std::unexpected(inner.error());
-        const double inc = modal.units == Units::kInch ? 0.0001 : 0.001;
-        v.value = std::round(inner->num() / inc) * inc;
-      }
     } else {
       v.value = w.value;
+    }
+    if (call_block && w.letter != 'G' && w.letter != 'P' && w.letter != 'L') {
+      auto a = collect_argument(w, v, ijk_set, ijk_last);
+      if (!a) return a;
+      continue;
     }
     if (w.letter == 'G') {
       if (words.g_count == static_cast<int>(words.g.size())) {
@@ -113,10 +128,12 @@ Result<void> Interpreter::Impl::collect_words(Words& words) {
       if (words.m_count == 3) {
         return fail(AlarmId::kTooManyMCodes, "more than 3 M codes in one block", loc(w.column));
       }
-      if (v.value != std::trunc(v.value) || v.value < 0 || v.value > 99999999) {
+      // A value in brackets is rounded (M[3.5] is M4); a literal must be whole.
+      const double m = w.is_expr ? std::round(v.value) : v.value;
+      if (m != std::trunc(m) || m < 0 || m > 99999999) {
         return fail(AlarmId::kUnknownMCode, "M" + std::to_string(v.value), loc(w.column));
       }
-      words.m[static_cast<std::size_t>(words.m_count++)] = static_cast<int>(v.value);
+      words.m[static_cast<std::size_t>(words.m_count++)] = static_cast<int>(m);
       continue;
     }
     auto& slot = words.slot(w.letter);
@@ -151,8 +168,8 @@ Result<void> Interpreter::Impl::set_tool_length(const Words& words, LengthComp m
 }
 
 // G10: programmable data input. L2 Pn: work offset n (0 = EXT, 1-6 = G54-G59);
-// L10/L11: H geometry/wear; L12/L13: D geometry/wear; L1: H wear (memory A).
-// G90 sets, G91 adds.
+// L20 Pn: G54.1 Pn (1-300); L10/L11: H geometry/wear; L12/L13: D
+// geometry/wear; L1: H wear (memory A). G90 sets, G91 adds.
 Result<void> Interpreter::Impl::data_setting(const Words& words, SourceLoc where) {
   if (!words.has('L')) return fail(AlarmId::kBadValue, "G10 needs L", where);
   const int l = static_cast<int>(words.at('L').value);
@@ -160,13 +177,17 @@ Result<void> Interpreter::Impl::data_setting(const Words& words, SourceLoc where
   if (!words.has('P')) return fail(AlarmId::kBadValue, "G10 needs P", where);
   const double pv = words.at('P').value;
   if (l == 2 || l == 20) {
-    if (l == 20 || pv != std::trunc(pv) || pv < 0 || pv > 6) {
+    const double lo = l == 2 ? 0 : 1;
+    const double hi = l == 2 ? 6 : kExtraWorkSystems;
+    if (pv != std::trunc(pv) || pv < lo || pv > hi) {
       return fail(AlarmId::kIllegalOffsetNumber,
                   "G10 L" + std::to_string(l) + " P" + std::to_string(pv) +
-                      ": work offsets are P0 (EXT) and P1-P6 (G54-G59)",
+                      (l == 2 ? ": work offsets are P0 (EXT) and P1-P6 (G54-G59)"
+                              : ": G54.1 work offsets are P1-P300"),
                   loc(words.at('P').column));
     }
-    AxisVec& o = work_offsets[static_cast<std::size_t>(pv)];
+    const int set = static_cast<int>(pv) + (l == 20 ? 6 : 0);
+    AxisVec& o = work_offsets[static_cast<std::size_t>(set)];
     for (int i = 0; i < axis_count; ++i) {
       const char c = axis_letter[static_cast<std::size_t>(i)];
       if (!words.has(c)) continue;
@@ -244,6 +265,17 @@ Result<Step> Interpreter::Impl::execute_nc(const Words& words, CommandSink& out)
       case 540: case 550: case 560: case 570: case 580: case 590:
         next.work = (code - 530) / 10;
         break;
+      case 541: {
+        // G54.1 Pn: additional work coordinate system n (1-300), after EXT
+        // and G54-G59 in work_offsets. P omitted: P1.
+        const double pn = words.has('P') ? words.at('P').value : 1.0;
+        if (pn != std::trunc(pn) || pn < 1 || pn > kExtraWorkSystems) {
+          return fail(AlarmId::kIllegalOffsetNumber, "G54.1 P" + std::to_string(pn) + ": P1-P300",
+                      words.has('P') ? loc(words.at('P').column) : at);
+        }
+        next.work = 6 + static_cast<int>(pn);
+        break;
+      }
       case 610: next.path = PathMode::kExactStop; break;
       case 640: next.path = PathMode::kContinuous; break;
       case 650: g65 = true; break;
@@ -262,30 +294,51 @@ Result<Step> Interpreter::Impl::execute_nc(const Words& words, CommandSink& out)
   }
   const SourceLoc block_loc = loc(cur_col);
 
-  // Macro calls take every other word as an argument.
-  if (g65 || (next.modal_macro && !modal.modal_macro)) {
+  // G65 / G66: every other word is an argument (collected in block order by
+  // collect_words); G66 runs the macro after each later block that moves,
+  // until G67. A second G66 replaces the first (nested modal calls are not
+  // modelled).
+  const bool g66 = words.has_g(660);
+  if (g65 || g66) {
+    if (!call_block) {
+      return fail(AlarmId::kMacroFormat, "G65/G66 must be written as a number (G65, not G#i)",
+                  block_loc);
+    }
+    if (words.g_count > 1) {
+      for (int i = 0; i < words.g_count; ++i) {
+        const int code = words.g[static_cast<std::size_t>(i)];
+        if (code != 650 && code != 660) {
+          return fail(AlarmId::kIllegalArgumentAddress,
+                      g_name(code) + " in a G65/G66 block: G cannot be an argument",
+                      loc(words.g_col[static_cast<std::size_t>(i)]));
+        }
+      }
+    }
     if (!words.has('P')) {
-      return fail(AlarmId::kProgramNotFound, g65 ? "G65 needs P (program number)" : "G66 needs P", block_loc);
+      return fail(AlarmId::kProgramNotFound,
+                  g65 ? "G65 needs P (program number)" : "G66 needs P (program number)",
+                  block_loc);
     }
     const double p = words.at('P').value;
-    int repeats = 1;
-    if (words.has('L')) repeats = static_cast<int>(words.at('L').value);
-    if (p != std::trunc(p) || p < 1 || p > 99999999 || repeats < 1) {
-      return fail(AlarmId::kProgramNotFound, "P" + std::to_string(p), loc(words.at('P').column));
+    double l = 1.0;
+    if (words.has('L')) l = words.at('L').value;
+    if (p != std::trunc(p) || p < 1 || p > 99999999) {
+      return fail(AlarmId::kProgramNotFound, "P" + std::to_string(p) + " is not a program number",
+                  loc(words.at('P').column));
     }
+    if (l != std::trunc(l) || l < 0 || l > 9999) {
+      return fail(AlarmId::kBadValue, "L" + std::to_string(l) + ": repetitions are 0-9999",
+                  loc(words.at('L').column));
+    }
+    const auto repeats = static_cast<int>(l);
     if (g65) {
-      auto c = macro_call(words, static_cast<std::int64_t>(p), repeats, false, block_loc);
+      if (repeats == 0) return Step::kContinue;
+      auto c = macro_call(static_cast<std::int64_t>(p), repeats, false, block_loc);
       if (!c) return std::unexpected(c.error());
       return Step::kContinue;
     }
-    // G66: remember the call; it runs after each move block.
     modal_macro_program = static_cast<std::int64_t>(p);
-    modal_macro_args.fill(Value::null());
-    static constexpr char kArgs[] = "ABCDEFHIJKMQRSTUVWXYZ";
-    static constexpr int kNums[] = {1, 2, 3, 7, 8, 9, 11, 4, 5, 6, 13, 17, 18, 19, 20, 21, 22, 23, 24, 25, 26};
-    for (std::size_t i = 0; i < sizeof kNums / sizeof kNums[0]; ++i) {
-      if (words.has(kArgs[i])) modal_macro_args[static_cast<std::size_t>(kNums[i])] = Value::of(words.at(kArgs[i]).value);
-    }
+    modal_macro_args = call_args;
     modal.modal_macro = true;
     return Step::kContinue;
   }
@@ -301,6 +354,7 @@ Result<Step> Interpreter::Impl::execute_nc(const Words& words, CommandSink& out)
   }
 
   // F S T
+  if (words.has('E')) last_e = words.at('E').value;
   if (words.has('F')) {
     const double f = words.at('F').value;
     if (f < 0) return fail(AlarmId::kBadValue, "negative F", loc(words.at('F').column));
@@ -438,7 +492,16 @@ Result<Step> Interpreter::Impl::execute_nc(const Words& words, CommandSink& out)
       }
       case 99: {
         std::optional<std::int64_t> label;
-        if (words.has('P')) label = static_cast<std::int64_t>(words.at('P').value);
+        if (words.has('P')) {
+          const double pv = std::round(words.at('P').value);
+          if (pv < 1 || pv > 99999) {
+            return fail(AlarmId::kIllegalSequenceNumber,
+                        "M99 P" + std::to_string(words.at('P').value) +
+                            ": sequence numbers are 1 to 99999",
+                        loc(words.at('P').column));
+          }
+          label = static_cast<std::int64_t>(pv);
+        }
         return return_from_sub(label, block_loc);
       }
       case 3: case 4: case 5:
@@ -449,42 +512,13 @@ Result<Step> Interpreter::Impl::execute_nc(const Words& words, CommandSink& out)
     }
   }
 
-  // G66: the modal macro runs after each block that moved.
-  if (moved && modal.modal_macro && modal_macro_program != 0 &&
-      !(frames.size() > 1 && frames.back().modal_call)) {
-    Words none;
-    auto c = macro_call(none, modal_macro_program, 1, true, block_loc);
+  // G66: the modal macro runs after each block that moved, but not for the
+  // moves of the macro it calls (nor of what that macro calls).
+  if (moved && modal.modal_macro && modal_macro_program != 0 && !in_modal_call()) {
+    auto c = macro_call(modal_macro_program, 1, true, block_loc);
     if (!c) return std::unexpected(c.error());
   }
   return Step::kContinue;
-}
-
-// G65 / G66: argument specification I (A B C D E F H I J K M Q R S T U V W
-// X Y Z -> #1..#26). A value without decimal point is taken as written.
-Result<void> Interpreter::Impl::macro_call(const Words& words, std::int64_t program, int repeats,
-                                           bool modal_call, SourceLoc where) {
-  std::array<Value, kLocalCount + 1> args{};
-  if (modal_call) {
-    args = modal_macro_args;
-  } else {
-    static constexpr char kArgs[] = "ABCDEFHIJKMQRSTUVWXYZ";
-    static constexpr int kNums[] = {1, 2, 3, 7, 8, 9, 11, 4, 5, 6, 13, 17, 18, 19, 20, 21, 22, 23, 24, 25, 26};
-    for (std::size_t i = 0; i < sizeof kNums / sizeof kNums[0]; ++i) {
-      if (words.has(kArgs[i])) args[static_cast<std::size_t>(kNums[i])] = Value::of(words.at(kArgs[i]).value);
-    }
-    if (words.has('G')) {
-      return fail(AlarmId::kIllegalArgumentAddress, "G as a macro argument", where);
-    }
-    // Argument specification II: I J K repeated (the parser keeps one word
-    // per address, so repeated I/J/K are refused as repeated words).
-  }
-  auto c = call(program, repeats, true, where);
-  if (!c) return c;
-  frames.back().modal_call = modal_call;
-  vars.push_level();
-  auto& locals = vars.locals();
-  locals = args;
-  return {};
 }
 
 void Interpreter::Impl::emit(CommandSink& out, canon::Command cmd) {

@@ -3,7 +3,9 @@
 //   <case>.canon        expected `skipnc canon` output, exactly;
 //   <case>.json         expected report fields (a subset of the report; numbers
 //                       within "tolerance", default 1e-6), plus "exit" (the
-//                       exit status) and "args" (extra command-line words);
+//                       exit status) and "args" (extra command-line words, in
+//                       which ${SOURCE_DIR} and ${TMP} name the source tree and
+//                       the run's temporary folder);
 //   <case>.scene.toml   the scene for the run (optional);
 //   <case>.machine.toml the machine for the run and for canon (optional).
 #include <gtest/gtest.h>
@@ -85,7 +87,18 @@ TEST_P(Golden, MatchesStoredResult) {
     if (fs::exists(scene)) args.insert(args.end(), {"--scene", scene.string()});
     if (fs::exists(machine)) args.insert(args.end(), {"-m", machine.string()});
     if (want.contains("args")) {
-      for (const auto& a : want["args"]) args.push_back(a.get<std::string>());
+      for (const auto& a : want["args"]) {
+        // ${SOURCE_DIR}: the source tree (examples/...); ${TMP}: the run's temp folder.
+        std::string v = a.get<std::string>();
+        for (const auto& [key, value] :
+             {std::pair<std::string, std::string>{"${SOURCE_DIR}", SKIPNC_SOURCE_DIR},
+              {"${TMP}", tmp.path.string()}}) {
+          for (auto at = v.find(key); at != std::string::npos; at = v.find(key)) {
+            v.replace(at, key.size(), value);
+          }
+        }
+        args.push_back(v);
+      }
     }
     const auto r = run_cli(args);
     EXPECT_EQ(r.exit_code, want.value("exit", 0)) << "exit status of " << nc;

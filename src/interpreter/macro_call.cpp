@@ -1,0 +1,278 @@
+// Calls: program lookup, M98 subprogram calls, G65 / G66 macro calls with
+// their arguments, and M99 returns.
+//
+// Program lookup (docs/macro.md): O<n> is looked for, as a number (O0010 is
+// O10), in the running file, the main program file and every file already
+// loaded; then on the include path (-I, else the main program's folder), in
+// order, as the files O<n>.nc, O<n>.NC, o<n>.nc, <n>.nc, O<n>, and with the
+// number padded to four digits (O0010.nc, O0010). A program can only name a
+// number: the file name is built here from digits, so no path a program
+// writes can reach outside the include folders, and a file found there
+// through a link that leads outside them is refused.
+#include <algorithm>
+#include <cstring>
+#include <filesystem>
+
+#include "interpreter/impl.hpp"
+
+namespace skipnc::interp {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// True when `p` (after resolving links) lies inside folder `dir`.
+bool inside(const fs::path& p, const fs::path& dir) {
+  std::error_code ec;
+  const fs::path rp = fs::weakly_canonical(p, ec);
+  if (ec) return false;
+  const fs::path rd = fs::weakly_canonical(dir, ec);
+  if (ec) return false;
+  auto r = std::mismatch(rd.begin(), rd.end(), rp.begin(), rp.end());
+  return r.first == rd.end();
+}
+
+}  // namespace
+
+Result<void> Interpreter::Impl::find_program(std::int64_t number, ProgramFile*& file,
+                                             gcode::SourcePos& at, SourceLoc where) {
+  auto scan = [&](ProgramFile& pf) -> Result<bool> {
+    if (auto it = pf.programs.find(number); it != pf.programs.end()) {
+      file = &pf;
+      at = it->second;
+      return true;
+    }
+    if (pf.scanned) return false;
+    // Scan the file once for program numbers with a source of its own, so
+    // the running read position is not disturbed.
+    std::unique_ptr<gcode::Source> scanner;
+    if (pf.path.empty()) {
+      scanner = gcode::make_string_source(pf.display, setup.program_text);
+    } else {
+      auto s = gcode::open_file_source(pf.path, pf.display);
+      if (!s) return std::unexpected(s.error());
+      scanner = std::move(*s);
+    }
+    gcode::RawBlock rb;
+    for (;;) {
+      auto more = scanner->next(rb);
+      if (!more) return std::unexpected(more.error());
+      if (!*more) break;
+      std::size_t i = 0;
+      while (i < rb.text.size() && (rb.text[i] == ' ' || rb.text[i] == '\t')) ++i;
+      if (i < rb.text.size() && (rb.text[i] == 'O' || rb.text[i] == 'o' || rb.text[i] == ':')) {
+        std::int64_t n = 0;
+        std::size_t j = i + 1;
+        int digits = 0;
+        while (j < rb.text.size() && rb.text[j] >= '0' && rb.text[j] <= '9' && digits < 12) {
+          n = n * 10 + (rb.text[j] - '0');
+          ++j;
+          ++digits;
+        }
+        if (digits > 0) pf.programs.emplace(n, scanner->tell());
+      }
+    }
+    pf.scanned = true;
+    if (auto it = pf.programs.find(number); it != pf.programs.end()) {
+      file = &pf;
+      at = it->second;
+      return true;
+    }
+    return false;
+  };
+  for (ProgramFile* pf : {frames.back().file, files.front().get()}) {
+    auto r = scan(*pf);
+    if (!r) return std::unexpected(r.error());
+    if (*r) return {};
+  }
+  for (auto& pf : files) {
+    auto r = scan(*pf);
+    if (!r) return std::unexpected(r.error());
+    if (*r) return {};
+  }
+  std::vector<std::string> dirs = setup.include_dirs;
+  if (dirs.empty()) {
+    const fs::path parent = fs::path(setup.program_path).parent_path();
+    dirs.push_back(setup.program_path.empty() || parent.empty() ? std::string(".")
+                                                                : parent.string());
+  }
+  const std::string n = std::to_string(number);
+  std::vector<std::string> names = {"O" + n + ".nc", "O" + n + ".NC", "o" + n + ".nc", n + ".nc",
+                                    "O" + n};
+  if (number < 1000) {
+    char padded[24];
+    std::snprintf(padded, sizeof padded, "%04lld", static_cast<long long>(number));
+    names.push_back("O" + std::string(padded) + ".nc");
+    names.push_back("O" + std::string(padded));
+  }
+  for (const auto& d : dirs) {
+    const fs::path dir(d.empty() ? "." : d);
+    for (const auto& name : names) {
+      const fs::path p = dir / name;
+      std::error_code ec;
+      if (!fs::is_regular_file(p, ec)) continue;
+      if (!inside(p, dir)) {
+        return fail(AlarmId::kProgramNotFound,
+                    "program O" + n + ": '" + p.string() + "' leads outside the include folder",
+                    where);
+      }
+      auto pf = std::make_unique<ProgramFile>();
+      pf->path = p.string();
+      pf->display = p.filename().string();
+      auto src = gcode::open_file_source(pf->path, pf->display);
+      if (!src) return std::unexpected(src.error());
+      pf->src = std::move(*src);
+      ProgramFile* raw_pf = pf.get();
+      files.push_back(std::move(pf));
+      auto r = scan(*raw_pf);
+      if (!r) return std::unexpected(r.error());
+      if (*r) return {};
+      // A file named after the program without an O block: run it from the top.
+      file = raw_pf;
+      at = gcode::SourcePos{};
+      raw_pf->programs.emplace(number, at);
+      return {};
+    }
+  }
+  return fail(AlarmId::kProgramNotFound, "program O" + n + " not found", where);
+}
+
+// Nesting (Fanuc): G65/G66 macro calls up to 4 levels, M98 subprogram calls
+// up to 10 levels, each counted on its own (limits.max_macro_levels,
+// limits.max_subprogram_levels of the machine file).
+Result<void> Interpreter::Impl::call(std::int64_t program, int repeats, bool macro,
+                                     SourceLoc where) {
+  int subs = 0, macros = 0;
+  for (std::size_t i = 1; i < frames.size(); ++i) (frames[i].macro ? macros : subs)++;
+  if (macro && macros >= mc.limits.max_macro_levels) {
+    return fail(
+        AlarmId::kMacroNesting,
+        "macro call nesting deeper than " + std::to_string(mc.limits.max_macro_levels) + " levels",
+        where);
+  }
+  if (!macro && subs >= mc.limits.max_subprogram_levels) {
+    return fail(AlarmId::kSubprogramNesting,
+                "subprogram nesting deeper than " +
+                    std::to_string(mc.limits.max_subprogram_levels) + " levels",
+                where);
+  }
+  ProgramFile* file = nullptr;
+  gcode::SourcePos at;
+  auto found = find_program(program, file, at, where);
+  if (!found) return found;
+  frames.back().resume = frames.back().file->src->tell();
+  Frame f;
+  f.file = file;
+  f.start = at;
+  f.resume = at;
+  f.program = program;
+  f.repeats_left = repeats - 1;
+  f.macro = macro;
+  frames.push_back(f);
+  return file->src->seek(at);
+}
+
+// M99 (or the end of a called program): runs the program again while
+// repetitions are left, else returns to the block after the call, or with
+// M99 Pn to sequence number n of the calling program.
+Result<Step> Interpreter::Impl::return_from_sub(std::optional<std::int64_t> label,
+                                                SourceLoc where) {
+  Frame& f = frames.back();
+  if (frames.size() == 1) {
+    // M99 in the main program: back to its start (or to the label), as the
+    // control does; the statement limit ends an endless repetition.
+    if (label) {
+      auto j = jump_to_label(*label, block_pos.offset, where);
+      if (!j) return std::unexpected(j.error());
+      return Step::kContinue;
+    }
+    auto s = f.file->src->seek(f.start);
+    if (!s) return std::unexpected(s.error());
+    f.loops.clear();
+    return Step::kContinue;
+  }
+  if (f.repeats_left > 0) {
+    --f.repeats_left;
+    f.loops.clear();
+    auto s = f.file->src->seek(f.start);
+    if (!s) return std::unexpected(s.error());
+    return Step::kContinue;
+  }
+  const bool macro = f.macro;
+  frames.pop_back();
+  if (macro) vars.pop_level();
+  Frame& caller = frames.back();
+  auto s = caller.file->src->seek(caller.resume);
+  if (!s) return std::unexpected(s.error());
+  if (label) {
+    const std::uint64_t from = caller.resume.offset > 0 ? caller.resume.offset - 1 : 0;
+    auto j = jump_to_label(*label, from, where);
+    if (!j) return std::unexpected(j.error());
+  }
+  return Step::kContinue;
+}
+
+bool Interpreter::Impl::in_modal_call() const noexcept {
+  for (const Frame& f : frames) {
+    if (f.modal_call) return true;
+  }
+  return false;
+}
+
+// One argument word of a G65/G66 block, in block order.
+// Specification I: A B C D E F H I J K M Q R S T U V W X Y Z -> #1..#26
+// (A1 B2 C3 I4 J5 K6 D7 E8 F9 H11 M13 Q17 R18 S19 T20 U21 V22 W23 X24 Y25
+// Z26). Specification II: I J K repeated up to ten times -> #4..#33, a new
+// set starting when a letter does not follow the previous one in I J K
+// order. Where both name one variable (D and I2 -> #7), the later word wins
+// (Fanuc 16i operator's manual B-63684EN, custom macro, "mixture of argument
+// specifications I and II").
+// Decimal point (same manual, "position of the decimal point"): a value
+// written without a decimal point is in the least input increment of its
+// address: lengths (X Y Z U V W I J K Q R and axis letters) become
+// 0.001 mm / 0.0001 inch per unit (unless parameter 3401#0 DPI = 1); the
+// other addresses (D E F H M S T, and A B C when they are not axes) are
+// taken as written. Expressions (X#1, X[...]) are taken as computed.
+Result<void> Interpreter::Impl::collect_argument(const gcode::Word& w, const WordVal& v,
+                                                 int& ijk_set, int& ijk_last) {
+  static constexpr std::array<std::int8_t, 26> kSpecI = {
+      1,  2,  3,  7,  8,  9,  -1, 11, 4,  5,  6,  -1, 13,  // A..M
+      -1, -1, -1, 17, 18, 19, 20, 21, 22, 23, 24, 25, 26,  // N..Z
+  };
+  const char c = w.letter;
+  int var = 0;
+  if (c == 'I' || c == 'J' || c == 'K') {
+    const int k = c - 'I';
+    if (ijk_set < 0 || k <= ijk_last) ++ijk_set;
+    ijk_last = k;
+    if (ijk_set >= 10) {
+      return fail(AlarmId::kIllegalArgumentAddress,
+                  std::string("more than ten sets of I J K arguments (") + c + ")", loc(w.column));
+    }
+    var = 4 + ijk_set * 3 + k;
+  } else {
+    var = kSpecI[static_cast<std::size_t>(c - 'A')];
+    if (var < 0) {
+      return fail(AlarmId::kIllegalArgumentAddress,
+                  std::string(1, c) + " cannot be a macro argument", loc(w.column));
+    }
+  }
+  const bool length = axis_of_letter[static_cast<std::size_t>(c - 'A')] >= 0 ||
+                      std::strchr("IJKQRUVWXYZ", c) != nullptr;
+  const double x = length ? word_length(v, false) : v.value;
+  call_args[static_cast<std::size_t>(var)] = Value::of(x);
+  return {};
+}
+
+Result<void> Interpreter::Impl::macro_call(std::int64_t program, int repeats, bool modal_call,
+                                           SourceLoc where) {
+  const std::array<Value, kLocalCount + 1> args = modal_call ? modal_macro_args : call_args;
+  auto c = call(program, repeats, true, where);
+  if (!c) return c;
+  frames.back().modal_call = modal_call;
+  vars.push_level();
+  vars.locals() = args;
+  return {};
+}
+
+}  // namespace skipnc::interp

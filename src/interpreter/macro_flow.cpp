@@ -1,0 +1,364 @@
+// Macro statements (Custom Macro B): assignment, IF ... GOTO / THEN, GOTO,
+// WHILE ... DO m / END m, and the output statements POPEN, DPRNT, PCLOS.
+//
+// GOTO n and M99 Pn search the running program (never another program of
+// the same file): forward from the block after the GOTO first, then from the
+// program's first block, so the first N n after the GOTO wins and a
+// backward jump finds the first N n of the program. Each program is scanned
+// once, the first time a search needs it; later jumps use that table.
+//
+// Loops: DO m with m = 1..3, nested up to three deep. A GOTO may leave a loop
+// (the loop is dropped from the frame's loop stack when the target is
+// outside its WHILE..END range); jumping into a loop is refused by the END
+// that finds no matching DO.
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <limits>
+
+#include "interpreter/impl.hpp"
+
+namespace skipnc::interp {
+namespace {
+
+constexpr std::uint64_t kNoEnd = std::numeric_limits<std::uint64_t>::max();
+
+bool is_comparison(gcode::Op op) noexcept {
+  using gcode::Op;
+  return op == Op::kEq || op == Op::kNe || op == Op::kGt || op == Op::kGe || op == Op::kLt ||
+         op == Op::kLe;
+}
+
+// A conditional expression: a comparison, or AND / OR / XOR of two of them
+// (IF [[#1 EQ 1] OR [#2 EQ 2]]).
+bool is_condition(const gcode::Block& b, gcode::ExprId id) noexcept {
+  if (id < 0 || static_cast<std::size_t>(id) >= b.nodes.size()) return false;
+  const gcode::ExprNode& n = b.nodes[static_cast<std::size_t>(id)];
+  if (is_comparison(n.op)) return true;
+  if (n.op == gcode::Op::kAnd || n.op == gcode::Op::kOr || n.op == gcode::Op::kXor) {
+    return is_condition(b, n.a) && is_condition(b, n.b);
+  }
+  return false;
+}
+
+}  // namespace
+
+Result<bool> Interpreter::Impl::condition(gcode::ExprId cond, SourceLoc where) {
+  if (!is_condition(blk, cond)) {
+    return fail(AlarmId::kMacroFormat,
+                "the condition must be a comparison (EQ NE GT GE LT LE), e.g. [#1 GT 0]", where);
+  }
+  auto c = eval(cond);
+  if (!c) return std::unexpected(c.error());
+  return c->num() != 0.0;
+}
+
+Result<Step> Interpreter::Impl::execute_statement(CommandSink& out) {
+  (void)out;
+  const gcode::Stmt& s = blk.stmt;
+  const SourceLoc where = loc(s.column);
+  using gcode::StmtKind;
+  switch (s.kind) {
+    case StmtKind::kAssign: {
+      auto v = eval(s.rhs);
+      if (!v) return std::unexpected(v.error());
+      auto a = assign(s.lhs, *v);
+      if (!a) return std::unexpected(a.error());
+      return Step::kContinue;
+    }
+    case StmtKind::kIfThen: {
+      auto c = condition(s.cond, where);
+      if (!c) return std::unexpected(c.error());
+      if (*c) {
+        auto v = eval(s.rhs);
+        if (!v) return std::unexpected(v.error());
+        auto a = assign(s.lhs, *v);
+        if (!a) return std::unexpected(a.error());
+      }
+      return Step::kContinue;
+    }
+    case StmtKind::kGoto:
+    case StmtKind::kIfGoto: {
+      if (s.kind == StmtKind::kIfGoto) {
+        auto c = condition(s.cond, where);
+        if (!c) return std::unexpected(c.error());
+        if (!*c) return Step::kContinue;
+      }
+      auto t = eval(s.target);
+      if (!t) return std::unexpected(t.error());
+      // Sequence numbers 1-99999 (Fanuc 0i/30i); the value is rounded.
+      const double n = std::round(t->num());
+      if (t->vacant || n < 1 || n > 99999) {
+        char buf[64];
+        std::snprintf(buf, sizeof buf, "GOTO %.6g: sequence numbers are 1 to 99999", t->num());
+        return fail(AlarmId::kIllegalSequenceNumber, t->vacant ? "GOTO a vacant variable" : buf,
+                    where);
+      }
+      auto j = jump_to_label(static_cast<std::int64_t>(n), block_pos.offset, where);
+      if (!j) return std::unexpected(j.error());
+      return Step::kContinue;
+    }
+    case StmtKind::kWhile:
+    case StmtKind::kDo: {
+      if (s.loop < 1 || s.loop > 3) {
+        return fail(AlarmId::kIllegalLoopNumber,
+                    "DO " + std::to_string(s.loop) + ": loop numbers are 1, 2 and 3", where);
+      }
+      bool run = true;
+      if (s.kind == StmtKind::kWhile) {
+        auto c = condition(s.cond, where);
+        if (!c) return std::unexpected(c.error());
+        run = *c;
+      }
+      Frame& f = frames.back();
+      const bool again = !f.loops.empty() && f.loops.back().pos.offset == block_pos.offset;
+      if (run) {
+        if (again) return Step::kContinue;
+        // A loop with the same number still on the stack: either this DO is
+        // inside it (illegal) or that loop was left by a GOTO.
+        for (std::size_t i = f.loops.size(); i-- > 0;) {
+          Loop& l = f.loops[i];
+          if (l.id != s.loop) continue;
+          auto e = find_loop_end(l);
+          if (!e) return std::unexpected(e.error());
+          if (block_pos.offset > l.pos.offset && block_pos.offset < l.end) {
+            return fail(AlarmId::kIllegalLoopNumber,
+                        "DO " + std::to_string(s.loop) + " inside a loop with the same number",
+                        where);
+          }
+          f.loops.resize(i);
+          break;
+        }
+        if (f.loops.size() >= 3) {
+          return fail(AlarmId::kIllegalLoopNumber, "loops nested more than 3 deep", where);
+        }
+        f.loops.push_back(Loop{s.loop, block_pos, 0, false});
+        return Step::kContinue;
+      }
+      if (again) f.loops.pop_back();
+      // Continue after the matching END.
+      const int id = s.loop;
+      const SourceLoc start = where;
+      const std::uint64_t program_start = f.start.offset;
+      for (;;) {
+        auto got = read_block();
+        if (!got) return std::unexpected(got.error());
+        if (!*got || blk.percent || (blk.has_o && block_pos.offset != program_start)) {
+          return fail(AlarmId::kMissingEnd, "no END " + std::to_string(id) + " for this DO", start);
+        }
+        if (blk.stmt.kind == StmtKind::kEnd && blk.stmt.loop == id) break;
+      }
+      f.resume = f.file->src->tell();
+      return Step::kContinue;
+    }
+    case StmtKind::kEnd: {
+      if (s.loop < 1 || s.loop > 3) {
+        return fail(AlarmId::kIllegalLoopNumber,
+                    "END " + std::to_string(s.loop) + ": loop numbers are 1, 2 and 3", where);
+      }
+      Frame& f = frames.back();
+      if (f.loops.empty() || f.loops.back().id != s.loop) {
+        return fail(
+            AlarmId::kMissingEnd,
+            "END " + std::to_string(s.loop) + " without a matching DO " + std::to_string(s.loop),
+            where);
+      }
+      Loop& l = f.loops.back();
+      l.end = block_pos.offset;
+      l.end_known = true;
+      auto sk = f.file->src->seek(l.pos);
+      if (!sk) return std::unexpected(sk.error());
+      f.resume = l.pos;
+      return Step::kContinue;
+    }
+    case StmtKind::kPopen:
+      dprnt_open = true;
+      dprnt_used = true;
+      return Step::kContinue;
+    case StmtKind::kPclos:
+      dprnt_open = false;
+      return Step::kContinue;
+    case StmtKind::kDprnt:
+    case StmtKind::kBprnt: {
+      auto p = print_line(where);
+      if (!p) return std::unexpected(p.error());
+      return Step::kContinue;
+    }
+    case StmtKind::kNone:
+      break;
+  }
+  return Step::kContinue;
+}
+
+// DPRNT: text as written ('*' is a space); #i[ab] prints the value rounded
+// to b decimals (no decimal point when b = 0), a '-' before a negative value
+// and a space before a positive one; a vacant variable prints as 0. The
+// line goes to the report's messages, and to the --dprnt file when one was
+// named and POPEN is in effect.
+Result<void> Interpreter::Impl::print_line(SourceLoc where) {
+  (void)where;
+  std::string line;
+  for (const auto& item : blk.print_items) {
+    if (item.is_text) {
+      line += blk.names[static_cast<std::size_t>(item.text)];
+      continue;
+    }
+    auto v = eval(item.var);
+    if (!v) return std::unexpected(v.error());
+    const double x = v->num();
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%.*f", item.frac_digits, x);
+    if (buf[0] != '-') line += ' ';
+    // "-0.000" after rounding prints as " 0.000".
+    if (buf[0] == '-' && std::strspn(buf + 1, "0.") == std::strlen(buf + 1)) {
+      line += ' ';
+      line += buf + 1;
+    } else {
+      line += buf;
+    }
+  }
+  if (dprnt_open && !setup.dprnt_path.empty()) {
+    dprnt_text += line;
+    dprnt_text += '\n';
+  }
+  messages.push_back(std::move(line));
+  return {};
+}
+
+// The DPRNT file is written once, whole, at the end of the run: a temporary
+// file beside it, then a rename. Nothing is written anywhere else.
+Result<void> Interpreter::Impl::write_dprnt() const {
+  if (!dprnt_used || setup.dprnt_path.empty()) return {};
+  const std::string& path = setup.dprnt_path;
+  const std::string tmp = path + ".tmp";
+  const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  if (fd < 0) {
+    return fail(AlarmId::kFileAccess, "DPRNT: cannot write '" + tmp + "': " + std::strerror(errno));
+  }
+  std::size_t done = 0;
+  while (done < dprnt_text.size()) {
+    const ssize_t w = ::write(fd, dprnt_text.data() + done, dprnt_text.size() - done);
+    if (w < 0) {
+      if (errno == EINTR) continue;
+      ::close(fd);
+      ::unlink(tmp.c_str());
+      return fail(AlarmId::kFileAccess,
+                  "DPRNT: cannot write '" + tmp + "': " + std::strerror(errno));
+    }
+    done += static_cast<std::size_t>(w);
+  }
+  if (::fsync(fd) != 0 || ::close(fd) != 0 || std::rename(tmp.c_str(), path.c_str()) != 0) {
+    ::unlink(tmp.c_str());
+    return fail(AlarmId::kFileAccess,
+                "DPRNT: cannot write '" + path + "': " + std::strerror(errno));
+  }
+  return {};
+}
+
+// Where the END of loop `l` is: the first END with its number after its DO,
+// within the running program. kNoEnd when there is none.
+Result<void> Interpreter::Impl::find_loop_end(Loop& l) {
+  if (l.end_known) return {};
+  Frame& f = frames.back();
+  gcode::Source& src = *f.file->src;
+  const gcode::SourcePos back = src.tell();
+  auto s = src.seek(l.pos);
+  if (!s) return s;
+  gcode::RawBlock rb;
+  gcode::Block b;
+  l.end = kNoEnd;
+  bool first = true;
+  for (;;) {
+    const gcode::SourcePos at = src.tell();
+    auto more = src.next(rb);
+    if (!more) return std::unexpected(more.error());
+    if (!*more) break;
+    if (first) {  // the DO block itself
+      first = false;
+      continue;
+    }
+    auto p = gcode::parse_block(rb.text, SourceLoc{f.file->display, rb.line, rb.column}, rb.offset,
+                                b, parse_limits);
+    if (!p) continue;  // reported if the block is ever executed
+    if (b.percent || (b.has_o && at.offset != f.start.offset)) break;
+    if (b.stmt.kind == gcode::StmtKind::kEnd && b.stmt.loop == l.id) {
+      l.end = at.offset;
+      break;
+    }
+  }
+  l.end_known = true;
+  return src.seek(back);
+}
+
+// A jump to `target` leaves every loop whose WHILE..END range does not hold it.
+Result<void> Interpreter::Impl::leave_loops_for(std::uint64_t target) {
+  Frame& f = frames.back();
+  while (!f.loops.empty()) {
+    Loop& l = f.loops.back();
+    auto e = find_loop_end(l);
+    if (!e) return e;
+    if (target >= l.pos.offset && target <= l.end) break;
+    f.loops.pop_back();
+  }
+  return {};
+}
+
+Result<void> Interpreter::Impl::jump_to_label(std::int64_t n, std::uint64_t from, SourceLoc where) {
+  Frame& f = frames.back();
+  gcode::Source& src = *f.file->src;
+  auto [it, fresh] = f.file->labels.try_emplace(f.start.offset);
+  auto& table = it->second;
+  if (fresh) {
+    // One pass over the running program: every N, in file order.
+    auto s = src.seek(f.start);
+    if (!s) return s;
+    gcode::RawBlock rb;
+    gcode::Block b;
+    for (;;) {
+      const gcode::SourcePos at = src.tell();
+      auto more = src.next(rb);
+      if (!more) return std::unexpected(more.error());
+      if (!*more) break;
+      // Cheap test before parsing: only blocks with an N, or an O or '%'
+      // that ends the program, matter.
+      if (rb.text.find_first_of("NnOo:%") == std::string_view::npos) continue;
+      auto p = gcode::parse_block(rb.text, SourceLoc{f.file->display, rb.line, rb.column},
+                                  rb.offset, b, parse_limits);
+      if (!p) continue;  // reported if the block is ever executed
+      if (b.percent || (b.has_o && at.offset != f.start.offset)) break;
+      if (b.has_n) table.emplace_back(b.n, at);
+    }
+  }
+  // Forward from the block after `from`, then from the top.
+  const gcode::SourcePos* found = nullptr;
+  for (const auto& [num, at] : table) {
+    if (num == n && at.offset > from) {
+      found = &at;
+      break;
+    }
+  }
+  if (found == nullptr) {
+    for (const auto& [num, at] : table) {
+      if (num == n) {
+        found = &at;
+        break;
+      }
+    }
+  }
+  if (found == nullptr) {
+    return fail(AlarmId::kSequenceNotFound,
+                "sequence number N" + std::to_string(n) + " not found in this program", where);
+  }
+  const gcode::SourcePos target = *found;
+  auto lv = leave_loops_for(target.offset);
+  if (!lv) return lv;
+  auto s = src.seek(target);
+  if (!s) return s;
+  f.resume = target;
+  return {};
+}
+
+}  // namespace skipnc::interp
