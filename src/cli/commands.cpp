@@ -11,6 +11,7 @@
 #include <unistd.h>
 
 #include "canon/print.hpp"
+#include "cli/plot.hpp"
 #include "cli/session.hpp"
 #include "core/embedded.hpp"
 #include "machine/simulator.hpp"
@@ -91,12 +92,15 @@ int execute(const RunArgs& a, Session& s, interp::Setup setup, bool explain) {
     auto o = trace->open();
     if (!o) return start_failure(a, o.error(), &s);
   }
+  if (auto c = check_plot_files(a.plot); !c) return start_failure(a, c.error(), &s);
   std::signal(SIGINT, on_signal);
   std::signal(SIGTERM, on_signal);
   machine::Simulator sim(s.machine, s.dialect, *s.params, s.scene);
   machine::RunOptions opts;
   opts.trace = trace.get();
   opts.interrupt = &g_interrupt;
+  std::unique_ptr<PlotCapture> plot;
+  if (!a.plot.empty()) plot = std::make_unique<PlotCapture>(s.machine, opts);
   const bool tty = ::isatty(STDERR_FILENO) != 0 && !a.quiet;
   const auto wall0 = std::chrono::steady_clock::now();
   bool progress_shown = false;
@@ -134,6 +138,14 @@ int execute(const RunArgs& a, Session& s, interp::Setup setup, bool explain) {
   }
   if (!a.report.empty()) {
     auto w = report::write_atomic(a.report, report::to_json(in));
+    if (!w) {
+      std::cerr << "skipnc: " << w.error().detail << "\n";
+      rc = rc == 0 ? 1 : rc;
+    }
+  }
+  if (plot) {
+    const std::string text = setup.program_path.empty() ? setup.program_text : read_program_text(a.program);
+    auto w = plot->write(a.plot, s, in.result, {a.program, text, in.variables});
     if (!w) {
       std::cerr << "skipnc: " << w.error().detail << "\n";
       rc = rc == 0 ? 1 : rc;
@@ -281,8 +293,11 @@ int demo_command(const RunArgs& args) {
     auto t = trace->open();
     if (!t) return start_failure(a, t.error(), &s);
   }
+  if (auto c = check_plot_files(a.plot); !c) return start_failure(a, c.error(), &s);
   machine::RunOptions opts;
   opts.trace = trace.get();
+  std::unique_ptr<PlotCapture> plot;
+  if (!a.plot.empty()) plot = std::make_unique<PlotCapture>(s.machine, opts);
   auto res = sim.run(setup, opts);
   if (!res) return start_failure(a, res.error(), &s);
   if (trace) (void)trace->finish();
@@ -316,6 +331,12 @@ int demo_command(const RunArgs& args) {
     in.result = r;
     for (int n : {100, 101, 102, 5223}) in.variables.emplace_back(std::to_string(n), var(n));
     auto w = report::write_atomic(a.report, report::to_json(in));
+    if (!w) std::cerr << "skipnc: " << w.error().detail << "\n";
+  }
+  if (plot) {
+    std::vector<std::pair<std::string, std::optional<double>>> vars;
+    for (int n : {100, 101, 102, 5223}) vars.emplace_back(std::to_string(n), var(n));
+    auto w = plot->write(a.plot, s, r, {a.program, prog->content, vars});
     if (!w) std::cerr << "skipnc: " << w.error().detail << "\n";
   }
   std::cout << "\nTry it yourself: skipnc run PROGRAM --scene SCENE --report report.json --var 5063\n";

@@ -14,6 +14,7 @@ struct RunArgs {
   std::vector<std::string> vars;
   std::string report;
   std::string trace;
+  std::vector<std::string> plot;  // --plot FILE: .svg or .html pictures of the run
   std::vector<std::string> include;
   std::string dprnt;
   bool quiet = false;

@@ -3,6 +3,7 @@
 #include <iostream>
 
 #include "cli/commands.hpp"
+#include "cli/plot.hpp"
 
 int main(int argc, char** argv) {
   using skipnc::cli::RunArgs;
@@ -20,6 +21,7 @@ int main(int argc, char** argv) {
   run->add_option("--var", run_args.vars, "report variable V (5061, #5061, #<name>)");
   run->add_option("--report", run_args.report, "write the JSON report here (- for stdout)");
   run->add_option("--trace", run_args.trace, "write the per-cycle CSV trace here");
+  run->add_option("--plot", run_args.plot, "write pictures of the run: FILE.svg and/or FILE.html");
   run->add_option("-I,--include", run_args.include, "subprogram folder (repeatable)");
   run->add_option("--dprnt", run_args.dprnt, "file for DPRNT output (POPEN/PCLOS)");
   run->add_flag("-q,--quiet", run_args.quiet, "no summary on standard output");
@@ -36,6 +38,21 @@ int main(int argc, char** argv) {
   auto* demo = app.add_subcommand("demo", "run the built-in probing demo and explain it");
   demo->add_option("--report", demo_args.report, "also write the JSON report here");
   demo->add_option("--trace", demo_args.trace, "also write the per-cycle CSV trace here");
+  demo->add_option("--plot", demo_args.plot, "also write pictures: FILE.svg and/or FILE.html");
+
+  RunArgs plot_args;
+  auto* plot = app.add_subcommand("plot", "run a program and draw it: SVG and an offline HTML page");
+  plot->add_option("program", plot_args.program, "part program file")->required();
+  plot->add_option("-o,--output", plot_args.plot,
+                   "FILE.svg or FILE.html, repeatable (default: PROGRAM.html and PROGRAM.svg here)");
+  plot->add_option("-m,--machine", plot_args.machine, "machine file or built-in machine (mill3)");
+  plot->add_option("-s,--scene", plot_args.scene, "scene file (TOML)");
+  plot->add_option("-d,--dialect", plot_args.dialect, "fanuc, nct, mitsubishi, compass");
+  plot->add_option("-p,--param", plot_args.params, "parameter N=V or N#B=V (repeatable)");
+  plot->add_option("--var", plot_args.vars, "show variable V (5061, #5061, #<name>)");
+  plot->add_option("--report", plot_args.report, "also write the JSON report here");
+  plot->add_option("-I,--include", plot_args.include, "subprogram folder (repeatable)");
+  plot->add_flag("-q,--quiet", plot_args.quiet, "no summary on standard output");
 
   auto* dialects = app.add_subcommand("dialects", "list the dialects and what differs");
 
@@ -48,6 +65,7 @@ int main(int argc, char** argv) {
   if (run->parsed()) return skipnc::cli::run_command(run_args);
   if (canon->parsed()) return skipnc::cli::canon_command(canon_args);
   if (demo->parsed()) return skipnc::cli::demo_command(demo_args);
+  if (plot->parsed()) return skipnc::cli::plot_command(plot_args);
   if (dialects->parsed()) return skipnc::cli::dialects_command();
   return 2;
 }

@@ -29,8 +29,9 @@ namespace {
 // Routes the interpreter's commands: motion to the kernel, the rest recorded.
 class Router final : public interp::CommandSink {
  public:
-  explicit Router(kernel::Kernel& k) : k_(k) {}
+  Router(kernel::Kernel& k, interp::CommandSink* tap) : k_(k), tap_(tap) {}
   void emit(const canon::Stamped& c) override {
+    if (tap_ != nullptr) tap_->emit(c);
     std::visit(
         [&](const auto& cmd) {
           using T = std::decay_t<decltype(cmd)>;
@@ -48,6 +49,7 @@ class Router final : public interp::CommandSink {
 
  private:
   kernel::Kernel& k_;
+  interp::CommandSink* tap_;
 };
 
 Error stroke_alarm(const config::MachineConfig& m, int axis, double pos, std::string_view file,
@@ -81,7 +83,7 @@ Result<RunResult> Simulator::run(const interp::Setup& setup, const RunOptions& o
   k.set_position(home);
   plant.reset(home);
   plant.for_each_signal([&](const canon::SignalAddr& a, bool on) { k.preset_signal(a, on); });
-  Router router(k);
+  Router router(k, opts.commands);
 
   const int n = m_.axis_count();
   kernel::TickInput tin;

@@ -52,6 +52,8 @@ struct RunResult {
 
 struct RunOptions {
   TraceSink* trace = nullptr;
+  // Sees every command the interpreter emits, in order (plots: move kinds).
+  interp::CommandSink* commands = nullptr;
   const std::atomic<bool>* interrupt = nullptr;
   // Called about every simulated second with (simulated seconds, line).
   std::function<void(double, std::uint32_t)> progress;

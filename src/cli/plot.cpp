@@ -1,0 +1,89 @@
+#include "cli/plot.hpp"
+
+#include <fmt/format.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "cli/commands.hpp"
+#include "plot/plot.hpp"
+#include "report/report.hpp"
+
+namespace skipnc::cli {
+
+namespace {
+
+enum class PlotFormat : std::uint8_t { kSvg, kHtml, kUnknown };
+
+PlotFormat format_of(const std::string& file) {
+  std::string ext = std::filesystem::path(file).extension().string();
+  for (auto& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  if (ext == ".svg") return PlotFormat::kSvg;
+  if (ext == ".html" || ext == ".htm") return PlotFormat::kHtml;
+  return PlotFormat::kUnknown;
+}
+
+}  // namespace
+
+Result<void> check_plot_files(const std::vector<std::string>& files) {
+  for (const auto& f : files) {
+    if (format_of(f) == PlotFormat::kUnknown) {
+      return fail(AlarmId::kUsage, "--plot " + f + ": the file name must end in .svg or .html");
+    }
+  }
+  return {};
+}
+
+PlotCapture::PlotCapture(const config::MachineConfig& m, machine::RunOptions& opts)
+    : rec_(m), tee_(opts.trace, &rec_) {
+  opts.trace = &tee_;
+  opts.commands = &rec_;
+}
+
+Result<void> PlotCapture::write(const std::vector<std::string>& files, const Session& s,
+                                const machine::RunResult& r, const Output& out) {
+  rec_.finish();
+  plot::PlotInput in;
+  in.program = out.program;
+  in.source = out.source;
+  in.machine = &s.machine;
+  in.dialect = &s.dialect;
+  in.scene = &s.scene;
+  in.result = &r;
+  in.recorder = &rec_;
+  in.variables = out.variables;
+  const plot::PlotModel model = plot::build_model(in);
+  for (const auto& f : files) {
+    const std::string text =
+        format_of(f) == PlotFormat::kSvg ? plot::to_svg(model) : plot::to_html(model);
+    auto w = report::write_atomic(f, text);
+    if (!w) return w;
+  }
+  return {};
+}
+
+std::string read_program_text(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return {};
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+int plot_command(RunArgs a) {
+  if (a.plot.empty()) {
+    const std::string stem = std::filesystem::path(a.program).stem().string();
+    a.plot = {stem + ".html", stem + ".svg"};
+  }
+  const int rc = run_command(a);
+  if (rc != 2 && !a.quiet) {
+    for (const auto& f : a.plot) {
+      std::error_code ec;
+      if (std::filesystem::is_regular_file(f, ec)) fmt::print("wrote {}\n", f);
+    }
+  }
+  return rc;
+}
+
+}  // namespace skipnc::cli

@@ -1,0 +1,360 @@
+#include "plot/model.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "report/report.hpp"
+
+namespace skipnc::plot {
+
+void Box3::add(const Vec3& p) noexcept {
+  for (int i = 0; i < 3; ++i) {
+    lo[i] = std::min(lo[i], p[i]);
+    hi[i] = std::max(hi[i], p[i]);
+  }
+}
+
+namespace {
+
+// Colour choices: path kinds as on a control's graphic screen (rapids dashed,
+// feeds solid), skip moves and their points in colours that no axis uses.
+constexpr std::array<InkStyle, static_cast<std::size_t>(Ink::kCount)> kInks{{
+    {"rapid", "#8a8a8a", "none", 1.2, "5 4", "rapid (G00), dashed"},
+    {"feed", "#1f5fbf", "none", 1.6, "", "feed (G01/G02/G03)"},
+    {"skip", "#f08c00", "none", 2.6, "", "skip move (G31)"},
+    {"target", "#f08c00", "none", 1.2, "2 3", "programmed skip end point, not reached"},
+    {"trigger", "#2e9e4f", "#2e9e4f", 1.4, "", "signal trigger plane"},
+    {"stop", "#5a4632", "#5a4632", 2.0, "", "rigid stop"},
+    {"part", "#6b6b6b", "#bdbdbd", 1.2, "", "part"},
+    {"latch", "#e0007a", "#e0007a", 1.5, "", "latch: position stored by the skip"},
+    {"miss", "#e0007a", "#ffffff", 2.0, "", "skip without a signal: end point stored"},
+    {"rest", "#111111", "#ffffff", 1.8, "", "rest: where the axes stopped"},
+    {"start", "#2e9e4f", "#ffffff", 1.8, "", "start of the run"},
+}};
+
+constexpr std::array<const char*, 8> kAxisColours{"#d62728", "#2ca02c", "#1f77b4", "#9467bd",
+                                                  "#8c564b", "#e377c2", "#17becf", "#bcbd22"};
+
+Vec3 to3(const AxisVec& a, const std::array<int, 3>& xyz) {
+  Vec3 p;
+  for (int k = 0; k < 3; ++k)
+    p[k] = xyz[static_cast<std::size_t>(k)] >= 0 ? a[xyz[static_cast<std::size_t>(k)]] : 0.0;
+  return p;
+}
+
+std::vector<ViewDef> views_for(const std::array<int, 3>& xyz, const std::vector<char>& names) {
+  const bool x = xyz[0] >= 0, y = xyz[1] >= 0, z = xyz[2] >= 0;
+  auto nm = [&](int k) {
+    return std::string(1, names[static_cast<std::size_t>(xyz[static_cast<std::size_t>(k)])]);
+  };
+  std::vector<ViewDef> v;
+  if (x && y) v.push_back(ViewDef{"xy", "Top view (XY)", {1, 0, 0}, {0, 1, 0}, 2, nm(0), nm(1)});
+  if (x && z) v.push_back(ViewDef{"xz", "Front view (XZ)", {1, 0, 0}, {0, 0, 1}, 1, nm(0), nm(2)});
+  if (y && z) v.push_back(ViewDef{"yz", "Side view (YZ)", {0, 1, 0}, {0, 0, 1}, 0, nm(1), nm(2)});
+  if (x && y && z) {
+    // Looking from +X -Y +Z: X runs right and down, Y right and up, Z up.
+    const double a = 1.0 / std::sqrt(2.0), b = 1.0 / std::sqrt(6.0);
+    v.push_back(ViewDef{"iso", "Isometric view", {a, a, 0}, {-b, b, 2 * b}, -1, "", ""});
+  }
+  return v;
+}
+
+// Machine position where a skip block's axes came to rest, and when: the end
+// of the block run that holds the latch.
+const BlockRun* skip_block(const std::vector<BlockRun>& blocks, const interp::SkipRecord& s) {
+  const BlockRun* best = nullptr;
+  for (const auto& b : blocks) {
+    if (b.line != s.line) continue;
+    if (b.t0 > s.time_s + 1e-9) break;
+    best = &b;
+  }
+  return best;
+}
+
+std::vector<std::string> split_lines(std::string_view text, std::size_t max_lines) {
+  std::vector<std::string> out;
+  std::size_t i = 0;
+  while (i < text.size() && out.size() < max_lines) {
+    const auto nl = text.find('\n', i);
+    std::string_view l =
+        text.substr(i, nl == std::string_view::npos ? std::string_view::npos : nl - i);
+    if (!l.empty() && l.back() == '\r') l.remove_suffix(1);
+    out.emplace_back(l);
+    if (nl == std::string_view::npos) break;
+    i = nl + 1;
+  }
+  return out;
+}
+
+void build_skips(const PlotInput& in, PlotModel& pm) {
+  const auto& m = *in.machine;
+  const auto& rec = *in.recorder;
+  const auto& moves = rec.skip_moves();
+  const auto& blocks = rec.blocks();
+  std::size_t next_move = 0;
+  for (std::size_t k = 0; k < in.result->skips.size(); ++k) {
+    const interp::SkipRecord& s = in.result->skips[k];
+    SkipMark sk;
+    sk.index = k;
+    sk.line = s.line;
+    sk.block = s.block;
+    sk.signal = s.signal;
+    sk.triggered = s.triggered;
+    sk.p = s.p;
+    sk.kind = s.kind == canon::SkipKind::kTorque      ? "torque"
+              : s.kind == canon::SkipKind::kMultiStep ? "multi_step"
+                                                      : "skip";
+    sk.latch_t = s.time_s;
+    sk.latch_machine = s.machine_position;
+    sk.position = s.position;
+    sk.end_position = s.end_position;
+    sk.rest_machine = s.machine_position;
+    sk.stop_t = s.time_s;
+    AxisVec start = s.machine_position;
+    if (const BlockRun* b = skip_block(blocks, s)) {
+      sk.rest_machine = b->end_cmd;
+      sk.stop_t = std::max(b->t1, s.time_s);
+      start = b->start_act;
+    }
+    while (next_move < moves.size() && moves[next_move].line != s.line) ++next_move;
+    AxisVec target = s.machine_position;
+    if (next_move < moves.size()) {
+      target = moves[next_move].target;
+      start = moves[next_move].start;
+      sk.has_target = true;
+      ++next_move;
+    }
+    for (int i = 0; i < m.axis_count(); ++i) {
+      if (std::fabs(target[i] - start[i]) > 1e-6) sk.moved_axes.push_back(i);
+    }
+    if (sk.moved_axes.empty()) {
+      for (int i = 0; i < m.axis_count(); ++i) sk.moved_axes.push_back(i);
+    }
+    sk.latch = to3(sk.latch_machine, pm.xyz);
+    sk.rest = to3(sk.rest_machine, pm.xyz);
+    sk.start = to3(start, pm.xyz);
+    sk.target = to3(target, pm.xyz);
+    double d2 = 0.0;
+    for (int i : sk.moved_axes) {
+      const double d = sk.rest_machine[i] - sk.latch_machine[i];
+      d2 += d * d;
+    }
+    sk.overtravel_mm = std::sqrt(d2);
+    std::string vars, rest;
+    for (int i : sk.moved_axes) {
+      const char a = m.axes[static_cast<std::size_t>(i)].name;
+      SkipVar v{skip_var_name(*in.dialect, i, a), a, s.position[i]};
+      const std::string shown = v.name.size() > 8 ? std::string(1, a) : v.name;
+      vars += fmt::format(" {}={}", shown, num(v.value));
+      rest += fmt::format(" {}{}", a, num(s.end_position[i]));
+      sk.vars.push_back(std::move(v));
+    }
+    sk.label = fmt::format("L{}{}{}", s.line, s.triggered ? "" : " no signal,", vars);
+    sk.rest_label = fmt::format("L{} rest{}", s.line, rest);
+    pm.skips.push_back(std::move(sk));
+  }
+}
+
+void build_channels(const PlotInput& in, PlotModel& pm) {
+  const auto& m = *in.machine;
+  const auto& samples = in.recorder->samples();
+  const int n = m.axis_count();
+  auto per_axis = [&](std::string id, std::string title, std::string unit, auto value) {
+    Channel c{std::move(id), std::move(title), std::move(unit), false, {}};
+    for (int i = 0; i < n; ++i) {
+      Series s{std::string(1, m.axes[static_cast<std::size_t>(i)].name), axis_colour(i), {}};
+      s.v.reserve(samples.size());
+      for (const auto& smp : samples) s.v.push_back(value(smp, i));
+      c.series.push_back(std::move(s));
+    }
+    pm.channels.push_back(std::move(c));
+  };
+  // One strip per axis position, each scaled to its own travel (as a scope
+  // channel is), so that a latch on one axis is not flattened by another's.
+  for (int i = 0; i < n; ++i) {
+    const char a = m.axes[static_cast<std::size_t>(i)].name;
+    Channel c{
+        fmt::format("pos_{}", a), fmt::format("{} position (actual, machine)", a), "mm", false, {}};
+    Series s{std::string(1, a), axis_colour(i), {}};
+    s.v.reserve(samples.size());
+    for (const auto& smp : samples) s.v.push_back(smp.act[i]);
+    c.series.push_back(std::move(s));
+    pm.channels.push_back(std::move(c));
+  }
+  Channel speed{"speed", "Path speed (commanded)", "mm/min", false, {}};
+  Series sp{"F", "#333333", {}};
+  sp.v.reserve(samples.size());
+  for (const auto& s : samples) sp.v.push_back(s.feed_mm_min);
+  speed.series.push_back(std::move(sp));
+  pm.channels.push_back(std::move(speed));
+  per_axis("following_error", "Following error (command - actual)", "mm",
+           [](const Sample& s, int i) { return s.cmd[i] - s.act[i]; });
+  per_axis("torque", "Motor torque", "%", [](const Sample& s, int i) { return s.torque[i]; });
+  const auto& names = in.recorder->signal_names();
+  for (std::size_t k = 0; k < names.size(); ++k) {
+    Channel c{"signal_" + names[k], "Input " + names[k], "", true, {}};
+    Series s{names[k], "#2e9e4f", {}};
+    s.v.reserve(samples.size());
+    for (const auto& smp : samples) s.v.push_back(((smp.signals >> k) & 1U) != 0 ? 1.0 : 0.0);
+    c.series.push_back(std::move(s));
+    pm.channels.push_back(std::move(c));
+  }
+}
+
+}  // namespace
+
+const InkStyle& ink(Ink i) noexcept {
+  return kInks[static_cast<std::size_t>(i)];
+}
+
+const char* axis_colour(int i) noexcept {
+  return kAxisColours[static_cast<std::size_t>(i) % kAxisColours.size()];
+}
+
+std::string num(double v, int decimals) {
+  std::string s = fmt::format("{:.{}f}", v, decimals);
+  if (s.starts_with('-') && s.find_first_not_of("-0.") == std::string::npos) s.erase(0, 1);
+  return s;
+}
+
+std::string clean_utf8(std::string_view text) {
+  std::string out;
+  out.reserve(text.size());
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const auto c = static_cast<unsigned char>(text[i]);
+    if (c < 0x80) {
+      out += static_cast<char>(c);
+      continue;
+    }
+    const std::size_t len = c >= 0xC2 && c < 0xE0   ? 2
+                            : c >= 0xE0 && c < 0xF0 ? 3
+                            : c >= 0xF0 && c < 0xF5 ? 4
+                                                    : 0;
+    bool ok = len > 0 && i + len <= text.size();
+    for (std::size_t k = 1; ok && k < len; ++k) {
+      ok = (static_cast<unsigned char>(text[i + k]) & 0xC0) == 0x80;
+    }
+    if (ok) {
+      out.append(text.substr(i, len));
+      i += len - 1;
+    } else {
+      out += '?';
+    }
+  }
+  return out;
+}
+
+std::string skip_var_name(const config::Dialect& d, int axis_index, char axis_name) {
+  if (d.skip_vars.work_base > 0) return fmt::format("#{}", d.skip_vars.work_base + axis_index);
+  if (!d.skip_vars.named_local.empty())
+    return fmt::format("#<{}{}>", d.skip_vars.named_local, axis_name);
+  return std::string(1, axis_name);
+}
+
+PlotModel build_model(const PlotInput& in) {
+  PlotModel pm;
+  const auto& m = *in.machine;
+  const auto& r = *in.result;
+  const auto& rec = *in.recorder;
+  pm.program = in.program;
+  pm.machine = m.name;
+  pm.dialect = in.dialect != nullptr ? in.dialect->name : m.dialect;
+  pm.time_s = r.time_s;
+  pm.periods = rec.periods_seen();
+  switch (r.status) {
+    case machine::RunStatus::kCompleted:
+      pm.status = "completed";
+      break;
+    case machine::RunStatus::kAlarm:
+      pm.status = "alarm";
+      break;
+    case machine::RunStatus::kInterrupted:
+      pm.status = "interrupted";
+      break;
+  }
+  if (r.alarm) {
+    const report::AlarmView v = report::view_alarm(*r.alarm, in.dialect);
+    pm.alarm = fmt::format("{} ({}): {}", v.code, v.number, v.message);
+    if (r.alarm->loc.line > 0) pm.alarm += fmt::format(" at line {}", r.alarm->loc.line);
+  }
+  for (const auto& a : m.axes) pm.axis_names.push_back(a.name);
+  pm.xyz = {m.axis_index('X'), m.axis_index('Y'), m.axis_index('Z')};
+  pm.views = views_for(pm.xyz, pm.axis_names);
+  pm.signal_names = rec.signal_names();
+  pm.messages = r.messages;
+  pm.variables = in.variables;
+  pm.source = split_lines(in.source, 200000);
+
+  const auto& samples = rec.samples();
+  pm.t.reserve(samples.size());
+  pm.line.reserve(samples.size());
+  pm.path.reserve(samples.size());
+  for (const auto& s : samples) {
+    pm.t.push_back(s.t);
+    pm.line.push_back(s.line);
+    pm.path.push_back(to3(s.act, pm.xyz));
+    pm.extent.add(pm.path.back());
+  }
+  const auto& blocks = rec.blocks();
+  for (std::size_t i = 0; i < blocks.size(); ++i) {
+    const BlockRun& b = blocks[i];
+    BlockView v;
+    v.line = b.line;
+    v.kind = b.kind;
+    v.t0 = b.t0;
+    v.t1 = b.t1;
+    v.s0 =
+        static_cast<std::size_t>(std::lower_bound(pm.t.begin(), pm.t.end(), b.t0) - pm.t.begin());
+    v.s1 =
+        static_cast<std::size_t>(std::upper_bound(pm.t.begin(), pm.t.end(), b.t1) - pm.t.begin());
+    v.from = to3(i > 0 ? blocks[i - 1].end_act : b.start_act, pm.xyz);
+    v.to = to3(b.end_act, pm.xyz);
+    v.end_machine = b.end_cmd;
+    pm.extent.add(v.from);
+    pm.extent.add(v.to);
+    pm.blocks.push_back(v);
+  }
+  build_skips(in, pm);
+  for (const auto& s : pm.skips) {
+    pm.extent.add(s.latch);
+    pm.extent.add(s.rest);
+    if (s.has_target) pm.extent.add(s.target);
+  }
+  if (pm.extent.empty()) pm.extent.add(to3(r.final_machine, pm.xyz));
+  if (in.scene != nullptr) {
+    // Planes of the scene widen the extent along their normal only.
+    for (const auto& t : in.scene->triggers) {
+      for (int k = 0; k < 3; ++k) {
+        if (pm.xyz[static_cast<std::size_t>(k)] == t.axis) {
+          pm.extent.lo[k] = std::min(pm.extent.lo[k], t.at);
+          pm.extent.hi[k] = std::max(pm.extent.hi[k], t.at);
+        }
+      }
+    }
+    for (const auto& s : in.scene->stops) {
+      for (int k = 0; k < 3; ++k) {
+        if (pm.xyz[static_cast<std::size_t>(k)] == s.axis) {
+          pm.extent.lo[k] = std::min(pm.extent.lo[k], s.at);
+          pm.extent.hi[k] = std::max(pm.extent.hi[k], s.at);
+        }
+      }
+    }
+  }
+  // Every side of the extent at least 2 mm, so that a one-axis run (a
+  // probe going straight down) still has a frame around it.
+  for (int k = 0; k < 3; ++k) {
+    const double span = pm.extent.hi[k] - pm.extent.lo[k];
+    if (span < 2.0) {
+      const double c = 0.5 * (pm.extent.hi[k] + pm.extent.lo[k]);
+      pm.extent.lo[k] = c - 1.0;
+      pm.extent.hi[k] = c + 1.0;
+    }
+  }
+  if (in.scene != nullptr) pm.shapes = scene_shapes(*in.scene, m, pm.xyz, pm.extent);
+  build_channels(in, pm);
+  return pm;
+}
+
+}  // namespace skipnc::plot

@@ -1,0 +1,189 @@
+// What a plot shows, independent of how it is drawn: the run's path per
+// executed block, the scene reduced to generic shapes, the skip points and
+// the scope channels. The SVG writer and the page's script both draw this
+// one model, so a new kind of scene object needs only new shapes
+// (shapes.cpp), not new drawing code.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <limits>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include "config/dialect.hpp"
+#include "config/machine_config.hpp"
+#include "machine/scene.hpp"
+#include "machine/simulator.hpp"
+#include "plot/recorder.hpp"
+
+namespace skipnc::plot {
+
+struct Vec3 {
+  double x = 0.0, y = 0.0, z = 0.0;
+  double operator[](int i) const noexcept { return i == 0 ? x : i == 1 ? y : z; }
+  double& operator[](int i) noexcept { return i == 0 ? x : i == 1 ? y : z; }
+};
+
+struct Box3 {
+  Vec3 lo{std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(),
+          std::numeric_limits<double>::infinity()};
+  Vec3 hi{-std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity(),
+          -std::numeric_limits<double>::infinity()};
+  bool empty() const noexcept { return lo.x > hi.x; }
+  void add(const Vec3& p) noexcept;
+};
+
+// Drawing styles, one table shared by every renderer (the page gets it as
+// data): stroke and fill colours, width in px, dash pattern.
+enum class Ink : std::uint8_t {
+  kRapid,
+  kFeed,
+  kSkip,
+  kTarget,
+  kTrigger,
+  kStop,
+  kPart,
+  kLatch,
+  kMiss,
+  kRest,
+  kStart,
+  kCount
+};
+struct InkStyle {
+  const char* name;  // CSS class and JSON key
+  const char* stroke;
+  const char* fill;  // "none" for lines
+  double width;
+  const char* dash;    // SVG dash array, "" for solid
+  const char* legend;  // what it means, for the legend
+};
+const InkStyle& ink(Ink i) noexcept;
+// Colour of axis i in the scope (X red, Y green, Z blue, then others).
+const char* axis_colour(int i) noexcept;
+
+// Scene geometry in machine coordinates. A plane that is face-on in a view
+// (its normal along the viewing direction) is not drawn there; the view
+// lists its `note` instead.
+struct Shape {
+  // kSegments: pts in pairs, one stroke per pair.
+  enum class Kind : std::uint8_t { kPolygon, kPolyline, kSegments };
+  Kind kind = Kind::kPolygon;
+  Ink ink = Ink::kTrigger;
+  std::vector<Vec3> pts;
+  std::string label;     // drawn next to the shape ("" for none)
+  int normal_axis = -1;  // 0/1/2: a plane normal to x/y/z (-1: not a plane)
+  std::string note;      // text for views in which the plane is face-on
+  bool in_iso = true;    // drawn in the isometric view too
+};
+
+// A projection: screen u = dot(p, u), screen v = dot(p, v) (v up).
+struct ViewDef {
+  std::string id;  // "xy", "xz", "yz", "iso"
+  std::string title;
+  Vec3 u, v;
+  int look_axis = -1;          // 0/1/2 for views along an axis, -1 for the isometric view
+  std::string u_name, v_name;  // axis names on the view's edges ("" for iso)
+};
+
+// One executed block, for drawing: the path runs from `from` (the previous
+// block's end) through samples [s0, s1) to `to`.
+struct BlockView {
+  std::uint32_t line = 0;
+  MoveKind kind = MoveKind::kNone;
+  double t0 = 0.0, t1 = 0.0;
+  std::size_t s0 = 0, s1 = 0;
+  Vec3 from, to;
+  AxisVec end_machine;  // commanded rest position at the end, all axes
+};
+
+struct SkipVar {
+  std::string name;  // "#5063" or "#<NC.SysVars.G31.LCS.Z>"
+  char axis = 'X';
+  double value = 0.0;
+};
+
+struct SkipMark {
+  std::size_t index = 0;
+  std::uint32_t line = 0;
+  std::string block, signal, kind;
+  bool triggered = false;
+  int p = -1;
+  double latch_t = 0.0;             // instant of the signal (or of the sync when none came)
+  double stop_t = 0.0;              // the axes at rest
+  Vec3 latch, rest, start, target;  // machine coordinates (x, y, z of the machine)
+  bool has_target = false;
+  AxisVec latch_machine, rest_machine, position, end_position;
+  std::vector<int> moved_axes;  // axes the skip block moved
+  std::vector<SkipVar> vars;    // what went into the skip variables (moved axes)
+  double overtravel_mm = 0.0;   // from the latch to the rest point
+  std::string label;            // "L6 #5063=-23.8000"
+  std::string rest_label;       // "L6 rest Z-23.8105"
+};
+
+struct Series {
+  std::string name;
+  std::string colour;
+  std::vector<double> v;  // one value per sample
+};
+
+struct Channel {
+  std::string id;
+  std::string title;
+  std::string unit;
+  bool digital = false;
+  std::vector<Series> series;
+};
+
+struct PlotModel {
+  std::string program, machine, dialect, status, alarm;
+  double time_s = 0.0;
+  std::uint64_t periods = 0;
+  std::vector<char> axis_names;
+  std::array<int, 3> xyz{-1, -1, -1};  // machine axis index of X, Y, Z (-1: absent)
+  std::vector<double> t;               // sample instants
+  std::vector<std::uint32_t> line;     // sample lines
+  std::vector<Vec3> path;              // actual position per sample (x, y, z)
+  std::vector<BlockView> blocks;
+  std::vector<Channel> channels;
+  std::vector<Shape> shapes;
+  std::vector<SkipMark> skips;
+  std::vector<ViewDef> views;
+  Box3 extent;                      // everything the views must show
+  std::vector<std::string> source;  // program lines (1-based: source[line - 1])
+  std::vector<std::pair<std::string, std::optional<double>>> variables;
+  std::vector<std::string> messages;
+  std::vector<std::string> signal_names;
+};
+
+struct PlotInput {
+  std::string program;      // name shown in the title
+  std::string_view source;  // program text ("" when unknown)
+  const config::MachineConfig* machine = nullptr;
+  const config::Dialect* dialect = nullptr;
+  const machine::Scene* scene = nullptr;
+  const machine::RunResult* result = nullptr;
+  const Recorder* recorder = nullptr;
+  std::vector<std::pair<std::string, std::optional<double>>> variables;
+};
+
+[[nodiscard]] PlotModel build_model(const PlotInput& in);
+
+// The scene as shapes, sized to `extent` (shapes.cpp).
+std::vector<Shape> scene_shapes(const machine::Scene& scene, const config::MachineConfig& m,
+                                const std::array<int, 3>& xyz, const Box3& extent);
+
+// "#5063" (Fanuc-style numbered) or the dialect's named variable.
+std::string skip_var_name(const config::Dialect& d, int axis_index, char axis_name);
+
+// The text with every byte that is not part of valid UTF-8 replaced by '?'
+// (program comments may be Latin-1).
+std::string clean_utf8(std::string_view text);
+
+// Number text for labels: fixed decimals, no "-0".
+std::string num(double v, int decimals = 4);
+
+}  // namespace skipnc::plot

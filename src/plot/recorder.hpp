@@ -1,0 +1,138 @@
+// Collects what a plot needs while a run goes on: a decimated copy of the
+// per-servo-period trace, the executed blocks (one run of periods per
+// source line) and the kind of each motion command.
+//
+// Decimation keeps a sample when dropping it would move any drawn channel
+// (commanded and actual position, following error, path speed, torque) by
+// more than its tolerance on a straight line between the kept neighbours
+// (a per-channel "sleeve": O(channels) per period, no look-back). Samples are
+// always kept at block boundaries, on both sides of every signal edge and for
+// a few periods around it, so latch and stop points and signal edges are
+// never lost. When the kept samples pass the budget the tolerances double
+// and the kept samples are thinned again; edges stay.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <deque>
+#include <string>
+#include <vector>
+
+#include "config/machine_config.hpp"
+#include "core/axes.hpp"
+#include "interpreter/interpreter.hpp"
+#include "machine/simulator.hpp"
+
+namespace skipnc::plot {
+
+enum class MoveKind : std::uint8_t { kNone, kRapid, kFeed, kArc, kSkip, kDwell };
+const char* move_kind_name(MoveKind k) noexcept;
+
+struct Sample {
+  double t = 0.0;  // simulated seconds
+  std::uint32_t line = 0;
+  std::uint32_t signals = 0;  // bit i: signal i (signal_names()[i]) on
+  double feed_mm_min = 0.0;   // commanded path speed
+  AxisVec cmd;                // machine coordinates, mm
+  AxisVec act;
+  AxisVec torque;        // % of rated
+  std::uint8_t pin = 0;  // kPinSoft / kPinHard: never thinned (hard) or only at coarse levels
+};
+
+inline constexpr std::uint8_t kPinSoft = 1;  // block boundary
+inline constexpr std::uint8_t kPinHard = 2;  // signal edge and the periods around it
+
+// One executed block: consecutive servo periods with the same source line.
+struct BlockRun {
+  std::uint32_t line = 0;
+  MoveKind kind = MoveKind::kNone;
+  double t0 = 0.0;  // first period of the block
+  double t1 = 0.0;  // last period of the block
+  AxisVec start_act;
+  AxisVec end_act;
+  AxisVec end_cmd;  // where the command rested at the end of the block
+};
+
+// A G31-family command as the interpreter emitted it (machine coordinates).
+struct SkipMove {
+  std::uint32_t line = 0;
+  AxisVec start;  // where the command stood when the block began
+  AxisVec target;
+  double feed_mm_min = 0.0;
+};
+
+struct Decimation {
+  double pos_tol_mm = 0.0005;  // commanded/actual position
+  double fe_tol_mm = 0.0002;   // following error
+  double feed_tol_mm_min = 0.5;
+  double torque_tol_pct = 0.25;
+  std::size_t max_samples = 40000;  // budget; tolerances double past it
+  int keep_around_edge = 6;         // periods kept whole before and after a signal edge
+};
+
+class Recorder final : public machine::TraceSink, public interp::CommandSink {
+ public:
+  explicit Recorder(const config::MachineConfig& m, Decimation d = {});
+
+  void row(const machine::TraceRow& r) override;
+  void emit(const canon::Stamped& c) override;
+  // Keeps the last period seen (call once the run has ended).
+  void finish();
+
+  const std::vector<Sample>& samples() const noexcept { return kept_; }
+  const std::vector<BlockRun>& blocks() const noexcept { return blocks_; }
+  const std::vector<SkipMove>& skip_moves() const noexcept { return skip_moves_; }
+  const std::vector<std::string>& signal_names() const noexcept { return signal_names_; }
+  std::uint64_t periods_seen() const noexcept { return rows_; }
+  // Tolerance multiplier reached (1, 2, 4, ...).
+  double tolerance_scale() const noexcept { return scale_; }
+  int axis_count() const noexcept { return n_; }
+
+ private:
+  struct Pending {
+    std::uint32_t line;
+    MoveKind kind;
+  };
+  void keep(const Sample& s);
+  void reset_sleeve(const Sample& anchor);
+  bool sleeve_accepts(const Sample& s);
+  void thin();
+  MoveKind take_kind(std::uint32_t line);
+
+  int n_ = 0;
+  Decimation d_;
+  double scale_ = 1.0;
+  std::uint64_t rows_ = 0;
+  std::vector<Sample> kept_;
+  std::vector<BlockRun> blocks_;
+  std::vector<SkipMove> skip_moves_;
+  std::vector<std::string> signal_names_;
+  std::deque<Pending> pending_;
+  AxisVec tail_;                  // target of the last motion command
+  bool tail_from_trace_ = false;  // after a skip: the next move starts where the machine stopped
+
+  bool have_prev_ = false;
+  bool prev_kept_ = false;
+  Sample prev_;
+  Sample anchor_;
+  std::vector<double> lo_, hi_;  // admissible slopes per channel from the anchor
+  std::vector<double> lo_next_, hi_next_;
+  std::deque<Sample> recent_;  // periods after the last kept one (for edges)
+  int keep_after_ = 0;
+};
+
+// Sends each period to two sinks (the CSV trace and a plot recorder).
+class TeeTrace final : public machine::TraceSink {
+ public:
+  TeeTrace(machine::TraceSink* a, machine::TraceSink* b) : a_(a), b_(b) {}
+  void row(const machine::TraceRow& r) override {
+    if (a_ != nullptr) a_->row(r);
+    if (b_ != nullptr) b_->row(r);
+  }
+
+ private:
+  machine::TraceSink* a_;
+  machine::TraceSink* b_;
+};
+
+}  // namespace skipnc::plot

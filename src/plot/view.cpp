@@ -1,0 +1,124 @@
+#include "plot/view.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace skipnc::plot {
+
+Frame fit_view(const ViewDef& v, const Box3& e, double x, double y, double w, double h,
+               double margin_px) {
+  double u0 = 1e300, u1 = -1e300, v0 = 1e300, v1 = -1e300;
+  for (int c = 0; c < 8; ++c) {
+    const Vec3 p{(c & 1) != 0 ? e.hi.x : e.lo.x, (c & 2) != 0 ? e.hi.y : e.lo.y,
+                 (c & 4) != 0 ? e.hi.z : e.lo.z};
+    const double pu = dot(p, v.u), pv = dot(p, v.v);
+    u0 = std::min(u0, pu);
+    u1 = std::max(u1, pu);
+    v0 = std::min(v0, pv);
+    v1 = std::max(v1, pv);
+  }
+  const double iw = std::max(1.0, w - 2 * margin_px), ih = std::max(1.0, h - 2 * margin_px);
+  const double su = std::max(u1 - u0, 1e-6), sv = std::max(v1 - v0, 1e-6);
+  const double mm_per_px = std::max(su / iw, sv / ih);
+  const double cu = 0.5 * (u0 + u1), cv = 0.5 * (v0 + v1);
+  Frame f;
+  f.x = x;
+  f.y = y;
+  f.w = w;
+  f.h = h;
+  f.u0 = cu - 0.5 * w * mm_per_px;
+  f.u1 = cu + 0.5 * w * mm_per_px;
+  f.v0 = cv - 0.5 * h * mm_per_px;
+  f.v1 = cv + 0.5 * h * mm_per_px;
+  return f;
+}
+
+double nice_step(double span, int target) {
+  if (!(span > 0.0) || !std::isfinite(span)) return 1.0;
+  const double raw = span / std::max(1, target);
+  const double p = std::pow(10.0, std::floor(std::log10(raw)));
+  const double m = raw / p;
+  return (m < 1.5 ? 1.0 : m < 3.5 ? 2.0 : m < 7.5 ? 5.0 : 10.0) * p;
+}
+
+namespace {
+
+double seg_dist(const Pt& p, const Pt& a, const Pt& b) {
+  const double dx = b.x - a.x, dy = b.y - a.y;
+  const double l2 = dx * dx + dy * dy;
+  double t = l2 > 0 ? ((p.x - a.x) * dx + (p.y - a.y) * dy) / l2 : 0.0;
+  t = std::clamp(t, 0.0, 1.0);
+  const double ex = a.x + t * dx - p.x, ey = a.y + t * dy - p.y;
+  return std::sqrt(ex * ex + ey * ey);
+}
+
+}  // namespace
+
+std::vector<Pt> simplify(const std::vector<Pt>& pts, double tol) {
+  if (pts.size() < 3) return pts;
+  std::vector<char> keep(pts.size(), 0);
+  keep.front() = keep.back() = 1;
+  std::vector<std::pair<std::size_t, std::size_t>> stack{{0, pts.size() - 1}};
+  while (!stack.empty()) {
+    const auto [a, b] = stack.back();
+    stack.pop_back();
+    double worst = -1.0;
+    std::size_t at = a;
+    for (std::size_t i = a + 1; i < b; ++i) {
+      const double d = seg_dist(pts[i], pts[a], pts[b]);
+      if (d > worst) {
+        worst = d;
+        at = i;
+      }
+    }
+    if (worst > tol) {
+      keep[at] = 1;
+      stack.emplace_back(a, at);
+      stack.emplace_back(at, b);
+    }
+  }
+  std::vector<Pt> out;
+  for (std::size_t i = 0; i < pts.size(); ++i) {
+    if (keep[i] != 0) out.push_back(pts[i]);
+  }
+  return out;
+}
+
+Box2 LabelPlacer::place(double ax, double ay, double w, double h, bool& leader) {
+  struct Cand {
+    double dx, dy;
+  };
+  // Beside the anchor first, then on rings further out (with a leader line).
+  std::vector<Cand> cands{{8, -h / 2}, {-8 - w, -h / 2}, {6, -6 - h},
+                          {6, 6},      {-6 - w, -6 - h}, {-6 - w, 6}};
+  const std::size_t near = cands.size();
+  for (double r : {26.0, 42.0, 58.0, 76.0, 96.0}) {
+    for (int k = 0; k < 12; ++k) {
+      const double a = k * std::numbers::pi / 6.0;
+      const double cx = ax + r * std::cos(a), cy = ay - r * std::sin(a);
+      cands.push_back({cx - ax + (std::cos(a) >= 0 ? 0.0 : -w), cy - ay - h / 2});
+    }
+  }
+  auto clamp_box = [&](Box2 b) {
+    b.x = std::clamp(b.x, clip_.x + 2, std::max(clip_.x + 2, clip_.x + clip_.w - b.w - 2));
+    b.y = std::clamp(b.y, clip_.y + 2, std::max(clip_.y + 2, clip_.y + clip_.h - b.h - 2));
+    return b;
+  };
+  for (std::size_t i = 0; i < cands.size(); ++i) {
+    const Box2 b = clamp_box(Box2{ax + cands[i].dx, ay + cands[i].dy, w, h});
+    const bool free =
+        std::none_of(used_.begin(), used_.end(), [&](const Box2& u) { return u.overlaps(b); });
+    if (free) {
+      used_.push_back(b);
+      leader = i >= near;
+      return b;
+    }
+  }
+  leader = false;
+  const Box2 b = clamp_box(Box2{ax + cands[0].dx, ay + cands[0].dy, w, h});
+  used_.push_back(b);
+  return b;
+}
+
+}  // namespace skipnc::plot
