@@ -18,6 +18,8 @@ struct RunArgs {
   std::vector<std::string> include;
   std::string dprnt;
   bool quiet = false;
+  int repeat = 0;          // --repeat N: N runs with the probe's scatter (cli/repeat.hpp)
+  long long seed = -1;     // --seed S: first seed of those runs (-1: the scene's)
   bool progress = true;
 };
 

@@ -3,6 +3,7 @@
 #include <iostream>
 
 #include "cli/commands.hpp"
+#include "cli/repeat.hpp"
 #include "cli/plot.hpp"
 
 int main(int argc, char** argv) {
@@ -25,6 +26,11 @@ int main(int argc, char** argv) {
   run->add_option("-I,--include", run_args.include, "subprogram folder (repeatable)");
   run->add_option("--dprnt", run_args.dprnt, "file for DPRNT output (POPEN/PCLOS)");
   run->add_flag("-q,--quiet", run_args.quiet, "no summary on standard output");
+  run->add_option("--repeat", run_args.repeat,
+                  "run N times with the probe's scatter; report mean, std dev, worst case")
+      ->check(CLI::Range(1, 1000000));
+  run->add_option("--seed", run_args.seed, "first seed of the --repeat runs (default: the scene's)")
+      ->check(CLI::Range(0LL, 9000000000000000000LL));
 
   RunArgs canon_args;
   auto* canon = app.add_subcommand("canon", "print the canonical command stream, without motion");
@@ -62,7 +68,10 @@ int main(int argc, char** argv) {
     const int rc = app.exit(e);
     return rc == 0 ? 0 : 2;
   }
-  if (run->parsed()) return skipnc::cli::run_command(run_args);
+  if (run->parsed()) {
+    return run_args.repeat > 0 ? skipnc::cli::repeat_command(run_args)
+                               : skipnc::cli::run_command(run_args);
+  }
   if (canon->parsed()) return skipnc::cli::canon_command(canon_args);
   if (demo->parsed()) return skipnc::cli::demo_command(demo_args);
   if (plot->parsed()) return skipnc::cli::plot_command(plot_args);

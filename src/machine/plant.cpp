@@ -6,7 +6,7 @@
 namespace skipnc::machine {
 
 Plant::Plant(const config::MachineConfig& m, const Scene& scene, ServoClock clock)
-    : m_(m), scene_(scene), clock_(clock), n_(m.axis_count()) {
+    : m_(m), scene_(scene), clock_(clock), n_(m.axis_count()), probing_(scene_.probing, m) {
   for (int i = 0; i < n_; ++i) {
     const double kp = m.axes[static_cast<std::size_t>(i)].kp_per_s;
     decay_[static_cast<std::size_t>(i)] = kp > 0 ? std::exp(-kp * clock_.period_s()) : 0.0;
@@ -19,12 +19,17 @@ Plant::Plant(const config::MachineConfig& m, const Scene& scene, ServoClock cloc
     return signals_.back();
   };
   for (std::size_t i = 0; i < scene_.triggers.size(); ++i) {
-    sources_.push_back(Source{true, i, false});
+    sources_.push_back(Source{SourceKind::kTrigger, i, false});
     signal_for(scene_.triggers[i].signal).sources.push_back(sources_.size() - 1);
   }
   for (std::size_t i = 0; i < scene_.pulses.size(); ++i) {
-    sources_.push_back(Source{false, i, false});
+    sources_.push_back(Source{SourceKind::kPulse, i, false});
     signal_for(scene_.pulses[i].signal).sources.push_back(sources_.size() - 1);
+  }
+  for (std::size_t i = 0; i < probing_.source_count(); ++i) {
+    sources_.push_back(Source{SourceKind::kProbing, i, false});
+    probing_source_.push_back(sources_.size() - 1);
+    signal_for(probing_.source_signal(i)).sources.push_back(sources_.size() - 1);
   }
   events_.reserve(sources_.size() * 2 + 4);
 }
@@ -32,13 +37,16 @@ Plant::Plant(const config::MachineConfig& m, const Scene& scene, ServoClock cloc
 void Plant::reset(const AxisVec& position) {
   actual_ = position;
   torque_ = AxisVec{};
+  probing_.reset(position);
   for (auto& s : sources_) {
-    if (s.is_trigger) {
+    if (s.kind == SourceKind::kTrigger) {
       const Trigger& t = scene_.triggers[s.index];
       s.on = trigger_on(t, actual_[t.axis]);
-    } else {
+    } else if (s.kind == SourceKind::kPulse) {
       const Pulse& p = scene_.pulses[s.index];
       s.on = p.at_time_s <= 0.0 && p.duration_s > 0.0;
+    } else {
+      s.on = probing_.source_on(s.index);
     }
   }
   for (auto& sig : signals_) {
@@ -80,6 +88,7 @@ void Plant::advance(Tick k, const AxisVec& from, const AxisVec& to,
   in.actual = actual_;
   in.torque_pct = torque_;
   in.edge_count = 0;
+  probing_.advance(before, actual_);
   if (sources_.empty()) return;
 
   // Source events inside the period, in time order.
@@ -87,7 +96,7 @@ void Plant::advance(Tick k, const AxisVec& from, const AxisVec& to,
   const double t0 = clock_.seconds(k - 1);
   for (std::size_t s = 0; s < sources_.size(); ++s) {
     const Source& src = sources_[s];
-    if (src.is_trigger) {
+    if (src.kind == SourceKind::kTrigger) {
       const Trigger& t = scene_.triggers[src.index];
       const double p0 = before[t.axis], p1 = actual_[t.axis];
       const bool on1 = trigger_on(t, p1);
@@ -97,7 +106,7 @@ void Plant::advance(Tick k, const AxisVec& from, const AxisVec& to,
         if (frac <= 0.0) frac = std::nextafter(0.0, 1.0);
         events_.push_back(Event{frac, s, on1});
       }
-    } else {
+    } else if (src.kind == SourceKind::kPulse) {
       const Pulse& p = scene_.pulses[src.index];
       const double on_t = p.at_time_s, off_t = p.at_time_s + p.duration_s;
       auto frac_of = [&](double t) { return (t - t0) / T; };
@@ -106,9 +115,14 @@ void Plant::advance(Tick k, const AxisVec& from, const AxisVec& to,
       if (p.duration_s > 0.0 && f_off > 0.0 && f_off <= 1.0) events_.push_back(Event{f_off, s, false});
     }
   }
+  for (const auto& e : probing_.edges()) {
+    events_.push_back(Event{e.frac, probing_source_[e.source], e.on});
+  }
   if (events_.empty()) return;
-  std::sort(events_.begin(), events_.end(),
-            [](const Event& a, const Event& b) { return a.frac < b.frac; });
+  // Equal instants: a switch-on before a switch-off (a touch inside one instant).
+  std::sort(events_.begin(), events_.end(), [](const Event& a, const Event& b) {
+    return a.frac < b.frac || (a.frac == b.frac && a.on && !b.on);
+  });
   for (const Event& e : events_) {
     sources_[e.source].on = e.on;
     for (auto& sig : signals_) {

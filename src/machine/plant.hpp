@@ -18,6 +18,7 @@
 #include "core/axes.hpp"
 #include "core/time.hpp"
 #include "kernel/kernel.hpp"
+#include "machine/probe_scene.hpp"
 #include "machine/scene.hpp"
 
 namespace skipnc::machine {
@@ -38,15 +39,20 @@ class Plant {
 
   const AxisVec& actual() const noexcept { return actual_; }
   const AxisVec& torque() const noexcept { return torque_; }
+  double clock_period_s() const noexcept { return clock_.period_s(); }
   // Is the signal at `index` (scene order of distinct signals) on?
   std::size_t signal_count() const noexcept { return signals_.size(); }
   const canon::SignalAddr& signal_addr(std::size_t i) const noexcept { return signals_[i].addr; }
   bool signal_level(std::size_t i) const noexcept { return signals_[i].level; }
+  // Parts, probe, tools, setter and gauges: tool changes, faults, touches.
+  ProbeScene& probing() noexcept { return probing_; }
+  const ProbeScene& probing() const noexcept { return probing_; }
 
  private:
+  enum class SourceKind : std::uint8_t { kTrigger, kPulse, kProbing };
   struct Source {
-    bool is_trigger = true;
-    std::size_t index = 0;  // into scene triggers / pulses
+    SourceKind kind = SourceKind::kTrigger;
+    std::size_t index = 0;  // into scene triggers / pulses / probing sources
     bool on = false;
   };
   struct Signal {
@@ -73,6 +79,8 @@ class Plant {
     bool on;
   };
   std::vector<Event> events_;  // reserved once; reused each period
+  ProbeScene probing_;
+  std::vector<std::size_t> probing_source_;  // probing source -> index into sources_
 };
 
 }  // namespace skipnc::machine

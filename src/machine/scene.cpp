@@ -82,7 +82,8 @@ Result<Scene> parse_scene(std::string_view text, std::string_view origin,
   auto parsed = config::parse_toml(text, origin);
   if (!parsed) return std::unexpected(parsed.error());
   const toml::table& root = *parsed;
-  auto keys = check_keys(root, {"trigger", "pulse", "stop"}, origin, "a scene file");
+  auto keys = check_keys(root, {"trigger", "pulse", "stop", "box", "cylinder", "sphere", "plane", "bore",
+                          "pocket", "probe", "tool", "tool_setter", "gauge", "spindle_tool"}, origin, "a scene file");
   if (!keys) return std::unexpected(keys.error());
   Scene s;
   s.origin = std::string(origin);
@@ -140,6 +141,9 @@ Result<Scene> parse_scene(std::string_view text, std::string_view origin,
     return {};
   });
   if (!r) return std::unexpected(r.error());
+  auto probing = parse_probing(root, origin, m, d, p);
+  if (!probing) return std::unexpected(probing.error());
+  s.probing = std::move(*probing);
   return s;
 }
 

@@ -8,6 +8,7 @@
 #include "config/dialect.hpp"
 #include "config/machine_config.hpp"
 #include "core/diag.hpp"
+#include "machine/scene_parts.hpp"
 
 namespace skipnc::machine {
 
@@ -40,6 +41,7 @@ struct Scene {
   std::vector<Trigger> triggers;
   std::vector<Pulse> pulses;
   std::vector<Stop> stops;
+  Probing probing;  // parts, probe, tools, tool setter, gauges (scene_parts.hpp)
 };
 
 [[nodiscard]] Result<Scene> parse_scene(std::string_view toml_text, std::string_view origin,

@@ -3,6 +3,8 @@
 #include <cmath>
 #include <type_traits>
 
+#include "machine/probe_safety.hpp"
+
 namespace skipnc::machine {
 
 kernel::KernelConfig kernel_config(const config::MachineConfig& m) {
@@ -83,7 +85,8 @@ Result<RunResult> Simulator::run(const interp::Setup& setup, const RunOptions& o
   k.set_position(home);
   plant.reset(home);
   plant.for_each_signal([&](const canon::SignalAddr& a, bool on) { k.preset_signal(a, on); });
-  Router router(k, opts.commands);
+  ProbeSafety safety(m_, p_, plant, opts.commands);
+  Router router(k, &safety);
 
   const int n = m_.axis_count();
   kernel::TickInput tin;
@@ -106,7 +109,7 @@ Result<RunResult> Simulator::run(const interp::Setup& setup, const RunOptions& o
 
   for (;;) {
     // Feed the kernel until it is full or the interpreter must wait.
-    while (!waiting && !ending && k.can_accept()) {
+    while (!waiting && !ending && k.can_accept() && !safety.holds_reading()) {
       auto st = in.step(router);
       if (!st) {
         program_alarm = st.error();
@@ -134,6 +137,12 @@ Result<RunResult> Simulator::run(const interp::Setup& setup, const RunOptions& o
       r.line = tout.line;
       r.plant = &plant;
       opts.trace->row(r);
+    }
+    // Tool changes, probe crash, collision, probe protection.
+    if (auto s = safety.after_period(plant, k, tout.line, file)) {
+      alarm(std::move(s->error));
+      res.alarm_position = s->machine_position;
+      break;
     }
     for (int i = 0; i < n; ++i) {
       const auto& a = m_.axes[static_cast<std::size_t>(i)];
@@ -197,6 +206,7 @@ Result<RunResult> Simulator::run(const interp::Setup& setup, const RunOptions& o
   res.skips = in.skips();
   res.messages = in.messages();
   for (auto& msg : router.messages) res.messages.push_back(msg);
+  for (const auto& msg : safety.messages()) res.messages.push_back(msg);
   if (res.status == RunStatus::kCompleted || res.status == RunStatus::kAlarm) {
     auto saved = in.save_persistent();
     if (!saved && res.status == RunStatus::kCompleted) alarm(saved.error());

@@ -41,6 +41,7 @@ enum class RunStatus : std::uint8_t { kCompleted, kAlarm, kInterrupted };
 struct RunResult {
   RunStatus status = RunStatus::kCompleted;
   std::optional<Error> alarm;
+  std::optional<AxisVec> alarm_position;  // machine position of a probe crash, collision, protection alarm
   AxisVec final_machine;
   AxisVec final_work;
   double time_s = 0.0;

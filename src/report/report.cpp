@@ -82,6 +82,7 @@ std::string to_json(const ReportInput& in) {
     a["line"] = err->loc.line == 0 ? ordered_json(nullptr) : ordered_json(err->loc.line);
     a["column"] = err->loc.column == 0 ? ordered_json(nullptr) : ordered_json(err->loc.column);
     a["key"] = std::string(alarm_key(err->id));
+    if (!in.start_error && r.alarm_position) a["machine_position"] = axes_json(*r.alarm_position, in.machine);
     j["alarm"] = a;
   } else {
     j["alarm"] = nullptr;

@@ -1,0 +1,787 @@
+#include "machine/geometry.hpp"
+
+#include <algorithm>
+#include <array>
+#include <limits>
+
+namespace skipnc::machine::geo {
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+// A contact point is on a surface when its signed distance is within this.
+constexpr double kOnSurface = 1e-7;
+
+double hypot2(double x, double y) noexcept {
+  return std::sqrt(x * x + y * y);
+}
+
+// Roots of a t^2 + b t + c = 0, smaller first. False without real roots or
+// when the equation does not depend on t.
+bool quadratic(double a, double b, double c, double& t1, double& t2) noexcept {
+  if (a == 0.0) {
+    if (b == 0.0) return false;
+    t1 = t2 = -c / b;
+    return true;
+  }
+  const double disc = b * b - 4.0 * a * c;
+  if (disc < 0.0) return false;
+  const double s = std::sqrt(disc);
+  const double q = -0.5 * (b + (b >= 0.0 ? s : -s));
+  if (q == 0.0) {
+    t1 = t2 = 0.0;
+    return true;
+  }
+  t1 = q / a;
+  t2 = c / q;
+  if (t1 > t2) std::swap(t1, t2);
+  return true;
+}
+
+double horner(const double* c, int n, double t) noexcept {
+  double v = c[n];
+  for (int i = n - 1; i >= 0; --i) v = v * t + c[i];
+  return v;
+}
+
+bool in_unit(double t) noexcept {
+  return t >= 0.0 && t <= 1.0;
+}
+
+// A 2-D curve of a vertical surface: a line n.p = d (n unit) or a circle.
+struct Curve2 {
+  bool circle = false;
+  double nx = 0.0, ny = 0.0, d = 0.0;  // line
+  double cx = 0.0, cy = 0.0, r = 0.0;  // circle
+};
+
+Curve2 line2(double nx, double ny, double d) {
+  Curve2 c;
+  c.nx = nx;
+  c.ny = ny;
+  c.d = d;
+  return c;
+}
+Curve2 circle2(double cx, double cy, double r) {
+  Curve2 c;
+  c.circle = true;
+  c.cx = cx;
+  c.cy = cy;
+  c.r = r;
+  return c;
+}
+
+// The vertical surfaces of a shape as XY curves.
+void vertical_curves(const Shape& s, std::vector<Curve2>& out) {
+  switch (s.kind) {
+    case ShapeKind::kBox:
+      out.push_back(line2(1, 0, s.lo.x));
+      out.push_back(line2(1, 0, s.hi.x));
+      out.push_back(line2(0, 1, s.lo.y));
+      out.push_back(line2(0, 1, s.hi.y));
+      break;
+    case ShapeKind::kCylinder:
+      out.push_back(circle2(s.lo.x, s.lo.y, s.radius));
+      break;
+    case ShapeKind::kHalfSpace:
+      if (std::fabs(s.normal.z) < 1e-12) {
+        const double h = hypot2(s.normal.x, s.normal.y);
+        out.push_back(line2(s.normal.x / h, s.normal.y / h,
+                            (s.normal.x * s.center.x + s.normal.y * s.center.y) / h));
+      }
+      break;
+    case ShapeKind::kSphere:
+      break;
+  }
+}
+
+// Points where two XY curves cross (at most 2).
+int intersect2(const Curve2& a, const Curve2& b, double* xs, double* ys) {
+  if (!a.circle && !b.circle) {
+    const double det = a.nx * b.ny - a.ny * b.nx;
+    if (std::fabs(det) < 1e-12) return 0;
+    xs[0] = (a.d * b.ny - a.ny * b.d) / det;
+    ys[0] = (a.nx * b.d - a.d * b.nx) / det;
+    return 1;
+  }
+  if (a.circle && b.circle) {
+    const double dx = b.cx - a.cx, dy = b.cy - a.cy;
+    const double dd = hypot2(dx, dy);
+    if (dd < 1e-12 || dd > a.r + b.r || dd < std::fabs(a.r - b.r)) return 0;
+    const double along = (a.r * a.r - b.r * b.r + dd * dd) / (2.0 * dd);
+    const double h = std::sqrt(std::max(0.0, a.r * a.r - along * along));
+    const double mx = a.cx + dx * along / dd, my = a.cy + dy * along / dd;
+    xs[0] = mx - dy * h / dd;
+    ys[0] = my + dx * h / dd;
+    xs[1] = mx + dy * h / dd;
+    ys[1] = my - dx * h / dd;
+    return 2;
+  }
+  const Curve2& l = a.circle ? b : a;
+  const Curve2& c = a.circle ? a : b;
+  const double off = l.d - (l.nx * c.cx + l.ny * c.cy);
+  if (std::fabs(off) >= c.r) return 0;
+  const double fx = c.cx + l.nx * off, fy = c.cy + l.ny * off;
+  const double h = std::sqrt(c.r * c.r - off * off);
+  xs[0] = fx - l.ny * h;
+  ys[0] = fy + l.nx * h;
+  xs[1] = fx + l.ny * h;
+  ys[1] = fy - l.nx * h;
+  return 2;
+}
+
+// The vertical extent of a shape (half-spaces and spheres included).
+void z_range(const Shape& s, double& lo, double& hi) {
+  switch (s.kind) {
+    case ShapeKind::kBox:
+    case ShapeKind::kCylinder:
+      lo = s.lo.z;
+      hi = s.hi.z;
+      return;
+    case ShapeKind::kSphere:
+      lo = s.center.z - s.radius;
+      hi = s.center.z + s.radius;
+      return;
+    case ShapeKind::kHalfSpace:
+      lo = -1e9;
+      hi = 1e9;
+      return;
+  }
+}
+
+// Overlap of a column with a solid: the smaller of the radial and vertical
+// overlaps (boxes, cylinders), the penetration (spheres, half-spaces).
+double column_shape_overlap(const Column& c, const Shape& s) noexcept {
+  switch (s.kind) {
+    case ShapeKind::kBox: {
+      const double vertical = std::min(c.top, s.hi.z) - std::max(c.bottom, s.lo.z);
+      const double dx = std::max({s.lo.x - c.x, 0.0, c.x - s.hi.x});
+      const double dy = std::max({s.lo.y - c.y, 0.0, c.y - s.hi.y});
+      double radial;
+      if (dx == 0.0 && dy == 0.0) {
+        radial = c.radius + std::min({c.x - s.lo.x, s.hi.x - c.x, c.y - s.lo.y, s.hi.y - c.y});
+      } else {
+        radial = c.radius - hypot2(dx, dy);
+      }
+      return std::min(radial, vertical);
+    }
+    case ShapeKind::kCylinder: {
+      const double vertical = std::min(c.top, s.hi.z) - std::max(c.bottom, s.lo.z);
+      const double radial = c.radius + s.radius - hypot2(c.x - s.lo.x, c.y - s.lo.y);
+      return std::min(radial, vertical);
+    }
+    case ShapeKind::kSphere: {
+      const double zc = std::clamp(s.center.z, c.bottom, c.top);
+      const double dxy = std::max(0.0, hypot2(c.x - s.center.x, c.y - s.center.y) - c.radius);
+      return s.radius - hypot2(dxy, s.center.z - zc);
+    }
+    case ShapeKind::kHalfSpace: {
+      const double z = s.normal.z > 0.0 ? c.bottom : c.top;
+      const double low =
+          dot(Vec3{c.x, c.y, z} - s.center, s.normal) - c.radius * hypot2(s.normal.x, s.normal.y);
+      return -low;
+    }
+  }
+  return 0.0;
+}
+
+// Is the column, over the height it shares with `solid`, inside `hole`?
+bool column_in_hole(const Column& c, const Shape& solid, const Shape& hole, double tol) noexcept {
+  double slo = 0.0, shi = 0.0;
+  z_range(solid, slo, shi);
+  const double lo = std::max(c.bottom, slo), hi = std::min(c.top, shi);
+  if (lo < hole.lo.z - tol || hi > hole.hi.z + tol) return false;
+  if (hole.kind == ShapeKind::kCylinder) {
+    return hypot2(c.x - hole.lo.x, c.y - hole.lo.y) + c.radius <= hole.radius + tol;
+  }
+  return c.x - c.radius >= hole.lo.x - tol && c.x + c.radius <= hole.hi.x + tol &&
+         c.y - c.radius >= hole.lo.y - tol && c.y + c.radius <= hole.hi.y + tol;
+}
+
+// Interval of t where alpha + beta t >= 0, intersected into [lo, hi].
+void clip_linear(double alpha, double beta, double& lo, double& hi) noexcept {
+  if (beta == 0.0) {
+    if (alpha < 0.0) lo = kInf;
+    return;
+  }
+  const double t = -alpha / beta;
+  if (beta > 0.0) {
+    lo = std::max(lo, t);
+  } else {
+    hi = std::min(hi, t);
+  }
+}
+
+}  // namespace
+
+Shape make_box(Vec3 lo, Vec3 hi) {
+  Shape s;
+  s.kind = ShapeKind::kBox;
+  s.lo = Vec3{std::min(lo.x, hi.x), std::min(lo.y, hi.y), std::min(lo.z, hi.z)};
+  s.hi = Vec3{std::max(lo.x, hi.x), std::max(lo.y, hi.y), std::max(lo.z, hi.z)};
+  s.center = (s.lo + s.hi) * 0.5;
+  return s;
+}
+
+Shape make_cylinder(double x, double y, double radius, double bottom, double top) {
+  Shape s;
+  s.kind = ShapeKind::kCylinder;
+  s.lo = Vec3{x, y, std::min(bottom, top)};
+  s.hi = Vec3{x, y, std::max(bottom, top)};
+  s.center = Vec3{x, y, (bottom + top) * 0.5};
+  s.radius = radius;
+  return s;
+}
+
+Shape make_sphere(Vec3 center, double radius) {
+  Shape s;
+  s.kind = ShapeKind::kSphere;
+  s.center = center;
+  s.radius = radius;
+  return s;
+}
+
+Shape make_half_space(Vec3 point, Vec3 normal) {
+  Shape s;
+  s.kind = ShapeKind::kHalfSpace;
+  s.center = point;
+  const double l = length(normal);
+  s.normal = l > 0.0 ? normal * (1.0 / l) : Vec3{0, 0, 1};
+  return s;
+}
+
+double signed_distance(const Shape& s, Vec3 p) noexcept {
+  switch (s.kind) {
+    case ShapeKind::kBox: {
+      const double qx = std::fabs(p.x - s.center.x) - (s.hi.x - s.lo.x) * 0.5;
+      const double qy = std::fabs(p.y - s.center.y) - (s.hi.y - s.lo.y) * 0.5;
+      const double qz = std::fabs(p.z - s.center.z) - (s.hi.z - s.lo.z) * 0.5;
+      const double out = length(Vec3{std::max(qx, 0.0), std::max(qy, 0.0), std::max(qz, 0.0)});
+      return out + std::min(std::max({qx, qy, qz}), 0.0);
+    }
+    case ShapeKind::kCylinder: {
+      const double dr = hypot2(p.x - s.lo.x, p.y - s.lo.y) - s.radius;
+      const double dz = std::max(s.lo.z - p.z, p.z - s.hi.z);
+      return hypot2(std::max(dr, 0.0), std::max(dz, 0.0)) + std::min(std::max(dr, dz), 0.0);
+    }
+    case ShapeKind::kSphere:
+      return length(p - s.center) - s.radius;
+    case ShapeKind::kHalfSpace:
+      return dot(p - s.center, s.normal);
+  }
+  return kInf;
+}
+
+double column_overlap(const Column& a, const Column& b) noexcept {
+  const double vertical = std::min(a.top, b.top) - std::max(a.bottom, b.bottom);
+  const double radial = a.radius + b.radius - hypot2(a.x - b.x, a.y - b.y);
+  return std::min(radial, vertical);
+}
+
+bool column_first_overlap(const Column& a, Vec3 move, const Column& b, double depth,
+                          double& t) noexcept {
+  if (column_overlap(a, b) >= depth) return false;  // already in: no new contact
+  if (a.top - a.bottom < depth || b.top - b.bottom < depth) return false;
+  double lo = 0.0, hi = 1.0;
+  // Vertical: a.top + mz t - b.bottom >= depth and b.top - a.bottom - mz t >= depth.
+  clip_linear(a.top - b.bottom - depth, move.z, lo, hi);
+  clip_linear(b.top - a.bottom - depth, -move.z, lo, hi);
+  // Radial: |u0 + w t| <= a.r + b.r - depth.
+  const double reach = a.radius + b.radius - depth;
+  if (reach <= 0.0) return false;
+  const double ux = a.x - b.x, uy = a.y - b.y;
+  const double qa = move.x * move.x + move.y * move.y;
+  const double qb = 2.0 * (ux * move.x + uy * move.y);
+  const double qc = ux * ux + uy * uy - reach * reach;
+  if (qa == 0.0) {
+    if (qc > 0.0) return false;
+  } else {
+    double t1 = 0.0, t2 = 0.0;
+    if (!quadratic(qa, qb, qc, t1, t2)) return false;
+    lo = std::max(lo, t1);
+    hi = std::min(hi, t2);
+  }
+  if (!(lo <= hi) || lo > 1.0 || hi < 0.0) return false;
+  t = lo;
+  return true;
+}
+
+int polynomial_roots(const double* c, int n, double lo, double hi, double* roots) noexcept {
+  while (n > 0 && c[n] == 0.0) --n;
+  if (n <= 0) return 0;
+  int count = 0;
+  if (n == 1) {
+    const double t = -c[0] / c[1];
+    if (t >= lo && t <= hi) roots[count++] = t;
+    return count;
+  }
+  if (n == 2) {
+    double t1 = 0.0, t2 = 0.0;
+    if (!quadratic(c[2], c[1], c[0], t1, t2)) return 0;
+    if (t1 >= lo && t1 <= hi) roots[count++] = t1;
+    if (t2 >= lo && t2 <= hi && t2 != t1) roots[count++] = t2;
+    return count;
+  }
+  // The derivative's roots split [lo, hi] into pieces where the polynomial
+  // is monotonic; each piece holds at most one root, found by bisection.
+  std::array<double, 4> d{};
+  for (int i = 0; i < n; ++i) d[static_cast<std::size_t>(i)] = (i + 1) * c[i + 1];
+  std::array<double, 6> pts{};
+  int np = 0;
+  pts[static_cast<std::size_t>(np++)] = lo;
+  std::array<double, 4> crit{};
+  const int nc = polynomial_roots(d.data(), n - 1, lo, hi, crit.data());
+  for (int i = 0; i < nc; ++i)
+    pts[static_cast<std::size_t>(np++)] = crit[static_cast<std::size_t>(i)];
+  pts[static_cast<std::size_t>(np++)] = hi;
+  auto add = [&](double t) {
+    if (count > 0 && roots[count - 1] == t) return;
+    if (count < n) roots[count++] = t;
+  };
+  for (int i = 0; i + 1 < np; ++i) {
+    double x0 = pts[static_cast<std::size_t>(i)], x1 = pts[static_cast<std::size_t>(i + 1)];
+    double f0 = horner(c, n, x0);
+    const double f1 = horner(c, n, x1);
+    if (f0 == 0.0) {
+      add(x0);
+      continue;
+    }
+    if (f1 == 0.0) {
+      if (i + 2 == np) add(x1);
+      continue;
+    }
+    if ((f0 < 0.0) == (f1 < 0.0)) continue;
+    for (int it = 0; it < 200; ++it) {
+      const double mid = 0.5 * (x0 + x1);
+      if (mid <= x0 || mid >= x1) break;
+      const double fm = horner(c, n, mid);
+      if (fm == 0.0) {
+        x0 = x1 = mid;
+        break;
+      }
+      if ((fm < 0.0) == (f0 < 0.0)) {
+        x0 = mid;
+        f0 = fm;
+      } else {
+        x1 = mid;
+      }
+    }
+    add(0.5 * (x0 + x1));
+  }
+  return count;
+}
+
+// --- Material ---------------------------------------------------------------
+
+Material::Material(std::vector<Part> parts) : parts_(std::move(parts)) {
+  for (int p = 0; p < static_cast<int>(parts_.size()); ++p) {
+    const Part& part = parts_[static_cast<std::size_t>(p)];
+    for (int s = 0; s < static_cast<int>(part.solids.size()); ++s) add_solid_features(p, s);
+    for (int h = 0; h < static_cast<int>(part.holes.size()); ++h) {
+      add_hole_features(p, h);
+      for (int s = 0; s < static_cast<int>(part.solids.size()); ++s) add_rims(p, h, s);
+    }
+  }
+}
+
+void Material::add_solid_features(int part, int solid) {
+  const Shape& s = parts_[static_cast<std::size_t>(part)].solids[static_cast<std::size_t>(solid)];
+  auto feature = [&](FeatureKind k) {
+    Feature f;
+    f.kind = k;
+    f.part = part;
+    f.owner = solid;
+    return f;
+  };
+  auto plane = [&](Vec3 p, Vec3 n) {
+    Feature f = feature(FeatureKind::kPlane);
+    f.p = p;
+    f.n = n;
+    features_.push_back(f);
+  };
+  switch (s.kind) {
+    case ShapeKind::kBox: {
+      plane(s.lo, {-1, 0, 0});
+      plane(s.hi, {1, 0, 0});
+      plane(s.lo, {0, -1, 0});
+      plane(s.hi, {0, 1, 0});
+      plane(s.lo, {0, 0, -1});
+      plane(s.hi, {0, 0, 1});
+      std::array<Vec3, 8> corner{};
+      for (unsigned i = 0; i < 8; ++i) {
+        corner[i] = Vec3{(i & 1U) ? s.hi.x : s.lo.x, (i & 2U) ? s.hi.y : s.lo.y,
+                         (i & 4U) ? s.hi.z : s.lo.z};
+      }
+      for (unsigned i = 0; i < 8; ++i) {
+        for (unsigned bit = 1; bit < 8; bit <<= 1U) {
+          if ((i & bit) != 0U) continue;
+          Feature f = feature(FeatureKind::kSegment);
+          f.p = corner[i];
+          f.q = corner[i | bit];
+          features_.push_back(f);
+        }
+      }
+      break;
+    }
+    case ShapeKind::kCylinder: {
+      Feature wall = feature(FeatureKind::kOuterWall);
+      wall.p = s.lo;
+      wall.r = s.radius;
+      features_.push_back(wall);
+      plane(s.hi, {0, 0, 1});
+      plane(s.lo, {0, 0, -1});
+      for (double z : {s.lo.z, s.hi.z}) {
+        Feature rim = feature(FeatureKind::kCircle);
+        rim.p = Vec3{s.lo.x, s.lo.y, z};
+        rim.r = s.radius;
+        features_.push_back(rim);
+      }
+      break;
+    }
+    case ShapeKind::kSphere: {
+      Feature f = feature(FeatureKind::kBall);
+      f.p = s.center;
+      f.r = s.radius;
+      features_.push_back(f);
+      break;
+    }
+    case ShapeKind::kHalfSpace:
+      plane(s.center, s.normal);
+      break;
+  }
+}
+
+void Material::add_hole_features(int part, int hole) {
+  const Shape& h = parts_[static_cast<std::size_t>(part)].holes[static_cast<std::size_t>(hole)];
+  auto feature = [&](FeatureKind k) {
+    Feature f;
+    f.kind = k;
+    f.part = part;
+    f.owner = hole;
+    f.of_hole = true;
+    return f;
+  };
+  auto plane = [&](Vec3 p, Vec3 n) {
+    Feature f = feature(FeatureKind::kPlane);
+    f.p = p;
+    f.n = n;
+    features_.push_back(f);
+  };
+  // The walls face into the hole: material is outside it.
+  if (h.kind == ShapeKind::kCylinder) {
+    Feature wall = feature(FeatureKind::kInnerWall);
+    wall.p = h.lo;
+    wall.r = h.radius;
+    features_.push_back(wall);
+  } else {
+    plane(h.lo, {1, 0, 0});
+    plane(h.hi, {-1, 0, 0});
+    plane(h.lo, {0, 1, 0});
+    plane(h.hi, {0, -1, 0});
+  }
+  plane(h.lo, {0, 0, 1});   // floor
+  plane(h.hi, {0, 0, -1});  // ceiling
+}
+
+// The convex edges a hole makes where it leaves a solid: rims at the solid's
+// horizontal faces, and vertical lines where its walls meet the solid's.
+void Material::add_rims(int part, int hole, int solid) {
+  const Part& pt = parts_[static_cast<std::size_t>(part)];
+  const Shape& h = pt.holes[static_cast<std::size_t>(hole)];
+  const Shape& s = pt.solids[static_cast<std::size_t>(solid)];
+  auto feature = [&](FeatureKind k) {
+    Feature f;
+    f.kind = k;
+    f.part = part;
+    f.owner = hole;
+    f.of_hole = true;
+    return f;
+  };
+  std::array<double, 2> levels{};
+  int nl = 0;
+  if (s.kind == ShapeKind::kBox || s.kind == ShapeKind::kCylinder) {
+    levels[0] = s.lo.z;
+    levels[1] = s.hi.z;
+    nl = 2;
+  } else if (s.kind == ShapeKind::kHalfSpace && std::fabs(std::fabs(s.normal.z) - 1.0) < 1e-12) {
+    levels[0] = s.center.z;
+    nl = 1;
+  }
+  for (int i = 0; i < nl; ++i) {
+    const double z = levels[static_cast<std::size_t>(i)];
+    if (!(z > h.lo.z && z < h.hi.z)) continue;
+    if (h.kind == ShapeKind::kCylinder) {
+      Feature rim = feature(FeatureKind::kCircle);
+      rim.p = Vec3{h.lo.x, h.lo.y, z};
+      rim.r = h.radius;
+      features_.push_back(rim);
+    } else {
+      const std::array<Vec3, 4> c{Vec3{h.lo.x, h.lo.y, z}, Vec3{h.hi.x, h.lo.y, z},
+                                  Vec3{h.hi.x, h.hi.y, z}, Vec3{h.lo.x, h.hi.y, z}};
+      for (std::size_t k = 0; k < 4; ++k) {
+        Feature e = feature(FeatureKind::kSegment);
+        e.p = c[k];
+        e.q = c[(k + 1) % 4];
+        features_.push_back(e);
+      }
+    }
+  }
+  std::vector<Curve2> sc, hc;
+  vertical_curves(s, sc);
+  vertical_curves(h, hc);
+  double slo = 0.0, shi = 0.0;
+  z_range(s, slo, shi);
+  const double zlo = std::max(slo, h.lo.z), zhi = std::min(shi, h.hi.z);
+  if (!(zlo < zhi)) return;
+  for (const Curve2& a : sc) {
+    for (const Curve2& b : hc) {
+      double xs[2], ys[2];
+      const int n = intersect2(a, b, xs, ys);
+      for (int k = 0; k < n; ++k) {
+        Feature e = feature(FeatureKind::kSegment);
+        e.p = Vec3{xs[k], ys[k], zlo};
+        e.q = Vec3{xs[k], ys[k], zhi};
+        features_.push_back(e);
+      }
+    }
+  }
+}
+
+bool Material::valid(const Feature& f, Vec3 q) const noexcept {
+  const Part& pt = parts_[static_cast<std::size_t>(f.part)];
+  if (!f.of_hole) {
+    const Shape& s = pt.solids[static_cast<std::size_t>(f.owner)];
+    if (std::fabs(signed_distance(s, q)) > kOnSurface) return false;
+    for (const Shape& h : pt.holes) {
+      if (signed_distance(h, q) < -kOnSurface) return false;
+    }
+    return true;
+  }
+  const Shape& h = pt.holes[static_cast<std::size_t>(f.owner)];
+  if (std::fabs(signed_distance(h, q)) > kOnSurface) return false;
+  bool in_solid = false;
+  for (const Shape& s : pt.solids) {
+    if (signed_distance(s, q) <= kOnSurface) {
+      in_solid = true;
+      break;
+    }
+  }
+  if (!in_solid) return false;
+  for (std::size_t j = 0; j < pt.holes.size(); ++j) {
+    if (static_cast<int>(j) != f.owner && signed_distance(pt.holes[j], q) < -kOnSurface)
+      return false;
+  }
+  return true;
+}
+
+bool Material::contact_with(const Feature& f, Vec3 a, Vec3 b, double radius,
+                            Contact& c) const noexcept {
+  const Vec3 w = b - a;
+  auto accept = [&](double t, Vec3 point) {
+    const Vec3 centre = lerp(a, b, t);
+    if (!valid(f, point)) return false;
+    Vec3 n = centre - point;
+    const double l = length(n);
+    n = l > 0.0 ? n * (1.0 / l) : Vec3{0, 0, 1};
+    c.t = t;
+    c.point = point;
+    c.normal = n;
+    c.part = f.part;
+    return true;
+  };
+  // A ball of radius `reach` about point p: the smaller root (entering).
+  auto ball_root = [&](Vec3 p, double reach, double& t) {
+    const Vec3 m = a - p;
+    double t1 = 0.0, t2 = 0.0;
+    if (!quadratic(dot(w, w), 2.0 * dot(m, w), dot(m, m) - reach * reach, t1, t2)) return false;
+    t = t1;
+    return in_unit(t1);
+  };
+  switch (f.kind) {
+    case FeatureKind::kPlane: {
+      const double s0 = dot(a - f.p, f.n), s1 = dot(b - f.p, f.n);
+      if (!(s0 >= radius && s1 <= radius && s1 < s0)) return false;
+      const double t = (s0 - radius) / (s0 - s1);
+      return accept(t, lerp(a, b, t) - f.n * radius);
+    }
+    case FeatureKind::kOuterWall:
+    case FeatureKind::kInnerWall: {
+      const bool outer = f.kind == FeatureKind::kOuterWall;
+      const double reach = outer ? f.r + radius : f.r - radius;
+      if (reach <= 0.0) return false;
+      const double ux = a.x - f.p.x, uy = a.y - f.p.y;
+      double t1 = 0.0, t2 = 0.0;
+      const double qa = w.x * w.x + w.y * w.y;
+      if (qa == 0.0) return false;
+      if (!quadratic(qa, 2.0 * (ux * w.x + uy * w.y), ux * ux + uy * uy - reach * reach, t1, t2)) {
+        return false;
+      }
+      const double t = outer ? t1 : t2;
+      if (!in_unit(t)) return false;
+      const Vec3 centre = lerp(a, b, t);
+      const double k = f.r / reach;
+      const Vec3 point{f.p.x + (centre.x - f.p.x) * k, f.p.y + (centre.y - f.p.y) * k, centre.z};
+      return accept(t, point);
+    }
+    case FeatureKind::kSegment: {
+      const Vec3 e0 = f.q - f.p;
+      const double len = length(e0);
+      if (len == 0.0) return false;
+      const Vec3 e = e0 * (1.0 / len);
+      const Vec3 m = a - f.p;
+      const Vec3 mp = m - e * dot(m, e), wp = w - e * dot(w, e);
+      double best = kInf;
+      Contact bc;
+      double t1 = 0.0, t2 = 0.0;
+      if (quadratic(dot(wp, wp), 2.0 * dot(mp, wp), dot(mp, mp) - radius * radius, t1, t2) &&
+          dot(wp, wp) > 0.0 && in_unit(t1)) {
+        const double s = dot(lerp(a, b, t1) - f.p, e);
+        if (s >= 0.0 && s <= len && accept(t1, f.p + e * s)) {
+          best = t1;
+          bc = c;
+        }
+      }
+      for (Vec3 end : {f.p, f.q}) {
+        double t = 0.0;
+        if (ball_root(end, radius, t) && t < best && accept(t, end)) {
+          best = t;
+          bc = c;
+        }
+      }
+      if (best == kInf) return false;
+      c = bc;
+      return true;
+    }
+    case FeatureKind::kBall: {
+      double t = 0.0;
+      if (!ball_root(f.p, f.r + radius, t)) return false;
+      const Vec3 centre = lerp(a, b, t);
+      return accept(t, f.p + (centre - f.p) * (f.r / (f.r + radius)));
+    }
+    case FeatureKind::kCircle: {
+      // (|m|^2 + R^2 - rho^2)^2 - 4 R^2 |m_xy|^2 = 0: the torus about the rim.
+      const Vec3 m = a - f.p;
+      const double A = dot(w, w), B = 2.0 * dot(m, w), C = dot(m, m);
+      const double qa = w.x * w.x + w.y * w.y, qb = 2.0 * (m.x * w.x + m.y * w.y),
+                   qc = m.x * m.x + m.y * m.y;
+      const double K = f.r * f.r - radius * radius, R4 = 4.0 * f.r * f.r;
+      const double CK = C + K;
+      const double poly[5] = {CK * CK - R4 * qc, 2.0 * B * CK - R4 * qb,
+                              B * B + 2.0 * A * CK - R4 * qa, 2.0 * A * B, A * A};
+      double roots[4];
+      const int n = polynomial_roots(poly, 4, 0.0, 1.0, roots);
+      for (int i = 0; i < n; ++i) {
+        const double t = roots[i];
+        const double before = i == 0 ? 0.5 * t : 0.5 * (roots[i - 1] + t);
+        const double after = i + 1 < n ? 0.5 * (t + roots[i + 1]) : 0.5 * (t + 1.0);
+        if (!(horner(poly, 4, before) > 0.0 || t == 0.0) || !(horner(poly, 4, after) < 0.0))
+          continue;
+        const Vec3 centre = lerp(a, b, t);
+        const double dx = centre.x - f.p.x, dy = centre.y - f.p.y;
+        const double dxy = hypot2(dx, dy);
+        const Vec3 point = dxy > 0.0 ? Vec3{f.p.x + dx * f.r / dxy, f.p.y + dy * f.r / dxy, f.p.z}
+                                     : Vec3{f.p.x + f.r, f.p.y, f.p.z};
+        if (std::fabs(length(centre - point) - radius) > 1e-6 * (1.0 + radius)) continue;
+        if (accept(t, point)) return true;
+      }
+      return false;
+    }
+  }
+  return false;
+}
+
+bool Material::first_contact(Vec3 a, Vec3 b, double radius, Contact& out) const noexcept {
+  bool found = false;
+  Contact c;
+  for (const Feature& f : features_) {
+    if (contact_with(f, a, b, radius, c) && (!found || c.t < out.t)) {
+      out = c;
+      found = true;
+    }
+  }
+  return found;
+}
+
+double Material::feature_distance(const Feature& f, Vec3 p, Vec3& closest) const noexcept {
+  switch (f.kind) {
+    case FeatureKind::kPlane: {
+      const double s = dot(p - f.p, f.n);
+      if (s < 0.0) return kInf;
+      closest = p - f.n * s;
+      return s;
+    }
+    case FeatureKind::kOuterWall:
+    case FeatureKind::kInnerWall: {
+      const double dx = p.x - f.p.x, dy = p.y - f.p.y;
+      const double dxy = hypot2(dx, dy);
+      const bool outer = f.kind == FeatureKind::kOuterWall;
+      if (outer ? dxy < f.r : dxy > f.r) return kInf;
+      closest = dxy > 0.0 ? Vec3{f.p.x + dx * f.r / dxy, f.p.y + dy * f.r / dxy, p.z}
+                          : Vec3{f.p.x + f.r, f.p.y, p.z};
+      return std::fabs(dxy - f.r);
+    }
+    case FeatureKind::kSegment: {
+      const Vec3 e = f.q - f.p;
+      const double ee = dot(e, e);
+      const double s = ee > 0.0 ? std::clamp(dot(p - f.p, e) / ee, 0.0, 1.0) : 0.0;
+      closest = f.p + e * s;
+      return length(p - closest);
+    }
+    case FeatureKind::kBall: {
+      const Vec3 d = p - f.p;
+      const double l = length(d);
+      if (l < f.r) return kInf;
+      closest = l > 0.0 ? f.p + d * (f.r / l) : f.p;
+      return l - f.r;
+    }
+    case FeatureKind::kCircle: {
+      const double dx = p.x - f.p.x, dy = p.y - f.p.y;
+      const double dxy = hypot2(dx, dy);
+      closest = dxy > 0.0 ? Vec3{f.p.x + dx * f.r / dxy, f.p.y + dy * f.r / dxy, f.p.z}
+                          : Vec3{f.p.x + f.r, f.p.y, f.p.z};
+      return length(p - closest);
+    }
+  }
+  return kInf;
+}
+
+double Material::part_sdf(const Part& part, Vec3 p) const noexcept {
+  double solid = kInf;
+  for (const Shape& s : part.solids) solid = std::min(solid, signed_distance(s, p));
+  double hole = kInf;
+  for (const Shape& h : part.holes) hole = std::min(hole, signed_distance(h, p));
+  return std::max(solid, -hole);
+}
+
+double Material::distance(Vec3 p) const noexcept {
+  for (const Part& part : parts_) {
+    if (part_sdf(part, p) < 0.0) return 0.0;
+  }
+  double best = kInf;
+  Vec3 q;
+  for (const Feature& f : features_) {
+    const double d = feature_distance(f, p, q);
+    if (d < best && valid(f, q)) best = d;
+  }
+  return best;
+}
+
+double Material::depth(Vec3 p) const noexcept {
+  double d = 0.0;
+  for (const Part& part : parts_) d = std::max(d, -part_sdf(part, p));
+  return d;
+}
+
+int Material::column_hits(const Column& c, double tol) const noexcept {
+  for (std::size_t p = 0; p < parts_.size(); ++p) {
+    const Part& part = parts_[p];
+    for (const Shape& s : part.solids) {
+      if (column_shape_overlap(c, s) <= tol) continue;
+      bool clear = false;
+      for (const Shape& h : part.holes) clear = clear || column_in_hole(c, s, h, tol);
+      if (!clear) return static_cast<int>(p);
+    }
+  }
+  return -1;
+}
+
+}  // namespace skipnc::machine::geo

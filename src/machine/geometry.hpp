@@ -1,0 +1,158 @@
+// Scene geometry: the parts a probe ball, a tool or a probe body can touch,
+// in machine coordinates (mm), and exact contact along a straight segment.
+//
+// A part is a union of solids (boxes, vertical cylinders, spheres,
+// half-spaces) minus its holes (vertical cylindrical bores, box pockets).
+// Its surface is kept as a list of features (faces, walls, edges, corners,
+// rims), each with a closed-form contact solution for a ball whose centre
+// moves on a line: ball-vs-plane is linear, ball-vs-cylinder (outside and
+// inside), ball-vs-edge, ball-vs-corner and ball-vs-sphere are quadratics,
+// ball-vs-rim (a circular edge, a torus) is a quartic whose real roots are
+// isolated by its derivatives. The first contact is the smallest root over
+// all features whose contact point lies on the part's surface.
+//
+// Nothing here allocates after construction.
+#pragma once
+
+#include <cmath>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace skipnc::machine::geo {
+
+struct Vec3 {
+  double x = 0.0;
+  double y = 0.0;
+  double z = 0.0;
+  friend constexpr Vec3 operator+(Vec3 a, Vec3 b) noexcept {
+    return {a.x + b.x, a.y + b.y, a.z + b.z};
+  }
+  friend constexpr Vec3 operator-(Vec3 a, Vec3 b) noexcept {
+    return {a.x - b.x, a.y - b.y, a.z - b.z};
+  }
+  friend constexpr Vec3 operator*(Vec3 a, double k) noexcept { return {a.x * k, a.y * k, a.z * k}; }
+  friend constexpr Vec3 operator*(double k, Vec3 a) noexcept { return a * k; }
+  friend constexpr bool operator==(const Vec3&, const Vec3&) = default;
+};
+
+constexpr double dot(Vec3 a, Vec3 b) noexcept {
+  return a.x * b.x + a.y * b.y + a.z * b.z;
+}
+inline double length(Vec3 a) noexcept {
+  return std::sqrt(dot(a, a));
+}
+constexpr Vec3 lerp(Vec3 a, Vec3 b, double t) noexcept {
+  return a + (b - a) * t;
+}
+
+enum class ShapeKind : std::uint8_t { kBox, kCylinder, kSphere, kHalfSpace };
+
+// A solid or a hole. Cylinders have a vertical (Z) axis.
+struct Shape {
+  ShapeKind kind = ShapeKind::kBox;
+  Vec3 lo;              // box: minimum corner; cylinder: (x, y, bottom)
+  Vec3 hi;              // box: maximum corner; cylinder: (x, y, top)
+  Vec3 center;          // sphere: centre; half-space: a point of the plane
+  Vec3 normal;          // half-space: unit normal pointing out of the material
+  double radius = 0.0;  // cylinder, sphere
+};
+
+Shape make_box(Vec3 lo, Vec3 hi);
+Shape make_cylinder(double x, double y, double radius, double bottom, double top);
+Shape make_sphere(Vec3 center, double radius);
+Shape make_half_space(Vec3 point, Vec3 normal);  // normal need not be unit
+
+// Signed distance from p to the shape's surface: negative inside.
+double signed_distance(const Shape& s, Vec3 p) noexcept;
+
+struct Part {
+  std::string name;
+  std::vector<Shape> solids;
+  std::vector<Shape> holes;  // boxes and cylinders; cut from this part's solids only
+};
+
+struct Contact {
+  double t = 0.0;  // fraction of the segment, in [0, 1]
+  Vec3 point;      // where the ball touches the surface
+  Vec3 normal;     // unit, from the surface toward the ball centre
+  int part = -1;
+};
+
+// A vertical cylinder (tool, probe body, setter disc).
+struct Column {
+  double x = 0.0;
+  double y = 0.0;
+  double radius = 0.0;
+  double bottom = 0.0;
+  double top = 0.0;
+};
+
+// How far two columns overlap: the smaller of the radial and the vertical
+// overlap (the distance to push them apart along XY or Z); <= 0 when apart.
+double column_overlap(const Column& a, const Column& b) noexcept;
+
+// The first instant t in [0, 1] at which column `a`, translated by t * move,
+// overlaps the fixed column `b` by at least `depth` (> 0), having overlapped
+// it by less just before. False when it does not happen in the segment.
+bool column_first_overlap(const Column& a, Vec3 move, const Column& b, double depth,
+                          double& t) noexcept;
+
+class Material {
+ public:
+  Material() = default;
+  explicit Material(std::vector<Part> parts);
+
+  bool empty() const noexcept { return parts_.empty(); }
+  const std::vector<Part>& parts() const noexcept { return parts_; }
+  std::size_t feature_count() const noexcept { return features_.size(); }
+
+  // The first instant at which a ball of `radius` whose centre moves from a
+  // to b touches the material while approaching it. A ball that already
+  // overlaps the material at a does not "touch" what it overlaps.
+  bool first_contact(Vec3 a, Vec3 b, double radius, Contact& out) const noexcept;
+  // Distance from p to the material; 0 inside it.
+  double distance(Vec3 p) const noexcept;
+  // How deep p is inside the material (0 outside); a CSG estimate near holes.
+  double depth(Vec3 p) const noexcept;
+  // The first part the column overlaps by more than `tol`, or -1. A column
+  // standing wholly inside one of the part's holes over the part's height
+  // does not overlap it.
+  int column_hits(const Column& c, double tol) const noexcept;
+
+ private:
+  enum class FeatureKind : std::uint8_t {
+    kPlane,      // p: a point, n: unit normal out of the material
+    kOuterWall,  // p: axis (x, y), r: radius (a boss, seen from outside)
+    kInnerWall,  // p: axis (x, y), r: radius (a bore, seen from inside)
+    kSegment,    // p -> q, with its end points
+    kBall,       // p: centre, r: radius (0: a corner)
+    kCircle,     // p: centre, r: radius, horizontal (a rim)
+  };
+  struct Feature {
+    FeatureKind kind = FeatureKind::kPlane;
+    bool of_hole = false;
+    int part = 0;
+    int owner = 0;  // solid index, or hole index when of_hole
+    Vec3 p;
+    Vec3 q;
+    Vec3 n;
+    double r = 0.0;
+  };
+  void add_solid_features(int part, int solid);
+  void add_hole_features(int part, int hole);
+  void add_rims(int part, int hole, int solid);
+  bool contact_with(const Feature& f, Vec3 a, Vec3 b, double radius, Contact& c) const noexcept;
+  bool valid(const Feature& f, Vec3 q) const noexcept;
+  double feature_distance(const Feature& f, Vec3 p, Vec3& closest) const noexcept;
+  double part_sdf(const Part& part, Vec3 p) const noexcept;
+
+  std::vector<Part> parts_;
+  std::vector<Feature> features_;
+};
+
+// Real roots of c[0] + c[1] t + ... + c[n] t^n (n <= 4) in [lo, hi], in
+// increasing order. Returns how many were written to `roots` (at most n).
+int polynomial_roots(const double* c, int n, double lo, double hi, double* roots) noexcept;
+
+}  // namespace skipnc::machine::geo

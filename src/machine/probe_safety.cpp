@@ -1,0 +1,157 @@
+#include "machine/probe_safety.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <type_traits>
+
+namespace skipnc::machine {
+
+ProbeSafety::ProbeSafety(const config::MachineConfig& m, const config::Parameters& p,
+                         const Plant& plant, interp::CommandSink* next)
+    : m_(m), plant_(plant), next_(next), protection_(p.get(kProbeProtectionParam) != 0.0) {}
+
+std::string ProbeSafety::where(const AxisVec& v) const {
+  std::string out;
+  for (int i = 0; i < m_.axis_count(); ++i) {
+    out += fmt::format("{}{}{:.4f}", out.empty() ? "" : " ",
+                       m_.axes[static_cast<std::size_t>(i)].name, v[i] + 0.0);
+  }
+  return out + " (machine)";
+}
+
+void ProbeSafety::emit(const canon::Stamped& c) {
+  if (next_ != nullptr) next_->emit(c);
+  std::visit(
+      [&](const auto& cmd) {
+        using T = std::decay_t<decltype(cmd)>;
+        if constexpr (std::is_same_v<T, canon::Skip>) {
+          warn_braking(cmd, c.line);
+          last_target_ = cmd.target;
+        } else if constexpr (std::is_same_v<T, canon::Rapid> || std::is_same_v<T, canon::Feed> ||
+                             std::is_same_v<T, canon::Arc>) {
+          last_target_ = cmd.target;
+        } else if constexpr (std::is_same_v<T, canon::ToolSelect>) {
+          selected_tool_ = cmd.tool;
+        } else if constexpr (std::is_same_v<T, canon::MCode>) {
+          if (cmd.code == 6 && selected_tool_ >= 0) tool_change_ = selected_tool_;
+        }
+      },
+      c.cmd);
+}
+
+double ProbeSafety::braking_distance(const canon::Skip& s, const AxisVec& from) const noexcept {
+  const int n = m_.axis_count();
+  const AxisVec d = s.target - from;
+  const double len = norm(d, n);
+  if (len <= 0.0) return 0.0;
+  const double v = s.feed_mm_per_min / 60.0;
+  double fe2 = 0.0;
+  double accel = 0.0;
+  for (int i = 0; i < n; ++i) {
+    const auto& ax = m_.axes[static_cast<std::size_t>(i)];
+    const double u = d[i] / len;
+    if (ax.kp_per_s > 0.0) {
+      const double fe = (1.0 - ax.feedforward) * v * u / ax.kp_per_s;
+      fe2 += fe * fe;
+    }
+    // The path's deceleration: the smallest a_i / |u_i| over the moving axes.
+    if (std::fabs(u) > 1e-12) {
+      const double a = ax.accel_mm_s2 / std::fabs(u);
+      accel = accel == 0.0 ? a : std::fmin(accel, a);
+    }
+  }
+  const double fe = std::sqrt(fe2);
+  if (s.spec.stop == canon::SkipStop::kImmediate || accel <= 0.0) {
+    return fe + v * plant_.clock_period_s();
+  }
+  return v * v / (2.0 * accel) + fe;
+}
+
+void ProbeSafety::warn_braking(const canon::Skip& s, std::uint32_t line) {
+  const ProbeScene& ps = plant_.probing();
+  const Probing& spec = ps.spec();
+  double limit = -1.0;
+  const char* what = "";
+  for (int i = 0; i < s.spec.input_count; ++i) {
+    if (spec.probe && ps.probe_in_spindle() && s.spec.inputs[i] == spec.probe->signal) {
+      limit = spec.probe->max_overtravel;
+      what = "the probe's stylus";
+    } else if (spec.tool_setter && ps.tool_in_spindle() != nullptr &&
+               s.spec.inputs[i] == spec.tool_setter->signal) {
+      limit = spec.tool_setter->max_overtravel;
+      what = "the tool setter";
+    }
+  }
+  if (limit < 0.0) return;
+  const double dist = braking_distance(s, last_target_);
+  if (dist <= limit) return;
+  const bool immediate = s.spec.stop == canon::SkipStop::kImmediate;
+  messages_.push_back(fmt::format(
+      "warning: line {}: the skip move at F{:g} needs {:.4f} mm to stop after the switch ({}), "
+      "more than the {:.4f} mm over-travel of {}",
+      line, s.feed_mm_per_min, dist,
+      immediate ? "immediate stop: following error + one servo period"
+                : "deceleration: v^2/2a + following error",
+      limit, what));
+}
+
+std::optional<SafetyAlarm> ProbeSafety::after_period(Plant& plant, const kernel::Kernel& k,
+                                                     std::uint32_t line, std::string_view file) {
+  // The line that was running during the period is the one the kernel
+  // showed after the previous tick.
+  const std::uint32_t at_line = period_line_ != 0 ? period_line_ : line;
+  period_line_ = line;
+  ProbeScene& ps = plant.probing();
+  if (tool_change_ && k.idle()) {
+    ps.set_spindle_tool(*tool_change_);
+    tool_change_.reset();
+  }
+  const PlantFault& f = ps.fault();
+  const SourceLoc loc{file, at_line, 1};
+  switch (f.kind) {
+    case PlantFault::Kind::kNone:
+      break;
+    case PlantFault::Kind::kCollision: {
+      const auto& parts = ps.spec().parts;
+      const std::string part = f.part >= 0 && !parts[static_cast<std::size_t>(f.part)].name.empty()
+                                   ? "part '" + parts[static_cast<std::size_t>(f.part)].name + "'"
+                                   : "a part";
+      const std::string who = f.tool >= 0 ? "tool T" + std::to_string(f.tool) : "the probe body";
+      return SafetyAlarm{
+          Error{AlarmId::kCollision,
+                fmt::format("{} touched {} at {}, line {}", who, part, where(f.at), at_line), loc,
+                -1},
+          f.at};
+    }
+    case PlantFault::Kind::kProbeCrash:
+    case PlantFault::Kind::kSetterCrash: {
+      // A crash while a skip stops the axes: the damage is how far they go.
+      if (k.skip().active && k.skip().triggered && !k.idle()) break;
+      const bool probe = f.kind == PlantFault::Kind::kProbeCrash;
+      const std::string what = probe ? "the probe's stylus" : "the tool setter";
+      return SafetyAlarm{
+          Error{
+              AlarmId::kProbeCrash,
+              fmt::format(
+                  "{} was pushed {:.4f} mm, {:.4f} mm past its limit of {:.4f} mm (switch point + "
+                  "maximum over-travel); limit passed at {}, the axes reached {}, line {}",
+                  what, f.deflection, f.overshoot, f.limit, where(f.at), where(f.latest), at_line),
+              loc, -1},
+          f.at};
+    }
+  }
+  if (protection_ && ps.touch_switched_on() && !(k.skip().active && k.skip().triggered)) {
+    return SafetyAlarm{
+        Error{
+            AlarmId::kProbeProtection,
+            fmt::format("the probe input switched on during a move that is not a skip move, at {}, "
+                        "line {} (parameter {} = 0 turns probe protection off)",
+                        where(ps.touch_position()), at_line, kProbeProtectionParam),
+            loc, -1},
+        ps.touch_position()};
+  }
+  return std::nullopt;
+}
+
+}  // namespace skipnc::machine

@@ -1,0 +1,68 @@
+// What the simulator does about the probing scene between servo periods:
+// tool changes (M06 takes the tool of the last T word, once the motion
+// before it has ended), the braking-distance warning before a skip move,
+// and the alarms for a probe crash, a collision and probe protection.
+//
+// It sits in the command stream as a tap (it forwards every command to the
+// next sink) and is asked once per period, after the kernel's tick.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "config/machine_config.hpp"
+#include "interpreter/interpreter.hpp"
+#include "kernel/kernel.hpp"
+#include "machine/plant.hpp"
+
+namespace skipnc::machine {
+
+// Parameter of every dialect (data/dialects/base.toml): probe protection,
+// an alarm when a probe or tool-setter input switches on outside a skip
+// move (as grblHAL's setting). 1 = on (default), 0 = off.
+inline constexpr int kProbeProtectionParam = 90020;
+
+struct SafetyAlarm {
+  Error error;
+  AxisVec machine_position;  // where it happened
+};
+
+class ProbeSafety final : public interp::CommandSink {
+ public:
+  ProbeSafety(const config::MachineConfig& m, const config::Parameters& p, const Plant& plant,
+              interp::CommandSink* next);
+
+  // The command stream (forwarded to `next`).
+  void emit(const canon::Stamped& c) override;
+  // True while a tool change waits for the motion before it to end: the
+  // interpreter must not read further.
+  bool holds_reading() const noexcept { return tool_change_.has_value(); }
+  // After each kernel tick. `line` is the line the kernel shows now.
+  [[nodiscard]] std::optional<SafetyAlarm> after_period(Plant& plant, const kernel::Kernel& k,
+                                                        std::uint32_t line, std::string_view file);
+  const std::vector<std::string>& messages() const noexcept { return messages_; }
+
+  // Distance the axes travel after a switch at this feed before they stop:
+  // following error plus one period (immediate stop) or v^2/2a plus the
+  // following error (deceleration). `from` -> `to` gives the direction.
+  double braking_distance(const canon::Skip& s, const AxisVec& from) const noexcept;
+
+ private:
+  std::string where(const AxisVec& machine) const;
+  void warn_braking(const canon::Skip& s, std::uint32_t line);
+
+  const config::MachineConfig& m_;
+  const Plant& plant_;
+  interp::CommandSink* next_;
+  bool protection_ = true;
+  AxisVec last_target_;
+  int selected_tool_ = -1;
+  std::optional<int> tool_change_;
+  std::uint32_t period_line_ = 0;
+  std::vector<std::string> messages_;
+};
+
+}  // namespace skipnc::machine

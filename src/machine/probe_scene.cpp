@@ -1,0 +1,232 @@
+#include "machine/probe_scene.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace skipnc::machine {
+namespace {
+
+constexpr double kCollisionTol = 1e-9;  // mm of overlap that counts as touching
+
+// The first t in [0, 1] where pred(t) holds, given that it holds at 1.
+template <class P>
+double first_true(P&& pred) noexcept {
+  if (pred(0.0)) return 0.0;
+  double lo = 0.0, hi = 1.0;
+  for (int i = 0; i < 60; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    if (pred(mid)) {
+      hi = mid;
+    } else {
+      lo = mid;
+    }
+  }
+  return hi;
+}
+
+}  // namespace
+
+ProbeScene::ProbeScene(const Probing& spec, const config::MachineConfig& m)
+    : spec_(spec), material_(spec_.parts) {
+  ix_ = m.axis_index('X');
+  iy_ = m.axis_index('Y');
+  iz_ = m.axis_index('Z');
+  if (spec_.probe) {
+    probe_.emplace(*spec_.probe, material_);
+    probe_source_ = sources_.size();
+    sources_.push_back(Source{Kind::kProbe, spec_.probe->signal, 0, 0, false});
+  }
+  if (spec_.tool_setter) {
+    setter_.emplace(*spec_.tool_setter);
+    setter_source_ = sources_.size();
+    sources_.push_back(Source{Kind::kSetter, spec_.tool_setter->signal, 0, 0, false});
+  }
+  gauges_.reserve(spec_.gauges.size());
+  for (std::size_t g = 0; g < spec_.gauges.size(); ++g) {
+    gauges_.emplace_back(spec_.gauges[g]);
+    for (std::size_t s = 0; s < spec_.gauges[g].steps.size(); ++s) {
+      sources_.push_back(Source{Kind::kGauge, spec_.gauges[g].steps[s].signal, g, s, false});
+    }
+  }
+  edges_.resize(sources_.size() * 2 + 2);
+  spindle_tool_ = spec_.spindle_tool;
+}
+
+geo::Vec3 ProbeScene::point(const AxisVec& p) const noexcept {
+  return geo::Vec3{ix_ >= 0 ? p[ix_] : 0.0, iy_ >= 0 ? p[iy_] : 0.0, iz_ >= 0 ? p[iz_] : 0.0};
+}
+
+geo::Vec3 ProbeScene::ball_at(const AxisVec& machine) const noexcept {
+  geo::Vec3 b = point(machine);
+  if (spec_.probe) b.z -= spec_.probe->length;
+  return b;
+}
+
+geo::Column ProbeScene::tool_column(const ToolSpec& t, const AxisVec& machine) const noexcept {
+  const geo::Vec3 p = point(machine);
+  return geo::Column{p.x, p.y, t.radius, p.z - t.length, p.z};
+}
+
+void ProbeScene::push_edge(std::size_t source, double frac, bool on) noexcept {
+  if (edge_count_ < edges_.size()) edges_[edge_count_++] = Edge{source, frac, on};
+  sources_[source].on = on;
+  if (on && sources_[source].kind != Kind::kGauge && !touch_on_) {
+    touch_on_ = true;
+    touch_frac_ = frac;
+  }
+}
+
+void ProbeScene::reset(const AxisVec& actual) noexcept {
+  fault_ = PlantFault{};
+  edge_count_ = 0;
+  touch_on_ = false;
+  pending_tool_.reset();
+  if (probe_) {
+    const bool in = probe_in_spindle();
+    if (in) probe_->reset(ball_at(actual));
+    sources_[probe_source_].on = in && probe_->on();
+  }
+  if (setter_) {
+    const ToolSpec* t = tool_in_spindle();
+    const geo::Column c = t != nullptr ? tool_column(*t, actual) : geo::Column{};
+    setter_->reset(t != nullptr ? &c : nullptr);
+    sources_[setter_source_].on = setter_->on();
+  }
+  for (auto& s : sources_) {
+    if (s.kind != Kind::kGauge) continue;
+    GaugeSensor& g = gauges_[s.gauge];
+    if (s.step == 0) g.reset(actual[g.spec().axis]);
+    s.on = g.step_on(s.step);
+  }
+}
+
+void ProbeScene::change_tool(const AxisVec& at) noexcept {
+  spindle_tool_ = *pending_tool_;
+  pending_tool_.reset();
+  constexpr double kAtOnce = 1e-9;
+  if (probe_) {
+    bool now = false;
+    if (probe_in_spindle()) {
+      probe_->reset(ball_at(at));
+      now = probe_->on();
+    }
+    if (now != sources_[probe_source_].on) push_edge(probe_source_, kAtOnce, now);
+  }
+  if (setter_) {
+    const ToolSpec* t = tool_in_spindle();
+    const geo::Column c = t != nullptr ? tool_column(*t, at) : geo::Column{};
+    setter_->reset(t != nullptr ? &c : nullptr);
+    if (setter_->on() != sources_[setter_source_].on)
+      push_edge(setter_source_, kAtOnce, setter_->on());
+  }
+}
+
+void ProbeScene::advance(const AxisVec& before, const AxisVec& after) noexcept {
+  edge_count_ = 0;
+  touch_on_ = false;
+  if (pending_tool_) change_tool(before);
+  SensorEdge e[2];
+  if (probe_ && probe_in_spindle()) {
+    const int n = probe_->advance(ball_at(before), ball_at(after), e);
+    for (int i = 0; i < n; ++i) push_edge(probe_source_, e[i].frac, e[i].on);
+  }
+  if (setter_) {
+    const ToolSpec* t = tool_in_spindle();
+    const geo::Column c = t != nullptr ? tool_column(*t, before) : geo::Column{};
+    const int n = setter_->advance(t != nullptr ? &c : nullptr, point(after) - point(before), e);
+    for (int i = 0; i < n; ++i) push_edge(setter_source_, e[i].frac, e[i].on);
+  }
+  if (!gauges_.empty()) {
+    std::size_t first = 0;  // source index of the gauge's first step
+    for (std::size_t g = 0; g < gauges_.size(); ++g) {
+      while (first < sources_.size() &&
+             !(sources_[first].kind == Kind::kGauge && sources_[first].gauge == g)) {
+        ++first;
+      }
+      const int axis = gauges_[g].spec().axis;
+      gauges_[g].advance(before[axis], after[axis], [&](std::size_t step, double frac) {
+        push_edge(first + step, frac, true);
+      });
+    }
+  }
+  if (touch_on_) touch_at_ = lerp(before, after, touch_frac_);
+  check_crash(before, after);
+  check_collision(before, after);
+}
+
+void ProbeScene::check_crash(const AxisVec& before, const AxisVec& after) noexcept {
+  const bool probe_crash = probe_ && probe_in_spindle() && probe_->overshoot() > 0.0;
+  const ToolSpec* tool = tool_in_spindle();
+  const bool setter_crash = setter_ && tool != nullptr && setter_->overshoot() > 0.0;
+  if (fault_.kind == PlantFault::Kind::kProbeCrash ||
+      fault_.kind == PlantFault::Kind::kSetterCrash) {
+    // The axes are still coming to rest: keep the worst.
+    const bool is_probe = fault_.kind == PlantFault::Kind::kProbeCrash;
+    const double defl = is_probe ? (probe_ && probe_in_spindle() ? probe_->deflection() : 0.0)
+                                 : (setter_ ? setter_->deflection() : 0.0);
+    fault_.latest = after;
+    if (defl > fault_.deflection) {
+      fault_.deflection = defl;
+      fault_.overshoot = defl - fault_.limit;
+    }
+    return;
+  }
+  if (fault_.kind != PlantFault::Kind::kNone || (!probe_crash && !setter_crash)) return;
+  PlantFault f;
+  if (probe_crash) {
+    f.kind = PlantFault::Kind::kProbeCrash;
+    f.limit = probe_->switch_deflection() + probe_->spec().max_overtravel;
+    f.deflection = probe_->deflection();
+    const geo::Vec3 a = ball_at(before), b = ball_at(after);
+    const double t =
+        first_true([&](double s) { return probe_->deflection_at(geo::lerp(a, b, s)) > f.limit; });
+    f.at = lerp(before, after, t);
+  } else {
+    f.kind = PlantFault::Kind::kSetterCrash;
+    f.limit = std::max(setter_->spec().pre_travel, 1e-6) + setter_->spec().max_overtravel;
+    f.deflection = setter_->deflection();
+    const geo::Column disc = setter_->disc();
+    const double t = first_true([&](double s) {
+      return geo::column_overlap(tool_column(*tool, lerp(before, after, s)), disc) > f.limit;
+    });
+    f.at = lerp(before, after, t);
+    f.tool = tool->number;
+  }
+  f.overshoot = f.deflection - f.limit;
+  f.latest = after;
+  fault_ = f;
+}
+
+void ProbeScene::check_collision(const AxisVec& before, const AxisVec& after) noexcept {
+  if (fault_.kind != PlantFault::Kind::kNone || material_.empty()) return;
+  // The column that must not touch a part: the probe body or the tool.
+  auto column_at = [&](const AxisVec& at, geo::Column& c) {
+    if (probe_in_spindle()) {
+      const ProbeSpec& p = *spec_.probe;
+      if (p.body_radius <= 0.0 || p.length <= p.stylus_length) return false;
+      const geo::Vec3 ball = ball_at(at);
+      c = geo::Column{ball.x, ball.y, p.body_radius, ball.z + p.stylus_length, ball.z + p.length};
+      return true;
+    }
+    const ToolSpec* t = tool_in_spindle();
+    if (t == nullptr) return false;
+    c = tool_column(*t, at);
+    return true;
+  };
+  geo::Column c;
+  if (!column_at(after, c)) return;
+  const int part = material_.column_hits(c, kCollisionTol);
+  if (part < 0) return;
+  const double t = first_true([&](double s) {
+    geo::Column cs;
+    return column_at(lerp(before, after, s), cs) && material_.column_hits(cs, kCollisionTol) >= 0;
+  });
+  fault_.kind = PlantFault::Kind::kCollision;
+  fault_.at = lerp(before, after, t);
+  fault_.latest = after;
+  fault_.part = part;
+  const ToolSpec* tool = tool_in_spindle();
+  fault_.tool = tool != nullptr ? tool->number : -1;
+}
+
+}  // namespace skipnc::machine

@@ -1,0 +1,121 @@
+// The probing half of the plant: the parts, the touch probe or tool in the
+// spindle, the tool setter and the gauges, advanced once per servo period
+// on the actual axis motion (linear inside the period, as the kernel takes
+// it). It produces signal edges with their exact instant and detects what
+// would damage the machine: a stylus or setter pushed past its over-travel
+// (crash), the probe body or a tool touching a part (collision).
+//
+// Signal sources, in this order: the probe, the tool setter, each step of
+// each gauge. The plant ORs them with its other sources per address.
+// advance() is noexcept and does not allocate.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <vector>
+
+#include "config/machine_config.hpp"
+#include "core/axes.hpp"
+#include "machine/geometry.hpp"
+#include "machine/probe.hpp"
+#include "machine/scene_parts.hpp"
+
+namespace skipnc::machine {
+
+// Something that would damage the machine, found in a period.
+struct PlantFault {
+  enum class Kind : std::uint8_t { kNone, kProbeCrash, kSetterCrash, kCollision };
+  Kind kind = Kind::kNone;
+  AxisVec at;               // machine (actual) position where it began
+  AxisVec latest;           // machine position of the latest period since
+  double deflection = 0.0;  // crash: largest deflection of stylus or setter, mm
+  double limit = 0.0;       // crash: deflection at which damage begins, mm
+  double overshoot = 0.0;   // crash: largest deflection beyond the limit, mm
+  int part = -1;            // collision: index into Probing::parts
+  int tool = -1;            // collision: the tool, or -1 for the probe body
+};
+
+class ProbeScene {
+ public:
+  ProbeScene(const Probing& spec, const config::MachineConfig& m);
+  ProbeScene(const ProbeScene&) = delete;
+  ProbeScene& operator=(const ProbeScene&) = delete;
+
+  std::size_t source_count() const noexcept { return sources_.size(); }
+  const canon::SignalAddr& source_signal(std::size_t i) const noexcept {
+    return sources_[i].signal;
+  }
+  bool source_on(std::size_t i) const noexcept { return sources_[i].on; }
+
+  void reset(const AxisVec& actual) noexcept;
+  // The actual position went from `before` to `after` in this period.
+  void advance(const AxisVec& before, const AxisVec& after) noexcept;
+
+  struct Edge {
+    std::size_t source = 0;
+    double frac = 1.0;
+    bool on = false;
+  };
+  // The edges of the last period, in each source's time order.
+  std::span<const Edge> edges() const noexcept { return {edges_.data(), edge_count_}; }
+  // A probe or tool-setter signal switched on in the last period, and where.
+  bool touch_switched_on() const noexcept { return touch_on_; }
+  const AxisVec& touch_position() const noexcept { return touch_at_; }
+
+  // Tool changes (M06): takes effect at the next period.
+  void set_spindle_tool(int tool) noexcept { pending_tool_ = tool; }
+  int spindle_tool() const noexcept { return spindle_tool_; }
+  bool probe_in_spindle() const noexcept {
+    return spec_.probe && spindle_tool_ == spec_.probe->tool;
+  }
+  const ToolSpec* tool_in_spindle() const noexcept {
+    return probe_in_spindle() ? nullptr : spec_.tool(spindle_tool_);
+  }
+
+  const PlantFault& fault() const noexcept { return fault_; }
+  const Probing& spec() const noexcept { return spec_; }
+  const geo::Material& material() const noexcept { return material_; }
+  const TouchProbe* probe() const noexcept { return probe_ ? &*probe_ : nullptr; }
+  const SetterSensor* setter() const noexcept { return setter_ ? &*setter_ : nullptr; }
+  const std::vector<GaugeSensor>& gauges() const noexcept { return gauges_; }
+
+  // Where the ball centre is for a machine position.
+  geo::Vec3 ball_at(const AxisVec& machine) const noexcept;
+  // The tool's column for a machine position (tool in the spindle).
+  geo::Column tool_column(const ToolSpec& t, const AxisVec& machine) const noexcept;
+
+ private:
+  enum class Kind : std::uint8_t { kProbe, kSetter, kGauge };
+  struct Source {
+    Kind kind = Kind::kProbe;
+    canon::SignalAddr signal;
+    std::size_t gauge = 0;
+    std::size_t step = 0;
+    bool on = false;
+  };
+  geo::Vec3 point(const AxisVec& machine) const noexcept;
+  void push_edge(std::size_t source, double frac, bool on) noexcept;
+  void change_tool(const AxisVec& at) noexcept;
+  void check_collision(const AxisVec& before, const AxisVec& after) noexcept;
+  void check_crash(const AxisVec& before, const AxisVec& after) noexcept;
+
+  Probing spec_;
+  geo::Material material_;
+  int ix_ = -1, iy_ = -1, iz_ = -1;
+  std::optional<TouchProbe> probe_;
+  std::optional<SetterSensor> setter_;
+  std::vector<GaugeSensor> gauges_;
+  std::vector<Source> sources_;
+  std::size_t probe_source_ = 0, setter_source_ = 0;
+  std::vector<Edge> edges_;  // capacity fixed at construction
+  std::size_t edge_count_ = 0;
+  int spindle_tool_ = 0;
+  std::optional<int> pending_tool_;
+  bool touch_on_ = false;
+  double touch_frac_ = 1.0;
+  AxisVec touch_at_;
+  PlantFault fault_;
+};
+
+}  // namespace skipnc::machine

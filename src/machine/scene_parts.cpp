@@ -1,0 +1,446 @@
+// Loading of the probing tables of a scene file (docs/scene.md). Strict:
+// every unknown key and every value out of range is an error with its
+// file, line and column.
+#include "machine/scene_parts.hpp"
+
+#include <array>
+#include <limits>
+#include <map>
+
+#include "config/skip_inputs.hpp"
+#include "config/toml_util.hpp"
+
+namespace skipnc::machine {
+
+using config::check_keys;
+using config::config_error;
+using config::get_number;
+using config::get_string;
+
+namespace {
+
+constexpr double kFar = 1e6;  // mm: "no limit" for the ends of bores
+
+struct Reader {
+  std::string_view origin;
+  const config::MachineConfig& m;
+  const config::Dialect& d;
+  const config::Parameters& p;
+
+  Result<double> number(const toml::table& t, std::string_view key, double min, double max,
+                        std::optional<double> fallback = std::nullopt) const {
+    const auto* n = t.get(key);
+    if (n == nullptr) {
+      if (fallback) return *fallback;
+      return config_error(t, origin, "needs " + std::string(key));
+    }
+    return get_number(*n, origin, key, min, max);
+  }
+
+  Result<std::int64_t> integer(const toml::table& t, std::string_view key, std::int64_t min,
+                               std::int64_t max, std::optional<std::int64_t> fallback) const {
+    const auto* n = t.get(key);
+    if (n == nullptr) {
+      if (fallback) return *fallback;
+      return config_error(t, origin, "needs " + std::string(key));
+    }
+    const auto* i = n->as_integer();
+    if (i == nullptr) return config_error(*n, origin, std::string(key) + " must be an integer");
+    const std::int64_t v = i->get();
+    if (v < min || v > max) {
+      return config_error(*n, origin,
+                          std::string(key) + " = " + std::to_string(v) + " is out of range [" +
+                              std::to_string(min) + ", " + std::to_string(max) + "]");
+    }
+    return v;
+  }
+
+  // [x, y] or [x, y, z] of numbers.
+  template <std::size_t N>
+  Result<std::array<double, N>> vec(const toml::table& t, std::string_view key) const {
+    const auto* n = t.get(key);
+    if (n == nullptr) return config_error(t, origin, "needs " + std::string(key));
+    const auto* arr = n->as_array();
+    const std::string shape = N == 2 ? "[x, y]" : "[x, y, z]";
+    if (arr == nullptr || arr->size() != N) {
+      return config_error(*n, origin, std::string(key) + " must be " + shape + " (mm)");
+    }
+    std::array<double, N> out{};
+    for (std::size_t i = 0; i < N; ++i) {
+      auto v = get_number(*arr->get(i), origin, key, -kFar, kFar);
+      if (!v) return std::unexpected(v.error());
+      out[i] = *v;
+    }
+    return out;
+  }
+
+  Result<canon::SignalAddr> signal(const toml::table& t, std::string& name) const {
+    const auto* n = t.get("signal");
+    if (n == nullptr)
+      return config_error(t, origin, "needs signal = \"X0.4\" (or SKIP, SKIP1..SKIP12)");
+    auto s = get_string(*n, origin, "signal");
+    if (!s) return std::unexpected(s.error());
+    auto a = config::parse_signal_name(*s, d, p);
+    if (!a) {
+      return config_error(
+          *n, origin,
+          "signal '" + *s + "' is not X<0-127>.<0-7>, G<0-511>.<0-7>, SKIP or SKIP1..SKIP12");
+    }
+    name = *s;
+    return *a;
+  }
+};
+
+template <class F>
+Result<void> each(const toml::table& root, std::string_view key, std::string_view origin, F&& f) {
+  const auto* n = root.get(key);
+  if (n == nullptr) return {};
+  const auto* arr = n->as_array();
+  if (arr == nullptr)
+    return config_error(*n, origin, "[[" + std::string(key) + "]] must be an array of tables");
+  for (const auto& e : *arr) {
+    const auto* t = e.as_table();
+    if (t == nullptr)
+      return config_error(e, origin, "[[" + std::string(key) + "]] must be a table");
+    auto r = f(*t);
+    if (!r) return r;
+  }
+  return {};
+}
+
+const toml::table* single(const toml::table& root, std::string_view key) {
+  const auto* n = root.get(key);
+  return n != nullptr ? n->as_table() : nullptr;
+}
+
+// Parts are grouped by name; a part's holes cut only its own solids.
+class PartSet {
+ public:
+  geo::Part& get(const toml::table& t, std::string_view origin, Result<void>& err) {
+    std::string name;
+    if (const auto* n = t.get("part")) {
+      auto s = get_string(*n, origin, "part");
+      if (!s) {
+        err = std::unexpected(s.error());
+        return scratch_;
+      }
+      name = *s;
+    }
+    auto it = index_.find(name);
+    if (it == index_.end()) {
+      it = index_.emplace(name, parts_.size()).first;
+      parts_.push_back(geo::Part{name, {}, {}});
+    }
+    return parts_[it->second];
+  }
+  std::vector<geo::Part> take() { return std::move(parts_); }
+
+ private:
+  std::vector<geo::Part> parts_;
+  std::map<std::string, std::size_t> index_;
+  geo::Part scratch_;
+};
+
+Result<void> parse_parts(const toml::table& root, const Reader& rd, PartSet& parts) {
+  const auto origin = rd.origin;
+  auto box_like = [&](std::string_view key, bool hole) {
+    return each(root, key, origin, [&](const toml::table& t) -> Result<void> {
+      auto k = check_keys(t, {"part", "min", "max"}, origin, "[[" + std::string(key) + "]]");
+      if (!k) return k;
+      auto lo = rd.vec<3>(t, "min");
+      if (!lo) return std::unexpected(lo.error());
+      auto hi = rd.vec<3>(t, "max");
+      if (!hi) return std::unexpected(hi.error());
+      for (std::size_t i = 0; i < 3; ++i) {
+        if (!((*hi)[i] > (*lo)[i])) {
+          return config_error(t, origin,
+                              "[[" + std::string(key) + "]]: max must exceed min on every axis");
+        }
+      }
+      Result<void> err;
+      geo::Part& part = parts.get(t, origin, err);
+      if (!err) return err;
+      const geo::Shape s =
+          geo::make_box({(*lo)[0], (*lo)[1], (*lo)[2]}, {(*hi)[0], (*hi)[1], (*hi)[2]});
+      (hole ? part.holes : part.solids).push_back(s);
+      return {};
+    });
+  };
+  auto r = box_like("box", false);
+  if (!r) return r;
+  r = box_like("pocket", true);
+  if (!r) return r;
+  auto round = [&](std::string_view key, bool hole) {
+    return each(root, key, origin, [&](const toml::table& t) -> Result<void> {
+      auto k = check_keys(t, {"part", "center", "radius", "bottom", "top"}, origin,
+                          "[[" + std::string(key) + "]]");
+      if (!k) return k;
+      auto c = rd.vec<2>(t, "center");
+      if (!c) return std::unexpected(c.error());
+      auto radius = rd.number(t, "radius", 1e-6, kFar);
+      if (!radius) return std::unexpected(radius.error());
+      const std::optional<double> lo_def = hole ? std::optional<double>(-kFar) : std::nullopt;
+      const std::optional<double> hi_def = hole ? std::optional<double>(kFar) : std::nullopt;
+      auto bottom = rd.number(t, "bottom", -kFar, kFar, lo_def);
+      if (!bottom) return std::unexpected(bottom.error());
+      auto top = rd.number(t, "top", -kFar, kFar, hi_def);
+      if (!top) return std::unexpected(top.error());
+      if (!(*top > *bottom))
+        return config_error(t, origin, "[[" + std::string(key) + "]]: top must exceed bottom");
+      Result<void> err;
+      geo::Part& part = parts.get(t, origin, err);
+      if (!err) return err;
+      const geo::Shape s = geo::make_cylinder((*c)[0], (*c)[1], *radius, *bottom, *top);
+      (hole ? part.holes : part.solids).push_back(s);
+      return {};
+    });
+  };
+  r = round("cylinder", false);
+  if (!r) return r;
+  r = round("bore", true);
+  if (!r) return r;
+  r = each(root, "sphere", origin, [&](const toml::table& t) -> Result<void> {
+    auto k = check_keys(t, {"part", "center", "radius"}, origin, "[[sphere]]");
+    if (!k) return k;
+    auto c = rd.vec<3>(t, "center");
+    if (!c) return std::unexpected(c.error());
+    auto radius = rd.number(t, "radius", 1e-6, kFar);
+    if (!radius) return std::unexpected(radius.error());
+    Result<void> err;
+    geo::Part& part = parts.get(t, origin, err);
+    if (!err) return err;
+    part.solids.push_back(geo::make_sphere({(*c)[0], (*c)[1], (*c)[2]}, *radius));
+    return {};
+  });
+  if (!r) return r;
+  return each(root, "plane", origin, [&](const toml::table& t) -> Result<void> {
+    auto k = check_keys(t, {"part", "point", "normal"}, origin, "[[plane]]");
+    if (!k) return k;
+    auto pt = rd.vec<3>(t, "point");
+    if (!pt) return std::unexpected(pt.error());
+    auto n = rd.vec<3>(t, "normal");
+    if (!n) return std::unexpected(n.error());
+    const geo::Vec3 nv{(*n)[0], (*n)[1], (*n)[2]};
+    if (geo::length(nv) < 1e-9)
+      return config_error(t, origin, "[[plane]]: normal must not be zero");
+    Result<void> err;
+    geo::Part& part = parts.get(t, origin, err);
+    if (!err) return err;
+    part.solids.push_back(geo::make_half_space({(*pt)[0], (*pt)[1], (*pt)[2]}, nv));
+    return {};
+  });
+}
+
+Result<ProbeSpec> parse_probe(const toml::table& t, const Reader& rd) {
+  const auto origin = rd.origin;
+  auto k = check_keys(t,
+                      {"signal", "tool", "ball_radius", "length", "stylus_length", "body_radius",
+                       "pre_travel", "max_overtravel", "lobing", "repeatability", "seed"},
+                      origin, "[probe]");
+  if (!k) return std::unexpected(k.error());
+  ProbeSpec p;
+  auto sig = rd.signal(t, p.signal_name);
+  if (!sig) return std::unexpected(sig.error());
+  p.signal = *sig;
+  auto tool = rd.integer(t, "tool", 0, 99999999, 0);
+  if (!tool) return std::unexpected(tool.error());
+  p.tool = static_cast<int>(*tool);
+  const std::pair<std::string_view, double*> lengths[] = {{"length", &p.length},
+                                                          {"stylus_length", &p.stylus_length},
+                                                          {"body_radius", &p.body_radius},
+                                                          {"repeatability", &p.repeatability}};
+  for (const auto& [key, field] : lengths) {
+    auto v = rd.number(t, key, 0.0, kFar, *field);
+    if (!v) return std::unexpected(v.error());
+    *field = *v;
+  }
+  auto ball = rd.number(t, "ball_radius", 1e-3, 1000.0);
+  if (!ball) return std::unexpected(ball.error());
+  p.ball_radius = *ball;
+  auto pre = rd.number(t, "pre_travel", 0.0, kFar, 0.0);
+  if (!pre) return std::unexpected(pre.error());
+  if (*pre >= p.ball_radius) {
+    return config_error(*t.get("pre_travel"), origin,
+                        "pre_travel must be smaller than ball_radius");
+  }
+  p.pre_travel = *pre;
+  auto over = rd.number(t, "max_overtravel", 0.0, kFar);
+  if (!over) return std::unexpected(over.error());
+  p.max_overtravel = *over;
+  auto seed = rd.integer(t, "seed", 0, std::numeric_limits<std::int64_t>::max(), 1);
+  if (!seed) return std::unexpected(seed.error());
+  p.seed = static_cast<std::uint64_t>(*seed);
+  if (const auto* n = t.get("lobing")) {
+    const auto* lt = n->as_table();
+    if (lt == nullptr) {
+      return config_error(*n, origin,
+                          "lobing must be a table: { amplitude = 0.002, lobes = 3, phase = 0 }");
+    }
+    auto lk = check_keys(*lt, {"amplitude", "lobes", "phase"}, origin, "lobing");
+    if (!lk) return std::unexpected(lk.error());
+    auto amp = rd.number(*lt, "amplitude", 0.0, p.ball_radius);
+    if (!amp) return std::unexpected(amp.error());
+    p.lobing = *amp;
+    auto lobes = rd.integer(*lt, "lobes", 1, 24, 3);
+    if (!lobes) return std::unexpected(lobes.error());
+    p.lobes = static_cast<int>(*lobes);
+    auto phase = rd.number(*lt, "phase", -360.0, 360.0, 0.0);
+    if (!phase) return std::unexpected(phase.error());
+    p.lobing_phase_deg = *phase;
+    if (p.pre_travel + p.lobing >= p.ball_radius) {
+      return config_error(*n, origin,
+                          "pre_travel + lobing amplitude must be smaller than ball_radius");
+    }
+  }
+  return p;
+}
+
+Result<ToolSetterSpec> parse_setter(const toml::table& t, const Reader& rd) {
+  auto k = check_keys(
+      t, {"signal", "center", "top", "radius", "thickness", "pre_travel", "max_overtravel"},
+      rd.origin, "[tool_setter]");
+  if (!k) return std::unexpected(k.error());
+  ToolSetterSpec s;
+  auto sig = rd.signal(t, s.signal_name);
+  if (!sig) return std::unexpected(sig.error());
+  s.signal = *sig;
+  auto c = rd.vec<2>(t, "center");
+  if (!c) return std::unexpected(c.error());
+  s.x = (*c)[0];
+  s.y = (*c)[1];
+  auto top = rd.number(t, "top", -kFar, kFar);
+  if (!top) return std::unexpected(top.error());
+  s.top = *top;
+  auto radius = rd.number(t, "radius", 1e-3, 1000.0);
+  if (!radius) return std::unexpected(radius.error());
+  s.radius = *radius;
+  auto thick = rd.number(t, "thickness", 1e-3, 1000.0, 5.0);
+  if (!thick) return std::unexpected(thick.error());
+  s.thickness = *thick;
+  auto pre = rd.number(t, "pre_travel", 0.0, 10.0, 0.0);
+  if (!pre) return std::unexpected(pre.error());
+  s.pre_travel = *pre;
+  auto over = rd.number(t, "max_overtravel", 0.0, 1000.0, 1.0);
+  if (!over) return std::unexpected(over.error());
+  s.max_overtravel = *over;
+  return s;
+}
+
+Result<GaugeSpec> parse_gauge(const toml::table& t, const Reader& rd) {
+  const auto origin = rd.origin;
+  auto k = check_keys(t, {"axis", "center", "raw_diameter", "steps"}, origin, "[[gauge]]");
+  if (!k) return std::unexpected(k.error());
+  GaugeSpec g;
+  const auto* an = t.get("axis");
+  if (an == nullptr) return config_error(t, origin, "needs axis = \"X\" (the infeed axis)");
+  auto as = get_string(*an, origin, "axis");
+  if (!as) return std::unexpected(as.error());
+  g.axis = as->size() == 1 ? rd.m.axis_index((*as)[0]) : -1;
+  if (g.axis < 0)
+    return config_error(*an, origin, "axis '" + *as + "' is not an axis of this machine");
+  auto c = rd.number(t, "center", -kFar, kFar);
+  if (!c) return std::unexpected(c.error());
+  g.center = *c;
+  auto raw = rd.number(t, "raw_diameter", 1e-6, kFar);
+  if (!raw) return std::unexpected(raw.error());
+  g.raw_diameter = *raw;
+  const auto* sn = t.get("steps");
+  const auto* arr = sn != nullptr ? sn->as_array() : nullptr;
+  if (arr == nullptr || arr->empty()) {
+    return config_error(sn != nullptr ? *sn : static_cast<const toml::node&>(t), origin,
+                        "needs steps = [{ signal = \"SKIP2\", diameter = 50.2 }, ...]");
+  }
+  for (const auto& e : *arr) {
+    const auto* st = e.as_table();
+    if (st == nullptr)
+      return config_error(e, origin, "each step is { signal = ..., diameter = ... }");
+    auto sk = check_keys(*st, {"signal", "diameter"}, origin, "a gauge step");
+    if (!sk) return std::unexpected(sk.error());
+    GaugeStep step;
+    auto sig = rd.signal(*st, step.signal_name);
+    if (!sig) return std::unexpected(sig.error());
+    step.signal = *sig;
+    auto dia = rd.number(*st, "diameter", 0.0, g.raw_diameter);
+    if (!dia) return std::unexpected(dia.error());
+    step.diameter = *dia;
+    g.steps.push_back(step);
+  }
+  return g;
+}
+
+}  // namespace
+
+Result<Probing> parse_probing(const toml::table& root, std::string_view origin,
+                              const config::MachineConfig& m, const config::Dialect& d,
+                              const config::Parameters& p) {
+  const Reader rd{origin, m, d, p};
+  Probing out;
+  PartSet parts;
+  auto r = parse_parts(root, rd, parts);
+  if (!r) return std::unexpected(r.error());
+  out.parts = parts.take();
+  for (const auto& part : out.parts) {
+    if (part.solids.empty()) {
+      return fail(AlarmId::kConfig, std::string(origin) + ": part '" + part.name +
+                                        "' has holes but no solid to cut them from");
+    }
+  }
+  for (const char* key : {"probe", "tool_setter"}) {
+    const auto* n = root.get(key);
+    if (n != nullptr && n->as_table() == nullptr) {
+      return config_error(*n, origin, "[" + std::string(key) + "] must be a table (one per scene)");
+    }
+  }
+  if (const auto* t = single(root, "probe")) {
+    auto probe = parse_probe(*t, rd);
+    if (!probe) return std::unexpected(probe.error());
+    out.probe = *probe;
+  }
+  if (const auto* t = single(root, "tool_setter")) {
+    auto setter = parse_setter(*t, rd);
+    if (!setter) return std::unexpected(setter.error());
+    out.tool_setter = *setter;
+  }
+  r = each(root, "tool", origin, [&](const toml::table& t) -> Result<void> {
+    auto k = check_keys(t, {"number", "length", "radius"}, origin, "[[tool]]");
+    if (!k) return k;
+    ToolSpec tool;
+    auto num = rd.integer(t, "number", 1, 99999999, std::nullopt);
+    if (!num) return std::unexpected(num.error());
+    tool.number = static_cast<int>(*num);
+    if (out.tool(tool.number) != nullptr || (out.probe && out.probe->tool == tool.number)) {
+      return config_error(t, origin, "tool " + std::to_string(tool.number) + " is defined twice");
+    }
+    auto len = rd.number(t, "length", 0.0, kFar);
+    if (!len) return std::unexpected(len.error());
+    tool.length = *len;
+    auto radius = rd.number(t, "radius", 0.0, 1000.0);
+    if (!radius) return std::unexpected(radius.error());
+    tool.radius = *radius;
+    out.tools.push_back(tool);
+    return {};
+  });
+  if (!r) return std::unexpected(r.error());
+  r = each(root, "gauge", origin, [&](const toml::table& t) -> Result<void> {
+    auto g = parse_gauge(t, rd);
+    if (!g) return std::unexpected(g.error());
+    out.gauges.push_back(*g);
+    return {};
+  });
+  if (!r) return std::unexpected(r.error());
+  out.spindle_tool = out.probe ? out.probe->tool : 0;
+  if (const auto* n = root.get("spindle_tool")) {
+    auto v = rd.integer(root, "spindle_tool", 0, 99999999, std::nullopt);
+    if (!v) return std::unexpected(v.error());
+    const int tool = static_cast<int>(*v);
+    if (tool != 0 && out.tool(tool) == nullptr && !(out.probe && out.probe->tool == tool)) {
+      return config_error(
+          *n, origin,
+          "spindle_tool = " + std::to_string(tool) + " is neither a [[tool]] nor the probe's tool");
+    }
+    out.spindle_tool = tool;
+  }
+  return out;
+}
+
+}  // namespace skipnc::machine

@@ -1,0 +1,107 @@
+// Scene tables for probing (docs/scene.md): parts ([[box]], [[cylinder]],
+// [[sphere]], [[plane]], [[bore]], [[pocket]]), a spindle touch probe
+// ([probe]), tools ([[tool]], spindle_tool), a tool setter ([tool_setter])
+// and in-process gauges ([[gauge]]). All positions are machine coordinates,
+// lengths in mm.
+#pragma once
+
+#include <toml++/toml.h>
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "canon/canon.hpp"
+#include "config/dialect.hpp"
+#include "config/machine_config.hpp"
+#include "core/diag.hpp"
+#include "machine/geometry.hpp"
+
+namespace skipnc::machine {
+
+// A spindle touch probe. Its ball centre is the spindle's gauge point (the
+// machine position) minus `length` along Z. It switches when the ball has
+// been pushed `pre_travel` (plus lobing and scatter) past first contact.
+struct ProbeSpec {
+  canon::SignalAddr signal;
+  std::string signal_name;
+  int tool = 0;                 // the T number that puts the probe in the spindle
+  double ball_radius = 1.0;     // mm
+  double length = 0.0;          // gauge line to ball centre, mm
+  double stylus_length = 0.0;   // ball centre to the probe body, mm
+  double body_radius = 0.0;     // probe body (a column up to the gauge line); 0: none
+  double pre_travel = 0.0;      // deflection before the signal switches, mm
+  double max_overtravel = 1.0;  // deflection past the switch point before damage, mm
+  double lobing = 0.0;          // extra pre-travel at the lobes (XY contacts), mm
+  int lobes = 3;
+  double lobing_phase_deg = 0.0;  // approach direction of least pre-travel
+  double repeatability = 0.0;     // 1-sigma scatter of the switch point, mm
+  std::uint64_t seed = 1;
+};
+
+// A tool in the magazine: a flat-ended column below the gauge line.
+struct ToolSpec {
+  int number = 0;
+  double length = 0.0;  // gauge line to tip, mm
+  double radius = 0.0;
+};
+
+// A tool setter on the table: a disc whose top the tool tip presses.
+struct ToolSetterSpec {
+  canon::SignalAddr signal;
+  std::string signal_name;
+  double x = 0.0;
+  double y = 0.0;
+  double top = 0.0;  // machine Z of the disc's top
+  double radius = 5.0;
+  double thickness = 5.0;
+  double pre_travel = 0.0;
+  double max_overtravel = 1.0;
+};
+
+// An in-process gauge: the diameter ground by a wheel whose face is at
+// `center` + diameter / 2 on `axis`; each step switches its signal on when
+// the diameter reaches its size, and stays on.
+struct GaugeStep {
+  canon::SignalAddr signal;
+  std::string signal_name;
+  double diameter = 0.0;
+};
+struct GaugeSpec {
+  int axis = 0;
+  double center = 0.0;        // machine coordinate of the work's axis
+  double raw_diameter = 0.0;  // before grinding
+  std::vector<GaugeStep> steps;
+};
+
+struct Probing {
+  std::vector<geo::Part> parts;
+  std::optional<ProbeSpec> probe;
+  std::optional<ToolSetterSpec> tool_setter;
+  std::vector<ToolSpec> tools;
+  std::vector<GaugeSpec> gauges;
+  int spindle_tool = 0;  // in the spindle at the start (the probe's T by default)
+
+  const ToolSpec* tool(int number) const noexcept {
+    for (const auto& t : tools) {
+      if (t.number == number) return &t;
+    }
+    return nullptr;
+  }
+  bool empty() const noexcept {
+    return parts.empty() && !probe && !tool_setter && tools.empty() && gauges.empty();
+  }
+};
+
+// The top-level keys these tables use, for the scene's key check.
+inline constexpr std::string_view kProbingKeys[] = {
+    "box",   "cylinder", "sphere",      "plane", "bore",        "pocket",
+    "probe", "tool",     "tool_setter", "gauge", "spindle_tool"};
+
+[[nodiscard]] Result<Probing> parse_probing(const toml::table& root, std::string_view origin,
+                                            const config::MachineConfig& m,
+                                            const config::Dialect& d, const config::Parameters& p);
+
+}  // namespace skipnc::machine
