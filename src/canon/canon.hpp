@@ -79,6 +79,8 @@ struct SkipSpec {
   double torque_delay_s = 0.0;
   SkipStop stop = SkipStop::kImmediate;
   bool accel = false;             // SKF = 1: automatic acceleration/deceleration applies
+  bool feed_fixed = true;         // feed override and dry run do not act (SKF = 0, Mitsubishi)
+  bool override_zero_stops = false;  // with feed_fixed: override 0 % still stops (Mitsubishi)
   SkipLatch latch = SkipLatch::kExact;
   double latch_delay_s = 0.0;     // kSampled only
   bool servo_delay_comp = true;   // latch the actual (not the commanded) position

@@ -13,6 +13,7 @@
 #include "canon/print.hpp"
 #include "cli/plot.hpp"
 #include "cli/session.hpp"
+#include "config/skip_inputs.hpp"
 #include "core/embedded.hpp"
 #include "machine/simulator.hpp"
 #include "report/report.hpp"
@@ -237,22 +238,96 @@ int canon_command(const RunArgs& a) {
   return 0;
 }
 
+// One line per skip feature that differs between the dialects.
 int dialects_command() {
+  using config::SkipAccel;
+  using config::SkipFeedRule;
+  using config::SkipOverride;
+  using config::SkipPMode;
   for (const auto& name : config::builtin_dialect_names()) {
     auto d = config::builtin_dialect(name);
-    if (!d) continue;
+    if (!d) {
+      fmt::print("{:<11} (cannot load: {})\n", name, d.error().detail);
+      continue;
+    }
     const auto& sw = d->sw;
+    auto param = [&](int n) {
+      const config::ParamDef* p = d->param(n);
+      return p == nullptr ? std::string("?") : fmt::format("{} {}", n, p->name);
+    };
+    auto alarm = [&](AlarmId id) {
+      const config::AlarmText& a = d->alarm(id);
+      return fmt::format("{} {}", a.code, a.message);
+    };
+    std::string inputs;
+    for (const auto& a : d->fixed_skip_inputs) {
+      inputs += (inputs.empty() ? "" : " ") + config::signal_name(a);
+    }
+    const int last = sw.skip_p_first + sw.skip_p_count - 1;
     fmt::print("{:<11} {}\n", d->name, d->title);
-    fmt::print("            skip inputs P{}..P{}, stop {}, miss {}, feed {}, torque skip {}\n",
-               sw.skip_p_first, sw.skip_p_first + sw.skip_p_count - 1,
-               sw.skip_stop == canon::SkipStop::kImmediate ? "immediate" : "with deceleration",
-               sw.skip_miss_alarm_default ? "alarm" : "no alarm",
-               sw.skip_feed == config::SkipFeedRule::kModal          ? "F or modal F"
-               : sw.skip_feed == config::SkipFeedRule::kBlockOrParam ? "F or parameter, modal F kept"
-                                                                     : "parameter switch",
-               sw.torque_skip ? "P98/P99" : "no");
-    fmt::print("            alarm on G31 in cutter compensation: {} {}\n",
-               d->alarm(AlarmId::kSkipInCutterComp).code, d->alarm(AlarmId::kSkipInCutterComp).message);
+    fmt::print("  P word      {}\n",
+               sw.skip_p_mode == SkipPMode::kMultiStep
+                   ? fmt::format("multi-step skip P{}-P{}", sw.skip_p_first, last)
+               : sw.skip_p_mode == SkipPMode::kSelect
+                   ? fmt::format("selects skip input P{}-P{} (no P: input 1)", sw.skip_p_first, last)
+               : sw.skip_p_mode == SkipPMode::kBitmask
+                   ? fmt::format("bit mask of inputs 1-{}: P1-P{}", sw.skip_p_count,
+                                 (1 << sw.skip_p_count) - 1)
+                   : std::string("none"));
+    fmt::print("  inputs      {}{}\n", inputs,
+               d->param(3008) != nullptr ? " (fixed; 3008#2 = 1: parameters 3012, 3020-3025)" : "");
+    fmt::print("  detection   {}\n",
+               sw.skip_edge_rising_only ? std::string("rising edge only")
+               : sw.skip_signal_param != 0
+                   ? fmt::format("parameter {} (#0 level/edge, #1 polarity)", sw.skip_signal_param)
+                   : std::string("level, active high"));
+    fmt::print("  at start    {}\n",
+               sw.skip_edge_rising_only         ? "waits for a new edge"
+               : sw.skip_active_at_start_ends   ? "ends the block at once (level detection)"
+                                                : "waits for a new edge");
+    fmt::print("  feed        {}\n",
+               sw.skip_feed == SkipFeedRule::kModal ? std::string("F, else modal F")
+               : sw.skip_feed == SkipFeedRule::kBlockOrParam
+                   ? "F, else " + param(sw.skip_feed_param) + "; modal F not updated"
+               : sw.skip_feed == SkipFeedRule::kParamSwitch
+                   ? param(sw.skip_feed_switch_param) + " = 0: F or modal F; 1: " +
+                         param(sw.skip_feed_param)
+                   : std::string("F, else the last non-rapid feed"));
+    fmt::print("  override    {}; acc/dec {}\n",
+               sw.skip_override == SkipOverride::kSkfParam ? "SKF (6200#7)"
+               : sw.skip_override == SkipOverride::kFixed  ? "fixed 100 % (0 % stops), no dry run"
+                                                           : "as G01",
+               sw.skip_accel == SkipAccel::kSkfParam ? "SKF (6200#7)"
+               : sw.skip_accel == SkipAccel::kNever  ? "none"
+                                                     : "as G01");
+    fmt::print("  stop        {}\n", sw.skip_stop == canon::SkipStop::kImmediate
+                                         ? "immediate"
+                                         : "linear deceleration");
+    fmt::print("  miss        {}\n",
+               sw.skip_k_word ? "K1 alarm, K0 none; K omitted: " + param(sw.skip_miss_param)
+                              : std::string("completes normally"));
+    fmt::print("  torque skip {}\n",
+               sw.torque_skip ? "P98/P99, Q or " + param(sw.torque_q_param) + ", delay " +
+                                    param(sw.torque_delay_param)
+                              : std::string("no"));
+    std::string other;
+    for (const auto& [on, text] :
+         {std::pair{sw.skip_g53_allowed, "G31 G53: target in machine coordinates"},
+          std::pair{sw.skip_ignored_when_locked, "skip ignored in machine lock / Z-axis cancel"},
+          std::pair{sw.tool_position_offset, "G45-G48 tool offsets enter #5061.."},
+          std::pair{sw.skip_requires_axis, "G31 without an axis word is a format error"},
+          std::pair{!d->handshake.empty(), "PLC handshake in the trace"}}) {
+      if (on) other += (other.empty() ? "" : "; ") + std::string(text);
+    }
+    fmt::print("  other       {}\n", other.empty() ? "-" : other);
+    fmt::print("  results     {}{}\n",
+               d->skip_vars.work_base != 0 ? fmt::format("#{}.. ", d->skip_vars.work_base) : "",
+               d->skip_vars.named_local.empty()
+                   ? std::string()
+                   : "#<" + d->skip_vars.named_machine + "X> #<" + d->skip_vars.named_local + "X>");
+    fmt::print("  alarms      radius comp {}; no feed {}; P {}; format {}\n",
+               alarm(AlarmId::kSkipInCutterComp), alarm(AlarmId::kSkipNoFeed),
+               alarm(AlarmId::kSkipBadP), alarm(AlarmId::kSkipSyntax));
   }
   return 0;
 }

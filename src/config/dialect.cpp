@@ -31,61 +31,118 @@ Result<canon::SignalAddr> parse_addr(const toml::node& n, std::string_view origi
   return a;
 }
 
+// A named choice of a string switch.
+template <class E>
+struct Choice {
+  std::string_view text;
+  E value;
+};
+
+template <class E, std::size_t N>
+Result<void> choose(const toml::node& n, std::string_view origin, std::string_view key,
+                    const Choice<E> (&choices)[N], E& out) {
+  auto s = get_string(n, origin, key);
+  if (!s) return std::unexpected(s.error());
+  std::string known;
+  for (const auto& c : choices) {
+    if (c.text == *s) {
+      out = c.value;
+      return {};
+    }
+    known += (known.empty() ? "\"" : ", \"") + std::string(c.text) + "\"";
+  }
+  return config_error(n, origin, std::string(key) + " must be one of " + known);
+}
+
 Result<void> load_switches(const toml::table& t, std::string_view origin, Switches& sw) {
-  auto keys = check_keys(t,
-                         {"skip_p_first", "skip_p_count", "skip_p_required_range", "skip_stop",
-                          "skip_miss_alarm_default", "skip_active_at_start_ends",
-                          "skip_edge_rising_only", "skip_feed", "skip_feed_param",
-                          "skip_feed_switch_param", "skip_g53_allowed", "torque_skip",
-                          "multi_step", "next_block_from_stop", "tool_position_offset",
-                          "calculator_decimal_default", "macro_bracket_depth"},
-                         origin, "[switches]");
-  if (!keys) return keys;
+  struct IntKey {
+    std::string_view key;
+    int* out;
+    double lo, hi;
+  };
+  struct BoolKey {
+    std::string_view key;
+    bool* out;
+  };
+  const IntKey ints[] = {
+      {"skip_p_first", &sw.skip_p_first, 0, 1},
+      {"skip_p_count", &sw.skip_p_count, 1, canon::SkipSpec::kMaxInputs},
+      {"skip_miss_param", &sw.skip_miss_param, 0, 99999},
+      {"skip_signal_param", &sw.skip_signal_param, 0, 99999},
+      {"skip_feed_param", &sw.skip_feed_param, 0, 99999},
+      {"skip_feed_switch_param", &sw.skip_feed_switch_param, 0, 99999},
+      {"torque_q_param", &sw.torque_q_param, 0, 99999},
+      {"torque_delay_param", &sw.torque_delay_param, 0, 99999},
+      {"sync_axes_param", &sw.sync_axes_param, 0, 99999},
+      {"machine_lock_param", &sw.machine_lock_param, 0, 99999},
+      {"z_cancel_param", &sw.z_cancel_param, 0, 99999},
+      {"dry_run_feed_param", &sw.dry_run_feed_param, 0, 99999},
+      {"macro_bracket_depth", &sw.macro_bracket_depth, 1, 64},
+  };
+  const BoolKey bools[] = {
+      {"skip_k_word", &sw.skip_k_word},
+      {"skip_active_at_start_ends", &sw.skip_active_at_start_ends},
+      {"skip_edge_rising_only", &sw.skip_edge_rising_only},
+      {"skip_requires_axis", &sw.skip_requires_axis},
+      {"skip_g53_allowed", &sw.skip_g53_allowed},
+      {"skip_ignored_when_locked", &sw.skip_ignored_when_locked},
+      {"torque_skip", &sw.torque_skip},
+      {"tool_position_offset", &sw.tool_position_offset},
+      {"calculator_decimal_default", &sw.calculator_decimal_default},
+  };
+  static constexpr Choice<SkipPMode> kPModes[] = {{"multi_step", SkipPMode::kMultiStep},
+                                                  {"select", SkipPMode::kSelect},
+                                                  {"bitmask", SkipPMode::kBitmask},
+                                                  {"none", SkipPMode::kNone}};
+  static constexpr Choice<canon::SkipStop> kStops[] = {
+      {"immediate", canon::SkipStop::kImmediate}, {"decelerate", canon::SkipStop::kDecelerate}};
+  static constexpr Choice<SkipFeedRule> kFeeds[] = {{"modal", SkipFeedRule::kModal},
+                                                    {"block_or_param", SkipFeedRule::kBlockOrParam},
+                                                    {"param_switch", SkipFeedRule::kParamSwitch},
+                                                    {"last_cutting", SkipFeedRule::kLastCutting}};
+  static constexpr Choice<SkipOverride> kOverrides[] = {{"skf_param", SkipOverride::kSkfParam},
+                                                        {"fixed", SkipOverride::kFixed},
+                                                        {"normal", SkipOverride::kNormal}};
+  static constexpr Choice<SkipAccel> kAccels[] = {{"skf_param", SkipAccel::kSkfParam},
+                                                  {"never", SkipAccel::kNever},
+                                                  {"always", SkipAccel::kAlways}};
   for (const auto& [key, node] : t) {
     const auto k = key.str();
-    auto as_bool = [&](bool& out) -> Result<void> {
+    Result<void> r;
+    bool known = false;
+    for (const auto& e : ints) {
+      if (e.key != k) continue;
+      known = true;
+      auto v = get_number(node, origin, k, e.lo, e.hi);
+      if (!v) return std::unexpected(v.error());
+      if (*v != static_cast<double>(static_cast<int>(*v))) {
+        return config_error(node, origin, std::string(k) + " must be a whole number");
+      }
+      *e.out = static_cast<int>(*v);
+    }
+    for (const auto& e : bools) {
+      if (e.key != k) continue;
+      known = true;
       auto b = get_bool(node, origin, k);
       if (!b) return std::unexpected(b.error());
-      out = *b;
-      return {};
-    };
-    auto as_int = [&](int& out, double lo, double hi) -> Result<void> {
-      auto v = get_number(node, origin, k, lo, hi);
-      if (!v) return std::unexpected(v.error());
-      out = static_cast<int>(*v);
-      return {};
-    };
-    Result<void> r;
-    if (k == "skip_p_first") r = as_int(sw.skip_p_first, 0, 1);
-    else if (k == "skip_p_count") r = as_int(sw.skip_p_count, 1, canon::SkipSpec::kMaxInputs);
-    else if (k == "skip_p_required_range") r = as_bool(sw.skip_p_required_range);
-    else if (k == "skip_miss_alarm_default") r = as_bool(sw.skip_miss_alarm_default);
-    else if (k == "skip_active_at_start_ends") r = as_bool(sw.skip_active_at_start_ends);
-    else if (k == "skip_edge_rising_only") r = as_bool(sw.skip_edge_rising_only);
-    else if (k == "skip_feed_param") r = as_int(sw.skip_feed_param, 0, 99999);
-    else if (k == "skip_feed_switch_param") r = as_int(sw.skip_feed_switch_param, 0, 99999);
-    else if (k == "skip_g53_allowed") r = as_bool(sw.skip_g53_allowed);
-    else if (k == "torque_skip") r = as_bool(sw.torque_skip);
-    else if (k == "multi_step") r = as_bool(sw.multi_step);
-    else if (k == "next_block_from_stop") r = as_bool(sw.next_block_from_stop);
-    else if (k == "tool_position_offset") r = as_bool(sw.tool_position_offset);
-    else if (k == "calculator_decimal_default") r = as_bool(sw.calculator_decimal_default);
-    else if (k == "macro_bracket_depth") r = as_int(sw.macro_bracket_depth, 1, 64);
-    else if (k == "skip_stop" || k == "skip_feed") {
-      auto s = get_string(node, origin, k);
-      if (!s) return std::unexpected(s.error());
-      if (k == "skip_stop") {
-        if (*s == "immediate") sw.skip_stop = canon::SkipStop::kImmediate;
-        else if (*s == "decelerate") sw.skip_stop = canon::SkipStop::kDecelerate;
-        else return config_error(node, origin, "skip_stop must be \"immediate\" or \"decelerate\"");
-      } else {
-        if (*s == "modal") sw.skip_feed = SkipFeedRule::kModal;
-        else if (*s == "block_or_param") sw.skip_feed = SkipFeedRule::kBlockOrParam;
-        else if (*s == "param_switch") sw.skip_feed = SkipFeedRule::kParamSwitch;
-        else
-          return config_error(node, origin,
-                              "skip_feed must be \"modal\", \"block_or_param\" or \"param_switch\"");
-      }
+      *e.out = *b;
+    }
+    if (k == "skip_p_mode")
+      r = choose(node, origin, k, kPModes, sw.skip_p_mode);
+    else if (k == "skip_stop")
+      r = choose(node, origin, k, kStops, sw.skip_stop);
+    else if (k == "skip_feed")
+      r = choose(node, origin, k, kFeeds, sw.skip_feed);
+    else if (k == "skip_override")
+      r = choose(node, origin, k, kOverrides, sw.skip_override);
+    else if (k == "skip_accel")
+      r = choose(node, origin, k, kAccels, sw.skip_accel);
+    else if (!known) {
+      std::string list = "skip_p_mode, skip_stop, skip_feed, skip_override, skip_accel";
+      for (const auto& e : ints) list += ", " + std::string(e.key);
+      for (const auto& e : bools) list += ", " + std::string(e.key);
+      return config_error(
+          node, origin, "unknown key '" + std::string(k) + "' in [switches] (known: " + list + ")");
     }
     if (!r) return r;
   }
@@ -93,24 +150,44 @@ Result<void> load_switches(const toml::table& t, std::string_view origin, Switch
 }
 
 Result<void> load_skip_vars(const toml::table& t, std::string_view origin, SkipVariables& v) {
-  auto keys = check_keys(t, {"work_base", "machine_base", "named_machine", "named_local",
-                             "success_flag"},
-                         origin, "[skip_variables]");
+  auto keys = check_keys(
+      t, {"work_base", "machine_base", "named_machine", "named_local", "named_aux", "success_flag"},
+      origin, "[skip_variables]");
   if (!keys) return keys;
   for (const auto& [key, node] : t) {
     const auto k = key.str();
-    if (k == "named_machine" || k == "named_local") {
+    if (k == "named_machine" || k == "named_local" || k == "named_aux") {
       auto s = get_string(node, origin, k);
       if (!s) return std::unexpected(s.error());
-      (k == "named_machine" ? v.named_machine : v.named_local) = *s;
+      (k == "named_machine" ? v.named_machine
+       : k == "named_local" ? v.named_local
+                            : v.named_aux) = *s;
     } else {
       auto n = get_number(node, origin, k, 0, 99999);
       if (!n) return std::unexpected(n.error());
       const int i = static_cast<int>(*n);
-      if (k == "work_base") v.work_base = i;
-      else if (k == "machine_base") v.machine_base = i;
-      else v.success_flag = i;
+      if (k == "work_base")
+        v.work_base = i;
+      else if (k == "machine_base")
+        v.machine_base = i;
+      else
+        v.success_flag = i;
     }
+  }
+  return {};
+}
+
+Result<void> load_handshake(const toml::table& t, std::string_view origin, SkipHandshakeNames& h) {
+  auto keys = check_keys(t, {"active", "skip", "recorded", "done"}, origin, "[skip_handshake]");
+  if (!keys) return keys;
+  for (const auto& [key, node] : t) {
+    auto s = get_string(node, origin, key.str());
+    if (!s) return std::unexpected(s.error());
+    const auto k = key.str();
+    (k == "active" ? h.active : k == "skip" ? h.skip : k == "recorded" ? h.recorded : h.done) = *s;
+  }
+  if (h.active.empty() || h.skip.empty() || h.recorded.empty() || h.done.empty()) {
+    return config_error(t, origin, "[skip_handshake] needs active, skip, recorded and done");
   }
   return {};
 }
@@ -126,8 +203,8 @@ Result<void> load_params(const toml::table& t, std::string_view origin,
     }
     const auto* tab = node.as_table();
     if (!tab) return config_error(node, origin, "parameter " + std::string(k) + " must be a table");
-    auto keys = check_keys(*tab, {"name", "kind", "default", "min", "max", "text"}, origin,
-                           "a parameter");
+    auto keys =
+        check_keys(*tab, {"name", "kind", "default", "min", "max", "text"}, origin, "a parameter");
     if (!keys) return std::unexpected(keys.error());
     ParamDef d;
     d.number = number;
@@ -136,18 +213,27 @@ Result<void> load_params(const toml::table& t, std::string_view origin,
       if (s == "name" || s == "text" || s == "kind") {
         auto v = get_string(pn, origin, s);
         if (!v) return std::unexpected(v.error());
-        if (s == "name") d.name = *v;
-        else if (s == "text") d.text = *v;
-        else if (*v == "bits") d.kind = ParamKind::kBits;
-        else if (*v == "int") d.kind = ParamKind::kInt;
-        else if (*v == "real") d.kind = ParamKind::kReal;
-        else return config_error(pn, origin, "kind must be \"bits\", \"int\" or \"real\"");
+        if (s == "name")
+          d.name = *v;
+        else if (s == "text")
+          d.text = *v;
+        else if (*v == "bits")
+          d.kind = ParamKind::kBits;
+        else if (*v == "int")
+          d.kind = ParamKind::kInt;
+        else if (*v == "real")
+          d.kind = ParamKind::kReal;
+        else
+          return config_error(pn, origin, "kind must be \"bits\", \"int\" or \"real\"");
       } else {
         auto v = get_number(pn, origin, s, -1e300, 1e300);
         if (!v) return std::unexpected(v.error());
-        if (s == "default") d.default_value = *v;
-        else if (s == "min") d.min = *v;
-        else d.max = *v;
+        if (s == "default")
+          d.default_value = *v;
+        else if (s == "min")
+          d.min = *v;
+        else
+          d.max = *v;
       }
     }
     if (d.kind == ParamKind::kBits) {
@@ -198,7 +284,7 @@ Result<void> load_into(std::string_view text, std::string_view origin, Dialect& 
   const toml::table& t = *parsed;
   auto keys = check_keys(t,
                          {"name", "title", "inherits", "fixed_skip_inputs", "switches",
-                          "skip_variables", "parameters", "alarms"},
+                          "skip_variables", "skip_handshake", "parameters", "alarms"},
                          origin, "a dialect file");
   if (!keys) return keys;
   if (const auto* inh = t.get("inherits")) {
@@ -229,10 +315,16 @@ Result<void> load_into(std::string_view text, std::string_view origin, Dialect& 
     } else if (k != "inherits") {
       const auto* tab = node.as_table();
       if (!tab) return config_error(node, origin, "[" + std::string(k) + "] must be a table");
-      if (k == "switches") r = load_switches(*tab, origin, d.sw);
-      else if (k == "skip_variables") r = load_skip_vars(*tab, origin, d.skip_vars);
-      else if (k == "parameters") r = load_params(*tab, origin, d.params);
-      else r = load_alarms(*tab, origin, d);
+      if (k == "switches")
+        r = load_switches(*tab, origin, d.sw);
+      else if (k == "skip_variables")
+        r = load_skip_vars(*tab, origin, d.skip_vars);
+      else if (k == "skip_handshake")
+        r = load_handshake(*tab, origin, d.handshake);
+      else if (k == "parameters")
+        r = load_params(*tab, origin, d.params);
+      else
+        r = load_alarms(*tab, origin, d);
     }
     if (!r) return r;
   }
@@ -252,6 +344,41 @@ Result<Dialect> parse_dialect(std::string_view toml_text, std::string_view origi
   Dialect d;
   auto r = load_into(toml_text, origin, d, 0);
   if (!r) return std::unexpected(r.error());
+  // Every parameter a switch names must be a parameter of the dialect.
+  const Switches& sw = d.sw;
+  const std::pair<std::string_view, int> refs[] = {
+      {"skip_miss_param", sw.skip_miss_param},
+      {"skip_signal_param", sw.skip_signal_param},
+      {"skip_feed_param", sw.skip_feed_param},
+      {"skip_feed_switch_param", sw.skip_feed_switch_param},
+      {"torque_q_param", sw.torque_q_param},
+      {"torque_delay_param", sw.torque_delay_param},
+      {"sync_axes_param", sw.sync_axes_param},
+      {"machine_lock_param", sw.machine_lock_param},
+      {"z_cancel_param", sw.z_cancel_param},
+      {"dry_run_feed_param", sw.dry_run_feed_param},
+  };
+  for (const auto& [key, number] : refs) {
+    if (number != 0 && d.param(number) == nullptr) {
+      return fail(AlarmId::kConfig, std::string(origin) + ": [switches] " + std::string(key) +
+                                        " = " + std::to_string(number) + " is not in [parameters]");
+    }
+  }
+  if ((sw.skip_feed == SkipFeedRule::kBlockOrParam && sw.skip_feed_param == 0) ||
+      (sw.skip_feed == SkipFeedRule::kParamSwitch &&
+       (sw.skip_feed_param == 0 || sw.skip_feed_switch_param == 0))) {
+    return fail(AlarmId::kConfig, std::string(origin) +
+                                      ": skip_feed needs skip_feed_param (and, for param_switch, "
+                                      "skip_feed_switch_param)");
+  }
+  if (sw.skip_p_mode != SkipPMode::kMultiStep && sw.skip_p_mode != SkipPMode::kNone &&
+      d.fixed_skip_inputs.size() < static_cast<std::size_t>(sw.skip_p_count)) {
+    return fail(AlarmId::kConfig, std::string(origin) + ": fixed_skip_inputs must list " +
+                                      std::to_string(sw.skip_p_count) + " addresses");
+  }
+  if (d.fixed_skip_inputs.empty()) {
+    return fail(AlarmId::kConfig, std::string(origin) + ": fixed_skip_inputs is empty");
+  }
   return d;
 }
 

@@ -35,37 +35,78 @@ struct ParamDef {
 
 // Where the skip feed comes from.
 enum class SkipFeedRule : std::uint8_t {
-  kModal,           // F in the block, else the modal F (which the block's F updates)
-  kBlockOrParam,    // F in the block, else a parameter; the modal F is not updated (Mitsubishi)
-  kParamSwitch,     // a parameter chooses between F/modal F and a fixed parameter feed (NCT)
+  kModal,         // F in the block, else the modal F (which the block's F updates)
+  kBlockOrParam,  // F in the block, else a parameter; the modal F is not updated (Mitsubishi)
+  kParamSwitch,   // a parameter chooses between F/modal F and a fixed parameter feed (NCT)
+  kLastCutting,   // F in the block, else the last F of a non-rapid block (CompassNC)
+};
+
+// What the P word of a G31 block means.
+enum class SkipPMode : std::uint8_t {
+  kMultiStep,  // P<first>..: one input each, reported as multi-step skip (seed 000: P1-P12)
+  kSelect,     // P<first>..: chooses the one skip input (NCT: P0-P3 = inputs 1-4)
+  kBitmask,    // P1-P255: bit n-1 set = input n ends the block (Mitsubishi multi-step skip 2)
+  kNone,       // no P in a G31 block (CompassNC)
+};
+
+// Whether feed override and dry run act on a G31 block.
+enum class SkipOverride : std::uint8_t {
+  kSkfParam,  // 6200#7 SKF = 0: no (fixed 100 %, dry run ignored); SKF = 1: yes (seed 000)
+  kFixed,     // never; override 0 % still stops the axes (Mitsubishi)
+  kNormal,    // as in G01 (the manual says nothing else)
+};
+
+// Whether the G31 move accelerates and decelerates automatically.
+enum class SkipAccel : std::uint8_t {
+  kSkfParam,  // 6200#7 SKF (seed 000)
+  kNever,     // Mitsubishi (2): the feed steps to F
+  kAlways,    // as a G01 block
 };
 
 // How skip-variable results are exposed.
 struct SkipVariables {
-  int work_base = 5061;      // #5061.. workpiece position at the latch (0: none)
-  int machine_base = 0;      // machine position at the latch (0: none)
-  std::string named_machine; // CompassNC: "NC.SysVars.G31.MCS." + axis name
-  std::string named_local;   // CompassNC: "NC.SysVars.G31.LCS." + axis name
-  int success_flag = 0;      // variable set to 1/0 after a skip (0: none)
+  int work_base = 5061;       // #5061.. workpiece position at the latch (0: none)
+  int machine_base = 0;       // machine position at the latch (0: none)
+  std::string named_machine;  // CompassNC: "NC.SysVars.G31.MCS." + axis name
+  std::string named_local;    // CompassNC: "NC.SysVars.G31.LCS." + axis name
+  std::string named_aux;      // name of the axes after X Y Z in named variables ("Aux" -> Aux1..)
+  int success_flag = 0;       // variable set to 1/0 after a skip (0: none)
+};
+
+// The names of the skip handshake signals in the trace (CompassNC's PLC data
+// structure G31SkipMove); empty: the dialect has no such handshake to show.
+struct SkipHandshakeNames {
+  std::string active, skip, recorded, done;
+  bool empty() const noexcept { return active.empty(); }
 };
 
 struct Switches {
-  int macro_bracket_depth = 5;          // [ ] nesting in a macro expression (Fanuc: 5, PS0118)
-  int skip_p_first = 1;                 // P value of the first skip input (Fanuc 1, NCT 0)
-  int skip_p_count = 12;                // number of selectable inputs
-  bool skip_p_required_range = true;    // P outside range is an alarm
+  int macro_bracket_depth = 5;  // [ ] nesting in a macro expression (Fanuc: 5, PS0118)
+  SkipPMode skip_p_mode = SkipPMode::kMultiStep;
+  int skip_p_first = 1;   // P value of the first skip input (Fanuc 1, NCT 0)
+  int skip_p_count = 12;  // number of selectable inputs
   canon::SkipStop skip_stop = canon::SkipStop::kImmediate;
-  bool skip_miss_alarm_default = false; // K omitted
-  bool skip_active_at_start_ends = true;   // level input already active ends the block
-  bool skip_edge_rising_only = false;   // CompassNC: rising edge of Skip only
+  bool skip_k_word = true;                // K0/K1 chooses an alarm on a miss (seed 000)
+  int skip_miss_param = 0;                // parameter with the K default (0: no alarm)
+  bool skip_active_at_start_ends = true;  // level input already active ends the block
+  bool skip_edge_rising_only = false;     // CompassNC: rising edge of Skip only
+  int skip_signal_param = 0;              // Fanuc 6200: #0 TSG edge, #1 SK0 low, #7 SKF
   SkipFeedRule skip_feed = SkipFeedRule::kModal;
-  int skip_feed_param = 0;              // parameter with the skip feed (Mitsubishi 1174, NCT G31FD)
-  int skip_feed_switch_param = 0;       // NCT SKIPF
-  bool skip_g53_allowed = false;        // CompassNC: G31 G53 targets machine coordinates
-  bool torque_skip = true;              // P98/P99 available
-  bool multi_step = true;               // P1.. selects inputs
-  bool next_block_from_stop = true;     // next block starts where the axes stopped
-  bool tool_position_offset = false;    // G45-G48 exist (NCT)
+  int skip_feed_param = 0;         // parameter with the skip feed (Mitsubishi 1174, NCT G31FD)
+  int skip_feed_switch_param = 0;  // NCT SKIPF
+  SkipOverride skip_override = SkipOverride::kSkfParam;
+  SkipAccel skip_accel = SkipAccel::kSkfParam;
+  bool skip_requires_axis = false;        // G31 without an axis word is a format error (NCT)
+  bool skip_g53_allowed = false;          // CompassNC: G31 G53 targets machine coordinates
+  bool skip_ignored_when_locked = false;  // Mitsubishi: machine lock / Z-axis cancel
+  bool torque_skip = true;                // P98/P99 available
+  int torque_q_param = 0;                 // 6280: Q when omitted
+  int torque_delay_param = 0;             // 6281: detection delay, ms
+  int sync_axes_param = 0;                // axes under synchronous control (bit per axis)
+  int machine_lock_param = 0;             // skipnc: machine lock switch
+  int z_cancel_param = 0;                 // skipnc: Z-axis cancel switch
+  int dry_run_feed_param = 0;             // dry-run feed, mm/min
+  bool tool_position_offset = false;      // G45-G48 exist (NCT)
   bool calculator_decimal_default = false;
 };
 
@@ -76,13 +117,12 @@ struct Dialect {
   std::vector<ParamDef> params;
   Switches sw;
   SkipVariables skip_vars;
+  SkipHandshakeNames handshake;
   // Fixed skip-input addresses, index 0 = first selectable input (P first).
   std::vector<canon::SignalAddr> fixed_skip_inputs;
 
   const ParamDef* param(int number) const noexcept;
-  const AlarmText& alarm(AlarmId id) const noexcept {
-    return alarms[static_cast<std::size_t>(id)];
-  }
+  const AlarmText& alarm(AlarmId id) const noexcept { return alarms[static_cast<std::size_t>(id)]; }
 };
 
 // Loads a dialect from TOML text. `origin` names the file in errors.

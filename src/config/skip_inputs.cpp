@@ -6,15 +6,18 @@ namespace skipnc::config {
 
 canon::SignalAddr skip_input_address(const Dialect& d, const Parameters& p, int index) noexcept {
   canon::SignalAddr a;
-  if (p.bit(3008, 2) && index < 4) {
+  const bool by_params = d.param(3008) != nullptr;  // Fanuc-style address parameters
+  if (by_params && p.bit(3008, 2) && index < 4) {
     a.area = p.bit(3008, 1) ? 'G' : 'X';
     a.byte = static_cast<std::uint16_t>(p.get(3012));
     a.bit = static_cast<std::uint8_t>(p.get(3020 + index));
     return a;
   }
-  if (index >= 0 && index < static_cast<int>(d.fixed_skip_inputs.size())) {
+  if (index >= 0 && index < static_cast<int>(d.fixed_skip_inputs.size()) &&
+      (!by_params || index < 4)) {
     return d.fixed_skip_inputs[static_cast<std::size_t>(index)];
   }
+  if (!by_params) return d.fixed_skip_inputs.front();  // not reached: P is checked first
   a.area = 'X';
   a.byte = static_cast<std::uint16_t>(p.get(3025));
   a.bit = static_cast<std::uint8_t>((index - 4) & 7);
@@ -50,8 +53,9 @@ std::optional<canon::SignalAddr> parse_signal_name(std::string_view name, const 
     int n = 1;
     if (!rest.empty()) {
       auto r = std::from_chars(rest.data(), rest.data() + rest.size(), n);
-      if (r.ec != std::errc{} || r.ptr != rest.data() + rest.size() || n < 1 ||
-          n > canon::SkipSpec::kMaxInputs) {
+      const int count = d.param(3008) != nullptr ? canon::SkipSpec::kMaxInputs
+                                                 : static_cast<int>(d.fixed_skip_inputs.size());
+      if (r.ec != std::errc{} || r.ptr != rest.data() + rest.size() || n < 1 || n > count) {
         return std::nullopt;
       }
     }

@@ -5,7 +5,8 @@
 //   expr.cpp         expression evaluation and the vacant rules
 //   sysvars.cpp      system variables (#3000.., #4000.., #5000..)
 //   ncblock.cpp      address words, modal groups, offsets, data setting
-//   motion.cpp       rapid, feed, arc, dwell, skip commands
+//   motion.cpp       rapid, feed, arc, dwell commands
+//   skip.cpp         the skip family (G31): dialect rules in, results out
 #pragma once
 
 #include <array>
@@ -129,10 +130,12 @@ struct Interpreter::Impl {
   AxisVec local_shift;           // G52
   AxisVec g92_shift;             // G92
   AxisVec tool_pos_offset;       // G45-G48 accumulated (dialects that have them)
+  AxisVec g45_delta;             // this block's G45-G48 change (incremental targets), mm
   double length_offset = 0.0;    // active tool length offset (mm), on length_axis
   int length_axis = 2;
   std::vector<config::ToolOffset> tools;  // index = offset number
   VariableStore vars;
+  double last_cut_feed = 0.0;    // F of the last non-rapid move (program units), CompassNC G31
   AxisVec skip_work;             // #5061.. (program units)
   AxisVec skip_machine;
   bool have_skip = false;
@@ -223,8 +226,10 @@ struct Interpreter::Impl {
 
   // motion.cpp
   Result<Step> motion(const Words& words, CommandSink& out, bool skip, bool g53);
+  // skip.cpp
   Result<Step> skip_block(const Words& words, const AxisVec& target, AxisMask moved,
                           CommandSink& out);
+  Result<void> finish_skip(const SyncState& s);
   Result<void> arc(const Words& words, const AxisVec& target, CommandSink& out);
   Result<void> dwell(const Words& words, CommandSink& out);
   Result<void> reference_return(const Words& words, int g, CommandSink& out);

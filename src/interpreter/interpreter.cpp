@@ -1,6 +1,7 @@
 #include "interpreter/interpreter.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <filesystem>
 
 #include "interpreter/impl.hpp"
@@ -181,38 +182,7 @@ Result<void> Interpreter::Impl::sync(const SyncState& s) {
     pos = s.machine_position;
     return {};
   }
-  PendingSkip& ps = pending_skip;
-  AxisVec latch = s.triggered ? s.latch_machine : ps.target;
-  skip_machine = latch;
-  for (int i = 0; i < axis_count; ++i) skip_work[i] = work_of(i, latch[i]);
-  have_skip = true;
-  if (dialect.sw.next_block_from_stop || s.triggered) pos = s.machine_position;
-  SkipRecord rec = ps.record;
-  rec.triggered = s.triggered;
-  rec.time_s = s.time_s;
-  rec.position = skip_work;
-  rec.machine_position = latch;
-  for (int i = 0; i < axis_count; ++i) rec.end_position[i] = work_of(i, pos[i]);
-  if (s.triggered && s.input_index >= 0 && s.input_index < canon::SkipSpec::kMaxInputs) {
-    rec.signal = ps.input_names[static_cast<std::size_t>(s.input_index)];
-  } else if (s.triggered && s.torque_reached) {
-    rec.signal = "TORQUE";
-  }
-  skips.push_back(rec);
-  const auto& sv = dialect.skip_vars;
-  if (sv.success_flag > 0) vars.set(sv.success_flag, Value::of(s.triggered ? 1.0 : 0.0));
-  for (int i = 0; i < axis_count; ++i) {
-    const std::string axis(1, axis_letter[static_cast<std::size_t>(i)]);
-    if (!sv.named_machine.empty()) {
-      vars.set_named(sv.named_machine + axis, Value::of(latch[i] / unit_mm()));
-    }
-    if (!sv.named_local.empty()) vars.set_named(sv.named_local + axis, Value::of(skip_work[i]));
-  }
-  if (!s.triggered && ps.alarm_on_miss) {
-    return fail(AlarmId::kSkipMiss, "the block reached its end point without a skip signal",
-                ps.loc);
-  }
-  return {};
+  return finish_skip(s);
 }
 
 // ---------------------------------------------------------------------------
@@ -235,7 +205,12 @@ Result<Value> Interpreter::read_variable(int number) const {
   return impl_->read_var(number, {});
 }
 Result<Value> Interpreter::read_named(std::string_view name) const {
-  return impl_->read_named_var(std::string(name), {});
+  // As the parser stores #<name>: upper case, without spaces.
+  std::string key;
+  for (char c : name) {
+    if (c != ' ' && c != '\t') key += static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  }
+  return impl_->read_named_var(key, {});
 }
 const ModalState& Interpreter::modal() const noexcept { return impl_->modal; }
 AxisVec Interpreter::work_from_machine(const AxisVec& machine) const noexcept {

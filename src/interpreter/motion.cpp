@@ -1,10 +1,9 @@
-// Motion blocks: rapid, linear, circular, dwell, reference return and the
-// skip family. Targets are computed in the block's modes and emitted in
-// machine coordinates.
+// Motion blocks: rapid, linear, circular, dwell, reference return. Targets
+// are computed in the block's modes and emitted in machine coordinates. The
+// skip family (G31) is in skip.cpp.
 #include <cmath>
 #include <string>
 
-#include "config/skip_inputs.hpp"
 #include "interpreter/impl.hpp"
 
 namespace skipnc::interp {
@@ -63,11 +62,14 @@ Result<Step> Interpreter::Impl::motion(const Words& words, CommandSink& out, boo
     } else if (modal.distance == Distance::kAbsolute) {
       target[i] = machine_of(i, v);
     } else {
-      target[i] = pos[i] + v * unit_mm();
+      // G45-G48 (ncblock.cpp) lengthen or shorten an incremental move too.
+      target[i] = pos[i] + v * unit_mm() + g45_delta[i];
     }
     moved.set(i);
   }
+  g45_delta = AxisVec{};
   if (skip) return skip_block(words, target, moved, out);
+  if (modal.motion != Motion::kRapid) last_cut_feed = modal.feed;
   const bool exact = modal.path == PathMode::kExactStop || words.has_g(90);
   switch (modal.motion) {
     case Motion::kRapid:
@@ -156,121 +158,6 @@ Result<void> Interpreter::Impl::arc(const Words& words, const AxisVec& target, C
   a.exact_stop = modal.path == PathMode::kExactStop || words.has_g(90);
   emit(out, a);
   return {};
-}
-
-Result<Step> Interpreter::Impl::skip_block(const Words& words, const AxisVec& target,
-                                           AxisMask moved, CommandSink& out) {
-  const SourceLoc at = loc(cur_col);
-  const config::Switches& sw = dialect.sw;
-  canon::Skip sk;
-  sk.target = target;
-  canon::SkipSpec& spec = sk.spec;
-  int p = -1;
-  if (words.has('P')) {
-    const double pv = words.at('P').value;
-    if (pv != std::trunc(pv) || pv < 0 || pv > 1e6) {
-      return fail(AlarmId::kSkipBadP, "P" + std::to_string(pv), loc(words.at('P').column));
-    }
-    p = static_cast<int>(pv);
-  }
-  spec.p = p;
-  const bool torque = sw.torque_skip && (p == 98 || p == 99);
-  if (modal.cutter != CutterComp::kOff) {
-    return fail(torque ? AlarmId::kTorqueSkipCutterComp : AlarmId::kSkipInCutterComp,
-                "G31 with cutter radius compensation (G41/G42) active", at);
-  }
-  auto input_addr = [&](int index) { return config::skip_input_address(dialect, params, index); };
-  pending_skip = PendingSkip{};
-  if (torque) {
-    spec.kind = canon::SkipKind::kTorque;
-    if (moved.count() != 1) {
-      return fail(AlarmId::kTorqueSkipAxes,
-                  "G31 P" + std::to_string(p) + " needs exactly one axis, " +
-                      std::to_string(moved.count()) + " given",
-                  at);
-    }
-    for (int i = 0; i < axis_count; ++i) {
-      if (moved.has(i)) spec.torque_axis = i;
-    }
-    double q = params.get(6280);
-    if (words.has('Q')) q = words.at('Q').value;
-    if (q < 1 || q > 300) {
-      return fail(AlarmId::kTorqueSkipBadQ, "Q" + std::to_string(q) + ": the override is 1-300 %",
-                  words.has('Q') ? loc(words.at('Q').column) : at);
-    }
-    spec.torque_ends = true;
-    spec.torque_limit_pct = q;
-    spec.torque_delay_s = params.get(6281) / 1000.0;
-    if (p == 99) {
-      spec.input_count = 1;
-      spec.inputs[0] = input_addr(0);
-    }
-  } else {
-    int index = 0;
-    if (p >= 0) {
-      if (!sw.multi_step) return fail(AlarmId::kSkipBadP, "this control has no multi-step skip", loc(words.at('P').column));
-      index = p - sw.skip_p_first;
-      if (index < 0 || index >= sw.skip_p_count) {
-        return fail(AlarmId::kSkipBadP,
-                    "P" + std::to_string(p) + ": skip inputs are P" + std::to_string(sw.skip_p_first) +
-                        "-P" + std::to_string(sw.skip_p_first + sw.skip_p_count - 1),
-                    loc(words.at('P').column));
-      }
-      spec.kind = canon::SkipKind::kMultiStep;
-    }
-    spec.input_count = 1;
-    spec.inputs[0] = input_addr(index);
-  }
-  for (int i = 0; i < spec.input_count; ++i) {
-    pending_skip.input_names[static_cast<std::size_t>(i)] = config::signal_name(spec.inputs[i]);
-  }
-  // Feed.
-  double feed = 0.0;
-  switch (sw.skip_feed) {
-    case config::SkipFeedRule::kModal:
-      feed = feed_mm_per_min();
-      break;
-    case config::SkipFeedRule::kBlockOrParam:
-      feed = words.has('F') ? words.at('F').value * unit_mm() : params.get(sw.skip_feed_param) * unit_mm();
-      break;
-    case config::SkipFeedRule::kParamSwitch:
-      feed = params.get(sw.skip_feed_switch_param) != 0.0 ? params.get(sw.skip_feed_param) * unit_mm()
-                                                          : feed_mm_per_min();
-      break;
-  }
-  if (feed <= 0.0) return fail(AlarmId::kSkipNoFeed, "G31 without a feed", at);
-  sk.feed_mm_per_min = feed;
-  // Signal detection and stopping.
-  spec.active_low = params.bit(6200, 1);
-  spec.edge = params.bit(6200, 0) || sw.skip_edge_rising_only;
-  if (sw.skip_edge_rising_only) spec.active_low = false;
-  spec.active_at_start_ends = sw.skip_active_at_start_ends;
-  const bool skf = params.bit(6200, 7);
-  spec.accel = skf;
-  spec.stop = skf ? canon::SkipStop::kDecelerate : sw.skip_stop;
-  spec.latch = mc.latch;
-  spec.latch_delay_s = mc.latch_delay_s;
-  spec.servo_delay_comp = mc.servo_delay_comp;
-  bool k = sw.skip_miss_alarm_default || params.get(90001) != 0.0;
-  if (words.has('K')) k = words.at('K').value != 0.0;
-  spec.alarm_on_miss = k;
-  // The record the report shows.
-  SkipRecord& rec = pending_skip.record;
-  rec.line = cur_line;
-  std::string_view text = raw_text;
-  while (!text.empty() && (text.back() == ' ' || text.back() == '\t' || text.back() == '\r')) text.remove_suffix(1);
-  while (!text.empty() && (text.front() == ' ' || text.front() == '\t')) text.remove_prefix(1);
-  rec.block = std::string(text);
-  rec.kind = spec.kind;
-  rec.p = p;
-  pending_skip.target = target;
-  pending_skip.alarm_on_miss = k;
-  pending_skip.loc = at;
-  emit(out, sk);
-  pos = target;
-  motion_since_sync = true;
-  pending = Pending::kSkip;
-  return Step::kSync;
 }
 
 }  // namespace skipnc::interp

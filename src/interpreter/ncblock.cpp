@@ -94,8 +94,7 @@ Result<void> Interpreter::Impl::collect_words(Words& words) {
       const bool length = axis_of_letter[static_cast<std::size_t>(w.letter - 'A')] >= 0 ||
                           w.letter == 'I' || w.letter == 'J' || w.letter == 'K' ||
                           w.letter == 'R' || w.letter == 'Q';
-      const double word_inc = modal.units == Units::kInch ? 0.0001 : 0.001;
-      word_round_increment = length ? word_inc : 0.0;
+      word_round_increment = length ? (modal.units == Units::kInch ? 0.0001 : 0.001) : 0.0;
       auto e = eval(w.expr);
       word_round_increment = 0.0;
       if (!e) return std::unexpected(e.error());
@@ -105,12 +104,6 @@ Result<void> Interpreter::Impl::collect_words(Words& words) {
                     loc(w.column));
       }
       v.value = e->v;
-      // A computed length is rounded to the address's least input increment,
-      // as the control does (#1 = 12.3456, X#1 -> X12.346); macro arguments
-      // keep their value.
-      if (length && !call_block) {
-        v.value = std::round(v.value / word_inc) * word_inc + 0.0;
-      }
     } else {
       v.value = w.value;
     }
@@ -437,16 +430,22 @@ Result<Step> Interpreter::Impl::execute_nc(const Words& words, CommandSink& out)
     if (g31 || any_axis || arc_words || g45 != 0) {
       if (g45 != 0) {
         // G45-G48: the move is extended (G45, G47) or shortened (G46, G48)
-        // by the D offset; G47/G48 by twice the offset.
+        // by the D offset; G47/G48 by twice the offset. The direction is
+        // that of the programmed move (from the previous programmed point in
+        // G90; a zero move counts as positive). The shift stays with the
+        // axis: later positions and #5061.. are in programmed coordinates.
         const auto& t = tools[static_cast<std::size_t>(modal.d)];
         const double r = modal.d == 0 ? 0.0 : t.radius_geometry + t.radius_wear;
         const double k = (g45 == 45 ? 1.0 : g45 == 46 ? -1.0 : g45 == 47 ? 2.0 : -2.0) * r;
+        const bool inc = modal.distance == Distance::kIncremental;
         for (int i = 0; i < axis_count; ++i) {
           const char c = axis_letter[static_cast<std::size_t>(i)];
           if (!words.has(c)) continue;
-          const double inc = words.at(c).value;
-          const double sign = inc > 0 ? 1.0 : inc < 0 ? -1.0 : 1.0;
-          tool_pos_offset[i] -= sign * k;
+          const double v = word_length(words.at(c), false);
+          const double dist = inc ? v : v - work_of(i, pos[i]);
+          const double shift = (dist < 0.0 ? -1.0 : 1.0) * k;
+          tool_pos_offset[i] += shift;
+          if (inc) g45_delta[i] = shift;
         }
       }
       auto m = motion(words, out, g31, g53);

@@ -6,7 +6,13 @@
 namespace skipnc::kernel {
 
 Kernel::Kernel(const KernelConfig& cfg)
-    : cfg_(cfg), planner_(cfg.limits, cfg.queue_capacity), interp_(planner_) {}
+    : cfg_(cfg), planner_(cfg.limits, cfg.queue_capacity), interp_(planner_) {
+  min_accel_mm_s2_ = 1e300;
+  for (int i = 0; i < cfg_.limits.axis_count; ++i) {
+    min_accel_mm_s2_ =
+        std::fmin(min_accel_mm_s2_, cfg_.limits.axes[static_cast<std::size_t>(i)].max_accel_mm_s2);
+  }
+}
 
 void Kernel::set_position(const AxisVec& machine) noexcept {
   interp_.set_position(machine);
@@ -62,6 +68,7 @@ void Kernel::push(const canon::Stamped& stamped) {
           skip_stopping_ = false;
           skip_latch_pending_ = false;
           torque_since_s_ = -1.0;
+          latch_at_stop_ = false;
         } else {
           m.kind = planner::Move::Kind::kDwell;  // not reached: other commands are not queued
           m.dwell_s = 0.0;
@@ -84,6 +91,7 @@ void Kernel::trigger(double frac, const TickInput& in, int input, bool torque) n
   skip_.time_s = cfg_.clock.seconds(tick_, frac);
   skip_.latch_actual = lerp(actual_prev_, in.actual, frac);
   skip_.latch_command = lerp(cmd_prev_, cmd_, frac);
+  handshake_.skip = input >= 0;
   if (torque) {
     // The block ends from the mechanical stop position: the command follows
     // up to where the axis is held, and that is what is stored.
@@ -91,12 +99,19 @@ void Kernel::trigger(double frac, const TickInput& in, int input, bool torque) n
     interp_.set_position(in.actual);
     cmd_ = in.actual;
     skip_stopping_ = true;
+    handshake_.recorded = true;
     return;
   }
   skip_.latch_machine = skip_.spec.servo_delay_comp ? skip_.latch_actual : skip_.latch_command;
-  if (skip_.spec.latch == canon::SkipLatch::kSampled && skip_.spec.latch_delay_s > 0.0) {
+  // Torque limit skip ended by the SKIP signal (P99): the variables hold the
+  // coordinates where the machine stopped, not those at the signal (Fanuc 30i).
+  latch_at_stop_ = skip_.spec.kind == canon::SkipKind::kTorque;
+  if (skip_.spec.latch == canon::SkipLatch::kSampled && skip_.spec.latch_delay_s > 0.0 &&
+      !latch_at_stop_) {
     skip_latch_pending_ = true;
     skip_latch_due_s_ = skip_.time_s + skip_.spec.latch_delay_s;
+  } else if (!latch_at_stop_) {
+    handshake_.recorded = true;
   }
   if (skip_.spec.stop == canon::SkipStop::kImmediate) {
     interp_.stop_now();
@@ -110,7 +125,8 @@ void Kernel::trigger(double frac, const TickInput& in, int input, bool torque) n
       a = 1e300;
       for (int i = 0; i < cfg_.limits.axis_count; ++i) {
         const double u = std::fabs(v[i]) / speed;
-        if (u > 1e-12) a = std::fmin(a, cfg_.limits.axes[static_cast<std::size_t>(i)].max_accel_mm_s2 / u);
+        if (u > 1e-12)
+          a = std::fmin(a, cfg_.limits.axes[static_cast<std::size_t>(i)].max_accel_mm_s2 / u);
       }
     }
     if (a > 0.0 && a < 1e300) {
@@ -128,6 +144,7 @@ void Kernel::monitor_skip(const TickInput& in) noexcept {
   if (!skip_started_) {
     if (interp_.tag() == skip_tag_) {
       skip_started_ = true;
+      handshake_ = SkipHandshake{true, false, false, false};
       // An input already active when the block starts.
       if (!spec.ignore_inputs && !spec.edge && spec.active_at_start_ends) {
         for (int i = 0; i < spec.input_count; ++i) {
@@ -140,6 +157,7 @@ void Kernel::monitor_skip(const TickInput& in) noexcept {
     } else if (interp_.idle()) {
       // The skip move had no length: it ends at once, without a signal.
       skip_started_ = true;
+      handshake_ = SkipHandshake{true, false, false, false};
     } else {
       return;
     }
@@ -178,12 +196,44 @@ void Kernel::monitor_skip(const TickInput& in) noexcept {
       const double frac = std::fmin(1.0, std::fmax(0.0, (skip_latch_due_s_ - t0) / (t1 - t0)));
       skip_.latch_actual = lerp(actual_prev_, in.actual, frac);
       skip_.latch_command = lerp(cmd_prev_, cmd_, frac);
-      skip_.latch_machine =
-          spec.servo_delay_comp ? skip_.latch_actual : skip_.latch_command;
+      skip_.latch_machine = spec.servo_delay_comp ? skip_.latch_actual : skip_.latch_command;
       skip_.time_s = skip_latch_due_s_;
       skip_latch_pending_ = false;
+      handshake_.recorded = true;
     }
   }
+}
+
+// The rate at which profile time advances this period. Two factors ramp at
+// the slowest axis's acceleration (at the active segment's nominal speed):
+// the hold factor (0 in feed hold or interlock, and for a fixed-feed skip
+// block whose control stops at override 0 %) and the override factor. Dry
+// run replaces a cutting move's feed at once (the ratio is per segment). A
+// skip block with a fixed feed runs at 100 % whatever the override says.
+double Kernel::advance_time_scale() noexcept {
+  const planner::Segment* seg = planner_.front();
+  const bool cutting = seg != nullptr && (seg->kind == planner::Move::Kind::kLine ||
+                                          seg->kind == planner::Move::Kind::kArc);
+  const bool fixed =
+      cutting && skip_.active && !skip_.done && seg->tag == skip_tag_ && skip_.spec.feed_fixed;
+  const double ovr = std::fmax(0.0, op_.override_pct) / 100.0;
+  const bool hold =
+      op_.feed_hold || op_.interlock || (fixed && skip_.spec.override_zero_stops && ovr <= 0.0);
+  const double v_nom = seg != nullptr ? seg->v_max : 0.0;
+  const double step = v_nom > 0.0 ? min_accel_mm_s2_ * cfg_.clock.period_s() / v_nom : 1e300;
+  auto ramp = [&](double& x, double target) {
+    x = target > x ? std::fmin(target, x + step) : std::fmax(target, x - step);
+  };
+  ramp(hold_factor_, hold ? 0.0 : 1.0);
+  ramp(override_factor_, ovr);
+  double scale = hold_factor_;
+  if (cutting && !fixed) {
+    scale *= override_factor_;
+    if (op_.dry_run && op_.dry_run_feed_mm_min > 0.0 && seg->v_max > 0.0) {
+      scale *= std::fmin(op_.dry_run_feed_mm_min / 60.0, cfg_.limits.max_feed_mm_s) / seg->v_max;
+    }
+  }
+  return scale;
 }
 
 void Kernel::tick(const TickInput& in, TickOutput& out) noexcept {
@@ -193,24 +243,41 @@ void Kernel::tick(const TickInput& in, TickOutput& out) noexcept {
     const SignalEdge& edge = in.edges[static_cast<std::size_t>(e)];
     signals_.set(edge.addr, edge.level);
   }
+  const double scale = advance_time_scale();
+  if (scale != time_scale_) {
+    time_scale_ = scale;
+    interp_.set_time_scale(time_scale_);
+  }
   cmd_prev_ = cmd_;
   cmd_ = interp_.tick();
   actual_prev_ = in.actual;
   bool inpos = true;
   for (int i = 0; i < cfg_.limits.axis_count; ++i) {
-    inpos = inpos && std::fabs(cmd_[i] - in.actual[i]) <= cfg_.in_position_mm;
+    inpos = inpos && (locked_.has(i) || std::fabs(cmd_[i] - in.actual[i]) <= cfg_.in_position_mm);
   }
   in_position_ = inpos;
-  if (skip_.active && !skip_.done && skip_started_ && !skip_latch_pending_ &&
-      interp_.idle() && in_position_) {
+  if (skip_.active && !skip_.done && skip_started_ && !skip_latch_pending_ && interp_.idle() &&
+      in_position_) {
     skip_.done = true;
     skip_.stop_position = cmd_;
+    if (latch_at_stop_) {
+      skip_.latch_machine = cmd_;
+      handshake_.recorded = true;
+    }
+    handshake_.active = false;
+    handshake_.done = true;
   }
   out.commanded = cmd_;
   out.velocity = interp_.velocity();
   out.path_speed = interp_.path_speed();
   out.line = interp_.line();
   out.skip_active = skip_.active && !skip_.done;
+  out.handshake = handshake_;
+  out.torque_limit_pct = AxisVec{};
+  if (out.skip_active && skip_.spec.torque_ends && skip_.spec.torque_axis >= 0) {
+    out.torque_limit_pct[skip_.spec.torque_axis] = skip_.spec.torque_limit_pct;
+  }
+  out.time_scale = time_scale_;
 }
 
 }  // namespace skipnc::kernel

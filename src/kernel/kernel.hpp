@@ -36,25 +36,52 @@ struct TickInput {
   std::array<SignalEdge, kMaxEdges> edges{};
 };
 
+// The skip block's handshake, as a PLC sees it (CompassNC's G31SkipMove):
+// Active from the start of the skip move until the axes are at rest after
+// it; Skip when an input ended it; PositionsRecorded when the latched
+// position is stored; Done when the block is finished. Skip, recorded and
+// done stay set until the next skip block starts.
+struct SkipHandshake {
+  bool active = false;
+  bool skip = false;
+  bool recorded = false;
+  bool done = false;
+};
+
 struct TickOutput {
-  AxisVec commanded;      // position for the next period
-  AxisVec velocity;       // commanded velocity, mm/s
+  AxisVec commanded;  // position for the next period
+  AxisVec velocity;   // commanded velocity, mm/s
   double path_speed = 0.0;
-  std::uint32_t line = 0; // source line of the active motion
+  std::uint32_t line = 0;  // source line of the active motion
   bool skip_active = false;
+  SkipHandshake handshake;
+  // Torque limit the servo applies, % per axis (0: the servo's own limit).
+  // Set on the axis of a torque limit skip while it runs.
+  AxisVec torque_limit_pct;
+  double time_scale = 1.0;  // feed override / feed hold as applied this period
+};
+
+// What the operator does at the machine (scene [[operator]], see
+// docs/skip-dialects.md): feed hold, interlock, feed override, dry run.
+struct OperatorState {
+  bool feed_hold = false;
+  bool interlock = false;
+  double override_pct = 100.0;  // 0-200 %
+  bool dry_run = false;
+  double dry_run_feed_mm_min = 0.0;
 };
 
 struct SkipResult {
-  bool active = false;      // a skip block is queued or running
-  bool done = false;        // finished: triggered or reached its end point, and at rest
+  bool active = false;  // a skip block is queued or running
+  bool done = false;    // finished: triggered or reached its end point, and at rest
   bool triggered = false;
   bool torque_reached = false;
   int input_index = -1;
-  double time_s = 0.0;      // instant of the latch
-  AxisVec latch_machine;    // stored position (machine coordinates)
-  AxisVec latch_actual;     // actual position at the signal instant
-  AxisVec latch_command;    // commanded position at the signal instant
-  AxisVec stop_position;    // commanded position where the axes came to rest
+  double time_s = 0.0;    // instant of the latch
+  AxisVec latch_machine;  // stored position (machine coordinates)
+  AxisVec latch_actual;   // actual position at the signal instant
+  AxisVec latch_command;  // commanded position at the signal instant
+  AxisVec stop_position;  // commanded position where the axes came to rest
   canon::SkipSpec spec;
   AxisVec target;
   std::uint32_t line = 0;
@@ -80,6 +107,15 @@ class Kernel {
   void push(const canon::Stamped& cmd);
   // Sets the position of an idle machine (start-up, after a follow-up).
   void set_position(const AxisVec& machine) noexcept;
+  // The operator's switches; they act from the next tick. Feed hold,
+  // interlock and override 0 % bring the path to rest at the axes'
+  // acceleration; override and dry run do not act on a skip block whose
+  // spec says feed_fixed.
+  void set_operator(const OperatorState& op) noexcept { op_ = op; }
+  const OperatorState& operator_state() const noexcept { return op_; }
+  // Axes that do not move (machine lock, Z-axis cancel): their actual
+  // position is not compared with the command.
+  void set_locked_axes(AxisMask axes) noexcept { locked_ = axes; }
 
   // --- the tick -----------------------------------------------------------
   void tick(const TickInput& in, TickOutput& out) noexcept;
@@ -94,6 +130,7 @@ class Kernel {
   void clear_skip() noexcept { skip_ = SkipResult{}; }
   const AxisVec& command() const noexcept { return cmd_; }
   const SignalImage& signals() const noexcept { return signals_; }
+  const SkipHandshake& handshake() const noexcept { return handshake_; }
   // Sets a signal outside the tick (initial scene state).
   void preset_signal(const canon::SignalAddr& a, bool on) noexcept { signals_.set(a, on); }
 
@@ -101,14 +138,15 @@ class Kernel {
   bool input_active(int index, bool level) const noexcept;
   void monitor_skip(const TickInput& in) noexcept;
   void trigger(double frac, const TickInput& in, int input, bool torque) noexcept;
+  double advance_time_scale() noexcept;
 
   KernelConfig cfg_;
   planner::Planner planner_;
   interp::Interpolator interp_;
   SignalImage signals_;
   Tick tick_ = 0;
-  AxisVec cmd_;        // command for t_k (output at tick k-1)
-  AxisVec cmd_prev_;   // command for t_{k-1}
+  AxisVec cmd_;       // command for t_k (output at tick k-1)
+  AxisVec cmd_prev_;  // command for t_{k-1}
   AxisVec actual_prev_;
   bool in_position_ = true;
   std::uint32_t next_tag_ = 1;
@@ -116,9 +154,17 @@ class Kernel {
   SkipResult skip_;
   bool skip_started_ = false;
   bool skip_stopping_ = false;
-  bool skip_latch_pending_ = false;   // sampled latch: waiting for the delay
+  bool skip_latch_pending_ = false;  // sampled latch: waiting for the delay
   double skip_latch_due_s_ = 0.0;
   double torque_since_s_ = -1.0;
+  bool latch_at_stop_ = false;  // torque skip ended by SKIP: store where it stopped
+  SkipHandshake handshake_;
+  OperatorState op_;
+  AxisMask locked_;
+  double time_scale_ = 1.0;
+  double hold_factor_ = 1.0;      // ramps to 0 in feed hold / interlock
+  double override_factor_ = 1.0;  // ramps to the feed override
+  double min_accel_mm_s2_ = 0.0;  // smallest axis acceleration: feed hold ramps
 };
 
 }  // namespace skipnc::kernel

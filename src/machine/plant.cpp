@@ -58,9 +58,14 @@ void Plant::reset(const AxisVec& position) {
 void Plant::advance(Tick k, const AxisVec& from, const AxisVec& to,
                     kernel::TickInput& in) noexcept {
   const double T = clock_.period_s();
+  const double t_now = clock_.seconds(k);
   const AxisVec before = actual_;
   for (int i = 0; i < n_; ++i) {
     const auto& ax = m_.axes[static_cast<std::size_t>(i)];
+    if (locked_.has(i)) {
+      torque_[i] = 0.0;
+      continue;
+    }
     const double kp = ax.kp_per_s;
     double a1;
     if (kp <= 0.0) {
@@ -77,13 +82,19 @@ void Plant::advance(Tick k, const AxisVec& from, const AxisVec& to,
       if (st.axis != i) continue;
       if (st.decreasing ? (a1 < st.at && before[i] >= st.at) : (a1 > st.at && before[i] <= st.at)) {
         a1 = st.at;
-      } else if (st.decreasing ? (before[i] >= st.at && a1 < st.at) : false) {
-        a1 = st.at;
       }
     }
     actual_[i] = a1;
     const double fe = to[i] - a1;
-    torque_[i] = std::clamp(ax.torque_pct_per_mm * fe, -ax.torque_max_pct, ax.torque_max_pct);
+    double load = 0.0;
+    for (const Load& l : scene_.loads) {
+      if (l.axis == i && t_now >= l.at_time_s && t_now < l.at_time_s + l.duration_s) {
+        load += l.torque_pct;
+      }
+    }
+    double limit = ax.torque_max_pct;
+    if (torque_limit_[i] > 0.0) limit = std::fmin(limit, torque_limit_[i]);
+    torque_[i] = std::clamp(ax.torque_pct_per_mm * fe + load, -limit, limit);
   }
   in.actual = actual_;
   in.torque_pct = torque_;
@@ -109,10 +120,17 @@ void Plant::advance(Tick k, const AxisVec& from, const AxisVec& to,
     } else if (src.kind == SourceKind::kPulse) {
       const Pulse& p = scene_.pulses[src.index];
       const double on_t = p.at_time_s, off_t = p.at_time_s + p.duration_s;
+      // An instant belongs to the period (t_{k-1}, t_k]; a tolerance far
+      // below a period keeps an instant on a period boundary from being lost
+      // (or counted twice) to rounding.
+      constexpr double kEps = 1e-9;
       auto frac_of = [&](double t) { return (t - t0) / T; };
+      auto inside = [&](double f) { return f > kEps && f <= 1.0 + kEps; };
       const double f_on = frac_of(on_t), f_off = frac_of(off_t);
-      if (p.duration_s > 0.0 && f_on > 0.0 && f_on <= 1.0) events_.push_back(Event{f_on, s, true});
-      if (p.duration_s > 0.0 && f_off > 0.0 && f_off <= 1.0) events_.push_back(Event{f_off, s, false});
+      if (p.duration_s > 0.0 && inside(f_on)) events_.push_back(Event{std::fmin(f_on, 1.0), s, true});
+      if (p.duration_s > 0.0 && inside(f_off)) {
+        events_.push_back(Event{std::fmin(f_off, 1.0), s, false});
+      }
     }
   }
   for (const auto& e : probing_.edges()) {

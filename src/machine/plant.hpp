@@ -7,7 +7,9 @@
 // axis velocity is feedforward * command velocity + kp * following error,
 // integrated exactly over the period. Between samples the actual position is
 // taken as linear, and signal edges are placed on that line. A stop clamps
-// the axis; torque is torque_per_mm * following error, up to torque_max.
+// the axis; torque is torque_per_mm * following error plus the scene's loads,
+// up to torque_max or the torque limit the kernel applies. A locked axis
+// (machine lock) does not move.
 #pragma once
 
 #include <array>
@@ -40,6 +42,11 @@ class Plant {
   const AxisVec& actual() const noexcept { return actual_; }
   const AxisVec& torque() const noexcept { return torque_; }
   double clock_period_s() const noexcept { return clock_.period_s(); }
+  // Torque limit of each axis's servo from now on, % (0: torque_max only):
+  // the motor torque saturates there (torque limit skip, kernel output).
+  void set_torque_limit(const AxisVec& pct) noexcept { torque_limit_ = pct; }
+  // Axes that do not move (machine lock, Z-axis cancel).
+  void set_locked(AxisMask axes) noexcept { locked_ = axes; }
   // Is the signal at `index` (scene order of distinct signals) on?
   std::size_t signal_count() const noexcept { return signals_.size(); }
   const canon::SignalAddr& signal_addr(std::size_t i) const noexcept { return signals_[i].addr; }
@@ -70,6 +77,8 @@ class Plant {
   int n_ = 0;
   AxisVec actual_;
   AxisVec torque_;
+  AxisVec torque_limit_;
+  AxisMask locked_;
   std::array<double, kMaxAxes> decay_{};  // exp(-kp * T)
   std::vector<Source> sources_;
   std::vector<Signal> signals_;

@@ -1,4 +1,5 @@
 #include "machine/scene.hpp"
+#include "machine/scene_actions.hpp"
 
 #include <fstream>
 #include <sstream>
@@ -82,8 +83,10 @@ Result<Scene> parse_scene(std::string_view text, std::string_view origin,
   auto parsed = config::parse_toml(text, origin);
   if (!parsed) return std::unexpected(parsed.error());
   const toml::table& root = *parsed;
-  auto keys = check_keys(root, {"trigger", "pulse", "stop", "box", "cylinder", "sphere", "plane", "bore",
-                          "pocket", "probe", "tool", "tool_setter", "gauge", "spindle_tool"}, origin, "a scene file");
+  auto keys = check_keys(root, {"trigger", "pulse", "stop", "load", "operator", "box", "cylinder",
+                          "sphere", "plane", "bore", "pocket", "probe", "tool", "tool_setter",
+                          "gauge", "spindle_tool"}, origin,
+                         "a scene file");
   if (!keys) return std::unexpected(keys.error());
   Scene s;
   s.origin = std::string(origin);
@@ -140,6 +143,8 @@ Result<Scene> parse_scene(std::string_view text, std::string_view origin,
     s.stops.push_back(st);
     return {};
   });
+  if (!r) return std::unexpected(r.error());
+  r = parse_scene_actions(root, origin, m, s);
   if (!r) return std::unexpected(r.error());
   auto probing = parse_probing(root, origin, m, d, p);
   if (!probing) return std::unexpected(probing.error());

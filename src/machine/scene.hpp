@@ -1,6 +1,7 @@
 // The scene: what the machine touches (spec/cli.md, scene TOML v1).
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -36,13 +37,35 @@ struct Stop {
   bool decreasing = true;    // blocks motion toward smaller coordinates (axis >= at)
 };
 
+// An external load on an axis motor for a while (a burr, a chip): its
+// torque adds to the servo's. Scene [[load]] (docs/skip-dialects.md).
+struct Load {
+  int axis = 0;
+  double at_time_s = 0.0;
+  double duration_s = 0.0;
+  double torque_pct = 0.0;
+};
+
+// What the operator does at a moment: each field that is set changes that
+// switch from then on. Scene [[operator]] (docs/skip-dialects.md).
+struct OperatorAction {
+  double at_time_s = 0.0;
+  std::optional<bool> feed_hold;   // true: feed hold; false: cycle start (released)
+  std::optional<bool> interlock;   // all-axis interlock
+  std::optional<double> override_pct;  // feed override, 0-200 %
+  std::optional<bool> dry_run;
+};
+
 struct Scene {
   std::string origin;
   std::vector<Trigger> triggers;
   std::vector<Pulse> pulses;
   std::vector<Stop> stops;
+  std::vector<Load> loads;
+  std::vector<OperatorAction> operator_actions;  // in time order
   Probing probing;  // parts, probe, tools, tool setter, gauges (scene_parts.hpp)
 };
+
 
 [[nodiscard]] Result<Scene> parse_scene(std::string_view toml_text, std::string_view origin,
                                         const config::MachineConfig& m,

@@ -87,6 +87,22 @@ Result<RunResult> Simulator::run(const interp::Setup& setup, const RunOptions& o
   plant.for_each_signal([&](const canon::SignalAddr& a, bool on) { k.preset_signal(a, on); });
   ProbeSafety safety(m_, p_, plant, opts.commands);
   Router router(k, &safety);
+  // Machine lock and Z-axis cancel (operator switches kept as parameters):
+  // the locked axes do not move, the command does.
+  AxisMask locked;
+  if (d_.sw.machine_lock_param != 0 && p_.get(d_.sw.machine_lock_param) != 0.0) {
+    for (int i = 0; i < m_.axis_count(); ++i) locked.set(i);
+  }
+  if (d_.sw.z_cancel_param != 0 && p_.get(d_.sw.z_cancel_param) != 0.0 && m_.axis_index('Z') >= 0) {
+    locked.set(m_.axis_index('Z'));
+  }
+  k.set_locked_axes(locked);
+  plant.set_locked(locked);
+  kernel::OperatorState op;
+  op.dry_run_feed_mm_min =
+      d_.sw.dry_run_feed_param != 0 ? p_.get(d_.sw.dry_run_feed_param) * (m_.inch_machine ? 25.4 : 1.0)
+                                    : 0.0;
+  std::size_t next_action = 0;  // scene [[operator]] actions not yet applied
 
   const int n = m_.axis_count();
   kernel::TickInput tin;
@@ -121,8 +137,26 @@ Result<RunResult> Simulator::run(const interp::Setup& setup, const RunOptions& o
     }
     if (res.status != RunStatus::kCompleted) break;
 
+    // The operator's actions due by the start of this period.
+    if (next_action < scene_.operator_actions.size()) {
+      const double t0 = k.clock().seconds(k.now());
+      bool changed = false;
+      for (; next_action < scene_.operator_actions.size() &&
+             scene_.operator_actions[next_action].at_time_s <= t0 + 1e-12;
+           ++next_action) {
+        const OperatorAction& a = scene_.operator_actions[next_action];
+        if (a.feed_hold) op.feed_hold = *a.feed_hold;
+        if (a.interlock) op.interlock = *a.interlock;
+        if (a.override_pct) op.override_pct = *a.override_pct;
+        if (a.dry_run) op.dry_run = *a.dry_run;
+        changed = true;
+      }
+      if (changed) k.set_operator(op);
+    }
+
     // One servo period.
     const AxisVec& cmd = tout.commanded;
+    plant.set_torque_limit(tout.torque_limit_pct);
     plant.advance(k.now() + 1, cmd_prev, cmd, tin);
     cmd_prev = cmd;
     k.tick(tin, tout);
@@ -136,6 +170,8 @@ Result<RunResult> Simulator::run(const interp::Setup& setup, const RunOptions& o
       r.feed_mm_per_min = tout.path_speed * 60.0;
       r.line = tout.line;
       r.plant = &plant;
+      r.handshake = tout.handshake;
+      r.handshake_names = d_.handshake.empty() ? nullptr : &d_.handshake;
       opts.trace->row(r);
     }
     // Tool changes, probe crash, collision, probe protection.
@@ -144,6 +180,22 @@ Result<RunResult> Simulator::run(const interp::Setup& setup, const RunOptions& o
       res.alarm_position = s->machine_position;
       break;
     }
+    // Excess following error: an axis held by a stop while the command runs
+    // on (a torque limit skip with no torque limit commanded) ends in a servo
+    // alarm, beyond any lag the axis shows at its rapid rate.
+    for (int i = 0; i < n && res.status == RunStatus::kCompleted; ++i) {
+      const auto& a = m_.axes[static_cast<std::size_t>(i)];
+      if (a.kp_per_s <= 0.0 || locked.has(i)) continue;
+      const double limit = 1.5 * a.rapid_mm_min / 60.0 / a.kp_per_s + 1.0;
+      const double fe = cmd_prev[i] - plant.actual()[i];
+      if (std::fabs(fe) > limit) {
+        alarm(Error{AlarmId::kServoExcessError,
+                    std::string("axis ") + a.name + ": following error " + std::to_string(fe) +
+                        " mm exceeds " + std::to_string(limit) + " mm",
+                    SourceLoc{file, tout.line, 1}, -1});
+      }
+    }
+    if (res.status != RunStatus::kCompleted) break;
     for (int i = 0; i < n; ++i) {
       const auto& a = m_.axes[static_cast<std::size_t>(i)];
       const double c = tout.commanded[i];

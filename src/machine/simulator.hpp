@@ -28,6 +28,8 @@ struct TraceRow {
   double feed_mm_per_min = 0.0;
   std::uint32_t line = 0;
   const Plant* plant = nullptr;  // signal levels
+  kernel::SkipHandshake handshake;  // the skip block's handshake
+  const config::SkipHandshakeNames* handshake_names = nullptr;  // null: not shown
 };
 
 class TraceSink {

@@ -165,7 +165,7 @@ Result<void> CsvTrace::open() {
 
 void CsvTrace::header(const machine::TraceRow& r) {
   buf_ += "time_s,line,feed_mm_min";
-  for (const char* kind : {"cmd", "act", "torque"}) {
+  for (const char* kind : {"cmd", "act", "ferr", "torque"}) {
     for (const auto& a : m_.axes) {
       buf_ += ',';
       buf_ += a.name;
@@ -177,6 +177,13 @@ void CsvTrace::header(const machine::TraceRow& r) {
     for (std::size_t i = 0; i < r.plant->signal_count(); ++i) {
       buf_ += ',';
       buf_ += config::signal_name(r.plant->signal_addr(i));
+    }
+  }
+  if (r.handshake_names != nullptr) {
+    for (const std::string* name : {&r.handshake_names->active, &r.handshake_names->skip,
+                                    &r.handshake_names->recorded, &r.handshake_names->done}) {
+      buf_ += ',';
+      buf_ += *name;
     }
   }
   buf_ += '\n';
@@ -207,7 +214,8 @@ void CsvTrace::row(const machine::TraceRow& r) {
   buf_ += ',';
   append_number(buf_, r.feed_mm_per_min);
   const int n = m_.axis_count();
-  for (const AxisVec* v : {r.commanded, r.actual, r.torque}) {
+  const AxisVec ferr = *r.commanded - *r.actual;  // following error
+  for (const AxisVec* v : {r.commanded, r.actual, &ferr, r.torque}) {
     for (int i = 0; i < n; ++i) {
       buf_ += ',';
       append_number(buf_, (*v)[i]);
@@ -216,6 +224,11 @@ void CsvTrace::row(const machine::TraceRow& r) {
   if (r.plant != nullptr) {
     for (std::size_t i = 0; i < r.plant->signal_count(); ++i) {
       buf_ += r.plant->signal_level(i) ? ",1" : ",0";
+    }
+  }
+  if (r.handshake_names != nullptr) {
+    for (bool b : {r.handshake.active, r.handshake.skip, r.handshake.recorded, r.handshake.done}) {
+      buf_ += b ? ",1" : ",0";
     }
   }
   buf_ += '\n';

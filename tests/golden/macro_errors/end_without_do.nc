@@ -1,4 +1,0 @@
-(END without its DO: alarm 124)
-#1=1
-END1
-M30

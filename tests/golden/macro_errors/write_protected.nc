@@ -1,3 +1,0 @@
-(Positions cannot be written: alarm 116)
-#5021=1.
-M30
