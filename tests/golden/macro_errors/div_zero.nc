@@ -1,0 +1,4 @@
+(Division by zero: alarm 112)
+#1=0
+#2=10/#1
+M30

@@ -1,0 +1,5 @@
+(More than ten I J K sets: alarm 129)
+G65 P8100 I1.I2.I3.I4.I5.I6.I7.I8.I9.I10.I11.
+M30
+O8100
+M99

@@ -1,0 +1,4 @@
+(A negative variable number: alarm 115)
+#1=-3
+#2=#[#1]
+M30

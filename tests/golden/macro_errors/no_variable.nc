@@ -1,0 +1,3 @@
+(#200 is not a variable of this control: alarm 115)
+#1=#200
+M30

@@ -1,0 +1,8 @@
+(DO 1 inside DO 1: alarm 126)
+WHILE[#1LT2]DO1
+WHILE[#2LT2]DO1
+#2=#2+1
+END1
+#1=#1+1
+END1
+M30
