@@ -94,7 +94,8 @@ Result<void> Interpreter::Impl::collect_words(Words& words) {
       const bool length = axis_of_letter[static_cast<std::size_t>(w.letter - 'A')] >= 0 ||
                           w.letter == 'I' || w.letter == 'J' || w.letter == 'K' ||
                           w.letter == 'R' || w.letter == 'Q';
-      word_round_increment = length ? (modal.units == Units::kInch ? 0.0001 : 0.001) : 0.0;
+      const double word_inc = modal.units == Units::kInch ? 0.0001 : 0.001;
+      word_round_increment = length ? word_inc : 0.0;
       auto e = eval(w.expr);
       word_round_increment = 0.0;
       if (!e) return std::unexpected(e.error());
@@ -104,6 +105,12 @@ Result<void> Interpreter::Impl::collect_words(Words& words) {
                     loc(w.column));
       }
       v.value = e->v;
+      // A computed length is rounded to the address's least input increment,
+      // as the control does (#1 = 12.3456, X#1 -> X12.346); macro arguments
+      // keep their value.
+      if (length && !call_block) {
+        v.value = std::round(v.value / word_inc) * word_inc + 0.0;
+      }
     } else {
       v.value = w.value;
     }
