@@ -127,6 +127,7 @@ Result<Step> Interpreter::Impl::step(CommandSink& out) {
             continue;
           }
         }
+        if (frames.size() == 1 && f.program == 0) f.program = blk.o;  // #4115 of the main program
         continue;
       }
       if (blk.empty()) {
@@ -165,6 +166,7 @@ Result<Step> Interpreter::Impl::execute(CommandSink& out) {
                   std::string("NC address ") + w.letter + " and a macro statement in one block",
                   loc(w.column));
     }
+    if (blk.has_n) modal.seq = static_cast<int>(blk.n % 100000000);  // #4114
     return execute_statement(out);
   }
   Words words;
