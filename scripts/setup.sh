@@ -4,7 +4,9 @@
 set -euo pipefail
 pkgs=(cmake ninja-build g++ pkg-config libfmt-dev libcli11-dev libtomlplusplus-dev
       nlohmann-json3-dev libgtest-dev libgmock-dev librapidcheck-dev libbenchmark-dev
-      python3)
+      python3
+      # the plot page test (tests/browser/plot_page_test.py): headless Chromium
+      chromium)
 missing=()
 for p in "${pkgs[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

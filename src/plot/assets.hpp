@@ -1,4 +1,4 @@
-// The page's script and styles (src/plot/assets/), compiled in by
+// The page's script (plot_*.js, joined) and styles (src/plot/assets/), compiled in by
 // src/plot/embed_assets.cmake so that the page needs no network.
 #pragma once
 

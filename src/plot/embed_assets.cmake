@@ -1,7 +1,12 @@
-# Writes OUT: a C++ file with src/plot/assets/plot.js and plot.css as
-# string literals (the HTML page inlines them; nothing is fetched).
+# Writes OUT: a C++ file with the page's script (src/plot/assets/plot_*.js,
+# joined in the order below) and styles (plot.css) as string literals; the
+# HTML page inlines them, nothing is fetched.
 # Usage: cmake -DOUT=<file> -DDIR=<src/plot/assets> -P embed_assets.cmake
-file(READ ${DIR}/plot.js js)
+set(js "")
+foreach(part core views scope page)
+  file(READ ${DIR}/plot_${part}.js content)
+  string(APPEND js "${content}")
+endforeach()
 file(READ ${DIR}/plot.css css)
 string(FIND "${js}" ")skipnc_asset\"" bad_js)
 string(FIND "${css}" ")skipnc_asset\"" bad_css)

@@ -1,5 +1,5 @@
 // The page: the model as JSON inside a <script type="application/json">, and
-// the script and styles that draw it (assets/plot.js, assets/plot.css,
+// the script and styles that draw it (assets/plot_*.js, assets/plot.css,
 // compiled in by src/plot/embed_assets.cmake). Nothing is fetched.
 #include <fmt/format.h>
 

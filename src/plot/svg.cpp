@@ -22,7 +22,7 @@ constexpr double kMargin = 16;
 constexpr double kCellW = 500, kCellH = 380, kGap = 12;
 constexpr double kHeaderH = 64;
 
-void draw_path(Svg& o, const PlotModel& m, const ViewDef& v, const Frame& f) {
+void draw_path(Svg& o, const PlotModel& m, const ViewDef& v, const Frame& f, LabelPlacer& labels) {
   // One <path> per kind, rapids under feeds under skips.
   for (const auto kind : {MoveKind::kRapid, MoveKind::kFeed, MoveKind::kSkip}) {
     std::string d;
@@ -36,6 +36,7 @@ void draw_path(Svg& o, const PlotModel& m, const ViewDef& v, const Frame& f) {
       add(b.to);
       pts = simplify(pts, 0.3);
       if (pts.size() == 2 && std::hypot(pts[0].x - pts[1].x, pts[0].y - pts[1].y) < 0.05) continue;
+      for (std::size_t i = 1; i < pts.size(); ++i) labels.line(pts[i - 1], pts[i]);
       append_path(d, pts);
     }
     if (d.empty()) continue;
@@ -46,8 +47,16 @@ void draw_path(Svg& o, const PlotModel& m, const ViewDef& v, const Frame& f) {
   }
 }
 
+struct LabelRequest {
+  Pt anchor;
+  std::string text;
+  const char* colour;
+  const char* cls;
+};
+
 void draw_shapes(Svg& o, const PlotModel& m, const ViewDef& v, const Frame& f,
-                 std::vector<std::string>& notes, LabelPlacer& labels) {
+                 std::vector<std::string>& notes, LabelPlacer& labels,
+                 std::vector<LabelRequest>& requests) {
   for (const auto& s : m.shapes) {
     if (s.normal_axis >= 0 && s.normal_axis == v.look_axis) {
       if (!s.note.empty()) notes.push_back(s.note);
@@ -75,20 +84,21 @@ void draw_shapes(Svg& o, const PlotModel& m, const ViewDef& v, const Frame& f,
           st.name, d, st.stroke, st.width, s.kind == Shape::Kind::kPolygon ? st.fill : "none",
           v.look_axis < 0 ? 0.05 : 0.10, v.look_axis < 0 ? 0.6 : 1.0);
     }
+    if (s.kind == Shape::Kind::kSegments) {
+      for (std::size_t i = 0; i + 1 < pts.size(); i += 2) labels.line(pts[i], pts[i + 1]);
+    } else {
+      for (std::size_t i = 1; i < pts.size(); ++i) labels.line(pts[i - 1], pts[i]);
+      if (s.kind == Shape::Kind::kPolygon && pts.size() > 2) labels.line(pts.back(), pts.front());
+    }
     if (!s.label.empty() && !pts.empty()) {
-      // Beside the right-most corner of the shape, clear of other labels.
+      // Beside the right-most corner of the shape (the top one of equals).
       const Pt* r = &pts[0];
       for (const auto& p : pts) {
         if (p.x > r->x + 0.5 || (std::fabs(p.x - r->x) <= 0.5 && p.y < r->y)) r = &p;
       }
-      const double w = text_width(s.label, 11);
-      bool leader = false;
-      const Box2 b = labels.place(std::min(r->x, f.x + f.w - 4),
-                                  std::clamp(r->y, f.y + 8, f.y + f.h - 8), w, 13, leader);
-      o.add(
-          "<text class=\"shape-label\" x=\"{:.1f}\" y=\"{:.1f}\" fill=\"{}\" font-size=\"11\" "
-          "{}>{}</text>\n",
-          b.x, b.y + 10.5, st.stroke, kHalo, esc(s.label));
+      requests.push_back(
+          LabelRequest{Pt{std::min(r->x, f.x + f.w - 4), std::clamp(r->y, f.y + 8, f.y + f.h - 8)},
+                       s.label, st.stroke, "shape-label"});
     }
   }
 }
@@ -147,46 +157,21 @@ void draw_ticks(Svg& o, const ViewDef& v, const Frame& f) {
       f.x - 44, f.y + f.h + 26, v.u_name, v.v_name);
 }
 
-void draw_markers(Svg& o, const PlotModel& m, const ViewDef& v, const Frame& f,
-                  LabelPlacer& labels) {
+void draw_markers(Svg& o, const PlotModel& m, const ViewDef& v, const Frame& f, LabelPlacer& labels,
+                  const std::vector<LabelRequest>& shape_labels) {
   auto P = [&](const Vec3& p) { return Pt{f.px(dot(p, v.u)), f.py(dot(p, v.v))}; };
   // Programmed end points that the skip did not reach.
   for (const auto& s : m.skips) {
     if (!s.has_target || !s.triggered) continue;
     const Pt a = P(s.rest), b = P(s.target);
     if (std::hypot(a.x - b.x, a.y - b.y) < 1.0) continue;
+    labels.line(a, b);
     o.add(
         "<path class=\"target\" d=\"M{:.1f} {:.1f}L{:.1f} {:.1f}M{:.1f} {:.1f}l6 6m0 -6l-6 6\" "
         "{}/>\n",
         a.x, a.y, b.x, b.y, b.x - 3, b.y - 3, stroke_attrs(Ink::kTarget));
   }
-  if (!m.path.empty()) {
-    const Pt s = P(m.path.front());
-    o.add(
-        "<path class=\"start-marker\" d=\"M{:.1f} {:.1f}l6 10h-12z\" stroke=\"{}\" fill=\"{}\" "
-        "stroke-width=\"1.5\"><title>start</title></path>\n",
-        s.x, s.y - 6, ink(Ink::kStart).stroke, ink(Ink::kStart).fill);
-  }
-  for (const auto& s : m.skips) {
-    const Pt r = P(s.rest);
-    o.add(
-        "<rect class=\"rest-marker\" data-skip=\"{}\" x=\"{:.1f}\" y=\"{:.1f}\" width=\"8\" "
-        "height=\"8\" "
-        "stroke=\"{}\" fill=\"{}\" stroke-width=\"{}\"><title>{}</title></rect>\n",
-        s.index, r.x - 4, r.y - 4, ink(Ink::kRest).stroke, ink(Ink::kRest).fill,
-        ink(Ink::kRest).width, esc(s.rest_label));
-  }
-  for (const auto& s : m.skips) {
-    const Pt p = P(s.latch);
-    const Ink ik = s.triggered ? Ink::kLatch : Ink::kMiss;
-    o.add(
-        "<circle class=\"skip-marker {}\" data-skip=\"{}\" data-line=\"{}\" cx=\"{:.2f}\" "
-        "cy=\"{:.2f}\" "
-        "r=\"5\" stroke=\"{}\" fill=\"{}\" stroke-width=\"{}\"><title>{}</title></circle>\n",
-        ink(ik).name, s.index, s.line, p.x, p.y, ink(ik).stroke, ink(ik).fill, ink(ik).width,
-        esc(s.label));
-  }
-  // Labels after the markers, so that they can be placed around all of them.
+  // Labels: the skip points first, then the scene's; the markers go on top.
   auto label = [&](const Pt& a, const std::string& text, const char* colour, const char* cls) {
     bool leader = false;
     const double w = text_width(text, 11);
@@ -202,6 +187,32 @@ void draw_markers(Svg& o, const PlotModel& m, const ViewDef& v, const Frame& f,
   };
   for (const auto& s : m.skips) label(P(s.latch), s.label, "#b0005f", "latch-label");
   for (const auto& s : m.skips) label(P(s.rest), s.rest_label, "#111", "rest-label");
+  for (const auto& r : shape_labels) label(r.anchor, r.text, r.colour, r.cls);
+  if (!m.path.empty()) {
+    const Pt s = P(m.path.front());
+    o.add(
+        "<path class=\"start-marker\" d=\"M{:.1f} {:.1f}l6 10h-12z\" stroke=\"{}\" fill=\"{}\" "
+        "stroke-width=\"1.5\"><title>start</title></path>\n",
+        s.x, s.y - 6, ink(Ink::kStart).stroke, ink(Ink::kStart).fill);
+  }
+  for (const auto& s : m.skips) {
+    const Pt r = P(s.rest);
+    o.add(
+        "<rect class=\"rest-marker\" data-skip=\"{}\" x=\"{:.1f}\" y=\"{:.1f}\" width=\"8\" "
+        "height=\"8\" stroke=\"{}\" fill=\"{}\" stroke-width=\"{}\"><title>{}</title></rect>\n",
+        s.index, r.x - 4, r.y - 4, ink(Ink::kRest).stroke, ink(Ink::kRest).fill,
+        ink(Ink::kRest).width, esc(s.rest_label));
+  }
+  for (const auto& s : m.skips) {
+    const Pt p = P(s.latch);
+    const Ink ik = s.triggered ? Ink::kLatch : Ink::kMiss;
+    o.add(
+        "<circle class=\"skip-marker {}\" data-skip=\"{}\" data-line=\"{}\" cx=\"{:.2f}\" "
+        "cy=\"{:.2f}\" r=\"5\" stroke=\"{}\" fill=\"{}\" stroke-width=\"{}\"><title>{}</title>"
+        "</circle>\n",
+        ink(ik).name, s.index, s.line, p.x, p.y, ink(ik).stroke, ink(ik).fill, ink(ik).width,
+        esc(s.label));
+  }
 }
 
 void draw_view(Svg& o, const PlotModel& m, const ViewDef& v, double x, double y) {
@@ -228,9 +239,10 @@ void draw_view(Svg& o, const PlotModel& m, const ViewDef& v, double x, double y)
       labels.block(Box2{f.px(dot(p, v.u)) - 6, f.py(dot(p, v.v)) - 6, 12, 12});
     }
   }
-  draw_shapes(o, m, v, f, notes, labels);
-  draw_path(o, m, v, f);
-  draw_markers(o, m, v, f, labels);
+  std::vector<LabelRequest> shape_labels;
+  draw_shapes(o, m, v, f, notes, labels, shape_labels);
+  draw_path(o, m, v, f, labels);
+  draw_markers(o, m, v, f, labels, shape_labels);
   o.add("</g>\n");
   if (!notes.empty()) {
     // One line in the title row: planes this view looks straight at.

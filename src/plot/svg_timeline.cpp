@@ -66,7 +66,9 @@ double draw_timeline(Svg& o, const PlotModel& m, double x, double y, double w) {
     o.add("<rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\" fill=\"#fff\" stroke=\"#d0d0d0\"/>\n",
           px0, sy, pw, h);
     if (!c.digital) {
-      const double step = nice_step(vhi - vlo, 3);
+      // Tick labels at least 16 px apart.
+      double step = nice_step(vhi - vlo, 3);
+      for (int g = 0; g < 40 && step / (vhi - vlo) * h < 16; ++g) step = next_nice_step(step);
       const int dec = step < 1 ? static_cast<int>(std::ceil(-std::log10(step))) : 0;
       std::string grid;
       for (double v = std::ceil(vlo / step) * step; v <= vhi; v += step) {

@@ -42,6 +42,13 @@ double nice_step(double span, int target) {
   return (m < 1.5 ? 1.0 : m < 3.5 ? 2.0 : m < 7.5 ? 5.0 : 10.0) * p;
 }
 
+double next_nice_step(double step) {
+  if (!(step > 0.0) || !std::isfinite(step)) return 1.0;
+  const double p = std::pow(10.0, std::floor(std::log10(step) + 1e-9));
+  const double m = step / p;
+  return (m < 1.5 ? 2.0 : m < 3.5 ? 5.0 : 10.0) * p;
+}
+
 namespace {
 
 double seg_dist(const Pt& p, const Pt& a, const Pt& b) {
@@ -85,6 +92,43 @@ std::vector<Pt> simplify(const std::vector<Pt>& pts, double tol) {
   return out;
 }
 
+constexpr double kCell = 6.0;
+
+LabelPlacer::LabelPlacer(Box2 clip)
+    : clip_(clip),
+      cols_(std::max(1, static_cast<int>(std::ceil(clip.w / kCell)))),
+      rows_(std::max(1, static_cast<int>(std::ceil(clip.h / kCell)))),
+      grid_(static_cast<std::size_t>(cols_) * static_cast<std::size_t>(rows_), 0) {}
+
+void LabelPlacer::line(Pt a, Pt b) {
+  const double len = std::hypot(b.x - a.x, b.y - a.y);
+  const int n = static_cast<int>(std::min(2000.0, std::ceil(len / (kCell / 2))));
+  for (int i = 0; i <= n; ++i) {
+    const double f = n > 0 ? static_cast<double>(i) / n : 0.0;
+    const double cx = std::floor((a.x + (b.x - a.x) * f - clip_.x) / kCell);
+    const double cy = std::floor((a.y + (b.y - a.y) * f - clip_.y) / kCell);
+    if (cx < 0 || cy < 0 || cx >= cols_ || cy >= rows_) continue;
+    grid_[static_cast<std::size_t>(cy) * static_cast<std::size_t>(cols_) +
+          static_cast<std::size_t>(cx)] = 1;
+  }
+}
+
+bool LabelPlacer::on_line(const Box2& b) const {
+  const int x0 = std::max(0, static_cast<int>(std::floor((b.x - clip_.x) / kCell)));
+  const int x1 = std::min(cols_ - 1, static_cast<int>(std::floor((b.x + b.w - clip_.x) / kCell)));
+  const int y0 = std::max(0, static_cast<int>(std::floor((b.y - clip_.y) / kCell)));
+  const int y1 = std::min(rows_ - 1, static_cast<int>(std::floor((b.y + b.h - clip_.y) / kCell)));
+  for (int y = y0; y <= y1; ++y) {
+    for (int x = x0; x <= x1; ++x) {
+      if (grid_[static_cast<std::size_t>(y) * static_cast<std::size_t>(cols_) +
+                static_cast<std::size_t>(x)] != 0) {
+        return true;
+      }
+    }
+  }
+  return false;
+}
+
 Box2 LabelPlacer::place(double ax, double ay, double w, double h, bool& leader) {
   struct Cand {
     double dx, dy;
@@ -105,11 +149,12 @@ Box2 LabelPlacer::place(double ax, double ay, double w, double h, bool& leader) 
     b.y = std::clamp(b.y, clip_.y + 2, std::max(clip_.y + 2, clip_.y + clip_.h - b.h - 2));
     return b;
   };
-  for (std::size_t i = 0; i < cands.size(); ++i) {
-    const Box2 b = clamp_box(Box2{ax + cands[i].dx, ay + cands[i].dy, w, h});
-    const bool free =
-        std::none_of(used_.begin(), used_.end(), [&](const Box2& u) { return u.overlaps(b); });
-    if (free) {
+  for (int pass = 0; pass < 2; ++pass) {
+    for (std::size_t i = 0; i < cands.size(); ++i) {
+      const Box2 b = clamp_box(Box2{ax + cands[i].dx, ay + cands[i].dy, w, h});
+      if (std::any_of(used_.begin(), used_.end(), [&](const Box2& u) { return u.overlaps(b); }))
+        continue;
+      if (pass == 0 && on_line(b)) continue;
       used_.push_back(b);
       leader = i >= near;
       return b;

@@ -1,6 +1,6 @@
 // Screen geometry for the SVG writer: fitting a view to a rectangle, tick
 // steps, line simplification and label placement. The page's script does
-// the same with the same rules (assets/plot.js).
+// the same with the same rules (assets/plot_views.js).
 #pragma once
 
 #include <string>
@@ -30,6 +30,8 @@ Frame fit_view(const ViewDef& v, const Box3& extent, double x, double y, double 
 
 // A round step (1, 2 or 5 x 10^n) giving about `target` intervals over span.
 double nice_step(double span, int target);
+// The next larger round step: 1 -> 2 -> 5 -> 10 (x 10^n).
+double next_nice_step(double step);
 
 struct Pt {
   double x = 0, y = 0;
@@ -45,18 +47,24 @@ struct Box2 {
   }
 };
 
-// Greedy label placement: the first candidate position around the anchor
-// that overlaps nothing placed so far and stays inside `clip`.
+// Greedy label placement: beside the anchor, then on rings further out
+// (with a leader line). A place that covers no other label and no drawn line
+// wins, then one that covers no label. Lines are kept in a grid of 6 px cells.
 class LabelPlacer {
  public:
-  explicit LabelPlacer(Box2 clip) : clip_(clip) {}
+  explicit LabelPlacer(Box2 clip);
   void block(Box2 b) { used_.push_back(b); }
+  // Marks the cells a drawn line crosses.
+  void line(Pt a, Pt b);
   // Top-left of the label box; `leader` is true when it sits away from the anchor.
   Box2 place(double ax, double ay, double w, double h, bool& leader);
 
  private:
+  bool on_line(const Box2& b) const;
   Box2 clip_;
   std::vector<Box2> used_;
+  int cols_ = 1, rows_ = 1;
+  std::vector<unsigned char> grid_;
 };
 
 // Approximate width of a text in px (sans-serif).

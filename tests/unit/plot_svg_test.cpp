@@ -1,0 +1,238 @@
+// Issue 9: `skipnc run --plot` / `skipnc plot` write an SVG that is valid XML
+// (checked with python3's xml module) with one skip marker per skip of the
+// report in every view, placed where the report's latch and rest positions
+// project; and an HTML page that fetches nothing.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "support/run_cli.hpp"
+
+namespace skipnc {
+namespace {
+
+using nlohmann::json;
+using test::read_file;
+using test::run_cli;
+using test::TempDir;
+
+// Probing a bore in X+, Y+, X-, Y-, then the floor; the scene has a trigger
+// plane for each touch and a rigid stop under the floor.
+constexpr const char* kProgram = R"(%
+O0100 (PROBE A BORE)
+G21 G90 G17 G54
+G0 X0 Y0 Z5.
+G1 Z-5. F1000.
+G31 X60. F300.
+G0 X0
+G31 Y60. F300.
+G0 Y0
+G31 X-60. F300.
+G0 X0
+G31 Y-60. F300.
+G0 Y0
+G1 X10. F800.
+G3 X10. Y0 I-10. J0
+G1 X0
+G31 Z-30. F100.
+G0 Z5.
+M30
+%
+)";
+
+constexpr const char* kScene = R"(
+[[trigger]]
+signal = "X0.4"
+axis = "X"
+at = 40.0
+direction = "increasing"
+[[trigger]]
+signal = "X0.4"
+axis = "Y"
+at = 30.0
+direction = "increasing"
+[[trigger]]
+signal = "X0.4"
+axis = "X"
+at = -40.0
+direction = "decreasing"
+[[trigger]]
+signal = "X0.4"
+axis = "Y"
+at = -30.0
+direction = "decreasing"
+[[trigger]]
+signal = "X0.4"
+axis = "Z"
+at = -12.0
+direction = "decreasing"
+[[stop]]
+axis = "Z"
+at = -12.5
+direction = "decreasing"
+)";
+
+// Parses the SVG with ElementTree (an XML error fails the script) and prints
+// each view's frame and its skip and rest markers as JSON.
+constexpr const char* kSvgReader = R"(
+import json, sys
+import xml.etree.ElementTree as ET
+NS = '{http://www.w3.org/2000/svg}'
+root = ET.parse(sys.argv[1]).getroot()
+out = {'views': {}, 'zooms': 0}
+for g in root.iter(NS + 'g'):
+    cls = g.get('class', '')
+    if cls == 'latch-zoom':
+        out['zooms'] += 1
+    if cls != 'view':
+        continue
+    v = {'frame': [float(x) for x in g.get('data-frame').split()], 'skip': [], 'rest': []}
+    for c in g.iter(NS + 'circle'):
+        if 'skip-marker' in c.get('class', '').split():
+            v['skip'].append([int(c.get('data-skip')), float(c.get('cx')), float(c.get('cy'))])
+    for r in g.iter(NS + 'rect'):
+        if r.get('class') == 'rest-marker':
+            v['rest'].append([int(r.get('data-skip')), float(r.get('x')) + 4, float(r.get('y')) + 4])
+    out['views'][g.get('id')[5:]] = v
+print(json.dumps(out))
+)";
+
+struct Proj {
+  double u[3];
+  double v[3];
+};
+
+// The documented projections (docs/plot.md): top, front, side, and the
+// isometric view from +X -Y +Z.
+Proj projection(const std::string& id) {
+  const double a = 1.0 / std::sqrt(2.0), b = 1.0 / std::sqrt(6.0);
+  if (id == "xy") return {{1, 0, 0}, {0, 1, 0}};
+  if (id == "xz") return {{1, 0, 0}, {0, 0, 1}};
+  if (id == "yz") return {{0, 1, 0}, {0, 0, 1}};
+  return {{a, a, 0}, {-b, b, 2 * b}};
+}
+
+json read_svg(const TempDir& dir, const std::string& svg) {
+  const auto script = dir.write("svg_reader.py", kSvgReader);
+  const auto out_file = dir.path / "svg.json";
+  const std::string cmd = "python3 " + test::shell_quote(script.string()) + " " +
+                          test::shell_quote(svg) + " > " + test::shell_quote(out_file.string());
+  EXPECT_EQ(std::system(cmd.c_str()), 0) << "the SVG is not well-formed XML";
+  return json::parse(read_file(out_file));
+}
+
+// Checks that every view has one marker per skip, at the projection of the
+// report's machine position (latch) and of the rest position.
+void expect_markers_where_the_report_says(const json& svg, const json& report) {
+  const auto& skips = report["skips"];
+  ASSERT_EQ(svg["views"].size(), 4u);
+  for (const auto& [id, view] : svg["views"].items()) {
+    const auto f = view["frame"].get<std::vector<double>>();
+    const double mm_per_px = (f[1] - f[0]) / f[6];
+    const Proj p = projection(id);
+    auto px = [&](const json& pos) {
+      const double w[3] = {pos["X"].get<double>(), pos["Y"].get<double>(), pos["Z"].get<double>()};
+      const double u = p.u[0] * w[0] + p.u[1] * w[1] + p.u[2] * w[2];
+      const double v = p.v[0] * w[0] + p.v[1] * w[1] + p.v[2] * w[2];
+      return std::pair{f[4] + (u - f[0]) / mm_per_px, f[5] + (f[3] - v) / mm_per_px};
+    };
+    ASSERT_EQ(view["skip"].size(), skips.size()) << "view " << id;
+    ASSERT_EQ(view["rest"].size(), skips.size()) << "view " << id;
+    for (const auto& mk : view["skip"]) {
+      const auto& sk = skips[mk[0].get<std::size_t>()];
+      const auto [x, y] = px(sk["machine_position"]);
+      EXPECT_NEAR(mk[1].get<double>(), x, 0.02) << "view " << id << " skip line " << sk["line"];
+      EXPECT_NEAR(mk[2].get<double>(), y, 0.02) << "view " << id << " skip line " << sk["line"];
+    }
+    for (const auto& mk : view["rest"]) {
+      // Rest in machine coordinates: the work position plus the offsets in
+      // force at the latch (machine_position - position).
+      const auto& sk = skips[mk[0].get<std::size_t>()];
+      json rest;
+      for (const char* a : {"X", "Y", "Z"}) {
+        rest[a] = sk["end_position"][a].get<double>() + sk["machine_position"][a].get<double>() -
+                  sk["position"][a].get<double>();
+      }
+      const auto [x, y] = px(rest);
+      EXPECT_NEAR(mk[1].get<double>(), x, 0.11) << "view " << id << " rest of line " << sk["line"];
+      EXPECT_NEAR(mk[2].get<double>(), y, 0.11) << "view " << id << " rest of line " << sk["line"];
+    }
+  }
+}
+
+TEST(PlotSvg, ValidXmlWithOneMarkerPerSkipWhereTheReportSays) {
+  TempDir dir;
+  const auto prog = dir.write("bore.nc", kProgram);
+  const auto scene = dir.write("bore.toml", kScene);
+  const auto svg = (dir.path / "bore.svg").string();
+  const auto html = (dir.path / "bore.html").string();
+  const auto rep = (dir.path / "bore.json").string();
+  const auto r = run_cli({"run", prog.string(), "-s", scene.string(), "--report", rep, "--plot",
+                          svg, "--plot", html, "-q"});
+  ASSERT_EQ(r.exit_code, 0);
+  const json report = json::parse(read_file(rep));
+  ASSERT_EQ(report["skips"].size(), 5u);
+  const json s = read_svg(dir, svg);
+  expect_markers_where_the_report_says(s, report);
+  EXPECT_EQ(s["zooms"].get<int>(), 4) << "a zoom on the first four latches";
+}
+
+TEST(PlotSvg, PageFetchesNothingAndCarriesEverySkip) {
+  TempDir dir;
+  const auto prog = dir.write("bore.nc", kProgram);
+  const auto scene = dir.write("bore.toml", kScene);
+  const auto html = (dir.path / "bore.html").string();
+  const auto r = run_cli({"plot", prog.string(), "-s", scene.string(), "-o", html, "-q"});
+  ASSERT_EQ(r.exit_code, 0);
+  const std::string page = read_file(html);
+  for (const char* remote : {"http://", "https://", "<link", "src=", "@import", "//cdn"}) {
+    EXPECT_EQ(page.find(remote), std::string::npos) << remote;
+  }
+  const std::string open = "<script type=\"application/json\" id=\"plot-data\">";
+  const auto a = page.find(open);
+  ASSERT_NE(a, std::string::npos);
+  const auto b = page.find("</script>", a);
+  const json data = json::parse(page.substr(a + open.size(), b - a - open.size()));
+  EXPECT_EQ(data["format"], "skipnc-plot/1");
+  ASSERT_EQ(data["skips"].size(), 5u);
+  EXPECT_EQ(data["skips"][0]["line"], 6);
+  EXPECT_EQ(data["skips"][0]["vars"][0]["name"], "#5061");
+  EXPECT_NEAR(data["skips"][0]["vars"][0]["value"].get<double>(), 40.0, 1e-6);
+  EXPECT_EQ(data["source"].size(), 20u);  // the program, line by line
+}
+
+// Two minutes of slow feed end in a touch: the drawing holds a few hundred
+// samples, and the latch is still exactly where the report says.
+TEST(PlotSvg, LongRunIsThinnedWithoutLosingTheLatch) {
+  TempDir dir;
+  const auto prog = dir.write(
+      "long.nc", "G21 G90 G54\nG1 X100. Y50. F50.\nG1 X0 Y0\nG31 X300. F150.\nG0 X0\nM30\n");
+  const auto scene = dir.write("long.toml",
+                               "[[trigger]]\nsignal = \"X0.4\"\naxis = \"X\"\nat = 250.0\n"
+                               "direction = \"increasing\"\n");
+  const auto svg = (dir.path / "long.svg").string();
+  const auto html = (dir.path / "long.html").string();
+  const auto rep = (dir.path / "long.json").string();
+  const auto r = run_cli({"run", prog.string(), "-s", scene.string(), "--report", rep, "--plot",
+                          svg, "--plot", html, "-q"});
+  ASSERT_EQ(r.exit_code, 0);
+  const json report = json::parse(read_file(rep));
+  ASSERT_EQ(report["skips"].size(), 1u);
+  EXPECT_GT(report["final"]["time"].get<double>(), 200.0);
+  const json s = read_svg(dir, svg);
+  expect_markers_where_the_report_says(s, report);
+  EXPECT_LT(read_file(svg).size(), 400'000u);
+  EXPECT_LT(read_file(html).size(), 400'000u);
+}
+
+TEST(PlotSvg, UnknownPictureFormatIsAUsageError) {
+  TempDir dir;
+  const auto prog = dir.write("p.nc", "G0 X1.\nM30\n");
+  const auto r = run_cli({"run", prog.string(), "--plot", (dir.path / "p.png").string(), "-q"});
+  EXPECT_EQ(r.exit_code, 2);
+}
+
+}  // namespace
+}  // namespace skipnc
