@@ -291,6 +291,12 @@ void write_samples(Json& j, const PlotModel& m) {
     j.key("digital");
     j.raw(c.digital ? "true" : "false");
     j.raw(",");
+    j.key("flat");
+    j.raw(c.flat ? "true" : "false");
+    j.raw(",");
+    j.key("minSpan");
+    j.num(c.min_span);
+    j.raw(",");
     j.key("series");
     j.array(c.series, [&](const Series& s) {
       j.raw("{");

@@ -192,6 +192,17 @@ void build_channels(const PlotInput& in, PlotModel& pm) {
   per_axis("following_error", "Following error (command - actual)", "mm",
            [](const Sample& s, int i) { return s.cmd[i] - s.act[i]; });
   per_axis("torque", "Motor torque", "%", [](const Sample& s, int i) { return s.torque[i]; });
+  for (auto& c : pm.channels) {
+    c.min_span = c.unit == "mm" ? (c.id == "following_error" ? 0.001 : 0.01) : 1.0;
+    double lo = 1e300, hi = -1e300;
+    for (const auto& s : c.series) {
+      for (double v : s.v) {
+        lo = std::min(lo, v);
+        hi = std::max(hi, v);
+      }
+    }
+    c.flat = hi - lo < c.min_span;
+  }
   const auto& names = in.recorder->signal_names();
   for (std::size_t k = 0; k < names.size(); ++k) {
     Channel c{"signal_" + names[k], "Input " + names[k], "", true, {}};

@@ -136,6 +136,10 @@ struct Channel {
   std::string unit;
   bool digital = false;
   std::vector<Series> series;
+  // Every series stays within min_span over the whole run: drawn as a
+  // thin strip with its value.
+  bool flat = false;
+  double min_span = 1.0;  // smallest value range a strip is scaled to
 };
 
 struct PlotModel {

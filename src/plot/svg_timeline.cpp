@@ -12,6 +12,7 @@ namespace {
 
 double strip_height(const Channel& c) {
   if (c.digital) return 26;
+  if (c.flat) return 30;
   if (c.id.starts_with("pos_")) return 70;
   if (c.id == "following_error") return 100;
   return 80;
@@ -28,9 +29,8 @@ std::pair<double, double> value_range(const Channel& c) {
   if (lo > hi) return {-1, 1};
   // A channel that barely moves gets a fixed span, so that noise is not
   // blown up to full height.
-  const double min_span = c.unit == "mm" ? (c.id == "following_error" ? 0.001 : 0.01) : 1.0;
-  if (hi - lo < min_span) {
-    const double pad = std::max(std::fabs(hi) * 0.1, min_span), mid = 0.5 * (hi + lo);
+  if (hi - lo < c.min_span) {
+    const double pad = std::max(std::fabs(hi) * 0.1, c.min_span), mid = 0.5 * (hi + lo);
     return {mid - pad, mid + pad};
   }
   // Room at the top for the strip's title.
@@ -65,10 +65,16 @@ double draw_timeline(Svg& o, const PlotModel& m, double x, double y, double w) {
           vhi, sy, h);
     o.add("<rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\" fill=\"#fff\" stroke=\"#d0d0d0\"/>\n",
           px0, sy, pw, h);
-    if (!c.digital) {
-      // Tick labels at least 16 px apart.
+    if (c.flat) {
+      const double mid = 0.5 * (vlo + vhi);
+      o.add(
+          "<text x=\"{:.1f}\" y=\"{:.1f}\" font-size=\"10\" fill=\"#666\" "
+          "text-anchor=\"end\">{}</text>\n",
+          px0 - 4, Y(mid) + 3, num(mid, c.unit == "mm" ? 4 : 1));
+    } else if (!c.digital) {
+      // Tick labels at least 20 px apart.
       double step = nice_step(vhi - vlo, 3);
-      for (int g = 0; g < 40 && step / (vhi - vlo) * h < 16; ++g) step = next_nice_step(step);
+      for (int g = 0; g < 40 && step / (vhi - vlo) * h < 20; ++g) step = next_nice_step(step);
       const int dec = step < 1 ? static_cast<int>(std::ceil(-std::log10(step))) : 0;
       std::string grid;
       for (double v = std::ceil(vlo / step) * step; v <= vhi; v += step) {
@@ -116,7 +122,8 @@ double draw_timeline(Svg& o, const PlotModel& m, double x, double y, double w) {
     o.add(
         "<text x=\"{:.1f}\" y=\"{:.1f}\" font-size=\"11\" font-weight=\"bold\" fill=\"#333\" "
         "{}>{}{}</text>\n",
-        tx, sy + 12, kHalo, esc(c.title), c.unit.empty() ? "" : esc(" (" + c.unit + ")"));
+        tx, sy + 12, kHalo, esc(c.title),
+        esc((c.unit.empty() ? std::string() : " (" + c.unit + ")") + (c.flat ? ": constant" : "")));
     tx += text_width(c.title + " (" + c.unit + ")", 11) + 10;
     if (c.series.size() > 1) {
       for (const auto& s : c.series) {

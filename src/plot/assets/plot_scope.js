@@ -6,7 +6,7 @@
 
   // ---- timeline -----------------------------------------------------------
   function stripHeight(c) {
-    return c.digital ? 26 : c.id.slice(0, 4) === 'pos_' ? 70 : c.id === 'following_error' ? 100 : 80;
+    return c.digital ? 26 : c.flat ? 30 : c.id.slice(0, 4) === 'pos_' ? 70 : c.id === 'following_error' ? 100 : 80;
   }
   // Linear value of a series at time t.
   function valueAt(v, t) {
@@ -29,7 +29,7 @@
       for (var i = i0; i < i1; i++) { lo = Math.min(lo, s.v[i]); hi = Math.max(hi, s.v[i]); }
     });
     if (lo > hi) return [-1, 1];
-    var minSpan = c.unit === 'mm' ? (c.id === 'following_error' ? 0.001 : 0.01) : 1;
+    var minSpan = c.minSpan;
     if (hi - lo < minSpan) {
       var pad = Math.max(Math.abs(hi) * 0.1, minSpan), mid = (hi + lo) / 2;
       return [mid - pad, mid + pad];
@@ -100,9 +100,12 @@
       ctx.fillStyle = '#ffffff'; ctx.fillRect(tl.px0, y, tl.pw, h);
       ctx.strokeStyle = '#d0d0d0'; ctx.lineWidth = 1; ctx.setLineDash([]);
       ctx.strokeRect(tl.px0 + 0.5, y + 0.5, tl.pw - 1, h - 1);
-      if (!c.digital) {
-        var step = K.niceStep(rg[1] - rg[0], 3);  // tick labels at least 16 px apart
-        for (var g = 0; g < 40 && step / (rg[1] - rg[0]) * h < 16; g++) step = K.nextNiceStep(step);
+      if (c.flat) {
+        ctx.font = '10px ' + FONT; ctx.textAlign = 'right'; ctx.fillStyle = '#666';
+        ctx.fillText(K.num((rg[0] + rg[1]) / 2, c.unit === 'mm' ? 4 : 1), tl.px0 - 4, Y((rg[0] + rg[1]) / 2) + 3);
+      } else if (!c.digital) {
+        var step = K.niceStep(rg[1] - rg[0], 3);  // tick labels at least 20 px apart
+        for (var g = 0; g < 40 && step / (rg[1] - rg[0]) * h < 20; g++) step = K.nextNiceStep(step);
         ctx.font = '10px ' + FONT; ctx.textAlign = 'right'; ctx.fillStyle = '#666';
         ctx.strokeStyle = '#f0f0f0';
         ctx.beginPath();
@@ -129,7 +132,7 @@
       });
       ctx.restore();
       ctx.font = 'bold 11px ' + FONT; ctx.textAlign = 'left';
-      var title = c.title + (c.unit ? ' (' + c.unit + ')' : '');
+      var title = c.title + (c.unit ? ' (' + c.unit + ')' : '') + (c.flat ? ': constant' : '');
       K.haloText(ctx, title, tl.px0 + 6, y + 12, '#333');
       var tx = tl.px0 + 6 + ctx.measureText(title).width + 10;
       if (c.series.length > 1) {
