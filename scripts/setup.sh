@@ -6,7 +6,9 @@ pkgs=(cmake ninja-build g++ pkg-config libfmt-dev libcli11-dev libtomlplusplus-d
       nlohmann-json3-dev libgtest-dev libgmock-dev librapidcheck-dev libbenchmark-dev
       python3
       # the plot page test (tests/browser/plot_page_test.py): headless Chromium
-      chromium)
+      chromium
+      # the fuzz stage (scripts/fuzz.sh): libFuzzer, ASan and UBSan of clang 16
+      clang-16 libclang-rt-16-dev)
 missing=()
 for p in "${pkgs[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -2,6 +2,11 @@
 # Quick start 2: set up, build, and run every test: once in the release build,
 # once under AddressSanitizer + UndefinedBehaviorSanitizer.
 # SKIPNC_SKIP_ASAN=1 leaves out the sanitizer pass (faster local runs).
+# The fuzz stage (scripts/fuzz.sh: every libFuzzer harness for a bounded
+# time under ASan + UBSan) runs in CI (CI=true) or when SKIPNC_FUZZ=1;
+# SKIPNC_FUZZ_SECONDS sets the time of each harness (default 40: with two
+# harnesses at a time on two cores the stage, build included, stays within
+# about four minutes).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/setup.sh
@@ -13,4 +18,8 @@ if [ "${SKIPNC_SKIP_ASAN:-0}" != 1 ]; then
   scripts/build.sh asan
   (cd build-asan && ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
      ctest --output-on-failure -j"$(nproc)")
+fi
+if [ "${SKIPNC_FUZZ:-}" = 1 ] || { [ "${CI:-}" = true ] && [ "${SKIPNC_FUZZ:-}" != 0 ]; }; then
+  echo "== fuzz"
+  scripts/fuzz.sh "${SKIPNC_FUZZ_SECONDS:-40}"
 fi

@@ -12,7 +12,10 @@ Result<void> open_session(const SessionOptions& o, Session& s) {
   std::error_code ec;
   const bool is_file = o.machine.find('/') != std::string::npos || o.machine.ends_with(".toml") ||
                        std::filesystem::is_regular_file(o.machine, ec);
-  auto m = is_file ? config::load_machine_file(o.machine) : config::builtin_machine(o.machine);
+  s.machine_file = o.machine;
+  s.scene_file = o.scene;
+  auto m =
+      is_file ? config::load_machine_file(s.machine_file) : config::builtin_machine(s.machine_file);
   if (!m) return std::unexpected(m.error());
   s.machine = std::move(*m);
   const std::string dname = o.dialect.empty() ? s.machine.dialect : o.dialect;
@@ -39,7 +42,7 @@ Result<void> open_session(const SessionOptions& o, Session& s) {
   auto chk = config::check_skip_addresses(s.dialect, *s.params);
   if (!chk) return chk;
   if (!o.scene.empty()) {
-    auto sc = machine::load_scene_file(o.scene, s.machine, s.dialect, *s.params);
+    auto sc = machine::load_scene_file(s.scene_file, s.machine, s.dialect, *s.params);
     if (!sc) return std::unexpected(sc.error());
     s.scene = std::move(*sc);
   }
@@ -57,7 +60,8 @@ Result<VarRef> parse_var_ref(const std::string& text) {
   }
   auto r = std::from_chars(t.data(), t.data() + t.size(), v.number);
   if (r.ec != std::errc{} || r.ptr != t.data() + t.size() || v.number < 0) {
-    return fail(AlarmId::kUsage, "--var " + text + ": expected a variable number (5061, #5061) or #<name>");
+    return fail(AlarmId::kUsage,
+                "--var " + text + ": expected a variable number (5061, #5061) or #<name>");
   }
   return v;
 }

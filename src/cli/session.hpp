@@ -21,6 +21,10 @@ struct SessionOptions {
 };
 
 struct Session {
+  // The files as given: an error's location points into these, so they
+  // live as long as the session (not as long as the options).
+  std::string machine_file;
+  std::string scene_file;
   config::MachineConfig machine;
   config::Dialect dialect;
   std::unique_ptr<config::Parameters> params;
@@ -34,7 +38,7 @@ struct Session {
 
 // "#5061", "5061", "#<NC.SysVars.G31.LCS.X>" -> number or name.
 struct VarRef {
-  std::string key;   // as reported (without '#')
+  std::string key;  // as reported (without '#')
   int number = -1;
   std::string name;  // for #<name>
 };

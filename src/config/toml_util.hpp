@@ -1,11 +1,11 @@
 // Small helpers for strict TOML loading: every error names file:line:column.
 #pragma once
 
+#include <toml++/toml.h>
+
 #include <initializer_list>
 #include <string>
 #include <string_view>
-
-#include <toml++/toml.h>
 
 #include "core/diag.hpp"
 
@@ -36,8 +36,8 @@ inline std::unexpected<Error> config_error(const toml::node& n, std::string_view
         list += k;
       }
       return config_error(node, origin,
-                          "unknown key '" + std::string(key.str()) + "' in " +
-                              std::string(where) + " (known: " + list + ")");
+                          "unknown key '" + std::string(key.str()) + "' in " + std::string(where) +
+                              " (known: " + list + ")");
     }
   }
   return {};
@@ -70,9 +70,160 @@ inline std::unexpected<Error> config_error(const toml::node& n, std::string_view
   return config_error(n, origin, std::string(what) + " must be true or false");
 }
 
+// Debian's toml++ 3.3 has two faults that a malformed file reaches; both
+// are an assertion, or undefined behaviour with NDEBUG, instead of a parse
+// error (found by tests/fuzz/fuzz_machine and fuzz_scene; the inputs are
+// kept in tests/regression/):
+// - a table header whose name starts with another character than a
+//   bare-key character or a quote ("[&", "[+[axis]]", "[[[1]]]"):
+//   parse_key's precondition (upstream marzer/tomlplusplus#294);
+// - its whitespace test is wrong for most code points from U+00A1 to
+//   U+0499, U+2CDE to U+30D7 and U+FBC6 to U+FEFE (an unreachable branch of
+//   is_non_ascii_horizontal_whitespace); it runs on every character between
+//   tokens, on every character of a key (quoted ones too) and after a
+//   multi-line string's line-ending backslash.
+// This scan refuses both before toml++ sees the text, with the place: a
+// table name must start as TOML says, and a byte above 0x7F may stand only
+// in a comment or in a string value, not in a key and not first after a
+// line-ending backslash. No valid machine or scene file is refused: keys
+// of these files are ASCII names.
+[[nodiscard]] inline Result<void> precheck_toml(std::string_view text, std::string_view origin) {
+  auto bare = [](char c) {
+    return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_' ||
+           c == '-';
+  };
+  auto blank = [](char c) { return c == ' ' || c == '\t'; };
+  auto high = [](char c) { return static_cast<unsigned char>(c) >= 0x80; };
+  const std::size_t n = text.size();
+  std::size_t i = 0;
+  std::uint32_t line = 1;
+  std::size_t line_start = 0;
+  std::string open;         // the [ and { of the value being read, innermost last
+  bool line_begins = true;  // only blanks so far on this line
+  bool header = false;      // on a table header line: its brackets are not a value's
+  bool key = true;          // a string here is a key
+  auto refuse = [&](std::size_t at, const char* what) {
+    return fail(AlarmId::kConfig, what,
+                SourceLoc{origin, line, static_cast<std::uint32_t>(at - line_start + 1)});
+  };
+  auto newline = [&](std::size_t at) {
+    ++line;
+    line_start = at + 1;
+    line_begins = true;
+    header = false;
+  };
+  while (i < n) {
+    const char c = text[i];
+    if (c == '\n') {
+      newline(i++);
+      if (open.empty()) key = true;  // a new statement starts with its key
+      continue;
+    }
+    if (blank(c) || c == '\r') {
+      ++i;
+      continue;
+    }
+    if (line_begins && open.empty() && c == '[') {
+      // As toml++ reads a header: '[', blanks, a second '[' only right after
+      // the first ("[ [" is an error it reports), blanks, then the name.
+      std::size_t j = i + 1;
+      bool gap = false;
+      while (j < n && blank(text[j])) {
+        ++j;
+        gap = true;
+      }
+      if (j < n && text[j] == '[' && !gap) {
+        ++j;
+        gap = false;
+        while (j < n && blank(text[j])) ++j;
+      }
+      const bool reported = j >= n || text[j] == ']' || (text[j] == '[' && gap);
+      if (!reported && !bare(text[j]) && text[j] != '"' && text[j] != '\'') {
+        return refuse(j, "a table name must start with a letter, a digit, '_', '-' or a quote");
+      }
+      header = true;
+      key = true;
+      line_begins = false;
+      i = j;
+      continue;
+    }
+    line_begins = false;
+    if (high(c)) {
+      return refuse(i, "a character outside ASCII may only stand in a string value or a comment");
+    }
+    if (c == '#') {
+      while (i < n && text[i] != '\n') ++i;
+      continue;
+    }
+    if (c == '"' || c == '\'') {
+      const bool multi = i + 2 < n && text[i + 1] == c && text[i + 2] == c;
+      i += multi ? 3 : 1;
+      while (i < n) {
+        if (text[i] == '\n') {
+          if (!multi) break;  // an unclosed string: toml++ reports it
+          newline(i);
+          line_begins = false;
+        }
+        if (key && high(text[i])) {
+          return refuse(i, "a character outside ASCII in a key");
+        }
+        if (c == '"' && text[i] == '\\') {
+          std::size_t j = i + 1;
+          while (multi && j < n && (blank(text[j]) || text[j] == '\r' || text[j] == '\n')) {
+            if (text[j] == '\n') {
+              newline(j);
+              line_begins = false;
+            }
+            ++j;
+          }
+          // A line-ending backslash: toml++ tests each following character for
+          // whitespace, the first one that is not included.
+          if (j > i + 1) {
+            if (j < n && high(text[j])) {
+              return refuse(j, "a character outside ASCII right after a line-ending backslash");
+            }
+            i = j;
+          } else {
+            i += 2;  // an escaped character
+          }
+          continue;
+        }
+        if (text[i] == c && (!multi || (i + 2 < n && text[i + 1] == c && text[i + 2] == c))) {
+          i += multi ? 3 : 1;
+          // Up to two more quotes after a multi-line string's closing three
+          // belong to its text.
+          for (int extra = 0; multi && extra < 2 && i < n && text[i] == c; ++extra) ++i;
+          break;
+        }
+        ++i;
+      }
+      continue;
+    }
+    if (!header) {
+      if (c == '=') {
+        key = false;
+      } else if (c == '{') {
+        open += c;
+        key = true;
+      } else if (c == '[') {
+        open += c;
+        key = false;
+      } else if (c == ']' || c == '}') {
+        if (!open.empty()) open.pop_back();
+        key = false;
+      } else if (c == ',') {
+        key = !open.empty() && open.back() == '{';
+      }
+    }
+    ++i;
+  }
+  return {};
+}
+
 // Parses TOML text; a syntax error becomes a kConfig error with its position.
 [[nodiscard]] inline Result<toml::table> parse_toml(std::string_view text,
                                                     std::string_view origin) {
+  if (auto h = precheck_toml(text, origin); !h) return std::unexpected(h.error());
   toml::parse_result r = toml::parse(text, origin);
   if (!r) {
     const auto& e = r.error();

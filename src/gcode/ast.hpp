@@ -39,7 +39,13 @@ struct ExprNode {
   double value = 0.0;         // kNumber
   std::int32_t name = -1;     // kNamedVar
   std::uint32_t column = 0;   // 1-based column of the node's first character
+  std::uint16_t depth = 1;    // levels of the tree from this node down (<= kMaxExprDepth)
 };
+
+// Expression trees are at most this deep (operators, signs, brackets and
+// variable references counted together). Evaluation recurses over the tree;
+// the bound keeps its stack small whatever a block holds ("1+1+...+1").
+inline constexpr int kMaxExprDepth = 1000;
 
 // One address word: a letter and a value, either a literal number or an
 // expression (X#1, X[#1+2], X-#2, G#10).

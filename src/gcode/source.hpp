@@ -26,6 +26,7 @@ struct SourcePos {
   std::uint64_t offset = 0;
   std::uint32_t line = 1;
   std::uint32_t column = 1;
+  friend bool operator==(const SourcePos&, const SourcePos&) = default;
 };
 
 class Source {

@@ -125,7 +125,10 @@ Result<RunResult> Simulator::run(const interp::Setup& setup, const RunOptions& o
 
   for (;;) {
     // Feed the kernel until it is full or the interpreter must wait.
-    while (!waiting && !ending && k.can_accept() && !safety.holds_reading()) {
+    // A signal is heard between blocks too: a macro loop without motion
+    // runs many blocks within one period.
+    while (!waiting && !ending && k.can_accept() && !safety.holds_reading() &&
+           !(opts.interrupt != nullptr && opts.interrupt->load(std::memory_order_relaxed))) {
       auto st = in.step(router);
       if (!st) {
         program_alarm = st.error();
@@ -235,7 +238,7 @@ Result<RunResult> Simulator::run(const interp::Setup& setup, const RunOptions& o
     }
     if (k.now() >= m_.limits.max_ticks) {
       alarm(Error{AlarmId::kTimeLimit,
-                  "the run passed limits.max_time_s of simulated time", SourceLoc{file, in.line(), 1}, -1});
+                  "the run passed limits.max_time_s of simulated time", SourceLoc{file, tout.line, 1}, -1});
       break;
     }
     if (opts.interrupt != nullptr && opts.interrupt->load(std::memory_order_relaxed)) {

@@ -1,0 +1,97 @@
+// A long run stopped with SIGTERM or SIGINT still leaves a whole report that
+// says it was interrupted, and a whole trace up to the last servo period run
+// (issue 7, "data kept whole"). The run is the skipnc binary, as a user runs
+// it; the signal comes while it is busy.
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <string>
+#include <thread>
+
+#include "support/report_run.hpp"
+
+namespace skipnc::test {
+namespace {
+
+struct Interrupted {
+  ChildExit exit;
+  nlohmann::json report;
+  bool report_ok = false;
+  std::string trace;
+};
+
+// Starts `program`, lets it run for `after_s`, sends `sig`, waits.
+Interrupted interrupt(const TempDir& dir, const std::string& program, int sig, double after_s) {
+  const auto prog = dir.write("long.nc", program);
+  const auto report = dir.path / "report.json";
+  const auto trace = dir.path / "trace.csv";
+  Child c({"run", prog.string(), "--report", report.string(), "--trace", trace.string(), "-q"},
+          "/dev/null", (dir.path / "stderr.txt").string());
+  std::this_thread::sleep_for(std::chrono::duration<double>(after_s));
+  // The report must not exist before the run ends: it is written once, whole.
+  EXPECT_FALSE(std::filesystem::exists(report));
+  c.signal(sig);
+  Interrupted r;
+  r.exit = c.wait(10.0);
+  r.report = nlohmann::json::parse(read_file(report), nullptr, false);
+  r.report_ok = !r.report.is_discarded() && r.report.is_object();
+  r.trace = read_file(trace);
+  return r;
+}
+
+void expect_interrupted(const Interrupted& r) {
+  ASSERT_TRUE(r.exit.exited) << "ended by signal " << r.exit.signal;
+  EXPECT_FALSE(r.exit.timed_out) << "the signal did not stop the run";
+  EXPECT_EQ(r.exit.code, 1);
+  ASSERT_TRUE(r.report_ok);
+  EXPECT_EQ(r.report.value("format", ""), "skipnc-report/1");
+  EXPECT_EQ(r.report.value("status", ""), "interrupted");
+  ASSERT_TRUE(r.report["alarm"].is_object());
+  EXPECT_EQ(r.report["alarm"].value("code", ""), alarm_code(AlarmId::kInterrupted));
+  EXPECT_GT(r.report["final"]["time"].get<double>(), 0.0);
+  // The trace holds every period up to the end: one row per millisecond of
+  // simulated time plus the header, each row complete.
+  ASSERT_FALSE(r.trace.empty());
+  EXPECT_EQ(r.trace.back(), '\n');
+  std::size_t rows = 0;
+  for (char c : r.trace) rows += c == '\n' ? 1 : 0;
+  const double t = r.report["final"]["time"].get<double>();
+  EXPECT_EQ(rows - 1, static_cast<std::size_t>(std::llround(t * 1000.0)));
+}
+
+// Motion without end: back and forth until the signal.
+constexpr const char* kEndlessMotion =
+    "WHILE [1 EQ 1] DO1\n"
+    "G1 X100. F20000\n"
+    "G1 X0\n"
+    "END1\n";
+
+// No motion at all: the interpreter alone is busy.
+constexpr const char* kEndlessStatements =
+    "WHILE [1 EQ 1] DO1\n"
+    "#1=#1+1\n"
+    "END1\n";
+
+TEST(RobustSignal, SigtermDuringMotionLeavesAnInterruptedReport) {
+  TempDir dir;
+  expect_interrupted(interrupt(dir, kEndlessMotion, SIGTERM, 0.5));
+}
+
+TEST(RobustSignal, SigintDuringMotionLeavesAnInterruptedReport) {
+  TempDir dir;
+  expect_interrupted(interrupt(dir, kEndlessMotion, SIGINT, 0.5));
+}
+
+TEST(RobustSignal, SigtermDuringAMacroLoopIsHeardAtOnce) {
+  // A loop of statements with no motion: the run must still notice the
+  // signal within a fraction of a second, not at the statement limit.
+  TempDir dir;
+  const auto r = interrupt(dir, kEndlessStatements, SIGTERM, 0.5);
+  ASSERT_TRUE(r.exit.exited);
+  EXPECT_LT(r.exit.wall_s, 2.0);
+  ASSERT_TRUE(r.report_ok);
+  EXPECT_EQ(r.report.value("status", ""), "interrupted");
+}
+
+}  // namespace
+}  // namespace skipnc::test
