@@ -1,0 +1,1 @@
+../../../examples/probing/boss_centre.nc

@@ -1,0 +1,1 @@
+../../../examples/probing/double_touch.nc

@@ -1,0 +1,1 @@
+../../../examples/probing/plunge_grind.nc

@@ -1,0 +1,1 @@
+../../../examples/probing/protected_move.nc

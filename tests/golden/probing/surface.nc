@@ -1,0 +1,1 @@
+../../../examples/probing/surface.nc

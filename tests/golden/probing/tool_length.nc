@@ -1,0 +1,1 @@
+../../../examples/probing/tool_length.nc

@@ -1,0 +1,1 @@
+../../../examples/probing/web_pocket.nc

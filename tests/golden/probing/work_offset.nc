@@ -1,0 +1,1 @@
+../../../examples/probing/work_offset.nc
