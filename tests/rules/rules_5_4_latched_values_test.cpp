@@ -35,6 +35,25 @@ TEST(Rules, rule_21_5061_to_5063_hold_the_workpiece_position_of_each_axis) {
   EXPECT_NEAR(o.skip().machine_position[1], 75.0, kUm);
 }
 
+// Machine setting [latch] servo_delay_compensation: the stored position is
+// the axis's actual position at the signal (on) or the command's (off),
+// which runs ahead of the axis by the servo lag v/kp (10/30 mm at F600).
+TEST(Rules, rule_21_servo_delay_compensation_is_a_machine_setting) {
+  const char* program = "G21 G90 G54 G31 Z-10. F600.\nM30\n";
+  const Outcome on = Rig()
+                         .machine([](config::MachineConfig& m) { m.servo_delay_comp = true; })
+                         .trigger("X0.4", 'Z', -3.0)
+                         .run(program);
+  const Outcome off = Rig()
+                          .machine([](config::MachineConfig& m) { m.servo_delay_comp = false; })
+                          .trigger("X0.4", 'Z', -3.0)
+                          .run(program);
+  ASSERT_TRUE(on.skip().triggered);
+  ASSERT_TRUE(off.skip().triggered);
+  EXPECT_NEAR(on.var(5063), -3.0, kUm);
+  EXPECT_NEAR(off.var(5063), -3.0 - 10.0 / 30.0, 1e-3);
+}
+
 TEST(Rules, rule_22_nct_stores_the_position_at_the_signal_or_the_programmed_end_point) {
   const Outcome o = Rig("nct")
                         .trigger("X0.4", 'Z', -3.25)

@@ -1,0 +1,125 @@
+// The skip family as the user sees it in the CSV trace of `skipnc run`:
+// following error and torque columns (rule 43) and CompassNC's PLC handshake
+// columns (rule 32).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "support/run_cli.hpp"
+
+namespace skipnc::rules {
+namespace {
+
+using test::read_file;
+using test::run_cli;
+using test::TempDir;
+
+struct Csv {
+  std::vector<std::string> header;
+  std::vector<std::vector<double>> rows;
+  int col(const std::string& name) const {
+    for (std::size_t i = 0; i < header.size(); ++i) {
+      if (header[i] == name) return static_cast<int>(i);
+    }
+    return -1;
+  }
+};
+
+Csv parse_csv(const std::string& text) {
+  Csv c;
+  std::istringstream in(text);
+  std::string line;
+  bool first = true;
+  while (std::getline(in, line)) {
+    std::istringstream ls(line);
+    std::string cell;
+    std::vector<double> row;
+    while (std::getline(ls, cell, ',')) {
+      if (first)
+        c.header.push_back(cell);
+      else
+        row.push_back(std::stod(cell));
+    }
+    if (!first) c.rows.push_back(std::move(row));
+    first = false;
+  }
+  return c;
+}
+
+TEST(Rules, rule_43_the_trace_shows_following_error_and_torque_rising_to_the_skip) {
+  TempDir tmp;
+  const auto nc = tmp.write("t.nc", "G21 G90 G54 G31 P98 Z-10. F300. Q50\nM30\n");
+  const auto scene =
+      tmp.write("s.toml", "[[stop]]\naxis = \"Z\"\nat = -3.0\ndirection = \"decreasing\"\n");
+  const auto trace = tmp.path / "trace.csv";
+  const auto r =
+      run_cli({"run", nc.string(), "-s", scene.string(), "--trace", trace.string(), "-q"});
+  ASSERT_EQ(r.exit_code, 0);
+  const Csv c = parse_csv(read_file(trace));
+  const int act = c.col("Z_act"), ferr = c.col("Z_ferr"), torque = c.col("Z_torque");
+  ASSERT_GE(act, 0);
+  ASSERT_GE(ferr, 0) << "following error column";
+  ASSERT_GE(torque, 0);
+  std::size_t contact = 0, skip = 0;
+  for (std::size_t i = 0; i < c.rows.size(); ++i) {
+    if (contact == 0 && c.rows[i][act] == -3.0) contact = i;
+    if (contact != 0 && skip == 0 && std::fabs(c.rows[i][torque]) >= 50.0) skip = i;
+  }
+  ASSERT_GT(contact, 0U);
+  ASSERT_GT(skip, contact);
+  // 5 mm/s into the stop at 100 %/mm: the error grows 5 um and the torque
+  // 0.5 % per period.
+  for (std::size_t i = contact + 1; i <= skip; ++i) {
+    EXPECT_NEAR(std::fabs(c.rows[i][ferr]) - std::fabs(c.rows[i - 1][ferr]), 0.005, 1e-6);
+    EXPECT_NEAR(std::fabs(c.rows[i][torque]), 100.0 * std::fabs(c.rows[i][ferr]), 1e-6);
+  }
+  EXPECT_NEAR(std::fabs(c.rows[skip][torque]), 50.0, 1e-9) << "the skip at the limit";
+  EXPECT_NEAR(c.rows.back()[ferr], 0.0, 1e-9) << "the block ends at the stop: no error left";
+}
+
+TEST(Rules, rule_32_compass_handshake_columns_in_the_trace) {
+  TempDir tmp;
+  const auto nc = tmp.write("t.nc", "G21 G90 G54 G31 X20. F600.\nG1 Y5.\nM30\n");
+  const auto scene = tmp.write(
+      "s.toml",
+      "[[trigger]]\nsignal = \"SKIP\"\naxis = \"X\"\nat = 5.0\ndirection = \"increasing\"\n");
+  const auto trace = tmp.path / "trace.csv";
+  const auto r = run_cli(
+      {"run", nc.string(), "-d", "compass", "-s", scene.string(), "--trace", trace.string(), "-q"});
+  ASSERT_EQ(r.exit_code, 0);
+  const Csv c = parse_csv(read_file(trace));
+  const int active = c.col("G31SkipMove.Active"), skip = c.col("G31SkipMove.Skip"),
+            rec = c.col("G31SkipMove.PositionsRecorded"), done = c.col("G31SkipMove.Done"),
+            line = c.col("line"), probe = c.col("X0.4");
+  ASSERT_GE(active, 0);
+  ASSERT_GE(skip, 0);
+  ASSERT_GE(rec, 0);
+  ASSERT_GE(done, 0);
+  ASSERT_GE(probe, 0);
+  auto first = [&](int col, double v) -> int {
+    for (std::size_t i = 0; i < c.rows.size(); ++i) {
+      if (c.rows[i][col] == v) return static_cast<int>(i);
+    }
+    return -1;
+  };
+  const int a = first(active, 1), s = first(skip, 1), p = first(rec, 1), d = first(done, 1),
+            n = first(line, 2), in = first(probe, 1);
+  ASSERT_GE(a, 0);
+  EXPECT_EQ(s, in) << "Skip is set in the period the input rises";
+  EXPECT_LE(s, p);
+  EXPECT_LT(a, s);
+  EXPECT_GE(d, p);
+  EXPECT_EQ(c.rows[static_cast<std::size_t>(d)][active], 0.0) << "Done resets Active";
+  EXPECT_GT(n, d) << "the next block moves after Active is reset";
+  // The fanuc dialect has no such handshake: no columns.
+  const auto r2 =
+      run_cli({"run", nc.string(), "-s", scene.string(), "--trace", trace.string(), "-q"});
+  ASSERT_EQ(r2.exit_code, 0);
+  EXPECT_LT(parse_csv(read_file(trace)).col("G31SkipMove.Active"), 0);
+}
+
+}  // namespace
+}  // namespace skipnc::rules
