@@ -135,6 +135,9 @@ void write_meta(Json& j, const PlotModel& m) {
   j.key("axes");
   j.array(m.axis_names, [&](char c) { j.str(std::string(1, c)); });
   j.raw(",");
+  j.key("tipPath");
+  j.raw(m.tip_path ? "true" : "false");
+  j.raw(",");
   j.key("xyz");
   j.raw(fmt::format("[{},{},{}]", m.xyz[0], m.xyz[1], m.xyz[2]));
   j.raw("},");
@@ -226,6 +229,9 @@ void write_geometry(Json& j, const PlotModel& m) {
     j.raw(",");
     j.key("inIso");
     j.raw(s.in_iso ? "true" : "false");
+    j.raw(",");
+    j.key("onlyIso");
+    j.raw(s.only_iso ? "true" : "false");
     j.raw("}");
   });
   j.raw(",");

@@ -27,7 +27,9 @@ constexpr std::array<InkStyle, static_cast<std::size_t>(Ink::kCount)> kInks{{
     {"target", "#f08c00", "none", 1.2, "2 3", "programmed skip end point, not reached"},
     {"trigger", "#2e9e4f", "#2e9e4f", 1.4, "", "signal trigger plane"},
     {"stop", "#5a4632", "#5a4632", 2.0, "", "rigid stop"},
-    {"part", "#6b6b6b", "#bdbdbd", 1.2, "", "part"},
+    {"part", "#6b6b6b", "#9a9a9a", 1.2, "", "part"},
+    {"hole", "#6b6b6b", "none", 1.0, "4 3", "bore or pocket in a part"},
+    {"setter", "#7a4fa3", "#7a4fa3", 1.2, "", "tool setter"},
     {"latch", "#e0007a", "#e0007a", 1.5, "", "latch: position stored by the skip"},
     {"miss", "#e0007a", "#ffffff", 2.0, "", "skip without a signal: end point stored"},
     {"rest", "#111111", "#ffffff", 1.8, "", "rest: where the axes stopped"},
@@ -88,6 +90,35 @@ std::vector<std::string> split_lines(std::string_view text, std::size_t max_line
   return out;
 }
 
+// Length (gauge line to tip, mm) of the tool in the spindle at time t, from
+// the scene's tools and probe and the tool changes the run made.
+class ToolLengths {
+ public:
+  ToolLengths(const machine::Scene* scene, const std::vector<ToolChange>& changes)
+      : scene_(scene), changes_(changes) {}
+  double at(double t) const {
+    if (scene_ == nullptr) return 0.0;
+    int tool = scene_->probing.spindle_tool;
+    for (const auto& c : changes_) {
+      if (c.t > t) break;
+      tool = c.tool;
+    }
+    const auto& pr = scene_->probing;
+    if (pr.probe && pr.probe->tool == tool) return pr.probe->length;
+    const machine::ToolSpec* ts = pr.tool(tool);
+    return ts != nullptr ? ts->length : 0.0;
+  }
+
+ private:
+  const machine::Scene* scene_;
+  const std::vector<ToolChange>& changes_;
+};
+
+Vec3 tip(Vec3 p, double length) {
+  p.z -= length;
+  return p;
+}
+
 void build_skips(const PlotInput& in, PlotModel& pm) {
   const auto& m = *in.machine;
   const auto& rec = *in.recorder;
@@ -132,10 +163,12 @@ void build_skips(const PlotInput& in, PlotModel& pm) {
     if (sk.moved_axes.empty()) {
       for (int i = 0; i < m.axis_count(); ++i) sk.moved_axes.push_back(i);
     }
-    sk.latch = to3(sk.latch_machine, pm.xyz);
-    sk.rest = to3(sk.rest_machine, pm.xyz);
-    sk.start = to3(start, pm.xyz);
-    sk.target = to3(target, pm.xyz);
+    const ToolLengths tools(in.scene, rec.tool_changes());
+    const double len = tools.at(sk.latch_t);
+    sk.latch = tip(to3(sk.latch_machine, pm.xyz), len);
+    sk.rest = tip(to3(sk.rest_machine, pm.xyz), len);
+    sk.start = tip(to3(start, pm.xyz), len);
+    sk.target = tip(to3(target, pm.xyz), len);
     double d2 = 0.0;
     for (int i : sk.moved_axes) {
       const double d = sk.rest_machine[i] - sk.latch_machine[i];
@@ -302,10 +335,13 @@ PlotModel build_model(const PlotInput& in) {
   pm.t.reserve(samples.size());
   pm.line.reserve(samples.size());
   pm.path.reserve(samples.size());
+  const ToolLengths tools(in.scene, rec.tool_changes());
   for (const auto& s : samples) {
     pm.t.push_back(s.t);
     pm.line.push_back(s.line);
-    pm.path.push_back(to3(s.act, pm.xyz));
+    const double len = tools.at(s.t);
+    pm.tip_path = pm.tip_path || len != 0.0;
+    pm.path.push_back(tip(to3(s.act, pm.xyz), len));
     pm.extent.add(pm.path.back());
   }
   const auto& blocks = rec.blocks();
@@ -320,8 +356,9 @@ PlotModel build_model(const PlotInput& in) {
         static_cast<std::size_t>(std::lower_bound(pm.t.begin(), pm.t.end(), b.t0) - pm.t.begin());
     v.s1 =
         static_cast<std::size_t>(std::upper_bound(pm.t.begin(), pm.t.end(), b.t1) - pm.t.begin());
-    v.from = to3(i > 0 ? blocks[i - 1].end_act : b.start_act, pm.xyz);
-    v.to = to3(b.end_act, pm.xyz);
+    v.from = tip(to3(i > 0 ? blocks[i - 1].end_act : b.start_act, pm.xyz),
+                 tools.at(i > 0 ? blocks[i - 1].t1 : b.t0));
+    v.to = tip(to3(b.end_act, pm.xyz), tools.at(b.t1));
     v.end_machine = b.end_cmd;
     pm.extent.add(v.from);
     pm.extent.add(v.to);
@@ -335,6 +372,7 @@ PlotModel build_model(const PlotInput& in) {
   }
   if (pm.extent.empty()) pm.extent.add(to3(r.final_machine, pm.xyz));
   if (in.scene != nullptr) {
+    add_scene_extent(*in.scene, pm.extent);
     // Planes of the scene widen the extent along their normal only.
     for (const auto& t : in.scene->triggers) {
       for (int k = 0; k < 3; ++k) {

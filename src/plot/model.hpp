@@ -47,6 +47,8 @@ enum class Ink : std::uint8_t {
   kTrigger,
   kStop,
   kPart,
+  kHole,
+  kSetter,
   kLatch,
   kMiss,
   kRest,
@@ -74,10 +76,11 @@ struct Shape {
   Kind kind = Kind::kPolygon;
   Ink ink = Ink::kTrigger;
   std::vector<Vec3> pts;
-  std::string label;     // drawn next to the shape ("" for none)
-  int normal_axis = -1;  // 0/1/2: a plane normal to x/y/z (-1: not a plane)
-  std::string note;      // text for views in which the plane is face-on
-  bool in_iso = true;    // drawn in the isometric view too
+  std::string label;      // drawn next to the shape ("" for none)
+  int normal_axis = -1;   // 0/1/2: a plane normal to x/y/z (-1: not a plane)
+  std::string note;       // text for views in which the plane is face-on
+  bool in_iso = true;     // drawn in the isometric view too
+  bool only_iso = false;  // drawn in the isometric view only (a silhouette seen from there)
 };
 
 // A projection: screen u = dot(p, u), screen v = dot(p, v) (v up).
@@ -161,6 +164,10 @@ struct PlotModel {
   std::vector<std::pair<std::string, std::optional<double>>> variables;
   std::vector<std::string> messages;
   std::vector<std::string> signal_names;
+  // The path is the tool tip (ball centre for a probe): the spindle's gauge
+  // point minus the length of the tool in the spindle along Z. True when a
+  // tool with a length was in the spindle at some time.
+  bool tip_path = false;
 };
 
 struct PlotInput {
@@ -179,6 +186,9 @@ struct PlotInput {
 // The scene as shapes, sized to `extent` (shapes.cpp).
 std::vector<Shape> scene_shapes(const machine::Scene& scene, const config::MachineConfig& m,
                                 const std::array<int, 3>& xyz, const Box3& extent);
+// What of the scene has a size of its own (parts, tool setter): the views
+// show all of it.
+void add_scene_extent(const machine::Scene& scene, Box3& extent);
 
 // "#5063" (Fanuc-style numbered) or the dialect's named variable.
 std::string skip_var_name(const config::Dialect& d, int axis_index, char axis_name);

@@ -93,6 +93,10 @@ void Recorder::emit(const canon::Stamped& c) {
           kind = MoveKind::kArc;
         } else if constexpr (std::is_same_v<T, canon::Dwell>) {
           kind = MoveKind::kDwell;
+        } else if constexpr (std::is_same_v<T, canon::ToolSelect>) {
+          selected_tool_ = cmd.tool;
+        } else if constexpr (std::is_same_v<T, canon::MCode>) {
+          if (cmd.code == 6 && selected_tool_ >= 0) pending_tool_ = selected_tool_;
         } else if constexpr (std::is_same_v<T, canon::Skip>) {
           kind = MoveKind::kSkip;
           skip_moves_.push_back(SkipMove{c.line, tail_, cmd.target, cmd.feed_mm_per_min});
@@ -221,6 +225,10 @@ void Recorder::row(const machine::TraceRow& r) {
     reset_sleeve(cur);
     prev_ = cur;
     return;
+  }
+  if (pending_tool_ >= 0 && cur.cmd == prev_.cmd) {
+    tool_changes_.push_back(ToolChange{cur.t, pending_tool_});
+    pending_tool_ = -1;
   }
   const bool new_block = cur.line != prev_.line;
   const bool edge = cur.signals != prev_.signals;

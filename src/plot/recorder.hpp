@@ -61,6 +61,13 @@ struct SkipMove {
   double feed_mm_min = 0.0;
 };
 
+// A tool change (T.. M06) as the plot places it: at the first period after
+// the M06 in which the command stands still.
+struct ToolChange {
+  double t = 0.0;
+  int tool = 0;
+};
+
 struct Decimation {
   double pos_tol_mm = 0.0005;  // commanded/actual position
   double fe_tol_mm = 0.0002;   // following error
@@ -83,6 +90,7 @@ class Recorder final : public machine::TraceSink, public interp::CommandSink {
   const std::vector<BlockRun>& blocks() const noexcept { return blocks_; }
   const std::vector<SkipMove>& skip_moves() const noexcept { return skip_moves_; }
   const std::vector<std::string>& signal_names() const noexcept { return signal_names_; }
+  const std::vector<ToolChange>& tool_changes() const noexcept { return tool_changes_; }
   std::uint64_t periods_seen() const noexcept { return rows_; }
   // Tolerance multiplier reached (1, 2, 4, ...).
   double tolerance_scale() const noexcept { return scale_; }
@@ -108,6 +116,9 @@ class Recorder final : public machine::TraceSink, public interp::CommandSink {
   std::vector<SkipMove> skip_moves_;
   std::vector<std::string> signal_names_;
   std::deque<Pending> pending_;
+  std::vector<ToolChange> tool_changes_;
+  int selected_tool_ = -1;        // the last T word
+  int pending_tool_ = -1;         // M06 seen, not yet placed in time
   AxisVec tail_;                  // target of the last motion command
   bool tail_from_trace_ = false;  // after a skip: the next move starts where the machine stopped
 

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <iterator>
+#include <optional>
 
 #include "plot/plot.hpp"
 #include "plot/svg_util.hpp"
@@ -62,7 +63,7 @@ void draw_shapes(Svg& o, const PlotModel& m, const ViewDef& v, const Frame& f,
       if (!s.note.empty()) notes.push_back(s.note);
       continue;
     }
-    if (v.look_axis < 0 && !s.in_iso) continue;
+    if (v.look_axis < 0 ? !s.in_iso : s.only_iso) continue;
     std::vector<Pt> pts;
     for (const auto& p : s.pts) pts.push_back(Pt{f.px(dot(p, v.u)), f.py(dot(p, v.v))});
     const InkStyle& st = ink(s.ink);
@@ -80,9 +81,10 @@ void draw_shapes(Svg& o, const PlotModel& m, const ViewDef& v, const Frame& f,
       if (s.kind == Shape::Kind::kPolygon) d += "Z";
       o.add(
           "<path class=\"shape {}\" d=\"{}\" stroke=\"{}\" stroke-width=\"{}\" fill=\"{}\" "
-          "fill-opacity=\"{}\" stroke-opacity=\"{}\"/>\n",
+          "fill-opacity=\"{}\" stroke-opacity=\"{}\"{}/>\n",
           st.name, d, st.stroke, st.width, s.kind == Shape::Kind::kPolygon ? st.fill : "none",
-          v.look_axis < 0 ? 0.05 : 0.10, v.look_axis < 0 ? 0.6 : 1.0);
+          v.look_axis < 0 ? 0.05 : 0.10, v.look_axis < 0 ? 0.6 : 1.0,
+          st.dash[0] != '\0' ? fmt::format(" stroke-dasharray=\"{}\"", st.dash) : std::string());
     }
     if (s.kind == Shape::Kind::kSegments) {
       for (std::size_t i = 0; i + 1 < pts.size(); i += 2) labels.line(pts[i], pts[i + 1]);
@@ -91,14 +93,23 @@ void draw_shapes(Svg& o, const PlotModel& m, const ViewDef& v, const Frame& f,
       if (s.kind == Shape::Kind::kPolygon && pts.size() > 2) labels.line(pts.back(), pts.front());
     }
     if (!s.label.empty() && !pts.empty()) {
-      // Beside the right-most corner of the shape (the top one of equals).
-      const Pt* r = &pts[0];
-      for (const auto& p : pts) {
-        if (p.x > r->x + 0.5 || (std::fabs(p.x - r->x) <= 0.5 && p.y < r->y)) r = &p;
+      // Beside the right-most visible point of the outline (the top one of
+      // equals); a shape wholly outside the view gets no label.
+      const Box2 view{f.x, f.y, f.w, f.h};
+      std::optional<Pt> r;
+      const std::size_t n = s.kind == Shape::Kind::kPolygon ? pts.size() : pts.size() - 1;
+      for (std::size_t e = 0; e < n; ++e) {
+        const auto seg = clip_segment(pts[e], pts[(e + 1) % pts.size()], view);
+        if (!seg) continue;
+        for (const Pt& p : {seg->first, seg->second}) {
+          if (!r || p.x > r->x + 0.5 || (std::fabs(p.x - r->x) <= 0.5 && p.y < r->y)) r = p;
+        }
       }
-      requests.push_back(
-          LabelRequest{Pt{std::min(r->x, f.x + f.w - 4), std::clamp(r->y, f.y + 8, f.y + f.h - 8)},
-                       s.label, st.stroke, "shape-label"});
+      if (r) {
+        requests.push_back(LabelRequest{
+            Pt{std::min(r->x, f.x + f.w - 4), std::clamp(r->y, f.y + 8, f.y + f.h - 8)}, s.label,
+            st.stroke, "shape-label"});
+      }
     }
   }
 }
@@ -317,6 +328,7 @@ std::string to_svg(const PlotModel& m) {
       "machine {} \u00b7 dialect {} \u00b7 {} after {} s of machine time \u00b7 {} skip{}",
       m.machine, m.dialect, m.status, num(m.time_s, 3), m.skips.size(),
       m.skips.size() == 1 ? "" : "s");
+  if (m.tip_path) sub += " \u00b7 path of the tool tip (probe: ball centre)";
   body.add("<text x=\"{}\" y=\"50\" font-size=\"13\" fill=\"#444\">{}</text>\n", kMargin, esc(sub));
   if (!m.alarm.empty()) {
     body.add(

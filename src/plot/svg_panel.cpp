@@ -62,10 +62,13 @@ void legend_item(Svg& o, Ink i, double x, double y) {
     case Ink::kTrigger:
     case Ink::kStop:
     case Ink::kPart:
+    case Ink::kHole:
+    case Ink::kSetter:
       o.add(
           "<rect x=\"{}\" y=\"{}\" width=\"28\" height=\"8\" stroke=\"{}\" fill=\"{}\" "
-          "fill-opacity=\"0.15\"/>",
-          x, y - 8, st.stroke, st.fill);
+          "fill-opacity=\"0.15\"{}/>",
+          x, y - 8, st.stroke, st.fill,
+          st.dash[0] != '\0' ? fmt::format(" stroke-dasharray=\"{}\"", st.dash) : std::string());
       break;
     default:
       o.add("<path d=\"M{} {}h28\" {}/>", x, y - 4, stroke_attrs(i));
@@ -86,7 +89,7 @@ double draw_legend(Svg& o, const PlotModel& m, double x, double y, double w) {
   if (miss) used.push_back(Ink::kMiss);
   if (!m.skips.empty()) used.push_back(Ink::kRest);
   used.push_back(Ink::kStart);
-  for (const Ink i : {Ink::kTrigger, Ink::kStop, Ink::kPart}) {
+  for (const Ink i : {Ink::kTrigger, Ink::kStop, Ink::kPart, Ink::kHole, Ink::kSetter}) {
     if (std::any_of(m.shapes.begin(), m.shapes.end(), [&](const Shape& s) { return s.ink == i; })) {
       used.push_back(i);
     }

@@ -92,6 +92,27 @@ std::vector<Pt> simplify(const std::vector<Pt>& pts, double tol) {
   return out;
 }
 
+std::optional<std::pair<Pt, Pt>> clip_segment(Pt a, Pt b, const Box2& r) {
+  double t0 = 0.0, t1 = 1.0;
+  const double dx = b.x - a.x, dy = b.y - a.y;
+  const double p[4] = {-dx, dx, -dy, dy};
+  const double q[4] = {a.x - r.x, r.x + r.w - a.x, a.y - r.y, r.y + r.h - a.y};
+  for (int i = 0; i < 4; ++i) {
+    if (p[i] == 0.0) {
+      if (q[i] < 0.0) return std::nullopt;
+      continue;
+    }
+    const double t = q[i] / p[i];
+    if (p[i] < 0.0) {
+      t0 = std::max(t0, t);
+    } else {
+      t1 = std::min(t1, t);
+    }
+    if (t0 > t1) return std::nullopt;
+  }
+  return std::pair{Pt{a.x + t0 * dx, a.y + t0 * dy}, Pt{a.x + t1 * dx, a.y + t1 * dy}};
+}
+
 constexpr double kCell = 6.0;
 
 LabelPlacer::LabelPlacer(Box2 clip)

@@ -3,7 +3,9 @@
 // the same with the same rules (assets/plot_views.js).
 #pragma once
 
+#include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "plot/model.hpp"
@@ -46,6 +48,9 @@ struct Box2 {
     return x < o.x + o.w && o.x < x + w && y < o.y + o.h && o.y < y + h;
   }
 };
+
+// The part of segment a-b inside the rectangle (Liang-Barsky), if any.
+std::optional<std::pair<Pt, Pt>> clip_segment(Pt a, Pt b, const Box2& r);
 
 // Greedy label placement: beside the anchor, then on rings further out
 // (with a leader line). A place that covers no other label and no drawn line

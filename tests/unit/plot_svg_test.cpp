@@ -125,7 +125,9 @@ json read_svg(const TempDir& dir, const std::string& svg) {
 
 // Checks that every view has one marker per skip, at the projection of the
 // report's machine position (latch) and of the rest position.
-void expect_markers_where_the_report_says(const json& svg, const json& report) {
+// `tip_length`: the views show the tool tip, this far below the gauge point.
+void expect_markers_where_the_report_says(const json& svg, const json& report,
+                                          double tip_length = 0.0) {
   const auto& skips = report["skips"];
   ASSERT_EQ(svg["views"].size(), 4u);
   for (const auto& [id, view] : svg["views"].items()) {
@@ -133,7 +135,8 @@ void expect_markers_where_the_report_says(const json& svg, const json& report) {
     const double mm_per_px = (f[1] - f[0]) / f[6];
     const Proj p = projection(id);
     auto px = [&](const json& pos) {
-      const double w[3] = {pos["X"].get<double>(), pos["Y"].get<double>(), pos["Z"].get<double>()};
+      const double w[3] = {pos["X"].get<double>(), pos["Y"].get<double>(),
+                           pos["Z"].get<double>() - tip_length};
       const double u = p.u[0] * w[0] + p.u[1] * w[1] + p.u[2] * w[2];
       const double v = p.v[0] * w[0] + p.v[1] * w[1] + p.v[2] * w[2];
       return std::pair{f[4] + (u - f[0]) / mm_per_px, f[5] + (f[3] - v) / mm_per_px};
@@ -225,6 +228,33 @@ TEST(PlotSvg, LongRunIsThinnedWithoutLosingTheLatch) {
   expect_markers_where_the_report_says(s, report);
   EXPECT_LT(read_file(svg).size(), 400'000u);
   EXPECT_LT(read_file(html).size(), 400'000u);
+}
+
+// A touch probe 150 mm long comes down on a block: the views show the ball
+// centre, 150 mm below the machine position, touching the block's top
+// (Z-180) at the ball's radius; the block is drawn.
+TEST(PlotSvg, WithAProbeTheViewsShowTheBallCentreAndThePart) {
+  TempDir dir;
+  const auto prog =
+      dir.write("p.nc", "G21 G90 G54\nG0 X0 Y0 Z0\nG0 Z-25.\nG31 Z-40. F100.\nG0 Z0\nM30\n");
+  const auto scene =
+      dir.write("s.toml",
+                "[[box]]\npart = \"block\"\nmin = [-20.0, -20.0, -200.0]\n"
+                "max = [20.0, 20.0, -180.0]\n"
+                "[probe]\nsignal = \"SKIP\"\ntool = 20\nball_radius = 1.0\nlength = 150.0\n"
+                "max_overtravel = 2.0\n");
+  const auto svg = (dir.path / "p.svg").string();
+  const auto rep = (dir.path / "p.json").string();
+  const auto r =
+      run_cli({"run", prog.string(), "-s", scene.string(), "--report", rep, "--plot", svg, "-q"});
+  ASSERT_EQ(r.exit_code, 0);
+  const json report = json::parse(read_file(rep));
+  ASSERT_EQ(report["skips"].size(), 1u);
+  EXPECT_NEAR(report["skips"][0]["machine_position"]["Z"].get<double>(), -29.0, 1e-6);
+  expect_markers_where_the_report_says(read_svg(dir, svg), report, 150.0);
+  const std::string text = read_file(svg);
+  EXPECT_NE(text.find("class=\"shape part\""), std::string::npos);
+  EXPECT_NE(text.find("path of the tool tip"), std::string::npos);
 }
 
 TEST(PlotSvg, UnknownPictureFormatIsAUsageError) {

@@ -61,7 +61,7 @@
     if (D.skips.some(function (s) { return !s.triggered; })) used.push('miss');
     if (D.skips.length) used.push('rest');
     used.push('start');
-    ['trigger', 'stop', 'part'].forEach(function (n) {
+    ['trigger', 'stop', 'part', 'hole', 'setter'].forEach(function (n) {
       if (D.shapes.some(function (s) { return s.ink === n; })) used.push(n);
     });
     used.forEach(function (name) {
@@ -69,9 +69,10 @@
       if (name === 'latch' || name === 'miss') K.drawLatch(ctx, 17, 7, name === 'latch');
       else if (name === 'rest') K.drawRest(ctx, 17, 7);
       else if (name === 'start') K.drawStart(ctx, 17, 8);
-      else if (name === 'trigger' || name === 'stop' || name === 'part') {
-        ctx.globalAlpha = 0.15; ctx.fillStyle = st.fill; ctx.fillRect(2, 3, 30, 8); ctx.globalAlpha = 1;
-        ctx.strokeStyle = st.stroke; ctx.lineWidth = 1; ctx.strokeRect(2.5, 3.5, 29, 7);
+      else if (['trigger', 'stop', 'part', 'hole', 'setter'].indexOf(name) >= 0) {
+        if (st.fill !== 'none') { ctx.globalAlpha = 0.15; ctx.fillStyle = st.fill; ctx.fillRect(2, 3, 30, 8); ctx.globalAlpha = 1; }
+        ctx.strokeStyle = st.stroke; ctx.lineWidth = 1; ctx.setLineDash(st.dash); ctx.strokeRect(2.5, 3.5, 29, 7);
+        ctx.setLineDash([]);
       } else {
         K.stroke(ctx, st); ctx.beginPath(); ctx.moveTo(2, 7); ctx.lineTo(32, 7); ctx.stroke();
       }
@@ -159,7 +160,8 @@
       K.el('h1', {text: 'skipnc plot: ' + m.program}),
       K.el('div', {cls: 'meta', text: 'machine ' + m.machine + ' \u00b7 dialect ' + m.dialect + ' \u00b7 ' + m.status +
                  ' after ' + K.num(m.time, 3) + ' s of machine time \u00b7 ' + D.skips.length + ' skip' +
-                 (D.skips.length === 1 ? '' : 's') + ' \u00b7 ' + m.periods + ' servo periods, ' + D.t.length + ' drawn'}),
+                 (D.skips.length === 1 ? '' : 's') + ' \u00b7 ' + m.periods + ' servo periods, ' + D.t.length + ' drawn' +
+                 (m.tipPath ? ' \u00b7 path of the tool tip (probe: ball centre)' : '')}),
       m.alarm ? K.el('div', {cls: 'alarm', text: 'ALARM ' + m.alarm}) : null
     ]);
     var toolbar = K.el('div', {cls: 'toolbar'}, [

@@ -114,6 +114,19 @@
     return pos ? pos.series[0].colour : '#444';
   }
 
+  // The part of segment a-b inside rectangle R (Liang-Barsky), or null.
+  function clipSegment(a, b, R) {
+    var t0 = 0, t1 = 1, dx = b.x - a.x, dy = b.y - a.y;
+    var p = [-dx, dx, -dy, dy], q = [a.x - R.x, R.x + R.w - a.x, a.y - R.y, R.y + R.h - a.y];
+    for (var i = 0; i < 4; i++) {
+      if (p[i] === 0) { if (q[i] < 0) return null; continue; }
+      var t = q[i] / p[i];
+      if (p[i] < 0) t0 = Math.max(t0, t); else t1 = Math.min(t1, t);
+      if (t0 > t1) return null;
+    }
+    return [{x: a.x + t0 * dx, y: a.y + t0 * dy}, {x: a.x + t1 * dx, y: a.y + t1 * dy}];
+  }
+
   function drawShapes(ctx, vs, notes, placer, labels) {
     D.shapes.forEach(function (s) {
       if (s.normal >= 0 && s.normal === vs.def.look) {
@@ -121,7 +134,7 @@
         return;
       }
       var iso = vs.def.look < 0;
-      if (iso && !s.inIso) return;
+      if (iso ? !s.inIso : s.onlyIso) return;
       var st = K.ink(s.ink);
       var pts = s.pts.map(function (p) { return P(vs, p); });
       ctx.setLineDash([]);
@@ -133,16 +146,27 @@
         pts.forEach(function (p, k) { if (k === 0) ctx.moveTo(p.x, p.y); else ctx.lineTo(p.x, p.y); });
         if (s.kind === 'polygon') {
           ctx.closePath();
-          ctx.globalAlpha = iso ? 0.05 : 0.10; ctx.fillStyle = st.fill; ctx.fill();
+          if (st.fill !== 'none') { ctx.globalAlpha = iso ? 0.05 : 0.10; ctx.fillStyle = st.fill; ctx.fill(); }
         }
         ctx.globalAlpha = iso ? 0.6 : 1;
-        ctx.strokeStyle = st.stroke; ctx.lineWidth = st.width; ctx.stroke();
+        ctx.strokeStyle = st.stroke; ctx.lineWidth = st.width; ctx.setLineDash(st.dash); ctx.stroke();
+        ctx.setLineDash([]);
         ctx.globalAlpha = 1;
       }
       if (s.label && pts.length) {
-        // Beside the right-most corner (the top one of equals).
-        var r = pts[0], R = vs.rect;
-        pts.forEach(function (p) { if (p.x > r.x + 0.5 || (Math.abs(p.x - r.x) <= 0.5 && p.y < r.y)) r = p; });
+        // Beside the right-most visible point of the outline (the top one of
+        // equals); a shape wholly outside the view gets no label.
+        var R = vs.rect, r = null;
+        var n = s.kind === 'polygon' ? pts.length : pts.length - 1;
+        for (var e = 0; e < n; e++) {
+          var seg = clipSegment(pts[e], pts[(e + 1) % pts.length], R);
+          if (!seg) continue;
+          seg.forEach(function (p) {
+            if (!r || p.x > r.x + 0.5 || (Math.abs(p.x - r.x) <= 0.5 && p.y < r.y)) r = p;
+          });
+        }
+      }
+      if (s.label && r) {
         labels.push({p: {x: Math.min(r.x, R.x + R.w - 4), y: Math.min(Math.max(r.y, R.y + 8), R.y + R.h - 8)},
                      text: s.label, colour: st.stroke});
       }
