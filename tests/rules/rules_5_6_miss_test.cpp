@@ -62,7 +62,8 @@ TEST_P(MissCompletes, rule_34_k_is_not_an_address_of_g31_there) {
   EXPECT_EQ(o.alarm_id(), AlarmId::kSkipSyntax);
 }
 
-INSTANTIATE_TEST_SUITE_P(Dialects, MissCompletes, ::testing::Values("mitsubishi", "compass"));
+INSTANTIATE_TEST_SUITE_P(Dialects, MissCompletes, ::testing::Values("mitsubishi", "compass"),
+                         [](const auto& case_info) { return std::string(case_info.param); });
 
 // A pulse on the skip input at 0.2 s, during a 1 s G31 move.
 Rig pulse_during(const char* dialect) {
