@@ -84,9 +84,9 @@ inline std::unexpected<Error> config_error(const toml::node& n, std::string_view
 //   multi-line string's line-ending backslash.
 // This scan refuses both before toml++ sees the text, with the place: a
 // table name must start as TOML says, and a byte above 0x7F may stand only
-// in a comment or in a string value, not in a key and not first after a
-// line-ending backslash. No valid machine or scene file is refused: keys
-// of these files are ASCII names.
+// in a comment or in a string value (a quote where a value starts), not in
+// a key and not first after a line-ending backslash. No valid machine or scene file is refused:
+// keys of these files are ASCII names.
 [[nodiscard]] inline Result<void> precheck_toml(std::string_view text, std::string_view origin) {
   auto bare = [](char c) {
     return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_' ||
@@ -155,7 +155,15 @@ inline std::unexpected<Error> config_error(const toml::node& n, std::string_view
       while (i < n && text[i] != '\n') ++i;
       continue;
     }
-    if (c == '"' || c == '\'') {
+    // A quote opens a string only where TOML lets one start (after '=', '[',
+    // '{', ',', '.' or first on a line, blanks between). Elsewhere ("1'x'",
+    // "1979-05-27 'x'") it is part of a value that toml++ scans on.
+    std::size_t k = i;
+    while (k > 0 && blank(text[k - 1])) --k;
+    const char before = k > 0 ? text[k - 1] : '\n';
+    const bool token_start = before == '\n' || before == '\r' || before == '=' || before == '[' ||
+                             before == '{' || before == ',' || before == '.';
+    if ((c == '"' || c == '\'') && token_start) {
       const bool multi = i + 2 < n && text[i + 1] == c && text[i + 2] == c;
       i += multi ? 3 : 1;
       while (i < n) {

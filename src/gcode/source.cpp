@@ -223,18 +223,23 @@ std::unique_ptr<Source> make_string_source(std::string name, std::string text,
 
 Result<std::unique_ptr<Source>> open_file_source(const std::string& path, std::string display_name,
                                                  SourceLimits limits) {
-  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+  // A program is read by position (pread), so only a regular file can be
+  // one. O_NONBLOCK: opening a FIFO that no one writes must not wait.
+  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK);
   if (fd < 0) {
     const int e = errno;
     return std::unexpected(Error{
         AlarmId::kFileAccess, "cannot open '" + path + "': " + std::strerror(e), SourceLoc{}, -1});
   }
   struct stat st {};
-  if (::fstat(fd, &st) != 0 || S_ISDIR(st.st_mode)) {
-    const int e = S_ISDIR(st.st_mode) ? EISDIR : errno;
+  const bool stat_ok = ::fstat(fd, &st) == 0;
+  if (!stat_ok || !S_ISREG(st.st_mode)) {
+    const std::string why = !stat_ok              ? std::strerror(errno)
+                            : S_ISDIR(st.st_mode) ? std::strerror(EISDIR)
+                                                  : "not a regular file (a pipe or a device)";
     ::close(fd);
-    return std::unexpected(Error{
-        AlarmId::kFileAccess, "cannot open '" + path + "': " + std::strerror(e), SourceLoc{}, -1});
+    return std::unexpected(
+        Error{AlarmId::kFileAccess, "cannot open '" + path + "': " + why, SourceLoc{}, -1});
   }
   auto src = std::make_unique<TextSource>(std::move(display_name), fd,
                                           static_cast<std::uint64_t>(st.st_size), limits);

@@ -5,6 +5,7 @@
 // file:line:column in the report (exit status 1), never in a crash or a
 // hang. docs/bad-input.md lists them.
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 
 #include <random>
 #include <string>
@@ -219,13 +220,17 @@ TEST(LimitsInput, EmptyFileCompletesWithoutMotion) {
 
 TEST(LimitsInput, MissingOrUnreadableProgramCannotStart) {
   TempDir dir;
-  for (const auto& p : {dir.path / "nothing.nc", dir.path}) {
+  // A FIFO that no one writes once made the run wait for ever on open().
+  const auto fifo = dir.path / "fifo.nc";
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  for (const auto& p : {dir.path / "nothing.nc", dir.path, fifo}) {
     const auto r = run_with_report(dir, p);
     ASSERT_TRUE(r.exit.exited);
     EXPECT_EQ(r.exit.code, 2) << p;
     ASSERT_TRUE(r.report_ok) << p;
     EXPECT_EQ(r.status(), "alarm");
     EXPECT_EQ(r.alarm().value("code", ""), alarm_code(AlarmId::kFileAccess)) << p;
+    EXPECT_LT(r.exit.wall_s, 10.0) << p;
   }
 }
 

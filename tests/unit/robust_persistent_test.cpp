@@ -80,7 +80,9 @@ TEST(RobustPersistent, SigkillAtAnyInstantLeavesTheOldOrTheNewFile) {
   for (const char* a : {"X", "Y", "Z"}) machine += std::string("[[axis]]\nname = \"") + a + "\"\n";
   const auto m = dir.write("m.toml", machine);
   const auto prog = dir.write("count.nc", kProgram);
-  const std::vector<std::string> args = {"run", prog.string(), "-m", m.string(), "-q"};
+  const auto report = dir.path / "report.json";
+  const std::vector<std::string> args = {"run", prog.string(), "-m",           m.string(),
+                                         "-q",  "--report",    report.string()};
 
   // One whole run first: how long a run takes, and that it keeps its values.
   {
@@ -119,10 +121,33 @@ TEST(RobustPersistent, SigkillAtAnyInstantLeavesTheOldOrTheNewFile) {
     EXPECT_TRUE(now.value == last || now.value == last + 1.0)
         << "run " << k << ": " << last << " -> " << now.value;
     last = now.value;
+    // The report is written the same way: absent or whole, never half.
+    if (std::filesystem::exists(report)) {
+      EXPECT_FALSE(nlohmann::json::parse(read_file(report), nullptr, false).is_discarded())
+          << "run " << k << ": torn report";
+    }
   }
   std::fprintf(stderr, "persistent file: %d runs killed, %d finished, generation %g\n", killed,
                finished, last);
   EXPECT_GT(killed, 0);
+}
+
+// A persistent-variable file damaged by hand is not half-used: the run does
+// not start, and the message names the file's line.
+TEST(RobustPersistent, DamagedFileStopsTheRunWithItsLine) {
+  TempDir dir;
+  const auto vars = dir.write("vars.dat", "#500 = 1\n#501 = 2.5x\n");
+  std::string machine =
+      "name = \"keeper\"\ndialect = \"fanuc\"\npersistent_variables = \"" + vars.string() + "\"\n";
+  for (const char* a : {"X", "Y", "Z"}) machine += std::string("[[axis]]\nname = \"") + a + "\"\n";
+  const auto m = dir.write("m.toml", machine);
+  const auto prog = dir.write("p.nc", "#500=#500+1\nM30\n");
+  const auto r = run_with_report(dir, prog, {"-m", m.string()});
+  ASSERT_TRUE(r.exit.exited);
+  EXPECT_EQ(r.exit.code, 2) << r.err;
+  EXPECT_NE(r.err.find("line 2"), std::string::npos) << r.err;
+  // Nothing was written over it.
+  EXPECT_EQ(read_file(vars), "#500 = 1\n#501 = 2.5x\n");
 }
 
 }  // namespace
