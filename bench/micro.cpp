@@ -43,6 +43,18 @@ void BM_ParseBlock(benchmark::State& state) {
 }
 BENCHMARK(BM_ParseBlock);
 
+// A block like those of the LinuxCNC peer kit's gen_expr.py.
+void BM_ParseExprBlock(benchmark::State& state) {
+  gcode::Block b;
+  const std::string_view text = "#24=[[#7*SIN[#21]-#28/4.000]/[2.000+ABS[SIN[#12]]]]";
+  for (auto _ : state) {
+    auto r = gcode::parse_block(text, SourceLoc{"bench", 1, 1}, 0, b);
+    benchmark::DoNotOptimize(r);
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK(BM_ParseExprBlock);
+
 void interpret(benchmark::State& state, const std::string& program) {
   World w;
   interp::Setup setup;

@@ -8,16 +8,31 @@
 //  - inside DPRNT/BPRNT text, spaces are significant and '*' prints a space;
 //  - precedence, highest first: functions and brackets, unary sign,
 //    * / MOD AND, + - OR XOR, EQ NE GT GE LT LE.
+//
+// For speed (programs are mostly "X-12.5" and "#3=[#1*SIN[#2]+1.]"):
+// expressions are read by precedence climbing, one loop per bracket level
+// rather than one function per precedence level; "#n", numbers and function
+// names written the usual way have fast paths, and anything else (spaces
+// inside, many digits, errors) goes back to the general code, which reads
+// it again from its start; nodes are built in a local buffer; error
+// messages are built out of line.
 #include "gcode/parser.hpp"
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <charconv>
 #include <cstdint>
+#include <cstring>
 #include <limits>
+#include <memory>
+#include <optional>
+#include <ranges>
 #include <string>
 #include <string_view>
 #include <system_error>
+#include <type_traits>
+#include <vector>
 
 namespace skipnc::gcode {
 namespace {
@@ -37,10 +52,10 @@ constexpr std::array<double, 23> kPow10 = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1
                                            1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
 
 constexpr bool is_digit(int c) noexcept {
-  return c >= '0' && c <= '9';
+  return static_cast<unsigned>(c - '0') < 10u;
 }
 constexpr bool is_upper(int c) noexcept {
-  return c >= 'A' && c <= 'Z';
+  return static_cast<unsigned>(c - 'A') < 26u;
 }
 constexpr bool is_space(char c) noexcept {
   return c == ' ' || c == '\t' || c == '\r';
@@ -51,6 +66,17 @@ constexpr char to_upper(char c) noexcept {
 constexpr bool is_name_char(char c) noexcept {
   const char u = to_upper(c);
   return is_upper(u) || is_digit(u) || u == '_';
+}
+// Value of a decimal digit; 10 or more for any other character.
+constexpr unsigned digit_value(char c) noexcept {
+  return static_cast<unsigned>(static_cast<unsigned char>(c)) - unsigned{'0'};
+}
+constexpr bool is_letter(char c) noexcept {
+  return static_cast<unsigned>((static_cast<unsigned char>(c) | 0x20u) - 'a') < 26u;
+}
+// `c` is `k` (an upper-case letter) in either case.
+constexpr bool same_letter(char c, char k) noexcept {
+  return (c & ~0x20) == k;
 }
 
 // The character as a user can read it in a message.
@@ -91,6 +117,108 @@ constexpr std::array<FuncName, 20> kFuncs = {{
     {"POW", Func::kPow},   {"BIN", Func::kBin},   {"BCD", Func::kBcd},     {"ADP", Func::kAdp},
 }};
 
+// The functions of kFuncs by first letter, in kFuncs order.
+struct FuncGroup {
+  std::uint8_t count = 0;
+  std::array<std::uint8_t, 6> index{};
+};
+constexpr std::array<FuncGroup, 26> make_func_groups() {
+  std::array<FuncGroup, 26> g{};
+  for (std::size_t i = 0; i < kFuncs.size(); ++i) {
+    FuncGroup& f = g[static_cast<std::size_t>(kFuncs[i].name[0] - 'A')];
+    f.index[f.count++] = static_cast<std::uint8_t>(i);
+  }
+  return g;
+}
+constexpr std::array<FuncGroup, 26> kFuncGroups = make_func_groups();
+
+// Letters of a name packed in an integer, the first one lowest.
+constexpr std::uint64_t name_key(std::string_view name) {
+  std::uint64_t k = 0;
+  for (std::size_t i = 0; i < name.size(); ++i) {
+    k |= std::uint64_t{static_cast<unsigned char>(name[i])} << (8 * i);
+  }
+  return k;
+}
+constexpr std::size_t kMaxFuncName = 5;  // ROUND
+constexpr std::array<std::uint64_t, kFuncs.size()> make_func_keys() {
+  std::array<std::uint64_t, kFuncs.size()> k{};
+  for (std::size_t i = 0; i < kFuncs.size(); ++i) k[i] = name_key(kFuncs[i].name);
+  return k;
+}
+constexpr std::array<std::uint64_t, kFuncs.size()> kFuncKeys = make_func_keys();
+// The bytes of each name in its key.
+constexpr std::array<std::uint64_t, kFuncs.size()> make_func_masks() {
+  std::array<std::uint64_t, kFuncs.size()> m{};
+  for (std::size_t i = 0; i < kFuncs.size(); ++i) {
+    m[i] = (std::uint64_t{1} << (8 * kFuncs[i].name.size())) - 1;
+  }
+  return m;
+}
+constexpr std::array<std::uint64_t, kFuncs.size()> kFuncMasks = make_func_masks();
+static_assert(std::ranges::all_of(kFuncs,
+                                  [](const FuncName& f) { return f.name.size() <= kMaxFuncName; }));
+
+// Expression trees of a variable reference "#n" are two levels deep.
+static_assert(kMaxExprDepth >= 2);
+
+// The nodes of the block being parsed. They are built in a small local
+// buffer, so that adding one is a store and a count (std::vector::push_back
+// would bring its growth path into every caller), and go to the block at the
+// end; past the local buffer's size they move to the block's vector itself,
+// which then grows by doubling. The vector keeps its capacity from block to
+// block: once warmed, no allocation.
+class NodeSlots {
+ public:
+  explicit NodeSlots(std::vector<ExprNode>& v) noexcept : v_(v) {}
+  NodeSlots(const NodeSlots&) = delete;
+  NodeSlots& operator=(const NodeSlots&) = delete;
+  ~NodeSlots() = default;
+
+  ExprNode& operator[](std::size_t i) noexcept { return data_[i]; }
+  const ExprNode& operator[](std::size_t i) const noexcept { return data_[i]; }
+  // Index of the node added. References to nodes do not survive it.
+  std::size_t add(const ExprNode& x) {
+    if (n_ == cap_) [[unlikely]] {
+      grow();
+    }
+    std::construct_at(data_ + n_, x);
+    return n_++;
+  }
+  // Leaves the nodes in the block's vector (empty before).
+  void finish() {
+    if (data_ != local_.x) {
+      v_.resize(n_);
+    } else if (n_ != 0) {
+      if (v_.capacity() < kLocal) v_.reserve(kLocal);
+      v_.assign(data_, data_ + n_);
+    }
+  }
+
+ private:
+  [[gnu::noinline]] void grow() {
+    if (data_ == local_.x) v_.assign(data_, data_ + n_);
+    v_.resize(2 * n_);
+    data_ = v_.data();
+    cap_ = v_.size();
+  }
+
+  static constexpr std::size_t kLocal = 64;
+  // Storage only: its nodes are created one by one by add().
+  union Local {
+    Local() noexcept {}
+    ExprNode x[kLocal];
+  };
+  static_assert(std::is_trivially_copyable_v<ExprNode> &&
+                std::is_trivially_destructible_v<ExprNode>);
+
+  std::vector<ExprNode>& v_;
+  Local local_;
+  ExprNode* data_ = local_.x;
+  std::size_t n_ = 0;
+  std::size_t cap_ = kLocal;
+};
+
 class Parser {
  public:
   Parser(std::string_view text, SourceLoc loc, Block& out, const ParseLimits& limits)
@@ -100,9 +228,17 @@ class Parser {
         loc_(loc),
         out_(out),
         max_digits_(std::max(1, limits.max_digits)),
-        max_depth_(std::clamp(limits.max_bracket_depth, 0, kMaxNestingHard)) {}
+        uint_digits_(std::min(max_digits_, 18)),
+        fast_digits_(std::min(max_digits_, kMantissaDigits)),
+        max_depth_(std::clamp(limits.max_bracket_depth, 0, kMaxNestingHard)) {
+    // Typical blocks never grow the arrays past this: no reallocation while
+    // the first blocks of a program are parsed.
+    if (out_.words.capacity() < 16) out_.words.reserve(16);
+  }
 
   Result<void> run();
+  // Leaves exactly the nodes built in the block (whether run() succeeded or not).
+  void finish() { nodes_.finish(); }
 
  private:
   // ---- characters
@@ -115,55 +251,108 @@ class Parser {
     p_ = skip(p_);
     return p_ < end_ ? static_cast<unsigned char>(to_upper(*p_)) : -1;
   }
+  // Character at q as it is written, -1 at the end.
+  int at_char(const char* q) const noexcept {
+    return q < end_ ? static_cast<unsigned char>(*q) : -1;
+  }
   std::uint32_t col(const char* q) const noexcept {
     return loc_.column + static_cast<std::uint32_t>(q - begin_);
   }
   // Matches an upper-case keyword at p_, spaces allowed between its letters.
   bool match_kw(std::string_view kw) noexcept {
     const char* q = p_;
+    // Written in one piece, the usual case: no look for spaces. A letter that
+    // differs ends the match unless it is a space.
+    if (static_cast<std::size_t>(end_ - q) >= kw.size()) {
+      std::size_t i = 0;
+      while (i < kw.size() && same_letter(q[i], kw[i])) ++i;
+      if (i == kw.size()) {
+        p_ = q + i;
+        return true;
+      }
+      if (!is_space(q[i])) return false;
+    }
     for (const char k : kw) {
       q = skip(q);
-      if (q == end_ || to_upper(*q) != k) return false;
+      if (q == end_ || !same_letter(*q, k)) return false;
       ++q;
     }
     p_ = q;
     return true;
   }
 
-  // ---- errors
+  // ---- errors (out of line: they keep the hot paths small)
   bool error(AlarmId id, std::string detail, const char* at) {
-    if (!failed_) {
-      failed_ = true;
-      err_ = Error{id, std::move(detail), SourceLoc{loc_.file, loc_.line, col(at)}, -1};
+    return error_col(id, std::move(detail), col(at));
+  }
+  [[gnu::noinline, gnu::cold]] bool error_col(AlarmId id, std::string detail,
+                                              std::uint32_t column) {
+    if (!err_) {
+      err_.emplace(Error{id, std::move(detail), SourceLoc{loc_.file, loc_.line, column}, -1});
     }
     return false;
+  }
+  [[gnu::noinline, gnu::cold]] bool too_deep(std::uint32_t column) {
+    return error_col(AlarmId::kMacroFormat,
+                     "expression more than " + std::to_string(kMaxExprDepth) +
+                         " levels deep (operators, signs and brackets)",
+                     column);
   }
   ExprId error_expr(AlarmId id, std::string detail, const char* at) {
     error(id, std::move(detail), at);
     return kFail;
   }
   // Unexpected character where `what` was expected.
-  bool unexpected(std::string_view what, const char* at) {
+  [[gnu::noinline, gnu::cold]] bool unexpected(std::string_view what, const char* at) {
     if (at >= end_) {
       return error(AlarmId::kMacroFormat, "expected " + std::string(what) + " at end of block", at);
     }
     return error(AlarmId::kMacroFormat,
                  "expected " + std::string(what) + ", found " + show_char(*at), at);
   }
+  [[gnu::noinline, gnu::cold]] bool too_nested(const char* at) {
+    return error(AlarmId::kBracketNesting,
+                 "brackets nested deeper than " + std::to_string(max_depth_) + " levels", at);
+  }
+  // p_ where the ']' closing the bracket opened at `open` should be.
+  [[gnu::noinline, gnu::cold]] bool not_closed(const char* open) {
+    if (p_ == end_) return error(AlarmId::kBracketNesting, "'[' is not closed", open);
+    return unexpected("']'", p_);
+  }
+  [[gnu::noinline, gnu::cold]] ExprId bad_operand(int c, const char* at);
+  [[gnu::noinline, gnu::cold]] bool bad_word(char letter, const char* at, const char* sign_at);
+  [[gnu::noinline, gnu::cold]] bool bad_block_char(const char* at);
 
   // ---- node building
+  int depth_of(ExprId id) const noexcept { return id >= 0 ? node(id).depth : 0; }
+  ExprNode& node(ExprId id) noexcept { return nodes_[static_cast<std::size_t>(id)]; }
+  const ExprNode& node(ExprId id) const noexcept { return nodes_[static_cast<std::size_t>(id)]; }
+  // A node whose depth is known to be within kMaxExprDepth.
+  ExprId push_node(Op op, std::uint32_t column, ExprId a, ExprId b, int depth, double value = 0.0) {
+    return static_cast<ExprId>(nodes_.add(ExprNode{.op = op,
+                                                   .a = a,
+                                                   .b = b,
+                                                   .value = value,
+                                                   .column = column,
+                                                   .depth = static_cast<std::uint16_t>(depth)}));
+  }
+  // kFail when the tree would be deeper than kMaxExprDepth.
   ExprId add_node(Op op, std::uint32_t column, ExprId a = kNoExpr, ExprId b = kNoExpr) {
-    ExprNode& n = out_.nodes.emplace_back();
-    n.op = op;
-    n.a = a;
-    n.b = b;
-    n.column = column;
-    return static_cast<ExprId>(out_.nodes.size() - 1);
+    if (a == kFail || b == kFail) return kFail;
+    const int depth = 1 + std::max(depth_of(a), depth_of(b));
+    if (depth > kMaxExprDepth) [[unlikely]] {
+      too_deep(column);
+      return kFail;
+    }
+    return push_node(op, column, a, b, depth);
   }
   ExprId add_number(double v, std::uint32_t column) {
-    const ExprId id = add_node(Op::kNumber, column);
-    out_.nodes[static_cast<std::size_t>(id)].value = v;
-    return id;
+    return push_node(Op::kNumber, column, kNoExpr, kNoExpr, 1, v);
+  }
+  // "#n": the number node, then the variable node.
+  ExprId add_var_number(std::int64_t n, std::uint32_t num_column, std::uint32_t var_column) {
+    const ExprId num = add_number(static_cast<double>(n), num_column);
+    return push_node(Op::kVar, var_column, num, kNoExpr, 2);
   }
   std::int32_t add_name(std::string s) {
     out_.names.push_back(std::move(s));
@@ -172,9 +361,8 @@ class Parser {
 
   // ---- nesting
   bool enter(const char* at) {
-    if (depth_ >= max_depth_) {
-      return error(AlarmId::kBracketNesting,
-                   "brackets nested deeper than " + std::to_string(max_depth_) + " levels", at);
+    if (depth_ >= max_depth_) [[unlikely]] {
+      return too_nested(at);
     }
     ++depth_;
     return true;
@@ -182,30 +370,92 @@ class Parser {
   void leave() noexcept { --depth_; }
   // Consumes the ']' closing a bracket opened at `open`.
   bool close_bracket(const char* open) {
-    const int c = peek();
-    if (c == ']') {
+    p_ = skip(p_);
+    if (p_ < end_ && *p_ == ']') [[likely]] {
       ++p_;
       return true;
     }
-    if (c < 0) return error(AlarmId::kBracketNesting, "'[' is not closed", open);
-    return unexpected("']'", p_);
+    return not_closed(open);
+  }
+
+  // ---- fast paths of the common cases, inlined where they are used
+
+  // A number at p_ written together ("123", "1.5", ".25"), not too many
+  // digits, no digit or point after the spaces that follow, exact as a
+  // double: its value, p_ past it and those spaces. False, nothing consumed,
+  // for anything else, errors included: the general path reads it again.
+  [[gnu::always_inline]] bool number_fast(double& value, bool& has_point) {
+    const char* const start = p_;
+    const char* q = start;
+    std::uint64_t mant = 0;
+    for (unsigned d = 0; q < end_ && (d = digit_value(*q)) < 10; ++q) mant = mant * 10 + d;
+    std::size_t frac = 0;
+    const bool point = q < end_ && *q == '.';
+    if (point) {
+      const char* f = ++q;
+      for (unsigned d = 0; q < end_ && (d = digit_value(*q)) < 10; ++q) mant = mant * 10 + d;
+      frac = static_cast<std::size_t>(q - f);
+    }
+    const auto ndigits = (q - start) - (point ? 1 : 0);
+    const char* after = skip(q);
+    if (ndigits == 0 || ndigits > fast_digits_ || mant > (std::uint64_t{1} << 53) ||
+        (after < end_ && (*after == '.' || is_digit(*after)))) [[unlikely]] {
+      return false;
+    }
+    p_ = after;
+    has_point = point;
+    // As number_value: at most 19 decimals, a power of ten held exactly.
+    value = frac == 0 ? static_cast<double>(mant) : static_cast<double>(mant) / kPow10[frac];
+    return true;
+  }
+  // "#n" at p_ written together, few enough digits to be no error, no digit
+  // or point after the spaces that follow: its nodes, p_ past it and those
+  // spaces. False, nothing consumed, for anything else.
+  [[gnu::always_inline]] bool var_number_fast(ExprId& id) {
+    const char* const at = p_;
+    const char* const d = at + 1;
+    const char* const lim = d + std::min<std::ptrdiff_t>(end_ - d, uint_digits_);
+    const char* q = d;
+    std::int64_t v = 0;
+    for (unsigned k = 0; q < lim && (k = digit_value(*q)) < 10; ++q) v = v * 10 + k;
+    if (q == d) [[unlikely]] {
+      return false;
+    }
+    const char* after = skip(q);
+    if (after < end_ && (is_digit(*after) || *after == '.')) [[unlikely]] {
+      return false;
+    }
+    p_ = after;
+    id = add_var_number(v, col(d), col(at));
+    return true;
   }
 
   // ---- literals
-  bool parse_number(double& value, bool& has_point);
+
+  // Number literal at p_ (digit or '.'): digits with at most one point,
+  // spaces ignored. Exact for up to 15 significant digits and 22 decimals.
+  [[gnu::always_inline]] bool parse_number(double& value, bool& has_point) {
+    return number_fast(value, has_point) || parse_number_slow(value, has_point);
+  }
+  bool parse_number_slow(double& value, bool& has_point);
+  bool number_value(std::uint64_t mant, int exp10, const char* start, double& value);
   bool parse_uint(std::int64_t& value, std::string_view what, bool& any);
   bool parse_word();
   bool parse_head();
 
   // ---- expressions
-  ExprId parse_expr();  // comparisons (lowest)
-  ExprId parse_sum();
-  ExprId parse_term();
-  ExprId parse_unary();
-  ExprId parse_primary();
-  ExprId parse_bracket();  // p_ at '['
+  ExprId parse_expr();
+  int binary_op(Op& op);
+  ExprId parse_number_node();   // p_ at a digit or '.'
+  ExprId parse_operand(int c);  // the cases parse_expr leaves: signs, functions, errors
+  ExprId parse_signed();        // p_ at a sign
+  ExprId parse_primary(int c);  // c: the upper-cased character at p_
+  ExprId parse_bracket();       // p_ at '['
+  const FuncName* find_function(int c);
+  [[gnu::noinline]] const FuncName* find_function_spaced(const FuncGroup& g);
   ExprId parse_function(Func fn, const char* at);
   ExprId parse_var(bool raw);  // p_ at '#'
+  ExprId parse_var_general(bool raw);
   bool parse_named(std::string& name, bool raw);
 
   // ---- statements
@@ -225,15 +475,16 @@ class Parser {
   SourceLoc loc_;
   Block& out_;
   int max_digits_;
+  int uint_digits_;  // digits of an unsigned integer (N, O, #n, ...)
+  int fast_digits_;  // digits of a number that can be neither too many nor inexact
   int max_depth_;
   int depth_ = 0;
-  bool failed_ = false;
-  Error err_;
+  NodeSlots nodes_{out_.nodes};
+  std::optional<Error> err_;  // the first error
 };
 
-// Number literal at p_ (digit or '.'): digits with at most one point,
-// spaces ignored. Exact for up to 15 significant digits and 22 decimals.
-bool Parser::parse_number(double& value, bool& has_point) {
+// The general case of parse_number.
+bool Parser::parse_number_slow(double& value, bool& has_point) {
   const char* start = p_;
   std::uint64_t mant = 0;
   int exp10 = 0;  // value = mant * 10^exp10
@@ -280,6 +531,12 @@ bool Parser::parse_number(double& value, bool& has_point) {
     }
   }
   if (ndigits == 0) return error(AlarmId::kNoValue, "decimal point without digits", start);
+  return number_value(mant, exp10, start, value);
+}
+
+// value = mant * 10^exp10, correctly rounded. p_ is at the end of the number
+// written from `start`.
+bool Parser::number_value(std::uint64_t mant, int exp10, const char* start, double& value) {
   if (exp10 == 0 && mant <= (std::uint64_t{1} << 53)) {
     value = static_cast<double>(mant);  // integers: no division
   } else if (mant == 0) {
@@ -311,7 +568,7 @@ bool Parser::parse_number(double& value, bool& has_point) {
 // `any` tells whether there was a digit at all; a point or a sign is an error.
 bool Parser::parse_uint(std::int64_t& value, std::string_view what, bool& any) {
   const char* start = p_;
-  const int limit = std::min(max_digits_, 18);
+  const int limit = uint_digits_;
   std::int64_t v = 0;
   int nsig = 0;
   any = false;
@@ -392,166 +649,310 @@ bool Parser::parse_head() {
 
 // Address word at p_ (a letter): X10, X-.5, X#1, X-#2, X[#1+2], X-[#1].
 bool Parser::parse_word() {
-  const char* at = p_;
-  const char letter = to_upper(*p_);
-  ++p_;
-  int c = peek();
+  const char* const at = p_;
+  const char* q = skip(at + 1);
+  int c = at_char(q);
   const char* sign_at = nullptr;
-  bool negative = false;
   if (c == '-' || c == '+') {
-    sign_at = p_;
-    negative = c == '-';
-    ++p_;
-    c = peek();
-    if (!(is_digit(c) || c == '.' || c == '#' || c == '[')) {
-      return error(AlarmId::kBadSign,
-                   std::string("sign after '") + letter + "' is not followed by a value", sign_at);
-    }
+    sign_at = q;
+    q = skip(q + 1);
+    c = at_char(q);
   }
+  p_ = q;
+  const bool negative = sign_at != nullptr && *sign_at == '-';
+  double value = 0.0;
+  bool point = false;
+  ExprId e = kNoExpr;
   if (is_digit(c) || c == '.') {
-    // Built in place: copying a Word just written is slow (store forwarding).
-    Word& w = out_.words.emplace_back();
-    w.letter = letter;
-    w.column = col(at);
-    if (!parse_number(w.value, w.has_point)) return false;
-    if (negative) w.value = -w.value;
-    return true;
-  }
-  if (c == '#' || c == '[') {
-    ExprId e = c == '#' ? parse_var(false) : parse_bracket();
+    if (!parse_number(value, point)) return false;
+    if (negative) value = -value;
+  } else if (c == '#' || c == '[') {
+    e = c == '#' ? parse_var(false) : parse_bracket();
     if (e == kFail) return false;
     if (negative) e = add_node(Op::kNeg, col(sign_at), e);
-    Word& w = out_.words.emplace_back();
-    w.letter = letter;
-    w.column = col(at);
-    w.is_expr = true;
-    w.expr = e;
-    return true;
+    if (e == kFail) return false;
+  } else {
+    return bad_word(to_upper(*at), at, sign_at);
+  }
+  // Built in place: a Word put together on the stack and copied would be
+  // read back before its stores complete (store forwarding).
+  Word& w = out_.words.emplace_back();
+  w.letter = to_upper(*at);
+  w.is_expr = e != kNoExpr;
+  w.has_point = point;
+  w.value = value;
+  w.expr = e;
+  w.column = col(at);
+  return true;
+}
+
+// A letter not followed by a value (p_ where the value should be).
+bool Parser::bad_word(char letter, const char* at, const char* sign_at) {
+  if (sign_at != nullptr) {
+    return error(AlarmId::kBadSign,
+                 std::string("sign after '") + letter + "' is not followed by a value", sign_at);
   }
   return error(AlarmId::kNoValue, std::string("'") + letter + "' has no value", at);
 }
 
 // ---- expressions
 
-ExprId Parser::parse_expr() {
-  const std::uint32_t start = col(skip(p_));
-  ExprId a = parse_sum();
-  if (a == kFail) return kFail;
-  for (;;) {
-    const int c = peek();
-    Op op;
-    if (c == 'E' && match_kw("EQ")) {
-      op = Op::kEq;
-    } else if (c == 'N' && match_kw("NE")) {
-      op = Op::kNe;
-    } else if (c == 'G' && match_kw("GT")) {
-      op = Op::kGt;
-    } else if (c == 'G' && match_kw("GE")) {
-      op = Op::kGe;
-    } else if (c == 'L' && match_kw("LT")) {
-      op = Op::kLt;
-    } else if (c == 'L' && match_kw("LE")) {
-      op = Op::kLe;
-    } else {
-      return a;
-    }
-    const ExprId b = parse_sum();
-    if (b == kFail) return kFail;
-    a = add_node(op, start, a, b);
-  }
-}
-
-ExprId Parser::parse_sum() {
-  const std::uint32_t start = col(skip(p_));
-  ExprId a = parse_term();
-  if (a == kFail) return kFail;
-  for (;;) {
-    const int c = peek();
-    Op op;
-    if (c == '+') {
-      ++p_;
-      op = Op::kAdd;
-    } else if (c == '-') {
-      ++p_;
-      op = Op::kSub;
-    } else if (c == 'O' && match_kw("OR")) {
-      op = Op::kOr;
-    } else if (c == 'X' && match_kw("XOR")) {
-      op = Op::kXor;
-    } else {
-      return a;
-    }
-    const ExprId b = parse_term();
-    if (b == kFail) return kFail;
-    a = add_node(op, start, a, b);
-  }
-}
-
-ExprId Parser::parse_term() {
-  const std::uint32_t start = col(skip(p_));
-  ExprId a = parse_unary();
-  if (a == kFail) return kFail;
-  for (;;) {
-    const int c = peek();
-    Op op;
-    if (c == '*') {
-      ++p_;
+// Binary operator at p_, consumed. Returns its precedence, 3 for * / MOD
+// AND, 2 for + - OR XOR, 1 for the comparisons; 0, consuming nothing, when
+// there is none.
+int Parser::binary_op(Op& op) {
+  if (p_ == end_) return 0;
+  switch (*p_) {
+    case '*':
       op = Op::kMul;
-    } else if (c == '/') {
       ++p_;
+      return 3;
+    case '/':
       op = Op::kDiv;
-    } else if (c == 'M' && match_kw("MOD")) {
+      ++p_;
+      return 3;
+    case '+':
+      op = Op::kAdd;
+      ++p_;
+      return 2;
+    case '-':
+      op = Op::kSub;
+      ++p_;
+      return 2;
+    case 'M':
+    case 'm':
       op = Op::kMod;
-    } else if (c == 'A' && match_kw("AND")) {
+      return match_kw("MOD") ? 3 : 0;
+    case 'A':
+    case 'a':
       op = Op::kAnd;
-    } else {
-      return a;
-    }
-    const ExprId b = parse_unary();
-    if (b == kFail) return kFail;
-    a = add_node(op, start, a, b);
+      return match_kw("AND") ? 3 : 0;
+    case 'O':
+    case 'o':
+      op = Op::kOr;
+      return match_kw("OR") ? 2 : 0;
+    case 'X':
+    case 'x':
+      op = Op::kXor;
+      return match_kw("XOR") ? 2 : 0;
+    case 'E':
+    case 'e':
+      op = Op::kEq;
+      return match_kw("EQ") ? 1 : 0;
+    case 'N':
+    case 'n':
+      op = Op::kNe;
+      return match_kw("NE") ? 1 : 0;
+    case 'G':
+    case 'g':
+      if (match_kw("GT")) {
+        op = Op::kGt;
+        return 1;
+      }
+      op = Op::kGe;
+      return match_kw("GE") ? 1 : 0;
+    case 'L':
+    case 'l':
+      if (match_kw("LT")) {
+        op = Op::kLt;
+        return 1;
+      }
+      op = Op::kLe;
+      return match_kw("LE") ? 1 : 0;
+    default:
+      return 0;
   }
+}
+
+// Operators by precedence climbing: operands are read in a loop, and the
+// operators waiting for their right-hand side are kept on a small stack, at
+// most one per precedence level. Binary operators group from the left; a
+// binary node's column is that of its left operand's first character.
+ExprId Parser::parse_expr() {
+  struct Pending {
+    ExprId lhs;
+    std::uint32_t start;  // column of lhs
+    std::uint16_t depth;  // of lhs
+    Op op;
+    std::uint8_t prec;
+  };
+  std::array<Pending, 3> stack;
+  std::size_t n = 0;
+  for (;;) {
+    // An operand; p_ then at the next significant character.
+    const char* const at = skip(p_);
+    p_ = at;
+    const int c = at_char(at);
+    ExprId a = kFail;
+    int depth = 1;  // of a
+    if (c == '#') {
+      if (var_number_fast(a)) {
+        depth = 2;
+      } else {
+        a = parse_var_general(false);
+        if (a == kFail) return kFail;
+        depth = depth_of(a);
+        p_ = skip(p_);
+      }
+    } else if (is_digit(c) || c == '.') {
+      double v = 0.0;
+      bool point = false;
+      if (number_fast(v, point)) {
+        a = add_number(v, col(at));
+      } else {
+        a = parse_number_node();
+        if (a == kFail) return kFail;
+        p_ = skip(p_);
+      }
+    } else if (c == '[') {
+      if (!enter(at)) return kFail;
+      ++p_;
+      a = parse_expr();
+      if (a == kFail || !close_bracket(at)) return kFail;
+      leave();
+      depth = depth_of(a);
+      p_ = skip(p_);
+    } else {
+      const FuncName* f = nullptr;
+      if (is_upper(c & ~0x20)) f = find_function(c & ~0x20);
+      a = f != nullptr ? parse_function(f->fn, at) : parse_operand(c);
+      if (a == kFail) return kFail;
+      depth = depth_of(a);
+      p_ = skip(p_);
+    }
+    // The next operator; the waiting ones that bind at least as tightly get
+    // their right-hand side.
+    std::uint32_t start = col(at);
+    Op op = Op::kNumber;
+    const int prec = binary_op(op);
+    while (n > 0 && stack[n - 1].prec >= prec) {
+      const Pending& t = stack[--n];
+      depth = 1 + std::max<int>(t.depth, depth);
+      if (depth > kMaxExprDepth) [[unlikely]] {
+        too_deep(t.start);
+        return kFail;
+      }
+      a = push_node(t.op, t.start, t.lhs, a, depth);
+      start = t.start;
+    }
+    if (prec == 0) return a;
+    stack[n++] =
+        Pending{a, start, static_cast<std::uint16_t>(depth), op, static_cast<std::uint8_t>(prec)};
+  }
+}
+
+ExprId Parser::parse_number_node() {
+  const char* at = p_;
+  double v = 0.0;
+  bool point = false;
+  if (!parse_number(v, point)) return kFail;
+  return add_number(v, col(at));
+}
+
+// `c`: the character at p_ as written.
+ExprId Parser::parse_operand(int c) {
+  if (c == '-' || c == '+') return parse_signed();
+  return parse_primary(c < 0 ? c : static_cast<unsigned char>(to_upper(static_cast<char>(c))));
 }
 
 // Signs are read in a loop (no recursion): "- - -#1" is three kNeg nodes
 // chained through their `a`, the last one pointing at the operand.
-ExprId Parser::parse_unary() {
+ExprId Parser::parse_signed() {
   ExprId first = kNoExpr;
   ExprId last = kNoExpr;
-  for (int c = peek(); c == '-' || c == '+'; c = peek()) {
+  int c = peek();
+  for (; c == '-' || c == '+'; c = peek()) {
     if (c == '-') {
       const ExprId n = add_node(Op::kNeg, col(p_));
       if (last == kNoExpr) {
         first = n;
       } else {
-        out_.nodes[static_cast<std::size_t>(last)].a = n;
+        node(last).a = n;
       }
       last = n;
     }
     ++p_;
   }
-  const ExprId operand = parse_primary();
+  const ExprId operand = parse_primary(c);
   if (operand == kFail) return kFail;
   if (last == kNoExpr) return operand;
-  out_.nodes[static_cast<std::size_t>(last)].a = operand;
+  node(last).a = operand;
+  // The chain's depths, now that its operand is known.
+  int signs = 0;
+  for (ExprId i = first; i != operand; i = node(i).a) ++signs;
+  int depth = signs + depth_of(operand);
+  if (depth > kMaxExprDepth) {
+    too_deep(node(first).column);
+    return kFail;
+  }
+  for (ExprId i = first; i != operand; i = node(i).a) {
+    node(i).depth = static_cast<std::uint16_t>(depth--);
+  }
   return first;
 }
 
-ExprId Parser::parse_primary() {
-  const int c = peek();
-  const char* at = p_;
-  if (is_digit(c) || c == '.') {
-    double v = 0.0;
-    bool point = false;
-    if (!parse_number(v, point)) return kFail;
-    return add_number(v, col(at));
+// The function whose name is at p_ (`c`: its first letter, upper-cased),
+// p_ past the name; nullptr, p_ unchanged, when there is none.
+const FuncName* Parser::find_function(int c) {
+  const FuncGroup& g = kFuncGroups[static_cast<std::size_t>(c - 'A')];
+  // The letters written together at p_, up to the longest name. Unless a
+  // space follows them (a name may be spelt "S I N"), the function is the
+  // first of its group whose name they begin with, as match_kw would find.
+  const char* const at = p_;
+  const auto max = std::min(static_cast<std::size_t>(end_ - at), kMaxFuncName);
+  std::size_t n = 1;
+  while (n < max && is_letter(at[n])) ++n;
+  if (n < kMaxFuncName && at + n != end_ && is_space(at[n])) [[unlikely]] {
+    return find_function_spaced(g);
   }
+  // The bytes at p_ with letters upper-cased. A name is letters only, so
+  // the bytes after the n letters can never match one.
+  std::uint64_t key = 0;
+  if (end_ - at >= 8) {
+    std::memcpy(&key, at, 8);
+    if constexpr (std::endian::native == std::endian::big) key = std::byteswap(key);
+  } else {
+    for (std::size_t i = 0; i < n; ++i) {
+      key |= std::uint64_t{static_cast<unsigned char>(at[i])} << (8 * i);
+    }
+  }
+  key &= 0xDFDFDFDFDFDFDFDFu;  // upper case: n letters, then anything
+  for (std::size_t i = 0; i < g.count; ++i) {
+    const std::size_t f = g.index[i];
+    // Equal bytes are letters: the name is among the n letters.
+    if ((key & kFuncMasks[f]) == kFuncKeys[f]) {
+      p_ = at + kFuncs[f].name.size();
+      return &kFuncs[f];
+    }
+  }
+  return nullptr;
+}
+
+// find_function() when the name may have spaces in it.
+const FuncName* Parser::find_function_spaced(const FuncGroup& g) {
+  for (std::size_t i = 0; i < g.count; ++i) {
+    const FuncName& f = kFuncs[g.index[i]];
+    if (match_kw(f.name)) return &f;
+  }
+  return nullptr;
+}
+
+// `c`: the upper-cased character at p_.
+ExprId Parser::parse_primary(int c) {
   if (c == '#') return parse_var(false);
+  if (is_digit(c) || c == '.') return parse_number_node();
   if (c == '[') return parse_bracket();
   if (is_upper(c)) {
-    for (const FuncName& f : kFuncs) {
-      if (f.name[0] == c && match_kw(f.name)) return parse_function(f.fn, at);
-    }
+    const char* at = p_;
+    const FuncName* f = find_function(c);
+    if (f != nullptr) return parse_function(f->fn, at);
+  }
+  return bad_operand(c, p_);
+}
+
+// No operand at `at` (`c`: its upper-cased character).
+ExprId Parser::bad_operand(int c, const char* at) {
+  if (is_upper(c)) {
     const char* e = at;
     while (e < end_ && (is_name_char(*e) || is_space(*e))) ++e;
     return error_expr(AlarmId::kMacroFormat, "unknown function or operator " + excerpt(at, e), at);
@@ -609,7 +1010,8 @@ ExprId Parser::parse_function(Func fn, const char* at) {
     return error_expr(AlarmId::kMacroFormat, "POW needs two arguments: POW[a,b]", at);
   }
   const ExprId n = add_node(Op::kFunc, col(at), a, b);
-  out_.nodes[static_cast<std::size_t>(n)].fn = fn;
+  if (n == kFail) return kFail;
+  node(n).fn = fn;
   return n;
 }
 
@@ -671,6 +1073,13 @@ bool Parser::parse_named(std::string& name, bool raw) {
 // Variable reference at p_ ('#'): #123, #[expr], ##1, #<name>, #_NAME[i].
 // `raw`: inside DPRNT text, where spaces end the variable number.
 ExprId Parser::parse_var(bool raw) {
+  ExprId id = kNoExpr;
+  if (!raw && var_number_fast(id)) return id;
+  return parse_var_general(raw);
+}
+
+// The general case of parse_var.
+ExprId Parser::parse_var_general(bool raw) {
   const char* at = p_;
   ++p_;
   const char* q = raw ? p_ : skip(p_);
@@ -681,7 +1090,7 @@ ExprId Parser::parse_var(bool raw) {
     if (raw) {
       const char* s = p_;
       while (p_ < end_ && is_digit(*p_)) ++p_;
-      if (p_ - s > std::min(max_digits_, 18)) {
+      if (p_ - s > uint_digits_) {
         return error_expr(AlarmId::kTooManyDigits, "variable number " + excerpt(s, p_), s);
       }
       for (const char* d = s; d < p_; ++d) v = v * 10 + (*d - '0');
@@ -689,8 +1098,7 @@ ExprId Parser::parse_var(bool raw) {
       bool any = false;
       if (!parse_uint(v, "variable number", any)) return kFail;
     }
-    const ExprId num = add_number(static_cast<double>(v), col(q));
-    return add_node(Op::kVar, col(at), num);
+    return add_var_number(v, col(q), col(at));
   }
   if (q < end_ && c == '[') {
     p_ = q;
@@ -711,7 +1119,7 @@ ExprId Parser::parse_var(bool raw) {
     std::string name;
     if (!parse_named(name, raw)) return kFail;
     const ExprId n = add_node(Op::kNamedVar, col(at));
-    out_.nodes[static_cast<std::size_t>(n)].name = add_name(std::move(name));
+    node(n).name = add_name(std::move(name));
     return n;
   }
   return error_expr(AlarmId::kNoValue, "'#' without a variable number", at);
@@ -720,7 +1128,7 @@ ExprId Parser::parse_var(bool raw) {
 // ---- statements
 
 bool Parser::begin_stmt(StmtKind kind, const char* at) {
-  if (out_.stmt.kind != StmtKind::kNone) {
+  if (out_.stmt.kind != StmtKind::kNone) [[unlikely]] {
     return error(AlarmId::kMacroFormat, "two macro statements in one block", at);
   }
   out_.stmt.kind = kind;
@@ -730,7 +1138,9 @@ bool Parser::begin_stmt(StmtKind kind, const char* at) {
 
 // p_ after the left-hand side: "= expr".
 bool Parser::parse_assign_tail(ExprId lhs) {
-  if (peek() != '=') return unexpected("'=' after the variable", p_);
+  if (peek() != '=') [[unlikely]] {
+    return unexpected("'=' after the variable", p_);
+  }
   ++p_;
   const ExprId rhs = parse_expr();
   if (rhs == kFail) return false;
@@ -868,10 +1278,11 @@ bool Parser::parse_print(StmtKind kind, const char* at) {
 // p_ at '('. Text is kept as written. No nesting.
 bool Parser::parse_comment() {
   const char* open = p_;
-  const char* q = p_ + 1;
-  for (; q < end_; ++q) {
-    if (*q == ')') break;
-    if (*q == '(') return error(AlarmId::kIllegalChar, "'(' inside a comment", q);
+  const auto rest = static_cast<std::size_t>(end_ - (open + 1));
+  const auto* close = static_cast<const char*>(std::memchr(open + 1, ')', rest));
+  const char* q = close != nullptr ? close : end_;
+  if (const void* inner = std::memchr(open + 1, '(', static_cast<std::size_t>(q - (open + 1)))) {
+    return error(AlarmId::kIllegalChar, "'(' inside a comment", static_cast<const char*>(inner));
   }
   if (q == end_) return error(AlarmId::kIllegalChar, "comment is not closed by ')'", open);
   Comment cm;
@@ -919,20 +1330,27 @@ bool Parser::try_keyword(int c, const char* at, bool& handled) {
 }
 
 Result<void> Parser::run() {
-  if (!parse_head()) return std::unexpected(std::move(err_));
+  // Head: '%', '/', 'O', ':' or 'N' first.
+  const int first = peek();
+  if (first == '%' || first == '/' || first == 'O' || first == ':' || first == 'N') {
+    if (!parse_head()) return std::unexpected(std::move(*err_));
+  }
   if (out_.percent) {
     // Only comments may follow '%'.
     for (int c = peek(); c >= 0; c = peek()) {
       if (c != '(') {
         error(AlarmId::kIllegalChar, show_char(*p_) + " after '%'", p_);
-        return std::unexpected(std::move(err_));
+        return std::unexpected(std::move(*err_));
       }
-      if (!parse_comment()) return std::unexpected(std::move(err_));
+      if (!parse_comment()) return std::unexpected(std::move(*err_));
     }
     return {};
   }
-  for (int c = peek(); c >= 0; c = peek()) {
-    const char* at = p_;
+  for (;;) {
+    const char* const at = skip(p_);
+    p_ = at;
+    if (at == end_) break;
+    const int c = static_cast<unsigned char>(to_upper(*at));
     bool ok = true;
     if (is_upper(c)) {
       bool handled = false;
@@ -946,23 +1364,27 @@ Result<void> Parser::run() {
         const ExprId lhs = parse_var(false);
         ok = lhs != kFail && parse_assign_tail(lhs);
       }
-    } else if (is_digit(c) || c == '.' || c == '-' || c == '+' || c == '[') {
-      const char* e = at + 1;
-      while (e < end_ && (is_digit(*e) || *e == '.' || is_space(*e))) ++e;
-      ok = error(AlarmId::kNoAddress, "value " + excerpt(at, e) + " has no address letter", at);
-    } else if (c == ']') {
-      ok = error(AlarmId::kBracketNesting, "']' without '['", at);
-    } else if (c == '=') {
-      ok = error(AlarmId::kMacroFormat, "'=' without a variable on its left", at);
-    } else if (c == ')') {
-      ok = error(AlarmId::kIllegalChar, "')' without '('", at);
     } else {
-      ok = error(AlarmId::kIllegalChar, "illegal character " + show_char(*at), at);
+      ok = bad_block_char(at);
     }
-    if (!ok) return std::unexpected(std::move(err_));
+    if (!ok) return std::unexpected(std::move(*err_));
   }
-  if (failed_) return std::unexpected(std::move(err_));  // never expected: errors stop the parse
+  if (err_) return std::unexpected(std::move(*err_));  // never expected: errors stop the parse
   return {};
+}
+
+// A character that cannot start anything in a block.
+bool Parser::bad_block_char(const char* at) {
+  const char c = *at;
+  if (is_digit(c) || c == '.' || c == '-' || c == '+' || c == '[') {
+    const char* e = at + 1;
+    while (e < end_ && (is_digit(*e) || *e == '.' || is_space(*e))) ++e;
+    return error(AlarmId::kNoAddress, "value " + excerpt(at, e) + " has no address letter", at);
+  }
+  if (c == ']') return error(AlarmId::kBracketNesting, "']' without '['", at);
+  if (c == '=') return error(AlarmId::kMacroFormat, "'=' without a variable on its left", at);
+  if (c == ')') return error(AlarmId::kIllegalChar, "')' without '('", at);
+  return error(AlarmId::kIllegalChar, "illegal character " + show_char(c), at);
 }
 
 }  // namespace
@@ -973,7 +1395,9 @@ Result<void> parse_block(std::string_view text, SourceLoc loc, std::uint64_t off
   out.loc = loc;
   out.offset = offset;
   Parser parser(text, loc, out, limits);
-  return parser.run();
+  auto r = parser.run();
+  parser.finish();
+  return r;
 }
 
 }  // namespace skipnc::gcode

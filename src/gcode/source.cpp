@@ -31,6 +31,30 @@ constexpr std::array<unsigned char, 256> make_classes() {
 }
 constexpr std::array<unsigned char, 256> kClasses = make_classes();
 
+// Index of the first end of block in data[i, stop): a '\n', or a ';' outside
+// parentheses; `stop` when there is none. `in_paren` tells whether data[i]
+// is inside parentheses; it is kept up to date when `stop` is returned.
+std::size_t scan(const char* data, std::size_t i, std::size_t stop, bool& in_paren) noexcept {
+  // The usual case, found by memchr: a line end with no ';' before it, where
+  // parentheses do not matter.
+  if (const void* nl = std::memchr(data + i, '\n', stop - i)) {
+    const auto end = static_cast<std::size_t>(static_cast<const char*>(nl) - data);
+    if (std::memchr(data + i, ';', end - i) == nullptr) return end;
+  }
+  for (; i < stop; ++i) {
+    const unsigned char k = kClasses[static_cast<unsigned char>(data[i])];
+    if (k != kPlain) {
+      if (k == kNewline || (k == kSemicolon && !in_paren)) break;
+      if (k == kOpen) {
+        in_paren = true;
+      } else if (k == kClose) {
+        in_paren = false;
+      }
+    }
+  }
+  return i;
+}
+
 constexpr std::string_view kBom = "\xEF\xBB\xBF";
 
 class TextSource final : public Source {
@@ -66,6 +90,8 @@ class TextSource final : public Source {
   }
 
   Result<bool> next(RawBlock& out) override;
+  // next() in all cases.
+  Result<bool> next_general(RawBlock& out);
   SourcePos tell() const noexcept override { return pos_; }
   Result<void> seek(SourcePos pos) override;
   std::string_view name() const noexcept override { return name_; }
@@ -113,6 +139,33 @@ Result<void> TextSource::fill(std::size_t keep) {
 }
 
 Result<bool> TextSource::next(RawBlock& out) {
+  // The usual case: the window holds the position and, after it, a line end
+  // with no ';' before it, in reach of the block size limit.
+  if (pos_.offset >= buf_off_ && pos_.offset - buf_off_ <= len_) {
+    const auto begin = static_cast<std::size_t>(pos_.offset - buf_off_);
+    const std::size_t stop = std::min(len_, begin + limits_.max_block_bytes + 2);
+    const char* data = buf_.data();
+    if (const void* nl = std::memchr(data + begin, '\n', stop - begin)) {
+      const auto i = static_cast<std::size_t>(static_cast<const char*>(nl) - data);
+      std::size_t text_end = i;
+      if (text_end > begin && data[text_end - 1] == '\r') --text_end;
+      if (text_end - begin <= limits_.max_block_bytes &&
+          std::memchr(data + begin, ';', i - begin) == nullptr) {
+        out.text = std::string_view(data + begin, text_end - begin);
+        out.offset = pos_.offset;
+        out.line = pos_.line;
+        out.column = pos_.column;
+        pos_.offset += i - begin + 1;
+        ++pos_.line;
+        pos_.column = 1;
+        return true;
+      }
+    }
+  }
+  return next_general(out);
+}
+
+Result<bool> TextSource::next_general(RawBlock& out) {
   // The window may not hold the position (after a seek, or at its end).
   if (pos_.offset < buf_off_ || pos_.offset > buf_off_ + len_) {
     buf_off_ = pos_.offset;
@@ -130,18 +183,7 @@ Result<bool> TextSource::next(RawBlock& out) {
     // Scan for the end of the block; past max + 1 bytes the block is too long
     // whatever its end, and only its end is still needed.
     const std::size_t stop = too_long ? len_ : std::min(len_, begin + max + 2);
-    while (i < stop) {
-      const unsigned char k = kClasses[static_cast<unsigned char>(data[i])];
-      if (k != kPlain) {
-        if (k == kNewline || (k == kSemicolon && !in_paren)) break;
-        if (k == kOpen) {
-          in_paren = true;
-        } else if (k == kClose) {
-          in_paren = false;
-        }
-      }
-      ++i;
-    }
+    i = scan(data, i, stop, in_paren);
     if (i == stop && stop < len_) {
       too_long = true;
       continue;

@@ -478,9 +478,12 @@ TEST(GcodeParser, UnaryOperators) {
   EXPECT_EQ(rhs("#1 = -2 * 3"), "(* (neg 2) 3)");
   EXPECT_EQ(rhs("#1 = -[1 + 2]"), "(neg (+ 1 2))");
   EXPECT_EQ(rhs("#1 = 1 - -1"), "(- 1 (neg 1))");
-  // Long runs of signs are not recursion.
-  const Block b = parse_ok("#1=" + std::string(100000, '-') + "1");
-  EXPECT_EQ(b.nodes.size(), 100000u + 3u);
+  // Long runs of signs are not recursion; the tree they make is bounded
+  // (kMaxExprDepth levels) like any other, at the first sign.
+  const auto n = static_cast<std::size_t>(kMaxExprDepth - 1);
+  const Block b = parse_ok("#1=" + std::string(n, '-') + "1");
+  EXPECT_EQ(b.nodes.size(), n + 3u);
+  expect_error("#1=" + std::string(100000, '-') + "1", AlarmId::kMacroFormat, 4);
 }
 
 TEST(GcodeParser, Functions) {
@@ -539,6 +542,60 @@ TEST(GcodeParser, ExpressionNodeColumns) {
   EXPECT_EQ(sin.column, 11u);
   EXPECT_EQ(b.nodes.at(static_cast<std::size_t>(sin.a)).column, 15u);
   EXPECT_EQ(b.nodes.at(static_cast<std::size_t>(b.stmt.lhs)).column, 1u);
+}
+
+// Numbers, variable numbers and function names have fast paths for the
+// usual spellings; spaces inside them, many digits and the like take the
+// general path and read as they always did.
+TEST(GcodeParser, NumbersSplitBySpaces) {
+  const Block b = parse_ok("X1 0 Y1. 5 Z 1 .5 A1 B2");
+  ASSERT_EQ(b.words.size(), 5u);
+  EXPECT_EQ(b.words[0].value, 10.0);
+  EXPECT_FALSE(b.words[0].has_point);
+  EXPECT_EQ(b.words[1].value, 1.5);
+  EXPECT_EQ(b.words[1].column, 6u);
+  EXPECT_EQ(b.words[2].value, 1.5);
+  EXPECT_EQ(b.words[2].column, 12u);
+  EXPECT_EQ(b.words[3].value, 1.0);
+  EXPECT_EQ(b.words[4].value, 2.0);
+  EXPECT_EQ(b.words[4].column, 22u);
+  EXPECT_EQ(rhs("#1 = 1 2 * 3"), "(* 12 3)");
+  EXPECT_EQ(rhs("#1 = #1 2 + #0 0 3"), "(+ #12 #3)");
+  EXPECT_EQ(rhs("#1=#2 +3"), "(+ #2 3)");
+  EXPECT_EQ(rhs("#1=#" + std::string(20, '0') + "7"), "#7");
+  EXPECT_EQ(rhs("#1=" + std::string(20, '0') + "1.25"), "1.25");
+  expect_error("#1=#2 .5", AlarmId::kBadDecimalPoint, 7);
+  expect_error("X1 .5 .5", AlarmId::kBadDecimalPoint, 7);
+  expect_error("#1=#1234567890123456789", AlarmId::kTooManyDigits, 5);
+}
+
+TEST(GcodeParser, FunctionNamesAsWritten) {
+  EXPECT_EQ(rhs("#1=sqrt[4]"), "(sqrt 4)");
+  EXPECT_EQ(rhs("#1=SQR T[4]"), "(sqrt 4)");
+  EXPECT_EQ(rhs("#1=S Q R[4]"), "(sqrt 4)");
+  EXPECT_EQ(rhs("#1=A T N[1]+AbS[2]"), "(+ (atan 1) (abs 2))");
+  EXPECT_EQ(rhs("#1=ROUND[1]*RND[2]"), "(* (round 1) (round 2))");
+  EXPECT_EQ(rhs("#1=LN[1]"), "(ln 1)");
+  expect_error("#1=SINE[1]", AlarmId::kMacroFormat, 7);
+  expect_error("#1=SQ[1]", AlarmId::kMacroFormat, 4);
+  expect_error("#1=LN", AlarmId::kMacroFormat, 6);
+}
+
+TEST(GcodeParser, OperatorsGroupByPrecedence) {
+  EXPECT_EQ(rhs("#1=1*2+3*4 GT 5 AND 6 OR 7"), "(gt (+ (* 1 2) (* 3 4)) (or (and 5 6) 7))");
+  EXPECT_EQ(rhs("#1=1 EQ 2 NE 3"), "(ne (eq 1 2) 3)");
+  EXPECT_EQ(rhs("#1=1-2*3-4"), "(- (- 1 (* 2 3)) 4)");
+  EXPECT_EQ(rhs("#1=1+2 LT 3*4-5 LE 6"), "(le (lt (+ 1 2) (- (* 3 4) 5)) 6)");
+  EXPECT_EQ(rhs("#1=[[1+2]*[3+4]]/5"), "(/ (* (+ 1 2) (+ 3 4)) 5)");
+  // A binary node's column is that of its left operand's first character.
+  const Block b = parse_ok("#1=-1*2+3");
+  const ExprNode& add = b.nodes.at(static_cast<std::size_t>(b.stmt.rhs));
+  EXPECT_EQ(add.op, Op::kAdd);
+  EXPECT_EQ(add.column, 4u);
+  const ExprNode& mul = b.nodes.at(static_cast<std::size_t>(add.a));
+  EXPECT_EQ(mul.op, Op::kMul);
+  EXPECT_EQ(mul.column, 4u);
+  EXPECT_EQ(b.nodes.at(static_cast<std::size_t>(add.b)).column, 9u);
 }
 
 TEST(GcodeParser, ExpressionErrors) {
