@@ -36,8 +36,8 @@ struct Arc {
   double center0 = 0.0;  // centre on plane.a0, machine coordinates
   double center1 = 0.0;  // centre on plane.a1
   Plane plane;
-  bool ccw = false;      // G03
-  int extra_turns = 0;   // full turns before the end point (0 for ordinary arcs)
+  bool ccw = false;     // G03
+  int extra_turns = 0;  // full turns before the end point (0 for ordinary arcs)
   double feed_mm_per_min = 0.0;
   bool exact_stop = false;
 };
@@ -65,26 +65,26 @@ enum class SkipLatch : std::uint8_t {
 // the parameters have been applied by the interpreter.
 struct SkipSpec {
   SkipKind kind = SkipKind::kSkip;
-  int p = -1;                     // the P word as written, -1 when absent
+  int p = -1;  // the P word as written, -1 when absent
   static constexpr int kMaxInputs = 12;
-  int input_count = 0;            // inputs that end the block
+  int input_count = 0;  // inputs that end the block
   SignalAddr inputs[kMaxInputs];
-  bool active_low = false;        // SK0: input active at 0
-  bool edge = false;              // TSG: a new active edge is required
+  bool active_low = false;           // SK0: input active at 0
+  bool edge = false;                 // TSG: a new active edge is required
   bool active_at_start_ends = true;  // level input already active at block start ends it
-  bool ignore_inputs = false;     // machine lock / Z-axis cancel: run to the end point
-  bool torque_ends = false;       // P98 / P99
+  bool ignore_inputs = false;        // machine lock / Z-axis cancel: run to the end point
+  bool torque_ends = false;          // P98 / P99
   int torque_axis = -1;
   double torque_limit_pct = 0.0;
   double torque_delay_s = 0.0;
   SkipStop stop = SkipStop::kImmediate;
-  bool accel = false;             // SKF = 1: automatic acceleration/deceleration applies
-  bool feed_fixed = true;         // feed override and dry run do not act (SKF = 0, Mitsubishi)
+  bool accel = false;                // SKF = 1: automatic acceleration/deceleration applies
+  bool feed_fixed = true;            // feed override and dry run do not act (SKF = 0, Mitsubishi)
   bool override_zero_stops = false;  // with feed_fixed: override 0 % still stops (Mitsubishi)
   SkipLatch latch = SkipLatch::kExact;
-  double latch_delay_s = 0.0;     // kSampled only
-  bool servo_delay_comp = true;   // latch the actual (not the commanded) position
-  bool alarm_on_miss = false;     // K1
+  double latch_delay_s = 0.0;    // kSampled only
+  bool servo_delay_comp = true;  // latch the actual (not the commanded) position
+  bool alarm_on_miss = false;    // K1
 };
 
 struct Skip {
@@ -98,6 +98,10 @@ struct Skip {
 struct Spindle {
   double rpm = 0.0;
   int direction = 0;  // 1 = M03, -1 = M04, 0 = stopped
+  // Constant surface speed (G96): the programmed speed (m/min or ft/min) and
+  // the G50 clamp (0: none); rpm is then the speed at the present diameter.
+  double surface_speed = 0.0;
+  double max_rpm = 0.0;
 };
 struct ToolSelect {
   int tool = 0;
@@ -113,8 +117,8 @@ struct Message {
   std::string text;
 };
 
-using Command = std::variant<Rapid, Feed, Arc, Dwell, Skip, Spindle, ToolSelect, MCode, Stop,
-                             Message>;
+using Command =
+    std::variant<Rapid, Feed, Arc, Dwell, Skip, Spindle, ToolSelect, MCode, Stop, Message>;
 
 struct Stamped {
   Command cmd;

@@ -19,7 +19,8 @@ void number_to(fmt::memory_buffer& out, double v) {
     const double scaled = v * 1000.0;
     const auto m = static_cast<long long>(scaled < 0 ? scaled - 0.5 : scaled + 0.5);
     if (static_cast<double>(m) / 1000.0 == v) {
-      unsigned long long a = m < 0 ? static_cast<unsigned long long>(-m) : static_cast<unsigned long long>(m);
+      unsigned long long a =
+          m < 0 ? static_cast<unsigned long long>(-m) : static_cast<unsigned long long>(m);
       char* e = buf + sizeof buf;
       char* p = e;
       int frac = 3;
@@ -53,14 +54,20 @@ void axes_to(fmt::memory_buffer& out, const AxisVec& v, const AxisNames& axes) {
   }
 }
 
-void text_to(fmt::memory_buffer& out, std::string_view s) { out.append(s.data(), s.data() + s.size()); }
+void text_to(fmt::memory_buffer& out, std::string_view s) {
+  out.append(s.data(), s.data() + s.size());
+}
 
 const char* stop_name(StopKind k) {
   switch (k) {
-    case StopKind::kProgramStop: return "M00";
-    case StopKind::kOptionalStop: return "M01";
-    case StopKind::kProgramEnd: return "M02";
-    case StopKind::kRewindEnd: return "M30";
+    case StopKind::kProgramStop:
+      return "M00";
+    case StopKind::kOptionalStop:
+      return "M01";
+    case StopKind::kProgramEnd:
+      return "M02";
+    case StopKind::kRewindEnd:
+      return "M30";
   }
   return "?";
 }
@@ -122,12 +129,17 @@ void format_to(fmt::memory_buffer& out, const Stamped& s, const AxisNames& axes)
             fmt::format_to(it, " TORQUE_AXIS={} LIMIT={}% DELAY={}", axes.names[sp.torque_axis],
                            sp.torque_limit_pct, sp.torque_delay_s);
           }
-          fmt::format_to(it, " {}{}{}{}", sp.active_low ? "LOW" : "HIGH", sp.edge ? " EDGE" : " LEVEL",
+          fmt::format_to(it, " {}{}{}{}", sp.active_low ? "LOW" : "HIGH",
+                         sp.edge ? " EDGE" : " LEVEL",
                          sp.stop == SkipStop::kImmediate ? " STOP=immediate" : " STOP=decelerate",
                          sp.alarm_on_miss ? " K1" : "");
         } else if constexpr (std::is_same_v<T, Spindle>) {
           fmt::format_to(it, "SPINDLE S{} {}", c.rpm,
-                         c.direction > 0 ? "CW" : c.direction < 0 ? "CCW" : "OFF");
+                         c.direction > 0   ? "CW"
+                         : c.direction < 0 ? "CCW"
+                                           : "OFF");
+          if (c.surface_speed > 0.0) fmt::format_to(it, " CSS={}", c.surface_speed);
+          if (c.max_rpm > 0.0) fmt::format_to(it, " MAX={}", c.max_rpm);
         } else if constexpr (std::is_same_v<T, ToolSelect>) {
           fmt::format_to(it, "TOOL T{}", c.tool);
         } else if constexpr (std::is_same_v<T, MCode>) {

@@ -32,10 +32,14 @@ Result<AxisConfig> load_axis(const toml::table& t, std::string_view origin) {
     double min, max;
   };
   const Field fields[] = {
-      {"min", &a.min_mm, -1e6, 1e6},           {"max", &a.max_mm, -1e6, 1e6},
-      {"rapid", &a.rapid_mm_min, 1e-3, 1e7},   {"max_feed", &a.max_feed_mm_min, 1e-3, 1e7},
-      {"accel", &a.accel_mm_s2, 1e-3, 1e7},    {"kp", &a.kp_per_s, 0.0, 1e5},
-      {"feedforward", &a.feedforward, 0.0, 1.0}, {"torque_per_mm", &a.torque_pct_per_mm, 0, 1e9},
+      {"min", &a.min_mm, -1e6, 1e6},
+      {"max", &a.max_mm, -1e6, 1e6},
+      {"rapid", &a.rapid_mm_min, 1e-3, 1e7},
+      {"max_feed", &a.max_feed_mm_min, 1e-3, 1e7},
+      {"accel", &a.accel_mm_s2, 1e-3, 1e7},
+      {"kp", &a.kp_per_s, 0.0, 1e5},
+      {"feedforward", &a.feedforward, 0.0, 1.0},
+      {"torque_per_mm", &a.torque_pct_per_mm, 0, 1e9},
       {"torque_max", &a.torque_max_pct, 1, 1e4},
   };
   for (const auto& f : fields) {
@@ -59,8 +63,9 @@ Result<AxisVec> load_axis_values(const toml::node& node, const MachineConfig& m,
   for (const auto& [key, n] : *t) {
     const int i = key.str().size() == 1 ? m.axis_index(key.str()[0]) : -1;
     if (i < 0) {
-      return config_error(n, origin, std::string(what) + ": '" + std::string(key.str()) +
-                                         "' is not an axis of this machine");
+      return config_error(
+          n, origin,
+          std::string(what) + ": '" + std::string(key.str()) + "' is not an axis of this machine");
     }
     auto d = get_number(n, origin, key.str(), -1e6, 1e6);
     if (!d) return std::unexpected(d.error());
@@ -77,8 +82,9 @@ Result<void> load_offsets(const toml::table& t, MachineConfig& m, std::string_vi
       if (key.str() == kNames[i]) idx = i;
     }
     if (idx < 0) {
-      return config_error(node, origin, "unknown work offset '" + std::string(key.str()) +
-                                            "' (known: EXT, G54 ... G59)");
+      return config_error(
+          node, origin,
+          "unknown work offset '" + std::string(key.str()) + "' (known: EXT, G54 ... G59)");
     }
     auto v = load_axis_values(node, m, origin, key.str());
     if (!v) return std::unexpected(v.error());
@@ -94,22 +100,45 @@ Result<void> load_tools(const toml::table& t, MachineConfig& m, std::string_view
     auto [p, ec] = std::from_chars(k.data(), k.data() + k.size(), number);
     if (ec != std::errc{} || p != k.data() + k.size() || number < 1 ||
         number > m.tool_offset_count) {
-      return config_error(node, origin, "tool offset number '" + std::string(k) +
-                                            "' must be 1.." + std::to_string(m.tool_offset_count));
+      return config_error(node, origin,
+                          "tool offset number '" + std::string(k) + "' must be 1.." +
+                              std::to_string(m.tool_offset_count));
     }
     const auto* tab = node.as_table();
     if (!tab) return config_error(node, origin, "tool offset must be a table");
-    auto keys = check_keys(*tab, {"length", "length_wear", "radius", "radius_wear"}, origin,
-                           "a tool offset");
+    auto keys = check_keys(
+        *tab,
+        {"length", "length_wear", "radius", "radius_wear", "x", "z", "x_wear", "z_wear", "tip"},
+        origin, "a tool offset");
     if (!keys) return keys;
     ToolOffset o;
     for (const auto& [tk, tn] : *tab) {
-      auto v = get_number(tn, origin, tk.str(), -1e5, 1e5);
+      const auto name = tk.str();
+      if (name == "tip") {
+        auto v = get_number(tn, origin, name, 0, 9);
+        if (!v) return std::unexpected(v.error());
+        if (*v != std::trunc(*v)) return config_error(tn, origin, "tip must be a whole number 0-9");
+        o.tip = static_cast<int>(*v);
+        continue;
+      }
+      auto v = get_number(tn, origin, name, -1e5, 1e5);
       if (!v) return std::unexpected(v.error());
-      if (tk.str() == "length") o.length_geometry = *v;
-      else if (tk.str() == "length_wear") o.length_wear = *v;
-      else if (tk.str() == "radius") o.radius_geometry = *v;
-      else o.radius_wear = *v;
+      if (name == "length")
+        o.length_geometry = *v;
+      else if (name == "length_wear")
+        o.length_wear = *v;
+      else if (name == "radius")
+        o.radius_geometry = *v;
+      else if (name == "radius_wear")
+        o.radius_wear = *v;
+      else if (name == "x")
+        o.x_geometry = *v;
+      else if (name == "z")
+        o.z_geometry = *v;
+      else if (name == "x_wear")
+        o.x_wear = *v;
+      else
+        o.z_wear = *v;
     }
     m.tool_offsets[number] = o;
   }
@@ -130,9 +159,9 @@ Result<MachineConfig> parse_machine(std::string_view text, std::string_view orig
   if (!parsed) return std::unexpected(parsed.error());
   const toml::table& t = *parsed;
   auto keys = check_keys(t,
-                         {"name", "dialect", "servo_period_ms", "inch", "in_position_mm",
-                          "persistent_variables", "latch", "axis", "parameters", "work_offsets",
-                          "tool_offsets", "limits"},
+                         {"name", "type", "dialect", "servo_period_ms", "inch", "in_position_mm",
+                          "spindle_max_rpm", "persistent_variables", "latch", "axis", "parameters",
+                          "work_offsets", "tool_offsets", "limits"},
                          origin, "a machine file");
   if (!keys) return std::unexpected(keys.error());
   MachineConfig m;
@@ -146,6 +175,21 @@ Result<MachineConfig> parse_machine(std::string_view text, std::string_view orig
     auto s = get_string(*n, origin, "dialect");
     if (!s) return std::unexpected(s.error());
     m.dialect = *s;
+  }
+  if (const auto* n = t.get("type")) {
+    auto s = get_string(*n, origin, "type");
+    if (!s) return std::unexpected(s.error());
+    if (*s == "mill")
+      m.type = MachineType::kMill;
+    else if (*s == "lathe")
+      m.type = MachineType::kLathe;
+    else
+      return config_error(*n, origin, "type must be \"mill\" or \"lathe\"");
+  }
+  if (const auto* n = t.get("spindle_max_rpm")) {
+    auto v = get_number(*n, origin, "spindle_max_rpm", 1.0, 1e6);
+    if (!v) return std::unexpected(v.error());
+    m.spindle_max_rpm = *v;
   }
   if (const auto* n = t.get("servo_period_ms")) {
     auto v = get_number(*n, origin, "servo_period_ms", 0.0625, 100.0);
@@ -183,7 +227,15 @@ Result<MachineConfig> parse_machine(std::string_view text, std::string_view orig
     if (m.axes.size() == static_cast<std::size_t>(kMaxAxes)) {
       return config_error(e, origin, "at most " + std::to_string(kMaxAxes) + " axes");
     }
+    if (m.lathe() && a->name != 'X' && a->name != 'Z' && a->name != 'C') {
+      // G-code system A: U, W and H are the incremental X, Z and C.
+      return config_error(e, origin,
+                          std::string("axis ") + a->name + ": a lathe has X, Z and optionally C");
+    }
     m.axes.push_back(*a);
+  }
+  if (m.lathe() && (m.axis_index('X') < 0 || m.axis_index('Z') < 0)) {
+    return config_error(*axes, origin, "a lathe needs an X and a Z axis");
   }
   if (const auto* n = t.get("latch")) {
     const auto* lt = n->as_table();
@@ -193,9 +245,12 @@ Result<MachineConfig> parse_machine(std::string_view text, std::string_view orig
     if (const auto* mode = lt->get("mode")) {
       auto s = get_string(*mode, origin, "mode");
       if (!s) return std::unexpected(s.error());
-      if (*s == "exact") m.latch = canon::SkipLatch::kExact;
-      else if (*s == "sampled") m.latch = canon::SkipLatch::kSampled;
-      else return config_error(*mode, origin, "latch mode must be \"exact\" or \"sampled\"");
+      if (*s == "exact")
+        m.latch = canon::SkipLatch::kExact;
+      else if (*s == "sampled")
+        m.latch = canon::SkipLatch::kSampled;
+      else
+        return config_error(*mode, origin, "latch mode must be \"exact\" or \"sampled\"");
     }
     if (const auto* d = lt->get("delay_ms")) {
       auto v = get_number(*d, origin, "delay_ms", 0.0, 1000.0);
@@ -219,16 +274,18 @@ Result<MachineConfig> parse_machine(std::string_view text, std::string_view orig
       const auto k = key.str();
       int number = 0, bit = -1;
       const auto hash = k.find('#');
-      auto r = std::from_chars(k.data(), k.data() + (hash == std::string_view::npos ? k.size() : hash), number);
-      bool ok = r.ec == std::errc{} && r.ptr == k.data() + (hash == std::string_view::npos ? k.size() : hash);
+      auto r = std::from_chars(
+          k.data(), k.data() + (hash == std::string_view::npos ? k.size() : hash), number);
+      bool ok = r.ec == std::errc{} &&
+                r.ptr == k.data() + (hash == std::string_view::npos ? k.size() : hash);
       if (ok && hash != std::string_view::npos) {
         auto r2 = std::from_chars(k.data() + hash + 1, k.data() + k.size(), bit);
         ok = r2.ec == std::errc{} && r2.ptr == k.data() + k.size() && bit >= 0 && bit <= 7 &&
              (*v == 0 || *v == 1);
       }
       if (!ok || number <= 0) {
-        return config_error(node, origin, "parameter '" + std::string(k) +
-                                              "' must be N = value or N#B = 0/1");
+        return config_error(node, origin,
+                            "parameter '" + std::string(k) + "' must be N = value or N#B = 0/1");
       }
       m.params.push_back(ParamSetting{number, bit, *v, loc_of(node, origin)});
     }
@@ -248,9 +305,9 @@ Result<MachineConfig> parse_machine(std::string_view text, std::string_view orig
   if (const auto* n = t.get("limits")) {
     const auto* lt = n->as_table();
     if (!lt) return config_error(*n, origin, "[limits] must be a table");
-    auto k = check_keys(*lt, {"max_time_s", "max_macro_statements", "max_macro_levels",
-                              "max_subprogram_levels"},
-                        origin, "[limits]");
+    auto k = check_keys(
+        *lt, {"max_time_s", "max_macro_statements", "max_macro_levels", "max_subprogram_levels"},
+        origin, "[limits]");
     if (!k) return std::unexpected(k.error());
     for (const auto& [key, node] : *lt) {
       auto v = get_number(node, origin, key.str(), 1, 1e12);
@@ -282,9 +339,8 @@ Result<MachineConfig> builtin_machine(std::string_view name) {
   if (!f) {
     std::string known;
     for (const auto& n : builtin_machine_names()) known += (known.empty() ? "" : ", ") + n;
-    return fail(AlarmId::kUsage,
-                "no machine file or built-in machine '" + std::string(name) + "' (built-in: " +
-                    known + ")");
+    return fail(AlarmId::kUsage, "no machine file or built-in machine '" + std::string(name) +
+                                     "' (built-in: " + known + ")");
   }
   auto m = parse_machine(f->content, f->path);
   if (m) m->origin = "built-in " + std::string(name);

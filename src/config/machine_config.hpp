@@ -19,14 +19,14 @@ namespace skipnc::config {
 
 struct AxisConfig {
   char name = 'X';
-  double min_mm = -500.0;            // stroke limits, machine coordinates
+  double min_mm = -500.0;  // stroke limits, machine coordinates
   double max_mm = 500.0;
   double rapid_mm_min = 30000.0;
   double max_feed_mm_min = 20000.0;
   double accel_mm_s2 = 2000.0;
   // Servo: velocity = feedforward * commanded velocity + kp * following error.
   double kp_per_s = 30.0;
-  double feedforward = 0.0;          // 0..1
+  double feedforward = 0.0;  // 0..1
   // Motor torque, % of rated: torque_per_mm * following error while the axis
   // is held by a stop; the servo's own torque limit is torque_max_pct.
   double torque_pct_per_mm = 100.0;
@@ -36,9 +36,20 @@ struct AxisConfig {
 struct ToolOffset {
   double length_geometry = 0.0;  // H
   double length_wear = 0.0;
-  double radius_geometry = 0.0;  // D
+  double radius_geometry = 0.0;  // D; on a lathe the tool-nose radius
   double radius_wear = 0.0;
+  // Lathe (T code): X and Z offsets, program units of the axis (X in
+  // diameter when the X axis is programmed in diameter, 1006#3).
+  double x_geometry = 0.0;
+  double z_geometry = 0.0;
+  double x_wear = 0.0;
+  double z_wear = 0.0;
+  int tip = 0;  // imaginary tool-nose direction 0-9
 };
+
+// What the machine is: a mill (X Y Z ...) or a lathe (X and Z, optionally
+// C), which reads programs in G-code system A (docs/lathe.md).
+enum class MachineType : std::uint8_t { kMill, kLathe };
 
 // One parameter setting of the machine file or the command line.
 struct ParamSetting {
@@ -57,24 +68,27 @@ struct Limits {
 
 struct MachineConfig {
   std::string name = "mill3";
-  std::string origin;                 // file it came from, or "built-in mill3"
+  std::string origin;  // file it came from, or "built-in mill3"
   std::string dialect = "fanuc";
+  MachineType type = MachineType::kMill;
+  double spindle_max_rpm = 10000.0;  // the spindle's own top speed
   std::int64_t period_ns = 1'000'000;
   std::vector<AxisConfig> axes;
-  std::vector<ParamSetting> params;   // overrides of the dialect's defaults, in order
+  std::vector<ParamSetting> params;  // overrides of the dialect's defaults, in order
   // Work offsets: [0] external (EXT / G54 common shift), [1..6] G54..G59, mm.
   std::array<AxisVec, 7> work_offsets{};
   std::map<int, ToolOffset> tool_offsets;  // by offset number
   int tool_offset_count = 200;
   bool inch_machine = false;
   canon::SkipLatch latch = canon::SkipLatch::kExact;
-  double latch_delay_s = 0.0;         // sampled latch: detection delay after the sample
-  bool servo_delay_comp = true;       // latch the actual position (else the commanded)
-  double in_position_mm = 0.0005;     // in-position width for exact stop
-  std::string persistent_vars;        // file for #500-#999; empty: not kept
+  double latch_delay_s = 0.0;      // sampled latch: detection delay after the sample
+  bool servo_delay_comp = true;    // latch the actual position (else the commanded)
+  double in_position_mm = 0.0005;  // in-position width for exact stop
+  std::string persistent_vars;     // file for #500-#999; empty: not kept
   Limits limits;
 
   int axis_count() const noexcept { return static_cast<int>(axes.size()); }
+  bool lathe() const noexcept { return type == MachineType::kLathe; }
   // Index of an axis by letter, -1 when absent.
   int axis_index(char letter) const noexcept;
 };

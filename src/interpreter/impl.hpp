@@ -40,8 +40,8 @@ struct ProgramFile {
 
 struct Loop {
   int id = 0;
-  gcode::SourcePos pos;       // the WHILE (or DO) block
-  std::uint64_t end = 0;      // offset of its END block, once known
+  gcode::SourcePos pos;   // the WHILE (or DO) block
+  std::uint64_t end = 0;  // offset of its END block, once known
   bool end_known = false;
 };
 
@@ -52,12 +52,12 @@ inline constexpr int kWorkSystems = 7 + kExtraWorkSystems;
 // One level of the call stack.
 struct Frame {
   ProgramFile* file = nullptr;
-  gcode::SourcePos start;         // first block of the program
-  gcode::SourcePos resume;        // next block to read when this frame runs again
-  std::int64_t program = 0;       // O number (0: main program without one)
-  int repeats_left = 0;           // M98 L / G65 L
-  bool macro = false;             // G65/G66 call: owns a local-variable level
-  bool modal_call = false;        // a G66 call (no re-entry of the modal macro inside)
+  gcode::SourcePos start;    // first block of the program
+  gcode::SourcePos resume;   // next block to read when this frame runs again
+  std::int64_t program = 0;  // O number (0: main program without one)
+  int repeats_left = 0;      // M98 L / G65 L
+  bool macro = false;        // G65/G66 call: owns a local-variable level
+  bool modal_call = false;   // a G66 call (no re-entry of the modal macro inside)
   std::vector<Loop> loops;
 };
 
@@ -73,7 +73,7 @@ struct WordVal {
 struct Words {
   std::array<std::optional<WordVal>, 26> w;
   int g_count = 0;
-  std::array<int, 16> g{};            // G codes x10 (G54.1 -> 541)
+  std::array<int, 16> g{};  // G codes x10 (G54.1 -> 541)
   std::array<std::uint32_t, 16> g_col{};
   int m_count = 0;
   std::array<int, 3> m{};
@@ -93,7 +93,7 @@ enum class Pending : std::uint8_t { kNone, kRerun, kSkip };
 
 struct PendingSkip {
   SkipRecord record;
-  AxisVec target;               // programmed end point, machine coordinates
+  AxisVec target;  // programmed end point, machine coordinates
   bool alarm_on_miss = false;
   SourceLoc loc;
   std::array<std::string, canon::SkipSpec::kMaxInputs> input_names;
@@ -112,31 +112,38 @@ struct Interpreter::Impl {
   std::vector<Frame> frames;
   gcode::Block blk;
   gcode::RawBlock raw;
-  std::string raw_text;          // copy of the current block's text (skip records)
-  gcode::SourcePos block_pos;    // position of the current block
+  std::string raw_text;        // copy of the current block's text (skip records)
+  gcode::SourcePos block_pos;  // position of the current block
   Pending pending = Pending::kNone;
   PendingSkip pending_skip;
-  bool rerun = false;            // re-executing the block after a sync
-  bool need_sync = false;        // set by a read of a live value
+  bool rerun = false;      // re-executing the block after a sync
+  bool need_sync = false;  // set by a read of a live value
   bool motion_since_sync = false;
   bool ended = false;
   std::uint32_t cur_line = 0;
   std::uint32_t cur_col = 1;
 
   ModalState modal;
-  AxisVec pos;                   // commanded machine position, mm
+  AxisVec pos;  // commanded machine position, mm
   // EXT, G54..G59, then G54.1 P1..P300 (mm); modal.work indexes it.
   std::vector<AxisVec> work_offsets;
-  AxisVec local_shift;           // G52
-  AxisVec g92_shift;             // G92
-  AxisVec tool_pos_offset;       // G45-G48 accumulated (dialects that have them)
-  AxisVec g45_delta;             // this block's G45-G48 change (incremental targets), mm
-  double length_offset = 0.0;    // active tool length offset (mm), on length_axis
+  AxisVec local_shift;         // G52
+  AxisVec g92_shift;           // G92
+  AxisVec tool_pos_offset;     // G45-G48 accumulated (dialects that have them)
+  AxisVec g45_delta;           // this block's G45-G48 change (incremental targets), mm
+  double length_offset = 0.0;  // active tool length offset (mm), on length_axis
   int length_axis = 2;
+  // Lathe (lathe.cpp). Program values of an axis are `axis_scale` times its
+  // machine coordinate: 2 for an X axis programmed in diameter (1006#3), 1
+  // otherwise. Offsets (work, G50/G92, G52, T) are kept in program values.
+  std::array<double, kMaxAxes> axis_scale{};
+  AxisVec lathe_tool_offset;              // T code: geometry + wear, program values (mm)
+  AxisVec tool_offset_pending;            // its last change not yet moved, machine mm (U/W moves)
+  int wear_offset = 0;                    // lower digits of the T code
   std::vector<config::ToolOffset> tools;  // index = offset number
   VariableStore vars;
-  double last_cut_feed = 0.0;    // F of the last non-rapid move (program units), CompassNC G31
-  AxisVec skip_work;             // #5061.. (program units)
+  double last_cut_feed = 0.0;  // F of the last non-rapid move (program units), CompassNC G31
+  AxisVec skip_work;           // #5061.. (program units)
   AxisVec skip_machine;
   bool have_skip = false;
   SyncState last_sync;
@@ -145,11 +152,11 @@ struct Interpreter::Impl {
   std::int64_t statements = 0;
   std::int64_t parts_count = 0;
   std::int64_t parts_required = 0;
-  double timer_ms_base = 0.0;    // #3001 = time - base
-  double timer_h_base = 0.0;     // #3002
-  double last_e = 0.0;           // #4108
+  double timer_ms_base = 0.0;           // #3001 = time - base
+  double timer_h_base = 0.0;            // #3002
+  double last_e = 0.0;                  // #4108
   std::array<Value, 3> control_vars{};  // #3003 #3004 #3005
-  bool nat = false;              // 6004#0 NAT: signed ranges of ATAN / ASIN
+  bool nat = false;                     // 6004#0 NAT: signed ranges of ATAN / ASIN
   gcode::ParseLimits parse_limits;
   // ROUND inside an address word rounds to this increment (0: to a whole
   // number, as in a macro statement). Set while a word is evaluated.
@@ -218,9 +225,9 @@ struct Interpreter::Impl {
   Result<Step> execute_nc(const Words& words, CommandSink& out);
   double unit_mm() const noexcept { return modal.units == Units::kInch ? 25.4 : 1.0; }
   double word_length(const WordVal& w, bool rotary) const noexcept;  // program units
-  double offset_total(int axis) const noexcept;                     // mm
-  double work_of(int axis, double machine_mm) const noexcept;       // program units
-  double machine_of(int axis, double work_units) const noexcept;    // mm
+  double offset_total(int axis) const noexcept;                      // mm
+  double work_of(int axis, double machine_mm) const noexcept;        // program units
+  double machine_of(int axis, double work_units) const noexcept;     // mm
   Result<void> set_tool_length(const Words& words, LengthComp mode);
   Result<void> data_setting(const Words& words, SourceLoc where);
 
@@ -234,7 +241,21 @@ struct Interpreter::Impl {
   Result<void> dwell(const Words& words, CommandSink& out);
   Result<void> reference_return(const Words& words, int g, CommandSink& out);
   Result<Step> canned_cycle(const Words& words, CommandSink& out);
-  double feed_mm_per_min() const noexcept { return modal.feed * unit_mm(); }
+  // The modal F as a path feed: in feed per revolution, times the spindle
+  // speed at the present position (0 with the spindle stopped).
+  double feed_mm_per_min() const noexcept { return feed_to_mm_per_min(modal.feed); }
+  double feed_to_mm_per_min(double f) const noexcept;
+  // lathe.cpp
+  // Target of the axis words of a block (X/U, Z/W, C/H on a lathe) in
+  // machine coordinates; `moved` gets the axes that have a word.
+  Result<void> axis_targets(const Words& words, bool g53, AxisVec& target, AxisMask& moved);
+  bool has_axis_word(const Words& words) const noexcept;
+  char incremental_letter(int axis) const noexcept;  // U W H on a lathe, 0 otherwise
+  double spindle_rpm_at(const AxisVec& machine) const noexcept;
+  Result<void> need_spindle_for_feed(SourceLoc where) const;
+  Result<void> lathe_tool(const Words& words, ModalState& next);
+  Result<void> lathe_coordinate_setting(const Words& words);
+  void emit_spindle(CommandSink& out);
   void emit(CommandSink& out, canon::Command cmd);
 };
 

@@ -23,6 +23,16 @@ Result<void> Interpreter::Impl::init(const AxisVec& start) {
     axis_of_letter[static_cast<std::size_t>(mc.axes[static_cast<std::size_t>(i)].name - 'A')] = i;
   }
   length_axis = mc.axis_index('Z');
+  axis_scale.fill(1.0);
+  if (mc.lathe()) {
+    // G-code system A: G18, G99 at power-on; no tool length offset (the T
+    // code offsets X and Z); X in diameter with 1006#3.
+    modal.lathe = true;
+    modal.plane = PlaneSel::kZX;
+    modal.feed_mode = FeedMode::kPerRev;
+    length_axis = -1;
+    if (params.bit(1006, 3)) axis_scale[static_cast<std::size_t>(mc.axis_index('X'))] = 2.0;
+  }
   pos = start;
   work_offsets.assign(kWorkSystems, AxisVec{});
   std::copy(mc.work_offsets.begin(), mc.work_offsets.end(), work_offsets.begin());
@@ -200,8 +210,12 @@ Result<std::unique_ptr<Interpreter>> Interpreter::create(const Setup& setup,
   return std::unique_ptr<Interpreter>(new Interpreter(std::move(impl)));
 }
 
-Result<Step> Interpreter::step(CommandSink& out) { return impl_->step(out); }
-Result<void> Interpreter::sync(const SyncState& state) { return impl_->sync(state); }
+Result<Step> Interpreter::step(CommandSink& out) {
+  return impl_->step(out);
+}
+Result<void> Interpreter::sync(const SyncState& state) {
+  return impl_->sync(state);
+}
 
 Result<Value> Interpreter::read_variable(int number) const {
   return impl_->read_var(number, {});
@@ -210,20 +224,31 @@ Result<Value> Interpreter::read_named(std::string_view name) const {
   // As the parser stores #<name>: upper case, without spaces.
   std::string key;
   for (char c : name) {
-    if (c != ' ' && c != '\t') key += static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    if (c != ' ' && c != '\t')
+      key += static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
   }
   return impl_->read_named_var(key, {});
 }
-const ModalState& Interpreter::modal() const noexcept { return impl_->modal; }
+const ModalState& Interpreter::modal() const noexcept {
+  return impl_->modal;
+}
 AxisVec Interpreter::work_from_machine(const AxisVec& machine) const noexcept {
   AxisVec w;
   for (int i = 0; i < impl_->axis_count; ++i) w[i] = impl_->work_of(i, machine[i]);
   return w;
 }
-const std::vector<std::string>& Interpreter::messages() const noexcept { return impl_->messages; }
-const std::vector<SkipRecord>& Interpreter::skips() const noexcept { return impl_->skips; }
-std::uint32_t Interpreter::line() const noexcept { return impl_->cur_line; }
-const AxisVec& Interpreter::position() const noexcept { return impl_->pos; }
+const std::vector<std::string>& Interpreter::messages() const noexcept {
+  return impl_->messages;
+}
+const std::vector<SkipRecord>& Interpreter::skips() const noexcept {
+  return impl_->skips;
+}
+std::uint32_t Interpreter::line() const noexcept {
+  return impl_->cur_line;
+}
+const AxisVec& Interpreter::position() const noexcept {
+  return impl_->pos;
+}
 Result<void> Interpreter::save_persistent() const {
   // The DPRNT file (--dprnt) is written here too, whole, once per run.
   auto d = impl_->write_dprnt();

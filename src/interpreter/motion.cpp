@@ -23,6 +23,13 @@ Result<void> Interpreter::Impl::dwell(const Words& words, CommandSink& out) {
     seconds = word_length(words.at('U'), false);
   }
   if (seconds < 0) return fail(AlarmId::kBadValue, "negative dwell", loc(cur_col));
+  if (modal.feed_mode == FeedMode::kPerRev && params.bit(3405, 1)) {
+    // 3405#1 DWL: in feed per revolution the dwell counts spindle
+    // revolutions (X1. = 1 revolution, P1000 = 1 revolution).
+    auto s = need_spindle_for_feed(loc(cur_col));
+    if (!s) return s;
+    seconds = seconds * 60.0 / spindle_rpm_at(pos);
+  }
   emit(out, canon::Dwell{seconds});
   motion_since_sync = true;
   return {};
@@ -30,18 +37,17 @@ Result<void> Interpreter::Impl::dwell(const Words& words, CommandSink& out) {
 
 Result<void> Interpreter::Impl::reference_return(const Words& words, int g, CommandSink& out) {
   (void)g;
-  AxisVec mid = pos;
+  // Through the intermediate point (X/Z absolute, U/W incremental) to the
+  // reference position, machine zero.
+  AxisVec mid;
+  AxisMask moved;
+  auto t = axis_targets(words, false, mid, moved);
+  if (!t) return t;
+  if (moved.empty()) return {};
   AxisVec ref = pos;
-  bool any = false;
   for (int i = 0; i < axis_count; ++i) {
-    const char c = axis_letter[static_cast<std::size_t>(i)];
-    if (!words.has(c)) continue;
-    any = true;
-    const double v = word_length(words.at(c), false);
-    mid[i] = modal.distance == Distance::kAbsolute ? machine_of(i, v) : pos[i] + v * unit_mm();
-    ref[i] = 0.0;  // reference position: machine zero
+    if (moved.has(i)) ref[i] = 0.0;
   }
-  if (!any) return {};
   const bool linear = params.bit(1401, 1);
   emit(out, canon::Rapid{mid, linear});
   emit(out, canon::Rapid{ref, linear});
@@ -51,23 +57,14 @@ Result<void> Interpreter::Impl::reference_return(const Words& words, int g, Comm
 }
 
 Result<Step> Interpreter::Impl::motion(const Words& words, CommandSink& out, bool skip, bool g53) {
-  AxisVec target = pos;
+  AxisVec target;
   AxisMask moved;
-  for (int i = 0; i < axis_count; ++i) {
-    const char c = axis_letter[static_cast<std::size_t>(i)];
-    if (!words.has(c)) continue;
-    const double v = word_length(words.at(c), false);
-    if (g53 && modal.distance == Distance::kAbsolute) {
-      target[i] = v * unit_mm();
-    } else if (modal.distance == Distance::kAbsolute) {
-      target[i] = machine_of(i, v);
-    } else {
-      // G45-G48 (ncblock.cpp) lengthen or shorten an incremental move too.
-      target[i] = pos[i] + v * unit_mm() + g45_delta[i];
-    }
-    moved.set(i);
+  auto t = axis_targets(words, g53, target, moved);
+  if (!t) return std::unexpected(t.error());
+  if (skip || modal.motion != Motion::kRapid) {
+    auto s = need_spindle_for_feed(loc(cur_col));
+    if (!s) return std::unexpected(s.error());
   }
-  g45_delta = AxisVec{};
   if (skip) return skip_block(words, target, moved, out);
   if (modal.motion != Motion::kRapid) last_cut_feed = modal.feed;
   const bool exact = modal.path == PathMode::kExactStop || words.has_g(90);
@@ -98,13 +95,26 @@ Result<void> Interpreter::Impl::arc(const Words& words, const AxisVec& target, C
   char ci = 'I', cj = 'J';
   auto idx = [&](char c) { return axis_of_letter[static_cast<std::size_t>(c - 'A')]; };
   switch (modal.plane) {
-    case PlaneSel::kXY: pl = {idx('X'), idx('Y'), idx('Z')}; ci = 'I'; cj = 'J'; break;
-    case PlaneSel::kZX: pl = {idx('Z'), idx('X'), idx('Y')}; ci = 'K'; cj = 'I'; break;
-    case PlaneSel::kYZ: pl = {idx('Y'), idx('Z'), idx('X')}; ci = 'J'; cj = 'K'; break;
+    case PlaneSel::kXY:
+      pl = {idx('X'), idx('Y'), idx('Z')};
+      ci = 'I';
+      cj = 'J';
+      break;
+    case PlaneSel::kZX:
+      pl = {idx('Z'), idx('X'), idx('Y')};
+      ci = 'K';
+      cj = 'I';
+      break;
+    case PlaneSel::kYZ:
+      pl = {idx('Y'), idx('Z'), idx('X')};
+      ci = 'J';
+      cj = 'K';
+      break;
   }
   const SourceLoc at = loc(cur_col);
   if (pl.a0 < 0 || pl.a1 < 0) {
-    return fail(AlarmId::kIllegalPlaneAxis, "the selected plane's axes are not on this machine", at);
+    return fail(AlarmId::kIllegalPlaneAxis, "the selected plane's axes are not on this machine",
+                at);
   }
   if (feed_mm_per_min() <= 0.0) return fail(AlarmId::kNoFeed, "G02/G03 without a feed (F)", at);
   const double sx = pos[pl.a0], sy = pos[pl.a1];
@@ -117,7 +127,8 @@ Result<void> Interpreter::Impl::arc(const Words& words, const AxisVec& target, C
     const double dx = ex - sx, dy = ey - sy;
     const double d = std::hypot(dx, dy);
     if (d < 1e-9) {
-      return fail(AlarmId::kArcBadCenter, "a full circle cannot be programmed with R; use I, J or K", at);
+      return fail(AlarmId::kArcBadCenter,
+                  "a full circle cannot be programmed with R; use I, J or K", at);
     }
     if (r == 0.0) return fail(AlarmId::kArcBadCenter, "R0", loc(words.at('R').column));
     const double half = d / 2.0;

@@ -10,7 +10,20 @@ namespace skipnc::interp {
 namespace {
 
 enum class Group : std::uint8_t {
-  kNone, k00, k01, k02, k03, k05, k06, k07, k08, k09, k10, k12, k14, k15
+  kNone,
+  k00,
+  k01,
+  k02,
+  k03,
+  k05,
+  k06,
+  k07,
+  k08,
+  k09,
+  k10,
+  k12,
+  k14,
+  k15
 };
 
 struct GDef {
@@ -20,19 +33,48 @@ struct GDef {
 
 // The G codes this interpreter executes. Anything else is an improper G code.
 constexpr GDef kGCodes[] = {
-    {0, Group::k01},    {10, Group::k01},   {20, Group::k01},   {30, Group::k01},
-    {40, Group::k00},   {90, Group::k00},   {100, Group::k00},  {170, Group::k02},
-    {180, Group::k02},  {190, Group::k02},  {200, Group::k06},  {210, Group::k06},
-    {280, Group::k00},  {300, Group::k00},  {310, Group::k00},  {400, Group::k07},
-    {410, Group::k07},  {420, Group::k07},  {430, Group::k08},  {440, Group::k08},
-    {450, Group::k00},  {460, Group::k00},  {470, Group::k00},  {480, Group::k00},
-    {490, Group::k08},  {520, Group::k00},  {530, Group::k00},  {540, Group::k14},
-    {550, Group::k14},  {560, Group::k14},  {570, Group::k14},  {580, Group::k14},
-    {590, Group::k14},  {541, Group::k14},  {610, Group::k15},  {640, Group::k15},  {650, Group::k00},
-    {660, Group::k12},  {670, Group::k12},  {800, Group::k09},  {900, Group::k03},
-    {910, Group::k03},  {920, Group::k00},  {940, Group::k05},  {950, Group::k05},
-    {980, Group::k10},  {990, Group::k10},
+    {0, Group::k01},   {10, Group::k01},  {20, Group::k01},  {30, Group::k01},  {40, Group::k00},
+    {90, Group::k00},  {100, Group::k00}, {170, Group::k02}, {180, Group::k02}, {190, Group::k02},
+    {200, Group::k06}, {210, Group::k06}, {280, Group::k00}, {300, Group::k00}, {310, Group::k00},
+    {400, Group::k07}, {410, Group::k07}, {420, Group::k07}, {430, Group::k08}, {440, Group::k08},
+    {450, Group::k00}, {460, Group::k00}, {470, Group::k00}, {480, Group::k00}, {490, Group::k08},
+    {520, Group::k00}, {530, Group::k00}, {540, Group::k14}, {550, Group::k14}, {560, Group::k14},
+    {570, Group::k14}, {580, Group::k14}, {590, Group::k14}, {541, Group::k14}, {610, Group::k15},
+    {640, Group::k15}, {650, Group::k00}, {660, Group::k12}, {670, Group::k12}, {800, Group::k09},
+    {900, Group::k03}, {910, Group::k03}, {920, Group::k00}, {940, Group::k05}, {950, Group::k05},
+    {980, Group::k10}, {990, Group::k10}, {500, Group::k00}, {960, Group::k02}, {970, Group::k02},
 };
+
+// G codes that G-code system A (a lathe) gives another meaning or does not
+// have, with what to write instead. The turning cycles are not modelled.
+const char* lathe_refusal(int code) {
+  switch (code) {
+    case 900:
+      return " is the outer-diameter cutting cycle in G-code system A (not supported); X and Z are "
+             "absolute, U and W incremental";
+    case 910:
+      return " is not a code of G-code system A: U and W are the incremental X and Z";
+    case 920:
+      return " is the thread cutting cycle in G-code system A (not supported); G50 sets the "
+             "coordinate system";
+    case 940:
+      return " is the end-face cutting cycle in G-code system A (not supported); G98 is feed per "
+             "minute";
+    case 950:
+      return " is not a code of G-code system A: G99 is feed per revolution";
+    case 430:
+    case 440:
+    case 490:
+      return " is not a code of a lathe: the T code offsets the tool";
+    case 450:
+    case 460:
+    case 470:
+    case 480:
+      return " is not a code of a lathe";
+    default:
+      return nullptr;
+  }
+}
 
 Group group_of(int code) {
   for (const auto& d : kGCodes) {
@@ -57,17 +99,17 @@ double Interpreter::Impl::word_length(const WordVal& w, bool rotary) const noexc
 
 double Interpreter::Impl::offset_total(int axis) const noexcept {
   double o = work_offsets[0][axis] + work_offsets[static_cast<std::size_t>(modal.work)][axis] +
-             local_shift[axis] + g92_shift[axis] + tool_pos_offset[axis];
+             local_shift[axis] + g92_shift[axis] + tool_pos_offset[axis] + lathe_tool_offset[axis];
   if (axis == length_axis) o += length_offset;
   return o;
 }
 
 double Interpreter::Impl::work_of(int axis, double machine_mm) const noexcept {
-  return (machine_mm - offset_total(axis)) / unit_mm();
+  return (machine_mm * axis_scale[static_cast<std::size_t>(axis)] - offset_total(axis)) / unit_mm();
 }
 
 double Interpreter::Impl::machine_of(int axis, double work_units) const noexcept {
-  return work_units * unit_mm() + offset_total(axis);
+  return (work_units * unit_mm() + offset_total(axis)) / axis_scale[static_cast<std::size_t>(axis)];
 }
 
 // Evaluates the words of an NC block. In a G65/G66 block every address but
@@ -92,8 +134,8 @@ Result<void> Interpreter::Impl::collect_words(Words& words) {
       // ROUND in an address rounds to the address's least input increment
       // (lengths: 0.001 mm, 0.0001 inch); elsewhere to a whole number.
       const bool length = axis_of_letter[static_cast<std::size_t>(w.letter - 'A')] >= 0 ||
-                          w.letter == 'I' || w.letter == 'J' || w.letter == 'K' ||
-                          w.letter == 'R' || w.letter == 'Q';
+                          (mc.lathe() && (w.letter == 'U' || w.letter == 'W')) || w.letter == 'I' ||
+                          w.letter == 'J' || w.letter == 'K' || w.letter == 'R' || w.letter == 'Q';
       const double word_inc = modal.units == Units::kInch ? 0.0001 : 0.001;
       word_round_increment = length ? word_inc : 0.0;
       auto e = eval(w.expr);
@@ -145,8 +187,8 @@ Result<void> Interpreter::Impl::collect_words(Words& words) {
     }
     auto& slot = words.slot(w.letter);
     if (slot) {
-      return fail(AlarmId::kWordRepeated, std::string("address ") + w.letter + " twice in one block",
-                  loc(w.column));
+      return fail(AlarmId::kWordRepeated,
+                  std::string("address ") + w.letter + " twice in one block", loc(w.column));
     }
     slot = v;
   }
@@ -163,7 +205,8 @@ Result<void> Interpreter::Impl::set_tool_length(const Words& words, LengthComp m
   if (words.has('H')) {
     const double v = words.at('H').value;
     if (v != std::trunc(v) || v < 0 || v > mc.tool_offset_count) {
-      return fail(AlarmId::kIllegalOffsetNumber, "H" + std::to_string(v), loc(words.at('H').column));
+      return fail(AlarmId::kIllegalOffsetNumber, "H" + std::to_string(v),
+                  loc(words.at('H').column));
     }
     h = static_cast<int>(v);
   }
@@ -208,12 +251,13 @@ Result<void> Interpreter::Impl::data_setting(const Words& words, SourceLoc where
       return fail(AlarmId::kIllegalOffsetNumber, "G10 P" + std::to_string(pv),
                   loc(words.at('P').column));
     }
-    if (!words.has('R')) return fail(AlarmId::kBadValue, "G10 L" + std::to_string(l) + " needs R", where);
+    if (!words.has('R'))
+      return fail(AlarmId::kBadValue, "G10 L" + std::to_string(l) + " needs R", where);
     auto& t = tools[static_cast<std::size_t>(pv)];
-    double* f = l == 10 ? &t.length_geometry
+    double* f = l == 10             ? &t.length_geometry
                 : l == 11 || l == 1 ? &t.length_wear
-                : l == 12 ? &t.radius_geometry
-                          : &t.radius_wear;
+                : l == 12           ? &t.radius_geometry
+                                    : &t.radius_wear;
     const double mm = word_length(words.at('R'), false) * unit_mm();
     *f = inc ? *f + mm : mm;
     return {};
@@ -230,7 +274,7 @@ Result<Step> Interpreter::Impl::execute_nc(const Words& words, CommandSink& out)
 
   // Classify the G codes.
   bool g65 = false, g31 = false, g53 = false, g04 = false, g10 = false, g28 = false, g52 = false,
-       g92 = false, g09 = false;
+       g92 = false, g09 = false, g50 = false;
   int g45 = 0;
   ModalState next = modal;
   std::optional<Motion> motion_code;
@@ -239,37 +283,106 @@ Result<Step> Interpreter::Impl::execute_nc(const Words& words, CommandSink& out)
     const Group grp = group_of(code);
     const SourceLoc at = loc(words.g_col[static_cast<std::size_t>(i)]);
     if (grp == Group::kNone) return fail(AlarmId::kUnknownGCode, g_name(code), at);
+    if (mc.lathe()) {
+      if (const char* why = lathe_refusal(code))
+        return fail(AlarmId::kUnknownGCode, g_name(code) + why, at);
+      if (code == 980 || code == 990) {
+        next.feed_mode = code == 980 ? FeedMode::kPerMinute : FeedMode::kPerRev;
+        continue;
+      }
+    } else if (code == 500 || code == 960 || code == 970) {
+      return fail(AlarmId::kUnknownGCode,
+                  g_name(code) + " is a code of the lathe (G-code system A) only", at);
+    }
     switch (code) {
-      case 0: motion_code = Motion::kRapid; break;
-      case 10: motion_code = Motion::kLinear; break;
-      case 20: motion_code = Motion::kCwArc; break;
-      case 30: motion_code = Motion::kCcwArc; break;
-      case 40: g04 = true; break;
-      case 90: g09 = true; break;
-      case 100: g10 = true; break;
-      case 170: next.plane = PlaneSel::kXY; break;
-      case 180: next.plane = PlaneSel::kZX; break;
-      case 190: next.plane = PlaneSel::kYZ; break;
-      case 200: next.units = Units::kInch; break;
-      case 210: next.units = Units::kMetric; break;
-      case 280: g28 = true; break;
-      case 300: g28 = true; break;
-      case 310: g31 = true; break;
-      case 400: next.cutter = CutterComp::kOff; break;
-      case 410: next.cutter = CutterComp::kLeft; break;
-      case 420: next.cutter = CutterComp::kRight; break;
-      case 430: next.length = LengthComp::kPlus; break;
-      case 440: next.length = LengthComp::kMinus; break;
-      case 490: next.length = LengthComp::kOff; break;
-      case 450: case 460: case 470: case 480:
+      case 0:
+        motion_code = Motion::kRapid;
+        break;
+      case 10:
+        motion_code = Motion::kLinear;
+        break;
+      case 20:
+        motion_code = Motion::kCwArc;
+        break;
+      case 30:
+        motion_code = Motion::kCcwArc;
+        break;
+      case 40:
+        g04 = true;
+        break;
+      case 90:
+        g09 = true;
+        break;
+      case 100:
+        g10 = true;
+        break;
+      case 170:
+        next.plane = PlaneSel::kXY;
+        break;
+      case 180:
+        next.plane = PlaneSel::kZX;
+        break;
+      case 190:
+        next.plane = PlaneSel::kYZ;
+        break;
+      case 200:
+        next.units = Units::kInch;
+        break;
+      case 210:
+        next.units = Units::kMetric;
+        break;
+      case 280:
+        g28 = true;
+        break;
+      case 300:
+        g28 = true;
+        break;
+      case 310:
+        g31 = true;
+        break;
+      case 400:
+        next.cutter = CutterComp::kOff;
+        break;
+      case 410:
+        next.cutter = CutterComp::kLeft;
+        break;
+      case 420:
+        next.cutter = CutterComp::kRight;
+        break;
+      case 430:
+        next.length = LengthComp::kPlus;
+        break;
+      case 440:
+        next.length = LengthComp::kMinus;
+        break;
+      case 490:
+        next.length = LengthComp::kOff;
+        break;
+      case 450:
+      case 460:
+      case 470:
+      case 480:
         if (!dialect.sw.tool_position_offset) {
-          return fail(AlarmId::kUnknownGCode, g_name(code) + " (tool position offset) is not a code of this control", at);
+          return fail(AlarmId::kUnknownGCode,
+                      g_name(code) + " (tool position offset) is not a code of this control", at);
         }
         g45 = code / 10;
         break;
-      case 520: g52 = true; break;
-      case 530: g53 = true; break;
-      case 540: case 550: case 560: case 570: case 580: case 590:
+      case 500:
+        g50 = true;
+        break;
+      case 520:
+        g52 = true;
+        break;
+      case 530:
+        g53 = true;
+        break;
+      case 540:
+      case 550:
+      case 560:
+      case 570:
+      case 580:
+      case 590:
         next.work = (code - 530) / 10;
         break;
       case 541: {
@@ -283,20 +396,53 @@ Result<Step> Interpreter::Impl::execute_nc(const Words& words, CommandSink& out)
         next.work = 6 + static_cast<int>(pn);
         break;
       }
-      case 610: next.path = PathMode::kExactStop; break;
-      case 640: next.path = PathMode::kContinuous; break;
-      case 650: g65 = true; break;
-      case 660: next.modal_macro = true; break;
-      case 670: next.modal_macro = false; break;
-      case 800: next.cycle = Cycle::kNone; break;
-      case 900: next.distance = Distance::kAbsolute; break;
-      case 910: next.distance = Distance::kIncremental; break;
-      case 920: g92 = true; break;
-      case 940: next.feed_mode = FeedMode::kPerMinute; break;
-      case 950: next.feed_mode = FeedMode::kPerRev; break;
-      case 980: next.ret = ReturnLevel::kInitial; break;
-      case 990: next.ret = ReturnLevel::kR; break;
-      default: return fail(AlarmId::kUnknownGCode, g_name(code), at);
+      case 610:
+        next.path = PathMode::kExactStop;
+        break;
+      case 640:
+        next.path = PathMode::kContinuous;
+        break;
+      case 650:
+        g65 = true;
+        break;
+      case 660:
+        next.modal_macro = true;
+        break;
+      case 670:
+        next.modal_macro = false;
+        break;
+      case 800:
+        next.cycle = Cycle::kNone;
+        break;
+      case 900:
+        next.distance = Distance::kAbsolute;
+        break;
+      case 910:
+        next.distance = Distance::kIncremental;
+        break;
+      case 920:
+        g92 = true;
+        break;
+      case 960:
+        next.spindle_mode = SpindleMode::kSurfaceSpeed;
+        break;
+      case 970:
+        next.spindle_mode = SpindleMode::kRpm;
+        break;
+      case 940:
+        next.feed_mode = FeedMode::kPerMinute;
+        break;
+      case 950:
+        next.feed_mode = FeedMode::kPerRev;
+        break;
+      case 980:
+        next.ret = ReturnLevel::kInitial;
+        break;
+      case 990:
+        next.ret = ReturnLevel::kR;
+        break;
+      default:
+        return fail(AlarmId::kUnknownGCode, g_name(code), at);
     }
   }
   const SourceLoc block_loc = loc(cur_col);
@@ -323,8 +469,7 @@ Result<Step> Interpreter::Impl::execute_nc(const Words& words, CommandSink& out)
     }
     if (!words.has('P')) {
       return fail(AlarmId::kProgramNotFound,
-                  g65 ? "G65 needs P (program number)" : "G66 needs P (program number)",
-                  block_loc);
+                  g65 ? "G65 needs P (program number)" : "G66 needs P (program number)", block_loc);
     }
     const double p = words.at('P').value;
     double l = 1.0;
@@ -353,7 +498,9 @@ Result<Step> Interpreter::Impl::execute_nc(const Words& words, CommandSink& out)
   // Addresses that mean nothing here are refused, so a typo is not ignored.
   for (int c = 0; c < 26; ++c) {
     const char letter = static_cast<char>('A' + c);
-    if (!words.w[static_cast<std::size_t>(c)] || axis_of_letter[static_cast<std::size_t>(c)] >= 0) continue;
+    if (!words.w[static_cast<std::size_t>(c)] || axis_of_letter[static_cast<std::size_t>(c)] >= 0)
+      continue;
+    if (mc.lathe() && (letter == 'U' || letter == 'W')) continue;
     if (std::string_view("FSTHDPQRKLIJE").find(letter) != std::string_view::npos) continue;
     return fail(AlarmId::kIllegalAddress,
                 std::string("address ") + letter + " is not an address of this machine",
@@ -367,18 +514,31 @@ Result<Step> Interpreter::Impl::execute_nc(const Words& words, CommandSink& out)
     if (f < 0) return fail(AlarmId::kBadValue, "negative F", loc(words.at('F').column));
     if (!(g31 && dialect.sw.skip_feed == config::SkipFeedRule::kBlockOrParam)) next.feed = f;
   }
+  bool spindle_changed = next.spindle_mode != modal.spindle_mode;
   if (words.has('S')) {
-    next.spindle = words.at('S').value;
-    emit(out, canon::Spindle{next.spindle, 0});
+    const WordVal& sw = words.at('S');
+    if (mc.lathe()) {
+      if (sw.value < 0) return fail(AlarmId::kBadValue, "negative S", loc(sw.column));
+      if (g50) {
+        next.spindle_clamp_rpm = sw.value;  // G50 S: the G96 speed limit
+      } else {
+        next.spindle = sw.value;
+        spindle_changed = true;
+      }
+    } else {
+      next.spindle = sw.value;
+      emit(out, canon::Spindle{next.spindle, 0});
+    }
   }
-  if (words.has('T')) {
+  if (words.has('T') && !mc.lathe()) {
     next.tool = static_cast<int>(words.at('T').value);
     emit(out, canon::ToolSelect{next.tool});
   }
   if (words.has('D')) {
     const double d = words.at('D').value;
     if (d != std::trunc(d) || d < 0 || d > mc.tool_offset_count) {
-      return fail(AlarmId::kIllegalOffsetNumber, "D" + std::to_string(d), loc(words.at('D').column));
+      return fail(AlarmId::kIllegalOffsetNumber, "D" + std::to_string(d),
+                  loc(words.at('D').column));
     }
     next.d = static_cast<int>(d);
   }
@@ -399,14 +559,29 @@ Result<Step> Interpreter::Impl::execute_nc(const Words& words, CommandSink& out)
     auto r = set_tool_length(words, modal.length);
     if (!r) return undo(r.error());
   }
+  if (words.has('T') && mc.lathe()) {
+    auto r = lathe_tool(words, modal);
+    if (!r) return undo(r.error());
+    emit(out, canon::ToolSelect{modal.tool / 100});
+  }
   for (int i = 0; i < words.m_count; ++i) {
     const int m = words.m[static_cast<std::size_t>(i)];
-    if (m == 3 || m == 4 || m == 5) emit(out, canon::Spindle{modal.spindle, m == 3 ? 1 : m == 4 ? -1 : 0});
+    if (m != 3 && m != 4 && m != 5) continue;
+    modal.spindle_dir = m == 3 ? 1 : m == 4 ? -1 : 0;
+    if (mc.lathe()) {
+      spindle_changed = true;
+    } else {
+      emit(out, canon::Spindle{modal.spindle, modal.spindle_dir});
+    }
   }
+  if (spindle_changed) emit_spindle(out);
 
   bool moved = false;
   if (g10) {
     auto r = data_setting(words, block_loc);
+    if (!r) return undo(r.error());
+  } else if (g50) {
+    auto r = lathe_coordinate_setting(words);
     if (!r) return undo(r.error());
   } else if (g52 || g92) {
     for (int i = 0; i < axis_count; ++i) {
@@ -418,7 +593,7 @@ Result<Step> Interpreter::Impl::execute_nc(const Words& words, CommandSink& out)
       } else {
         // G92: the current position becomes v in the work system.
         g92_shift[i] = 0.0;
-        g92_shift[i] = pos[i] - v - offset_total(i);
+        g92_shift[i] = pos[i] * axis_scale[static_cast<std::size_t>(i)] - v - offset_total(i);
       }
     }
   } else if (g04) {
@@ -429,11 +604,11 @@ Result<Step> Interpreter::Impl::execute_nc(const Words& words, CommandSink& out)
     if (!r) return undo(r.error());
     moved = true;
   } else {
-    bool any_axis = false;
-    for (int i = 0; i < axis_count; ++i) any_axis = any_axis || words.has(axis_letter[static_cast<std::size_t>(i)]);
-    const bool arc_words = modal.motion == Motion::kCwArc || modal.motion == Motion::kCcwArc
-                               ? (words.has('I') || words.has('J') || words.has('K') || words.has('R'))
-                               : false;
+    const bool any_axis = has_axis_word(words);
+    const bool arc_words =
+        modal.motion == Motion::kCwArc || modal.motion == Motion::kCcwArc
+            ? (words.has('I') || words.has('J') || words.has('K') || words.has('R'))
+            : false;
     if (g31 || any_axis || arc_words || g45 != 0) {
       if (g45 != 0) {
         // G45-G48: the move is extended (G45, G47) or shortened (G46, G48)
@@ -487,7 +662,8 @@ Result<Step> Interpreter::Impl::execute_nc(const Words& words, CommandSink& out)
         if (!words.has('P')) return fail(AlarmId::kProgramNotFound, "M98 needs P", block_loc);
         const double p = words.at('P').value;
         if (p != std::trunc(p) || p < 1 || p > 99999999) {
-          return fail(AlarmId::kProgramNotFound, "M98 P" + std::to_string(p), loc(words.at('P').column));
+          return fail(AlarmId::kProgramNotFound, "M98 P" + std::to_string(p),
+                      loc(words.at('P').column));
         }
         auto program = static_cast<std::int64_t>(p);
         int repeats = 1;
@@ -508,16 +684,18 @@ Result<Step> Interpreter::Impl::execute_nc(const Words& words, CommandSink& out)
         if (words.has('P')) {
           const double pv = std::round(words.at('P').value);
           if (pv < 1 || pv > 99999) {
-            return fail(AlarmId::kIllegalSequenceNumber,
-                        "M99 P" + std::to_string(words.at('P').value) +
-                            ": sequence numbers are 1 to 99999",
-                        loc(words.at('P').column));
+            return fail(
+                AlarmId::kIllegalSequenceNumber,
+                "M99 P" + std::to_string(words.at('P').value) + ": sequence numbers are 1 to 99999",
+                loc(words.at('P').column));
           }
           label = static_cast<std::int64_t>(pv);
         }
         return return_from_sub(label, block_loc);
       }
-      case 3: case 4: case 5:
+      case 3:
+      case 4:
+      case 5:
         break;
       default:
         emit(out, canon::MCode{m});

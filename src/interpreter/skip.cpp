@@ -151,14 +151,15 @@ Result<Step> Interpreter::Impl::skip_block(const Words& words, const AxisVec& ta
       break;
     case config::SkipFeedRule::kBlockOrParam:
       // The block's F is not made modal (ncblock.cpp).
-      feed = words.has('F') ? words.at('F').value * unit_mm() : param_feed(sw.skip_feed_param);
+      feed =
+          words.has('F') ? feed_to_mm_per_min(words.at('F').value) : param_feed(sw.skip_feed_param);
       break;
     case config::SkipFeedRule::kParamSwitch:
       feed = params.get(sw.skip_feed_switch_param) != 0.0 ? param_feed(sw.skip_feed_param)
                                                           : feed_mm_per_min();
       break;
     case config::SkipFeedRule::kLastCutting:
-      feed = words.has('F') ? feed_mm_per_min() : last_cut_feed * unit_mm();
+      feed = words.has('F') ? feed_mm_per_min() : feed_to_mm_per_min(last_cut_feed);
       break;
   }
   if (!(feed > 0.0)) return fail(AlarmId::kSkipNoFeed, "G31 without a feed", at);
@@ -279,7 +280,8 @@ Result<void> Interpreter::Impl::finish_skip(const SyncState& s) {
               ? std::string(1, letter)
               : sv.named_aux + std::to_string(++aux);
       if (!sv.named_machine.empty()) {
-        vars.set_named(upper(sv.named_machine + axis), Value::of(latch[i] / unit_mm()));
+        vars.set_named(upper(sv.named_machine + axis),
+                       Value::of(latch[i] * axis_scale[static_cast<std::size_t>(i)] / unit_mm()));
       }
       if (!sv.named_local.empty()) {
         vars.set_named(upper(sv.named_local + axis), Value::of(skip_work[i]));

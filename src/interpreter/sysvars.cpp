@@ -134,7 +134,11 @@ Result<Value> Interpreter::Impl::read_var(int n, SourceLoc where) {
     return Value::of(f(i) + 0.0);
   };
   if (n >= 5001 && n <= 5008) return axis_value(5001, [&](int i) { return work_of(i, pos[i]); });
-  if (n >= 5021 && n <= 5028) return axis_value(5021, [&](int i) { return pos[i] / unit_mm(); });
+  // Lengths in program values: an X axis in diameter reads in diameter.
+  const auto scale = [&](int i) { return axis_scale[static_cast<std::size_t>(i)]; };
+  if (n >= 5021 && n <= 5028) {
+    return axis_value(5021, [&](int i) { return pos[i] * scale(i) / unit_mm(); });
+  }
   if (n >= 5041 && n <= 5048) return axis_value(5041, [&](int i) { return work_of(i, pos[i]); });
   if (n >= 5061 && n <= 5068) {
     return axis_value(5061, [&](int i) { return have_skip ? skip_work[i] : 0.0; });
@@ -145,7 +149,7 @@ Result<Value> Interpreter::Impl::read_var(int n, SourceLoc where) {
   }
   if (n >= 5101 && n <= 5108) {
     return axis_value(5101, [&](int i) {
-      return (last_sync.machine_position[i] - last_sync.actual_position[i]) / unit_mm();
+      return (last_sync.machine_position[i] - last_sync.actual_position[i]) * scale(i) / unit_mm();
     });
   }
   if (int set = 0, axis = 0; work_offset_var(n, set, axis)) {

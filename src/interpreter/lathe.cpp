@@ -1,0 +1,185 @@
+// Lathe-type programming (G-code system A, docs/lathe.md): X and Z absolute,
+// U and W (H for C) incremental; X in diameter with 1006#3; the spindle
+// model behind feed per revolution and constant surface speed; the T code
+// with geometry and wear offsets; G50 coordinate system setting and speed
+// clamp. The axis-word rules apply to mills too (without U/W/H).
+#include <cmath>
+#include <numbers>
+#include <string>
+
+#include "interpreter/impl.hpp"
+
+namespace skipnc::interp {
+
+char Interpreter::Impl::incremental_letter(int axis) const noexcept {
+  if (!mc.lathe()) return 0;
+  switch (axis_letter[static_cast<std::size_t>(axis)]) {
+    case 'X':
+      return 'U';
+    case 'Z':
+      return 'W';
+    case 'C':
+      return 'H';
+    default:
+      return 0;
+  }
+}
+
+bool Interpreter::Impl::has_axis_word(const Words& words) const noexcept {
+  for (int i = 0; i < axis_count; ++i) {
+    if (words.has(axis_letter[static_cast<std::size_t>(i)])) return true;
+    const char inc = incremental_letter(i);
+    if (inc != 0 && words.has(inc)) return true;
+  }
+  return false;
+}
+
+Result<void> Interpreter::Impl::axis_targets(const Words& words, bool g53, AxisVec& target,
+                                             AxisMask& moved) {
+  target = pos;
+  for (int i = 0; i < axis_count; ++i) {
+    const char c = axis_letter[static_cast<std::size_t>(i)];
+    const char inc = incremental_letter(i);
+    const bool has_abs = words.has(c);
+    const bool has_inc = inc != 0 && words.has(inc);
+    if (has_abs && has_inc) {
+      // X and U (Z and W) in one block: refused rather than guessed.
+      const WordVal& later =
+          words.at(c).column > words.at(inc).column ? words.at(c) : words.at(inc);
+      return fail(AlarmId::kWordRepeated,
+                  std::string(1, c) + " and " + inc +
+                      " in one block: the same axis absolute and incremental",
+                  loc(later.column));
+    }
+    if (!has_abs && !has_inc) continue;
+    const double scale = axis_scale[static_cast<std::size_t>(i)];
+    const bool incremental = has_inc || modal.distance == Distance::kIncremental;
+    const double v = word_length(words.at(has_inc ? inc : c), false);
+    if (g53 && !incremental) {
+      target[i] = v * unit_mm() / scale;
+    } else if (!incremental) {
+      target[i] = machine_of(i, v);
+    } else {
+      // G45-G48 (ncblock.cpp) lengthen or shorten an incremental move; a T
+      // offset changed since the axis last moved is moved with it.
+      target[i] = pos[i] + v * unit_mm() / scale + g45_delta[i] + tool_offset_pending[i];
+    }
+    tool_offset_pending[i] = 0.0;
+    moved.set(i);
+  }
+  g45_delta = AxisVec{};
+  return {};
+}
+
+// Spindle speed at a machine position: the programmed S in G97; in G96 the
+// speed that gives the surface speed S at the diameter of the work's X
+// there, limited by the G50 clamp. Always limited by the machine's maximum.
+double Interpreter::Impl::spindle_rpm_at(const AxisVec& machine) const noexcept {
+  if (modal.spindle_dir == 0 || modal.spindle <= 0.0) return 0.0;
+  double rpm = modal.spindle;
+  if (modal.spindle_mode == SpindleMode::kSurfaceSpeed) {
+    const int x = axis_of_letter['X' - 'A'];
+    const double program_x = x >= 0 ? std::fabs(work_of(x, machine[x])) : 0.0;
+    const double diameter_mm =
+        program_x * unit_mm() *
+        (x >= 0 && axis_scale[static_cast<std::size_t>(x)] == 2.0 ? 1.0 : 2.0);
+    const double surface_mm_per_min =
+        modal.spindle * (modal.units == Units::kInch ? 304.8 : 1000.0);
+    rpm = diameter_mm > 0.0 ? surface_mm_per_min / (std::numbers::pi * diameter_mm)
+                            : mc.spindle_max_rpm;
+    if (modal.spindle_clamp_rpm > 0.0) rpm = std::min(rpm, modal.spindle_clamp_rpm);
+  }
+  return std::min(rpm, mc.spindle_max_rpm);
+}
+
+double Interpreter::Impl::feed_to_mm_per_min(double f) const noexcept {
+  const double per_unit = f * unit_mm();
+  if (modal.feed_mode != FeedMode::kPerRev) return per_unit;
+  return per_unit * spindle_rpm_at(pos);
+}
+
+Result<void> Interpreter::Impl::need_spindle_for_feed(SourceLoc where) const {
+  if (modal.feed_mode == FeedMode::kPerRev && spindle_rpm_at(pos) <= 0.0) {
+    // A Fanuc control waits for the spindle; a program that would hang is
+    // stopped with an alarm instead.
+    return fail(AlarmId::kFeedPerRevNoSpindle,
+                std::string("feed per revolution (") + (modal.lathe ? "G99" : "G95") +
+                    ") with the spindle stopped (S0 or M05)",
+                where);
+  }
+  return {};
+}
+
+// T code of a lathe: the upper digits select the tool and its geometry
+// offset, the lower two digits the wear offset (T0101; T0100: no wear
+// offset; T0: none). The offsets shift the coordinate system: the next
+// absolute move takes the tool tip to the programmed point, an incremental
+// move carries the change with it.
+Result<void> Interpreter::Impl::lathe_tool(const Words& words, ModalState& next) {
+  const WordVal& t = words.at('T');
+  if (t.value != std::trunc(t.value) || t.value < 0 || t.value > 99999999) {
+    return fail(AlarmId::kIllegalOffsetNumber, "T" + std::to_string(t.value), loc(t.column));
+  }
+  const auto code = static_cast<int>(t.value);
+  const int tool = code / 100;
+  const int wear = code % 100;
+  if (tool > mc.tool_offset_count || wear > mc.tool_offset_count) {
+    return fail(AlarmId::kIllegalOffsetNumber,
+                "T" + std::to_string(code) + ": offset numbers are 0-" +
+                    std::to_string(mc.tool_offset_count),
+                loc(t.column));
+  }
+  next.tool = code;
+  wear_offset = wear;
+  const auto& g = tools[static_cast<std::size_t>(tool)];
+  const auto& w = tools[static_cast<std::size_t>(wear)];
+  AxisVec off;
+  if (const int x = mc.axis_index('X'); x >= 0) {
+    off[x] = (tool != 0 ? g.x_geometry : 0.0) + (wear != 0 ? w.x_wear : 0.0);
+  }
+  if (const int z = mc.axis_index('Z'); z >= 0) {
+    off[z] = (tool != 0 ? g.z_geometry : 0.0) + (wear != 0 ? w.z_wear : 0.0);
+  }
+  for (int i = 0; i < axis_count; ++i) {
+    tool_offset_pending[i] +=
+        (off[i] - lathe_tool_offset[i]) / axis_scale[static_cast<std::size_t>(i)];
+  }
+  lathe_tool_offset = off;
+  return {};
+}
+
+// G50 X Z (U W): the present position gets these program values (U W: the
+// present values plus these). The S word of the block is the speed clamp
+// (ncblock.cpp).
+Result<void> Interpreter::Impl::lathe_coordinate_setting(const Words& words) {
+  for (int i = 0; i < axis_count; ++i) {
+    const char c = axis_letter[static_cast<std::size_t>(i)];
+    const char inc = incremental_letter(i);
+    const bool has_abs = words.has(c);
+    const bool has_inc = inc != 0 && words.has(inc);
+    if (has_abs && has_inc) {
+      return fail(AlarmId::kWordRepeated, std::string(1, c) + " and " + inc + " in one G50 block",
+                  loc(words.at(inc).column));
+    }
+    if (!has_abs && !has_inc) continue;
+    const double now = work_of(i, pos[i]) * unit_mm();
+    const double v = word_length(words.at(has_inc ? inc : c), false) * unit_mm();
+    const double want = has_inc ? now + v : v;
+    g92_shift[i] += now - want;
+  }
+  return {};
+}
+
+void Interpreter::Impl::emit_spindle(CommandSink& out) {
+  canon::Spindle s;
+  s.direction = modal.spindle_dir;
+  s.rpm = modal.spindle_dir == 0 ? modal.spindle : spindle_rpm_at(pos);
+  if (modal.spindle_mode == SpindleMode::kSurfaceSpeed) {
+    s.rpm = spindle_rpm_at(pos);
+    s.surface_speed = modal.spindle;
+    s.max_rpm = modal.spindle_clamp_rpm;
+  }
+  emit(out, s);
+}
+
+}  // namespace skipnc::interp
