@@ -137,9 +137,11 @@ struct Interpreter::Impl {
   // machine coordinate: 2 for an X axis programmed in diameter (1006#3), 1
   // otherwise. Offsets (work, G50/G92, G52, T) are kept in program values.
   std::array<double, kMaxAxes> axis_scale{};
-  AxisVec lathe_tool_offset;              // T code: geometry + wear, program values (mm)
-  AxisVec tool_offset_pending;            // its last change not yet moved, machine mm (U/W moves)
-  int wear_offset = 0;                    // lower digits of the T code
+  AxisVec lathe_tool_offset;     // T code: geometry + wear, program values (mm)
+  AxisVec tool_offset_pending;   // its last change not yet moved, machine mm (U/W moves)
+  int wear_offset = 0;           // lower digits of the T code
+  double turning_cycle_z = 0.0;  // G90 cycle: Z end of the last pass, machine mm
+  bool have_turning_cycle_z = false;
   std::vector<config::ToolOffset> tools;  // index = offset number
   VariableStore vars;
   double last_cut_feed = 0.0;  // F of the last non-rapid move (program units), CompassNC G31
@@ -256,6 +258,7 @@ struct Interpreter::Impl {
   Result<void> lathe_tool(const Words& words, ModalState& next);
   Result<void> lathe_coordinate_setting(const Words& words);
   void emit_spindle(CommandSink& out);
+  Result<void> turning_cycle(const Words& words, AxisVec& target, AxisMask moved, CommandSink& out);
   void emit(CommandSink& out, canon::Command cmd);
 };
 

@@ -182,4 +182,39 @@ void Interpreter::Impl::emit_spindle(CommandSink& out) {
   emit(out, s);
 }
 
+// G90 X(U) Z(W) [R] F: the outer-diameter cutting cycle of system A. From
+// the start point: (1) rapid in X to the cut's start (the end X, plus R in
+// radius for a taper), (2) feed to the end point, (3) feed in X back to the
+// start X, (4) rapid in Z back to the start point. Modal: a later block with
+// only X (U) cuts the next pass to the same Z.
+Result<void> Interpreter::Impl::turning_cycle(const Words& words, AxisVec& target, AxisMask moved,
+                                              CommandSink& out) {
+  const int x = axis_of_letter['X' - 'A'];
+  const int z = axis_of_letter['Z' - 'A'];
+  const SourceLoc at = loc(cur_col);
+  if (!moved.has(z)) {
+    if (!have_turning_cycle_z) {
+      return fail(AlarmId::kBadValue, "G90 needs Z or W (the end of the cut) in its first block",
+                  at);
+    }
+    target[z] = turning_cycle_z;
+  }
+  const double feed = feed_mm_per_min();
+  if (feed <= 0.0) return fail(AlarmId::kNoFeed, "G90 without a feed (F)", at);
+  const double taper = words.has('R') ? word_length(words.at('R'), false) * unit_mm() : 0.0;
+  const AxisVec start = pos;
+  AxisVec p = start;
+  p[x] = target[x] + taper;
+  emit(out, canon::Rapid{p, params.bit(1401, 1)});
+  p = target;
+  emit(out, canon::Feed{p, feed, false});
+  p[x] = start[x];
+  emit(out, canon::Feed{p, feed, false});
+  emit(out, canon::Rapid{start, params.bit(1401, 1)});
+  turning_cycle_z = target[z];
+  have_turning_cycle_z = true;
+  target = start;
+  return {};
+}
+
 }  // namespace skipnc::interp

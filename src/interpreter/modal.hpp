@@ -9,9 +9,10 @@
 
 namespace skipnc::interp {
 
-enum class Motion : std::uint8_t { kRapid, kLinear, kCwArc, kCcwArc };  // group 01
-enum class PlaneSel : std::uint8_t { kXY, kZX, kYZ };                   // group 02: G17 G18 G19
-enum class Distance : std::uint8_t { kAbsolute, kIncremental };         // group 03: G90 G91
+// Group 01; kTurningCycle is G90 of a lathe (outer-diameter cutting cycle).
+enum class Motion : std::uint8_t { kRapid, kLinear, kCwArc, kCcwArc, kTurningCycle };
+enum class PlaneSel : std::uint8_t { kXY, kZX, kYZ };            // group 02: G17 G18 G19
+enum class Distance : std::uint8_t { kAbsolute, kIncremental };  // group 03: G90 G91
 // Group 05: G94 G95 on a mill, G98 G99 on a lathe (G-code system A).
 enum class FeedMode : std::uint8_t { kPerMinute, kPerRev };
 // Lathe group 02: G97 S in rpm, G96 S in surface speed (m/min, ft/min).

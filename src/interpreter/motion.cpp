@@ -84,6 +84,11 @@ Result<Step> Interpreter::Impl::motion(const Words& words, CommandSink& out, boo
       if (!r) return std::unexpected(r.error());
       break;
     }
+    case Motion::kTurningCycle: {
+      auto r = turning_cycle(words, target, moved, out);
+      if (!r) return std::unexpected(r.error());
+      break;
+    }
   }
   pos = target;
   motion_since_sync = true;

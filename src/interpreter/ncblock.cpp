@@ -49,9 +49,6 @@ constexpr GDef kGCodes[] = {
 // have, with what to write instead. The turning cycles are not modelled.
 const char* lathe_refusal(int code) {
   switch (code) {
-    case 900:
-      return " is the outer-diameter cutting cycle in G-code system A (not supported); X and Z are "
-             "absolute, U and W incremental";
     case 910:
       return " is not a code of G-code system A: U and W are the incremental X and Z";
     case 920:
@@ -286,6 +283,10 @@ Result<Step> Interpreter::Impl::execute_nc(const Words& words, CommandSink& out)
     if (mc.lathe()) {
       if (const char* why = lathe_refusal(code))
         return fail(AlarmId::kUnknownGCode, g_name(code) + why, at);
+      if (code == 900) {
+        motion_code = Motion::kTurningCycle;  // system A: G90 is a cycle, not absolute mode
+        continue;
+      }
       if (code == 980 || code == 990) {
         next.feed_mode = code == 980 ? FeedMode::kPerMinute : FeedMode::kPerRev;
         continue;
