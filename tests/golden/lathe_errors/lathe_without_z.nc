@@ -1,0 +1,2 @@
+(Any program: the machine file is refused)
+M30
