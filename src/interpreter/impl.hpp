@@ -257,6 +257,7 @@ struct Interpreter::Impl {
   Result<void> need_spindle_for_feed(SourceLoc where) const;
   Result<void> lathe_tool(const Words& words, ModalState& next);
   Result<void> lathe_coordinate_setting(const Words& words);
+  Result<void> lathe_offset_setting(const Words& words, SourceLoc where);
   void emit_spindle(CommandSink& out);
   Result<void> turning_cycle(const Words& words, AxisVec& target, AxisMask moved, CommandSink& out);
   void emit(CommandSink& out, canon::Command cmd);

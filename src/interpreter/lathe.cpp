@@ -217,4 +217,50 @@ Result<void> Interpreter::Impl::turning_cycle(const Words& words, AxisVec& targe
   return {};
 }
 
+// G10 P X(U) Z(W) R Q on a lathe: P1-P99 a wear offset, P10001-P10099
+// (10000 + n) a geometry offset; X Z R set the value, U W add to it (X and U
+// in diameter with 1006#3), Q is the imaginary tip. The active offset
+// changes at the next T code.
+Result<void> Interpreter::Impl::lathe_offset_setting(const Words& words, SourceLoc where) {
+  if (!words.has('P')) return fail(AlarmId::kBadValue, "G10 needs P (offset number)", where);
+  const WordVal& pw = words.at('P');
+  const bool geometry = pw.value > 10000;
+  const double n = geometry ? pw.value - 10000 : pw.value;
+  if (pw.value != std::trunc(pw.value) || n < 1 || n > mc.tool_offset_count) {
+    return fail(AlarmId::kIllegalOffsetNumber,
+                "G10 P" + std::to_string(pw.value) + ": wear offsets are P1-P" +
+                    std::to_string(mc.tool_offset_count) + ", geometry offsets P10001-P" +
+                    std::to_string(10000 + mc.tool_offset_count),
+                loc(pw.column));
+  }
+  auto& t = tools[static_cast<std::size_t>(n)];
+  struct Field {
+    char set, add;
+    double* value;
+  };
+  const Field fields[] = {
+      {'X', 'U', geometry ? &t.x_geometry : &t.x_wear},
+      {'Z', 'W', geometry ? &t.z_geometry : &t.z_wear},
+      {'R', 0, geometry ? &t.radius_geometry : &t.radius_wear},
+  };
+  for (const Field& f : fields) {
+    if (f.add != 0 && words.has(f.set) && words.has(f.add)) {
+      return fail(AlarmId::kWordRepeated,
+                  std::string(1, f.set) + " and " + f.add + " in one G10 block",
+                  loc(words.at(f.add).column));
+    }
+    if (words.has(f.set)) *f.value = word_length(words.at(f.set), false) * unit_mm();
+    if (f.add != 0 && words.has(f.add)) *f.value += word_length(words.at(f.add), false) * unit_mm();
+  }
+  if (words.has('Q')) {
+    const WordVal& q = words.at('Q');
+    if (q.value != std::trunc(q.value) || q.value < 0 || q.value > 9) {
+      return fail(AlarmId::kBadValue, "G10 Q" + std::to_string(q.value) + ": the tip is 0-9",
+                  loc(q.column));
+    }
+    t.tip = static_cast<int>(q.value);
+  }
+  return {};
+}
+
 }  // namespace skipnc::interp

@@ -218,6 +218,7 @@ Result<void> Interpreter::Impl::set_tool_length(const Words& words, LengthComp m
 // L20 Pn: G54.1 Pn (1-300); L10/L11: H geometry/wear; L12/L13: D
 // geometry/wear; L1: H wear (memory A). G90 sets, G91 adds.
 Result<void> Interpreter::Impl::data_setting(const Words& words, SourceLoc where) {
+  if (mc.lathe() && !words.has('L')) return lathe_offset_setting(words, where);
   if (!words.has('L')) return fail(AlarmId::kBadValue, "G10 needs L", where);
   const int l = static_cast<int>(words.at('L').value);
   const bool inc = modal.distance == Distance::kIncremental;
