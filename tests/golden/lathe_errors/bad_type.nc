@@ -1,0 +1,2 @@
+(Any program: the machine type is refused)
+M30
