@@ -503,6 +503,11 @@ Result<Step> Interpreter::Impl::execute_nc(const Words& words, CommandSink& out)
     if (!words.w[static_cast<std::size_t>(c)] || axis_of_letter[static_cast<std::size_t>(c)] >= 0)
       continue;
     if (mc.lathe() && (letter == 'U' || letter == 'W')) continue;
+    if (mc.lathe() && letter == 'H' && axis_of_letter['C' - 'A'] < 0) {
+      // H is the incremental C of system A; a lathe has no tool length offset.
+      return fail(AlarmId::kIllegalAddress, "address H (incremental C) on a lathe without a C axis",
+                  loc(words.at(letter).column));
+    }
     if (std::string_view("FSTHDPQRKLIJE").find(letter) != std::string_view::npos) continue;
     return fail(AlarmId::kIllegalAddress,
                 std::string("address ") + letter + " is not an address of this machine",
