@@ -108,11 +108,18 @@ void Kernel::trigger(double frac, const TickInput& in, int input, bool torque) n
   latch_at_stop_ = skip_.spec.kind == canon::SkipKind::kTorque;
   if (skip_.spec.latch == canon::SkipLatch::kSampled && skip_.spec.latch_delay_s > 0.0 &&
       !latch_at_stop_) {
+    // The control learns of the signal only after the detection delay: the
+    // latch and the stop both wait for it (monitor_skip), and the axes keep
+    // moving meanwhile.
     skip_latch_pending_ = true;
     skip_latch_due_s_ = skip_.time_s + skip_.spec.latch_delay_s;
-  } else if (!latch_at_stop_) {
-    handshake_.recorded = true;
+    return;
   }
+  if (!latch_at_stop_) handshake_.recorded = true;
+  begin_stop();
+}
+
+void Kernel::begin_stop() noexcept {
   if (skip_.spec.stop == canon::SkipStop::kImmediate) {
     interp_.stop_now();
   } else {
@@ -200,6 +207,7 @@ void Kernel::monitor_skip(const TickInput& in) noexcept {
       skip_.time_s = skip_latch_due_s_;
       skip_latch_pending_ = false;
       handshake_.recorded = true;
+      begin_stop();
     }
   }
 }

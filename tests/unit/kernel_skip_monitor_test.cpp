@@ -114,6 +114,32 @@ TEST(KernelSkip, SampledLatchWithDelayRecordsAfterTheDelay) {
   EXPECT_EQ(ticks, 3) << "recorded in the fourth period after the sample";
 }
 
+// The control learns of the signal only after the detection delay: the axes
+// keep moving meanwhile, the position stored is the one at the end of the
+// delay, and the stop starts there (ideal servo, immediate stop: the axis
+// rests where it was latched).
+TEST(KernelSkip, SampledLatchWithDelayKeepsMovingUntilTheControlSeesTheSignal) {
+  Bench b;
+  canon::SkipSpec spec;
+  spec.latch = canon::SkipLatch::kSampled;
+  spec.latch_delay_s = 0.004;
+  b.skip(10.0, 600.0, spec);
+  double x = 0.0;
+  for (int i = 0; i < 50; ++i) x = b.tick().commanded[0];  // at the feed: 0.01 mm per period
+  const double at_sample = x;  // the position at the sample that sees the edge
+  for (int i = 0; i < 4; ++i) {
+    const double next =
+        (i == 0 ? b.tick({kernel::SignalEdge{kSkip, true, 0.5}}) : b.tick()).commanded[0];
+    EXPECT_NEAR(next - x, 0.01, 1e-9) << "period " << i << " after the sample";
+    x = next;
+  }
+  for (int i = 0; i < 20 && !b.kernel().skip().done; ++i) b.tick();
+  ASSERT_TRUE(b.kernel().skip().done);
+  EXPECT_NEAR(b.kernel().skip().latch_machine[0] - at_sample, 0.04, 1e-9)
+      << "stored 4 ms (0.04 mm at F600) after the sample";
+  EXPECT_NEAR(b.kernel().skip().stop_position[0], b.kernel().skip().latch_machine[0], 1e-9);
+}
+
 TEST(KernelSkip, TorqueBelowTheDelayDoesNotSkipAtOrAboveItDoes) {
   Bench b;
   canon::SkipSpec spec;
