@@ -70,8 +70,8 @@ inline std::unexpected<Error> config_error(const toml::node& n, std::string_view
   return config_error(n, origin, std::string(what) + " must be true or false");
 }
 
-// Debian's toml++ 3.3 has two faults that a malformed file reaches; both
-// are an assertion, or undefined behaviour with NDEBUG, instead of a parse
+// Debian's toml++ 3.3 has three faults that a malformed file reaches; each
+// is an assertion, or undefined behaviour with NDEBUG, instead of a parse
 // error (found by tests/fuzz/fuzz_machine and fuzz_scene; the inputs are
 // kept in tests/regression/):
 // - a table header whose name starts with another character than a
@@ -81,8 +81,10 @@ inline std::unexpected<Error> config_error(const toml::node& n, std::string_view
 //   U+0499, U+2CDE to U+30D7 and U+FBC6 to U+FEFE (an unreachable branch of
 //   is_non_ascii_horizontal_whitespace); it runs on every character between
 //   tokens, on every character of a key (quoted ones too) and after a
-//   multi-line string's line-ending backslash.
-// This scan refuses both before toml++ sees the text, with the place: a
+//   multi-line string's line-ending backslash;
+// - a '}' where an array expects a value ("[}", "[1, }"): parse_value's
+//   precondition that it does not start at a value terminator.
+// This scan refuses all three before toml++ sees the text, with the place: a
 // table name must start as TOML says, and a byte above 0x7F may stand only
 // in a comment or in a string value (a quote where a value starts), not in
 // a key and not first after a line-ending backslash. No valid machine or scene file is refused:
@@ -217,6 +219,9 @@ inline std::unexpected<Error> config_error(const toml::node& n, std::string_view
         open += c;
         key = false;
       } else if (c == ']' || c == '}') {
+        if (c == '}' && !open.empty() && open.back() == '[') {
+          return refuse(i, "'}' inside an array: an array ends with ']'");
+        }
         if (!open.empty()) open.pop_back();
         key = false;
       } else if (c == ',') {

@@ -272,7 +272,7 @@ Result<Step> Interpreter::Impl::execute_nc(const Words& words, CommandSink& out)
 
   // Classify the G codes.
   bool g65 = false, g31 = false, g53 = false, g04 = false, g10 = false, g28 = false, g52 = false,
-       g92 = false, g09 = false, g50 = false;
+       g92 = false, g50 = false;
   int g45 = 0;
   ModalState next = modal;
   std::optional<Motion> motion_code;
@@ -312,8 +312,7 @@ Result<Step> Interpreter::Impl::execute_nc(const Words& words, CommandSink& out)
       case 40:
         g04 = true;
         break;
-      case 90:
-        g09 = true;
+      case 90:  // G09: exact stop for this block only, read by motion() (motion.cpp)
         break;
       case 100:
         g10 = true;
@@ -643,11 +642,6 @@ Result<Step> Interpreter::Impl::execute_nc(const Words& words, CommandSink& out)
       moved = true;
     }
   }
-  if (g09) {
-    // Exact stop for this block only: already the case for rapids; the
-    // planner ends feed moves at rest when exact_stop is set (see motion.cpp).
-  }
-
   // M codes after the motion.
   for (int i = 0; i < words.m_count; ++i) {
     const int m = words.m[static_cast<std::size_t>(i)];

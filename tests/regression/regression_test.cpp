@@ -84,7 +84,8 @@ TEST(Regression, LongOperatorChainIsAnAlarmWithItsPlace) {
 
 // toml++ 3.3 asserted (or, with NDEBUG, ran into undefined behaviour) on a
 // table header such as "[+[axis]]" and on a non-ASCII character outside a
-// string value (machine/, scene/ table-header-*, non-ascii-*): now the run
+// string value (machine/, scene/ table-header-*, non-ascii-*), and on a '}'
+// where an array expects a value (close-brace-*): now the run
 // cannot start (exit 2) and the error names file:line:column. Writing this
 // test showed the file name of every machine or scene file error printed
 // from freed memory (the options holding it ended before the message was
@@ -102,6 +103,8 @@ TEST(Regression, MalformedTomlIsAConfigErrorWithItsPlace) {
       {"-s", "[[o\xc4\xa0rator]]\n", ":1:4: error:"},
       {"-m", "name = \"m\"\n\"\xc3\xa9\" = 1\n", ":2:2: error:"},
       {"-m", "name = \"m\" \xc3\xa9\n", ":1:12: error:"},
+      {"-m", "name = \"m\"\nlimits = [1, }]\n", ":2:14: error:"},
+      {"-s", "[[trigger]]\nsignal = [ }\n", ":2:12: error:"},
   };
   for (const auto& c : cases) {
     const auto file = dir.write("bad.toml", c.text);
