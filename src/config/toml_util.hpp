@@ -80,15 +80,15 @@ inline std::unexpected<Error> config_error(const toml::node& n, std::string_view
 // - its whitespace test is wrong for most code points from U+00A1 to
 //   U+0499, U+2CDE to U+30D7 and U+FBC6 to U+FEFE (an unreachable branch of
 //   is_non_ascii_horizontal_whitespace); it runs on every character between
-//   tokens, on every character of a key (quoted ones too) and after a
-//   multi-line string's line-ending backslash;
+//   tokens, on every character of a key (quoted ones too) and after any
+//   backslash in a multi-line string;
 // - a '}' where an array expects a value ("[}", "[1, }"): parse_value's
 //   precondition that it does not start at a value terminator.
 // This scan refuses all three before toml++ sees the text, with the place: a
 // table name must start as TOML says, and a byte above 0x7F may stand only
 // in a comment or in a string value (a quote where a value starts), not in
-// a key and not first after a line-ending backslash. No valid machine or scene file is refused:
-// keys of these files are ASCII names.
+// a key and not first after a backslash in a multi-line string. No valid machine or scene file is
+// refused: keys of these files are ASCII names.
 [[nodiscard]] inline Result<void> precheck_toml(std::string_view text, std::string_view origin) {
   auto bare = [](char c) {
     return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_' ||
@@ -178,6 +178,11 @@ inline std::unexpected<Error> config_error(const toml::node& n, std::string_view
           return refuse(i, "a character outside ASCII in a key");
         }
         if (c == '"' && text[i] == '\\') {
+          // In a multi-line string toml++ tests the character after any
+          // backslash for whitespace (a line-ending backslash).
+          if (multi && i + 1 < n && high(text[i + 1])) {
+            return refuse(i + 1, "a character outside ASCII right after a backslash");
+          }
           std::size_t j = i + 1;
           while (multi && j < n && (blank(text[j]) || text[j] == '\r' || text[j] == '\n')) {
             if (text[j] == '\n') {
