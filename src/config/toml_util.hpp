@@ -231,6 +231,21 @@ inline std::unexpected<Error> config_error(const toml::node& n, std::string_view
         key = false;
       } else if (c == ',') {
         key = !open.empty() && open.back() == '{';
+      } else if (!key) {
+        // A bare value (number, boolean, date): toml++ scans it up to a value
+        // terminator, testing each character for whitespace; a quote or a
+        // bracket inside it opens nothing.
+        std::size_t j = i;
+        while (j < n && !blank(text[j]) && text[j] != '\r' && text[j] != '\n' && text[j] != ']' &&
+               text[j] != '}' && text[j] != ',' && text[j] != '#') {
+          if (high(text[j])) {
+            return refuse(
+                j, "a character outside ASCII may only stand in a string value or a comment");
+          }
+          ++j;
+        }
+        i = j;
+        continue;
       }
     }
     ++i;
