@@ -82,8 +82,9 @@ inline std::unexpected<Error> config_error(const toml::node& n, std::string_view
 //   is_non_ascii_horizontal_whitespace); it runs on every character between
 //   tokens, on every character of a key (quoted ones too) and after any
 //   backslash in a multi-line string;
-// - a '}' where an array expects a value ("[}", "[1, }"): parse_value's
-//   precondition that it does not start at a value terminator.
+// - a '}' where an array expects a value ("[}", "[1, }"), and a date, a
+//   blank and a single digit ("1979-05-27 0"): parse_value's precondition
+//   that it does not start or go on at a value terminator.
 // This scan refuses all three before toml++ sees the text, with the place: a
 // table name must start as TOML says, and a byte above 0x7F may stand only
 // in a comment or in a string value (a quote where a value starts), not in
@@ -243,6 +244,17 @@ inline std::unexpected<Error> config_error(const toml::node& n, std::string_view
                 j, "a character outside ASCII may only stand in a string value or a comment");
           }
           ++j;
+        }
+        // A date ("1979-05-27") then a blank and one digit alone: toml++
+        // reads on for the time of a date-time and asserts at the terminator.
+        auto ends = [&](std::size_t at) {
+          return at >= n || blank(text[at]) || text[at] == '\r' || text[at] == '\n' ||
+                 text[at] == ']' || text[at] == '}' || text[at] == ',' || text[at] == '#';
+        };
+        if (j - i == 10 && text[i + 4] == '-' && text[i + 7] == '-' && j + 1 < n &&
+            text[j] == ' ' && text[j + 1] >= '0' && text[j + 1] <= '9' && j + 2 < n &&
+            ends(j + 2)) {
+          return refuse(j + 1, "a time after a date needs hours, minutes and seconds (hh:mm:ss)");
         }
         i = j;
         continue;

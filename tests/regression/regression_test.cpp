@@ -105,6 +105,7 @@ TEST(Regression, MalformedTomlIsAConfigErrorWithItsPlace) {
       {"-m", "name = \"m\" \xc3\xa9\n", ":1:12: error:"},
       {"-m", "name = \"m\"\nlimits = [1, }]\n", ":2:14: error:"},
       {"-s", "[[trigger]]\nsignal = [ }\n", ":2:12: error:"},
+      {"-m", "name = \"m\"\nwhen = 1979-05-27 0\n", ":2:19: error:"},
       {"-s", "[[trigger]]\nat = 0x1['X\xef\xb9\xbf'\n", ":2:12: error:"},
       {"-m", "name = \"m\"\ns = \"\"\"\\\xef\xb9\xbf\"\"\"\n", ":2:9: error:"},
   };
