@@ -70,6 +70,27 @@ inline std::unexpected<Error> config_error(const toml::node& n, std::string_view
   return config_error(n, origin, std::string(what) + " must be true or false");
 }
 
+// Calls f on each table of the array of tables `key` ([[key]]); a missing key
+// is no tables, anything else than an array of tables is an error.
+template <class F>
+[[nodiscard]] Result<void> each_table(const toml::table& root, std::string_view key,
+                                      std::string_view origin, F&& f) {
+  const auto* n = root.get(key);
+  if (n == nullptr) return {};
+  const auto* arr = n->as_array();
+  if (arr == nullptr) {
+    return config_error(*n, origin, "[[" + std::string(key) + "]] must be an array of tables");
+  }
+  for (const auto& e : *arr) {
+    const auto* t = e.as_table();
+    if (t == nullptr)
+      return config_error(e, origin, "[[" + std::string(key) + "]] must be a table");
+    auto r = f(*t);
+    if (!r) return r;
+  }
+  return {};
+}
+
 // Debian's toml++ 3.3 has three faults that a malformed file reaches; each
 // is an assertion, or undefined behaviour with NDEBUG, instead of a parse
 // error (found by tests/fuzz/fuzz_machine and fuzz_scene; the inputs are
@@ -236,9 +257,12 @@ inline std::unexpected<Error> config_error(const toml::node& n, std::string_view
         // A bare value (number, boolean, date): toml++ scans it up to a value
         // terminator, testing each character for whitespace; a quote or a
         // bracket inside it opens nothing.
+        auto ends = [&](std::size_t at) {
+          return at >= n || blank(text[at]) || text[at] == '\r' || text[at] == '\n' ||
+                 text[at] == ']' || text[at] == '}' || text[at] == ',' || text[at] == '#';
+        };
         std::size_t j = i;
-        while (j < n && !blank(text[j]) && text[j] != '\r' && text[j] != '\n' && text[j] != ']' &&
-               text[j] != '}' && text[j] != ',' && text[j] != '#') {
+        while (!ends(j)) {
           if (high(text[j])) {
             return refuse(
                 j, "a character outside ASCII may only stand in a string value or a comment");
@@ -247,10 +271,6 @@ inline std::unexpected<Error> config_error(const toml::node& n, std::string_view
         }
         // A date ("1979-05-27") then a blank and one digit alone: toml++
         // reads on for the time of a date-time and asserts at the terminator.
-        auto ends = [&](std::size_t at) {
-          return at >= n || blank(text[at]) || text[at] == '\r' || text[at] == '\n' ||
-                 text[at] == ']' || text[at] == '}' || text[at] == ',' || text[at] == '#';
-        };
         if (j - i == 10 && text[i + 4] == '-' && text[i + 7] == '-' && j + 1 < n &&
             text[j] == ' ' && text[j + 1] >= '0' && text[j + 1] <= '9' && j + 2 < n &&
             ends(j + 2)) {

@@ -1,11 +1,11 @@
 #include "machine/scene.hpp"
-#include "machine/scene_actions.hpp"
 
 #include <fstream>
 #include <sstream>
 
 #include "config/skip_inputs.hpp"
 #include "config/toml_util.hpp"
+#include "machine/scene_actions.hpp"
 
 namespace skipnc::machine {
 
@@ -25,8 +25,9 @@ Result<canon::SignalAddr> signal_of(const toml::table& t, std::string_view origi
   if (!s) return std::unexpected(s.error());
   auto a = config::parse_signal_name(*s, d, p);
   if (!a) {
-    return config_error(*n, origin,
-                        "signal '" + *s + "' is not X<0-127>.<0-7>, G<0-511>.<0-7>, SKIP or SKIP1..SKIP12");
+    return config_error(
+        *n, origin,
+        "signal '" + *s + "' is not X<0-127>.<0-7>, G<0-511>.<0-7>, SKIP or SKIP1..SKIP12");
   }
   name = *s;
   return *a;
@@ -59,22 +60,6 @@ Result<double> number_of(const toml::table& t, std::string_view key, std::string
   return get_number(*n, origin, key, min, max);
 }
 
-template <class F>
-Result<void> each_table(const toml::table& root, std::string_view key, std::string_view origin,
-                        F&& f) {
-  const auto* n = root.get(key);
-  if (!n) return {};
-  const auto* arr = n->as_array();
-  if (!arr) return config_error(*n, origin, "[[" + std::string(key) + "]] must be an array of tables");
-  for (const auto& e : *arr) {
-    const auto* t = e.as_table();
-    if (!t) return config_error(e, origin, "[[" + std::string(key) + "]] must be a table");
-    auto r = f(*t);
-    if (!r) return r;
-  }
-  return {};
-}
-
 }  // namespace
 
 Result<Scene> parse_scene(std::string_view text, std::string_view origin,
@@ -83,14 +68,15 @@ Result<Scene> parse_scene(std::string_view text, std::string_view origin,
   auto parsed = config::parse_toml(text, origin);
   if (!parsed) return std::unexpected(parsed.error());
   const toml::table& root = *parsed;
-  auto keys = check_keys(root, {"trigger", "pulse", "stop", "load", "operator", "box", "cylinder",
-                          "sphere", "plane", "bore", "pocket", "probe", "tool", "tool_setter",
-                          "gauge", "spindle_tool"}, origin,
-                         "a scene file");
+  auto keys = check_keys(
+      root,
+      {"trigger", "pulse", "stop", "load", "operator", "box", "cylinder", "sphere", "plane", "bore",
+       "pocket", "probe", "tool", "tool_setter", "gauge", "spindle_tool"},
+      origin, "a scene file");
   if (!keys) return std::unexpected(keys.error());
   Scene s;
   s.origin = std::string(origin);
-  auto r = each_table(root, "trigger", origin, [&](const toml::table& t) -> Result<void> {
+  auto r = config::each_table(root, "trigger", origin, [&](const toml::table& t) -> Result<void> {
     auto k = check_keys(t, {"signal", "axis", "at", "direction"}, origin, "[[trigger]]");
     if (!k) return k;
     Trigger tr;
@@ -110,7 +96,7 @@ Result<Scene> parse_scene(std::string_view text, std::string_view origin,
     return {};
   });
   if (!r) return std::unexpected(r.error());
-  r = each_table(root, "pulse", origin, [&](const toml::table& t) -> Result<void> {
+  r = config::each_table(root, "pulse", origin, [&](const toml::table& t) -> Result<void> {
     auto k = check_keys(t, {"signal", "at_time", "duration"}, origin, "[[pulse]]");
     if (!k) return k;
     Pulse pu;
@@ -127,7 +113,7 @@ Result<Scene> parse_scene(std::string_view text, std::string_view origin,
     return {};
   });
   if (!r) return std::unexpected(r.error());
-  r = each_table(root, "stop", origin, [&](const toml::table& t) -> Result<void> {
+  r = config::each_table(root, "stop", origin, [&](const toml::table& t) -> Result<void> {
     auto k = check_keys(t, {"axis", "at", "direction"}, origin, "[[stop]]");
     if (!k) return k;
     Stop st;

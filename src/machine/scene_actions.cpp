@@ -14,24 +14,6 @@ using config::get_string;
 
 namespace {
 
-template <class F>
-Result<void> each(const toml::table& root, std::string_view key, std::string_view origin, F&& f) {
-  const auto* n = root.get(key);
-  if (n == nullptr) return {};
-  const auto* arr = n->as_array();
-  if (arr == nullptr) {
-    return config_error(*n, origin, "[[" + std::string(key) + "]] must be an array of tables");
-  }
-  for (const auto& e : *arr) {
-    const auto* t = e.as_table();
-    if (t == nullptr)
-      return config_error(e, origin, "[[" + std::string(key) + "]] must be a table");
-    auto r = f(*t);
-    if (!r) return r;
-  }
-  return {};
-}
-
 Result<double> need_number(const toml::table& t, std::string_view key, std::string_view origin,
                            double lo, double hi) {
   const auto* n = t.get(key);
@@ -43,7 +25,7 @@ Result<double> need_number(const toml::table& t, std::string_view key, std::stri
 
 Result<void> parse_scene_actions(const toml::table& root, std::string_view origin,
                                  const config::MachineConfig& m, Scene& s) {
-  auto r = each(root, "load", origin, [&](const toml::table& t) -> Result<void> {
+  auto r = config::each_table(root, "load", origin, [&](const toml::table& t) -> Result<void> {
     auto k = check_keys(t, {"axis", "at_time", "duration", "torque"}, origin, "[[load]]");
     if (!k) return k;
     Load l;
@@ -67,7 +49,7 @@ Result<void> parse_scene_actions(const toml::table& root, std::string_view origi
     return {};
   });
   if (!r) return r;
-  r = each(root, "operator", origin, [&](const toml::table& t) -> Result<void> {
+  r = config::each_table(root, "operator", origin, [&](const toml::table& t) -> Result<void> {
     auto k = check_keys(t, {"at_time", "feed_hold", "interlock", "override", "dry_run"}, origin,
                         "[[operator]]");
     if (!k) return k;

@@ -91,23 +91,6 @@ struct Reader {
   }
 };
 
-template <class F>
-Result<void> each(const toml::table& root, std::string_view key, std::string_view origin, F&& f) {
-  const auto* n = root.get(key);
-  if (n == nullptr) return {};
-  const auto* arr = n->as_array();
-  if (arr == nullptr)
-    return config_error(*n, origin, "[[" + std::string(key) + "]] must be an array of tables");
-  for (const auto& e : *arr) {
-    const auto* t = e.as_table();
-    if (t == nullptr)
-      return config_error(e, origin, "[[" + std::string(key) + "]] must be a table");
-    auto r = f(*t);
-    if (!r) return r;
-  }
-  return {};
-}
-
 const toml::table* single(const toml::table& root, std::string_view key) {
   const auto* n = root.get(key);
   return n != nullptr ? n->as_table() : nullptr;
@@ -144,7 +127,7 @@ class PartSet {
 Result<void> parse_parts(const toml::table& root, const Reader& rd, PartSet& parts) {
   const auto origin = rd.origin;
   auto box_like = [&](std::string_view key, bool hole) {
-    return each(root, key, origin, [&](const toml::table& t) -> Result<void> {
+    return config::each_table(root, key, origin, [&](const toml::table& t) -> Result<void> {
       auto k = check_keys(t, {"part", "min", "max"}, origin, "[[" + std::string(key) + "]]");
       if (!k) return k;
       auto lo = rd.vec<3>(t, "min");
@@ -171,7 +154,7 @@ Result<void> parse_parts(const toml::table& root, const Reader& rd, PartSet& par
   r = box_like("pocket", true);
   if (!r) return r;
   auto round = [&](std::string_view key, bool hole) {
-    return each(root, key, origin, [&](const toml::table& t) -> Result<void> {
+    return config::each_table(root, key, origin, [&](const toml::table& t) -> Result<void> {
       auto k = check_keys(t, {"part", "center", "radius", "bottom", "top"}, origin,
                           "[[" + std::string(key) + "]]");
       if (!k) return k;
@@ -199,7 +182,7 @@ Result<void> parse_parts(const toml::table& root, const Reader& rd, PartSet& par
   if (!r) return r;
   r = round("bore", true);
   if (!r) return r;
-  r = each(root, "sphere", origin, [&](const toml::table& t) -> Result<void> {
+  r = config::each_table(root, "sphere", origin, [&](const toml::table& t) -> Result<void> {
     auto k = check_keys(t, {"part", "center", "radius"}, origin, "[[sphere]]");
     if (!k) return k;
     auto c = rd.vec<3>(t, "center");
@@ -213,7 +196,7 @@ Result<void> parse_parts(const toml::table& root, const Reader& rd, PartSet& par
     return {};
   });
   if (!r) return r;
-  return each(root, "plane", origin, [&](const toml::table& t) -> Result<void> {
+  return config::each_table(root, "plane", origin, [&](const toml::table& t) -> Result<void> {
     auto k = check_keys(t, {"part", "point", "normal"}, origin, "[[plane]]");
     if (!k) return k;
     auto pt = rd.vec<3>(t, "point");
@@ -401,7 +384,7 @@ Result<Probing> parse_probing(const toml::table& root, std::string_view origin,
     if (!setter) return std::unexpected(setter.error());
     out.tool_setter = *setter;
   }
-  r = each(root, "tool", origin, [&](const toml::table& t) -> Result<void> {
+  r = config::each_table(root, "tool", origin, [&](const toml::table& t) -> Result<void> {
     auto k = check_keys(t, {"number", "length", "radius"}, origin, "[[tool]]");
     if (!k) return k;
     ToolSpec tool;
@@ -421,7 +404,7 @@ Result<Probing> parse_probing(const toml::table& root, std::string_view origin,
     return {};
   });
   if (!r) return std::unexpected(r.error());
-  r = each(root, "gauge", origin, [&](const toml::table& t) -> Result<void> {
+  r = config::each_table(root, "gauge", origin, [&](const toml::table& t) -> Result<void> {
     auto g = parse_gauge(t, rd);
     if (!g) return std::unexpected(g.error());
     out.gauges.push_back(*g);
