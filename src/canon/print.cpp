@@ -7,43 +7,71 @@
 namespace skipnc::canon {
 namespace {
 
-// The shortest text that reads back to the same double (std::to_chars), the
-// hot part of `skipnc canon`; -0.0 is written as 0.
-void number_to(fmt::memory_buffer& out, double v) {
-  char buf[32];
+// Two decimal digits at a time: "00".."99".
+constexpr char kDigitPairs[] =
+    "00010203040506070809101112131415161718192021222324252627282930313233343536373839"
+    "40414243444546474849505152535455565758596061626364656667686970717273747576777879"
+    "8081828384858687888990919293949596979899";
+
+// Writes a (< 10^18) backwards, ending at e; returns the first character.
+char* digits_back(char* e, unsigned long long a) noexcept {
+  while (a >= 100) {
+    const auto i = static_cast<std::size_t>(a % 100) * 2;
+    a /= 100;
+    *--e = kDigitPairs[i + 1];
+    *--e = kDigitPairs[i];
+  }
+  if (a >= 10) {
+    const auto i = static_cast<std::size_t>(a) * 2;
+    *--e = kDigitPairs[i + 1];
+    *--e = kDigitPairs[i];
+  } else {
+    *--e = static_cast<char>('0' + a);
+  }
+  return e;
+}
+
+// Room a number takes at most (std::to_chars of a double needs 24).
+constexpr std::size_t kNumberRoom = 32;
+
+// The shortest text that reads back to the same double, written at p (which
+// has kNumberRoom characters of room); returns the end. -0.0 is written as 0.
+// The hot part of `skipnc canon`.
+char* number_at(char* p, double v) noexcept {
   // Fast path for the common case, a value with at most three decimals (what
   // a program of 0.001 mm words produces): if m / 1000 is v exactly, "m with
   // the point three places in, trailing zeros dropped" is the shortest text
-  // that reads back to v, the same as std::to_chars gives.
+  // that reads back to v.
   if (v > -1e9 && v < 1e9) {
     const double scaled = v * 1000.0;
     const auto m = static_cast<long long>(scaled < 0 ? scaled - 0.5 : scaled + 0.5);
     if (static_cast<double>(m) / 1000.0 == v) {
-      unsigned long long a =
-          m < 0 ? static_cast<unsigned long long>(-m) : static_cast<unsigned long long>(m);
-      char* e = buf + sizeof buf;
-      char* p = e;
-      int frac = 3;
-      while (frac > 0 && a % 10 == 0) {  // drop trailing zeros of the fraction
-        a /= 10;
-        --frac;
+      auto a = m < 0 ? static_cast<unsigned long long>(-m) : static_cast<unsigned long long>(m);
+      if (m < 0) *p++ = '-';
+      const unsigned long long whole = a / 1000;
+      unsigned frac = static_cast<unsigned>(a % 1000);
+      char tmp[24];
+      char* e = tmp + sizeof tmp;
+      char* s = digits_back(e, whole);
+      while (s != e) *p++ = *s++;
+      if (frac != 0) {
+        *p++ = '.';
+        *p++ = static_cast<char>('0' + frac / 100);
+        frac %= 100;
+        if (frac != 0) {
+          *p++ = static_cast<char>('0' + frac / 10);
+          if (frac % 10 != 0) *p++ = static_cast<char>('0' + frac % 10);
+        }
       }
-      for (int i = 0; i < frac; ++i) {
-        *--p = static_cast<char>('0' + a % 10);
-        a /= 10;
-      }
-      if (frac > 0) *--p = '.';
-      do {
-        *--p = static_cast<char>('0' + a % 10);
-        a /= 10;
-      } while (a != 0);
-      if (m < 0) *--p = '-';
-      out.append(p, e);
-      return;
+      return p;
     }
   }
-  const auto r = std::to_chars(buf, buf + sizeof buf, v + 0.0);
-  out.append(buf, r.ptr);
+  return std::to_chars(p, p + kNumberRoom, v + 0.0).ptr;
+}
+
+void number_to(fmt::memory_buffer& out, double v) {
+  char buf[kNumberRoom];
+  out.append(buf, number_at(buf, v));
 }
 
 void axes_to(fmt::memory_buffer& out, const AxisVec& v, const AxisNames& axes) {
@@ -54,9 +82,49 @@ void axes_to(fmt::memory_buffer& out, const AxisVec& v, const AxisNames& axes) {
   }
 }
 
-void text_to(fmt::memory_buffer& out, std::string_view s) {
-  out.append(s.data(), s.data() + s.size());
-}
+// Writes the text of the common commands (lines, rapids, arcs) straight into
+// a reserved stretch of the buffer: they are nearly every line of a program.
+class LineWriter {
+ public:
+  // Room for the longest line of those commands: the line number, the name,
+  // eight axes, two centre words, the feed and the flags.
+  static constexpr std::size_t kRoom =
+      20 + 8 + kMaxAxes * (2 + kNumberRoom) + 2 * (4 + kNumberRoom) + (2 + kNumberRoom) + 32 + 8;
+  explicit LineWriter(fmt::memory_buffer& out) : out_(out), start_(out.size()) {
+    out_.resize(start_ + kRoom);
+    p_ = out_.data() + start_;
+  }
+  LineWriter(const LineWriter&) = delete;
+  LineWriter& operator=(const LineWriter&) = delete;
+  ~LineWriter() { out_.resize(static_cast<std::size_t>(p_ - out_.data())); }
+
+  void text(std::string_view s) noexcept {
+    for (char c : s) *p_++ = c;
+  }
+  void put(char c) noexcept { *p_++ = c; }
+  void number(double v) noexcept { p_ = number_at(p_, v); }
+  void integer(long long v) noexcept {
+    char tmp[24];
+    char* e = tmp + sizeof tmp;
+    const auto a =
+        v < 0 ? 0ULL - static_cast<unsigned long long>(v) : static_cast<unsigned long long>(v);
+    char* s = digits_back(e, a);
+    if (v < 0) *p_++ = '-';
+    while (s != e) *p_++ = *s++;
+  }
+  void axes(const AxisVec& v, const AxisNames& names) noexcept {
+    for (int i = 0; i < names.count; ++i) {
+      *p_++ = ' ';
+      *p_++ = names.names[i];
+      number(v[i]);
+    }
+  }
+
+ private:
+  fmt::memory_buffer& out_;
+  std::size_t start_;
+  char* p_;
+};
 
 const char* stop_name(StopKind k) {
   switch (k) {
@@ -75,6 +143,49 @@ const char* stop_name(StopKind k) {
 }  // namespace
 
 void format_to(fmt::memory_buffer& out, const Stamped& s, const AxisNames& axes) {
+  if (const auto* c = std::get_if<Feed>(&s.cmd)) {
+    LineWriter w(out);
+    w.integer(s.line);
+    w.text(" FEED");
+    w.axes(c->target, axes);
+    w.text(" F");
+    w.number(c->feed_mm_per_min);
+    if (c->exact_stop) w.text(" EXACT");
+    w.put('\n');
+    return;
+  }
+  if (const auto* c = std::get_if<Rapid>(&s.cmd)) {
+    LineWriter w(out);
+    w.integer(s.line);
+    w.text(" RAPID");
+    w.axes(c->target, axes);
+    if (!c->linear) w.text(" NONLINEAR");
+    w.put('\n');
+    return;
+  }
+  if (const auto* c = std::get_if<Arc>(&s.cmd)) {
+    LineWriter w(out);
+    w.integer(s.line);
+    w.text(c->ccw ? " ARC_CCW" : " ARC_CW");
+    w.axes(c->target, axes);
+    w.text(" C");
+    w.put(axes.names[c->plane.a0]);
+    w.put('=');
+    w.number(c->center0);
+    w.text(" C");
+    w.put(axes.names[c->plane.a1]);
+    w.put('=');
+    w.number(c->center1);
+    w.text(" F");
+    w.number(c->feed_mm_per_min);
+    if (c->extra_turns != 0) {
+      w.text(" TURNS");
+      w.integer(c->extra_turns);
+    }
+    if (c->exact_stop) w.text(" EXACT");
+    w.put('\n');
+    return;
+  }
   auto it = fmt::appender(out);
   {
     char buf[16];
@@ -85,31 +196,9 @@ void format_to(fmt::memory_buffer& out, const Stamped& s, const AxisNames& axes)
   std::visit(
       [&](const auto& c) {
         using T = std::decay_t<decltype(c)>;
-        if constexpr (std::is_same_v<T, Rapid>) {
-          text_to(out, "RAPID");
-          axes_to(out, c.target, axes);
-          if (!c.linear) text_to(out, " NONLINEAR");
-        } else if constexpr (std::is_same_v<T, Feed>) {
-          text_to(out, "FEED");
-          axes_to(out, c.target, axes);
-          text_to(out, " F");
-          number_to(out, c.feed_mm_per_min);
-          if (c.exact_stop) text_to(out, " EXACT");
-        } else if constexpr (std::is_same_v<T, Arc>) {
-          text_to(out, c.ccw ? "ARC_CCW" : "ARC_CW");
-          axes_to(out, c.target, axes);
-          text_to(out, " C");
-          out.push_back(axes.names[c.plane.a0]);
-          out.push_back('=');
-          number_to(out, c.center0);
-          text_to(out, " C");
-          out.push_back(axes.names[c.plane.a1]);
-          out.push_back('=');
-          number_to(out, c.center1);
-          text_to(out, " F");
-          number_to(out, c.feed_mm_per_min);
-          if (c.extra_turns != 0) fmt::format_to(it, " TURNS{}", c.extra_turns);
-          if (c.exact_stop) text_to(out, " EXACT");
+        if constexpr (std::is_same_v<T, Rapid> || std::is_same_v<T, Feed> ||
+                      std::is_same_v<T, Arc>) {
+          // written above
         } else if constexpr (std::is_same_v<T, Dwell>) {
           fmt::format_to(it, "DWELL {}", c.seconds);
         } else if constexpr (std::is_same_v<T, Skip>) {

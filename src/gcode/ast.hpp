@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstdint>
+#include <stdexcept>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -21,25 +22,85 @@ enum class Op : std::uint8_t {
   kVar,       // #a          (a: expression giving the variable number)
   kNamedVar,  // #<name> or #_NAME   (name: index into Block::names)
   kNeg,       // -a
-  kAdd, kSub, kMul, kDiv, kMod, kAnd, kOr, kXor,  // a op b
-  kEq, kNe, kGt, kGe, kLt, kLe,                   // a op b (conditions)
-  kFunc,      // fn(a) or fn(a, b)
+  kAdd,
+  kSub,
+  kMul,
+  kDiv,
+  kMod,
+  kAnd,
+  kOr,
+  kXor,  // a op b
+  kEq,
+  kNe,
+  kGt,
+  kGe,
+  kLt,
+  kLe,    // a op b (conditions)
+  kFunc,  // fn(a) or fn(a, b)
 };
 
 enum class Func : std::uint8_t {
-  kNone, kSin, kCos, kTan, kAsin, kAcos, kAtan, kSqrt, kAbs, kRound, kFix, kFup,
-  kLn, kExp, kPow, kBin, kBcd, kAdp,
+  kNone,
+  kSin,
+  kCos,
+  kTan,
+  kAsin,
+  kAcos,
+  kAtan,
+  kSqrt,
+  kAbs,
+  kRound,
+  kFix,
+  kFup,
+  kLn,
+  kExp,
+  kPow,
+  kBin,
+  kBcd,
+  kAdp,
 };
 
-struct ExprNode {
-  Op op = Op::kNumber;
-  Func fn = Func::kNone;
+struct ExprNode {      // 32 bytes: the largest member first
+  double value = 0.0;  // kNumber
   ExprId a = kNoExpr;
   ExprId b = kNoExpr;
-  double value = 0.0;         // kNumber
-  std::int32_t name = -1;     // kNamedVar
-  std::uint32_t column = 0;   // 1-based column of the node's first character
-  std::uint16_t depth = 1;    // levels of the tree from this node down (<= kMaxExprDepth)
+  std::int32_t name = -1;    // kNamedVar
+  std::uint32_t column = 0;  // 1-based column of the node's first character
+  std::uint16_t depth = 1;   // levels of the tree from this node down (<= kMaxExprDepth)
+  Op op = Op::kNumber;
+  Func fn = Func::kNone;
+};
+
+// The expression nodes of a block: a std::vector used as storage, whose size
+// is the capacity reached so far and never shrinks, and a count of the nodes
+// in use. Clearing a block and parsing the next one writes only the nodes
+// that block holds: no copy, no value-initialisation of spare storage.
+class NodeArray {
+ public:
+  std::size_t size() const noexcept { return n_; }
+  bool empty() const noexcept { return n_ == 0; }
+  std::size_t capacity() const noexcept { return store_.size(); }
+  ExprNode* data() noexcept { return store_.data(); }
+  const ExprNode* data() const noexcept { return store_.data(); }
+  ExprNode& operator[](std::size_t i) noexcept { return store_[i]; }
+  const ExprNode& operator[](std::size_t i) const noexcept { return store_[i]; }
+  const ExprNode& at(std::size_t i) const {
+    if (i >= n_) throw std::out_of_range("NodeArray::at");
+    return store_[i];
+  }
+  const ExprNode* begin() const noexcept { return store_.data(); }
+  const ExprNode* end() const noexcept { return store_.data() + n_; }
+  void clear() noexcept { n_ = 0; }
+  // Storage for at least `cap` nodes; the nodes in use are kept.
+  void reserve(std::size_t cap) {
+    if (store_.size() < cap) store_.resize(cap);
+  }
+  // The first n nodes of the storage are the block's (n <= capacity()).
+  void set_size(std::size_t n) noexcept { n_ = n; }
+
+ private:
+  std::vector<ExprNode> store_;
+  std::size_t n_ = 0;
 };
 
 // Expression trees are at most this deep (operators, signs, brackets and
@@ -50,36 +111,36 @@ inline constexpr int kMaxExprDepth = 1000;
 // One address word: a letter and a value, either a literal number or an
 // expression (X#1, X[#1+2], X-#2, G#10).
 struct Word {
-  char letter = 0;            // 'A'..'Z', upper case
+  char letter = 0;  // 'A'..'Z', upper case
   bool is_expr = false;
-  bool has_point = false;     // literal written with a decimal point
-  double value = 0.0;         // literal value (is_expr == false)
-  ExprId expr = kNoExpr;      // is_expr == true
+  bool has_point = false;  // literal written with a decimal point
+  double value = 0.0;      // literal value (is_expr == false)
+  ExprId expr = kNoExpr;   // is_expr == true
   std::uint32_t column = 0;
 };
 
 enum class StmtKind : std::uint8_t {
   kNone,
-  kAssign,   // #lhs = rhs      (lhs: expression node of kind kVar/kNamedVar)
-  kGoto,     // GOTO target
-  kIfGoto,   // IF [cond] GOTO target
-  kIfThen,   // IF [cond] THEN #lhs = rhs
-  kWhile,    // WHILE [cond] DO loop
-  kDo,       // DO loop (no WHILE: endless loop)
-  kEnd,      // END loop
-  kPopen,    // POPEN
-  kPclos,    // PCLOS
-  kDprnt,    // DPRNT[...]  (items in Block::print_items)
-  kBprnt,    // BPRNT[...]
+  kAssign,  // #lhs = rhs      (lhs: expression node of kind kVar/kNamedVar)
+  kGoto,    // GOTO target
+  kIfGoto,  // IF [cond] GOTO target
+  kIfThen,  // IF [cond] THEN #lhs = rhs
+  kWhile,   // WHILE [cond] DO loop
+  kDo,      // DO loop (no WHILE: endless loop)
+  kEnd,     // END loop
+  kPopen,   // POPEN
+  kPclos,   // PCLOS
+  kDprnt,   // DPRNT[...]  (items in Block::print_items)
+  kBprnt,   // BPRNT[...]
 };
 
 // One item of DPRNT/BPRNT: text to print, or a variable with a format.
 struct PrintItem {
   bool is_text = false;
-  std::int32_t text = -1;    // index into Block::names (the literal text)
-  ExprId var = kNoExpr;      // expression node of kind kVar/kNamedVar
-  int int_digits = 0;        // [ab]: a
-  int frac_digits = 0;       //       b
+  std::int32_t text = -1;  // index into Block::names (the literal text)
+  ExprId var = kNoExpr;    // expression node of kind kVar/kNamedVar
+  int int_digits = 0;      // [ab]: a
+  int frac_digits = 0;     //       b
 };
 
 struct Stmt {
@@ -87,29 +148,29 @@ struct Stmt {
   ExprId lhs = kNoExpr;
   ExprId rhs = kNoExpr;
   ExprId cond = kNoExpr;
-  ExprId target = kNoExpr;   // GOTO target expression
-  int loop = 0;              // DO/END identifier as written (1..3 on Fanuc)
+  ExprId target = kNoExpr;  // GOTO target expression
+  int loop = 0;             // DO/END identifier as written (1..3 on Fanuc)
   std::uint32_t column = 0;
 };
 
 struct Comment {
-  std::int32_t text = -1;    // index into Block::names: the text inside ( )
+  std::int32_t text = -1;  // index into Block::names: the text inside ( )
   std::uint32_t column = 0;
 };
 
 struct Block {
-  SourceLoc loc;                 // file, line, column of the block's first character
-  std::uint64_t offset = 0;      // byte offset of the block in its file
-  bool percent = false;          // the block is a '%' (tape start or end)
-  int block_delete = -1;         // -1: no '/'; 1..9: '/n' ('/' alone is 1)
+  SourceLoc loc;             // file, line, column of the block's first character
+  std::uint64_t offset = 0;  // byte offset of the block in its file
+  bool percent = false;      // the block is a '%' (tape start or end)
+  int block_delete = -1;     // -1: no '/'; 1..9: '/n' ('/' alone is 1)
   bool has_n = false;
-  std::int64_t n = 0;            // N sequence number
+  std::int64_t n = 0;  // N sequence number
   bool has_o = false;
-  std::int64_t o = 0;            // O program number at the head of the block
-  std::vector<Word> words;       // in the order written
+  std::int64_t o = 0;       // O program number at the head of the block
+  std::vector<Word> words;  // in the order written
   Stmt stmt;
-  std::vector<ExprNode> nodes;
-  std::vector<std::string> names;      // named variables, comment texts, print texts
+  NodeArray nodes;
+  std::vector<std::string> names;  // named variables, comment texts, print texts
   std::vector<Comment> comments;
   std::vector<PrintItem> print_items;
 

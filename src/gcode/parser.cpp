@@ -162,15 +162,18 @@ static_assert(std::ranges::all_of(kFuncs,
 // Expression trees of a variable reference "#n" are two levels deep.
 static_assert(kMaxExprDepth >= 2);
 
-// The nodes of the block being parsed. They are built in a small local
-// buffer, so that adding one is a store and a count (std::vector::push_back
-// would bring its growth path into every caller), and go to the block at the
-// end; past the local buffer's size they move to the block's vector itself,
-// which then grows by doubling. The vector keeps its capacity from block to
-// block: once warmed, no allocation.
+// The nodes of the block being parsed, written straight into the block's
+// NodeArray: adding one is a store and a count (std::vector::push_back would
+// bring its growth path into every caller). Past the storage's size it grows
+// by doubling; the storage stays from block to block, so once warmed there
+// is no allocation.
 class NodeSlots {
  public:
-  explicit NodeSlots(std::vector<ExprNode>& v) noexcept : v_(v) {}
+  explicit NodeSlots(NodeArray& v) : v_(v) {
+    v_.reserve(kInitial);
+    data_ = v_.data();
+    cap_ = v_.capacity();
+  }
   NodeSlots(const NodeSlots&) = delete;
   NodeSlots& operator=(const NodeSlots&) = delete;
   ~NodeSlots() = default;
@@ -182,41 +185,27 @@ class NodeSlots {
     if (n_ == cap_) [[unlikely]] {
       grow();
     }
-    std::construct_at(data_ + n_, x);
+    data_[n_] = x;
     return n_++;
   }
-  // Leaves the nodes in the block's vector (empty before).
-  void finish() {
-    if (data_ != local_.x) {
-      v_.resize(n_);
-    } else if (n_ != 0) {
-      if (v_.capacity() < kLocal) v_.reserve(kLocal);
-      v_.assign(data_, data_ + n_);
-    }
-  }
+  // The block's node count becomes the number of nodes built.
+  void finish() noexcept { v_.set_size(n_); }
 
  private:
   [[gnu::noinline]] void grow() {
-    if (data_ == local_.x) v_.assign(data_, data_ + n_);
-    v_.resize(2 * n_);
+    v_.reserve(2 * cap_);
     data_ = v_.data();
-    cap_ = v_.size();
+    cap_ = v_.capacity();
   }
 
-  static constexpr std::size_t kLocal = 64;
-  // Storage only: its nodes are created one by one by add().
-  union Local {
-    Local() noexcept {}
-    ExprNode x[kLocal];
-  };
+  static constexpr std::size_t kInitial = 64;
   static_assert(std::is_trivially_copyable_v<ExprNode> &&
                 std::is_trivially_destructible_v<ExprNode>);
 
-  std::vector<ExprNode>& v_;
-  Local local_;
-  ExprNode* data_ = local_.x;
+  NodeArray& v_;
+  ExprNode* data_ = nullptr;
   std::size_t n_ = 0;
-  std::size_t cap_ = kLocal;
+  std::size_t cap_ = 0;
 };
 
 class Parser {
@@ -329,12 +318,12 @@ class Parser {
   const ExprNode& node(ExprId id) const noexcept { return nodes_[static_cast<std::size_t>(id)]; }
   // A node whose depth is known to be within kMaxExprDepth.
   ExprId push_node(Op op, std::uint32_t column, ExprId a, ExprId b, int depth, double value = 0.0) {
-    return static_cast<ExprId>(nodes_.add(ExprNode{.op = op,
+    return static_cast<ExprId>(nodes_.add(ExprNode{.value = value,
                                                    .a = a,
                                                    .b = b,
-                                                   .value = value,
                                                    .column = column,
-                                                   .depth = static_cast<std::uint16_t>(depth)}));
+                                                   .depth = static_cast<std::uint16_t>(depth),
+                                                   .op = op}));
   }
   // kFail when the tree would be deeper than kMaxExprDepth.
   ExprId add_node(Op op, std::uint32_t column, ExprId a = kNoExpr, ExprId b = kNoExpr) {

@@ -56,7 +56,131 @@ Result<void> Interpreter::Impl::assign(gcode::ExprId lhs, Value v) {
   return write_var(*num, v, loc(n.column));
 }
 
+// The common case of evaluation, without building Result objects: numbers,
+// local/common/persistent variables, the four operations, comparisons and
+// the usual functions. It gives up (false) wherever the rules need more: an
+// alarm, a system or named variable, a rarer operator. eval() then
+// evaluates the expression the general way, which gives the same value or
+// the alarm; nothing here has a side effect, so the second pass is safe.
+bool Interpreter::Impl::eval_plain(gcode::ExprId id, Value& out) const noexcept {
+  if (id < 0 || static_cast<std::size_t>(id) >= blk.nodes.size()) return false;
+  const gcode::ExprNode& n = blk.nodes[static_cast<std::size_t>(id)];
+  using gcode::Op;
+  Value a, b;
+  switch (n.op) {
+    case Op::kNumber:
+      out = Value::of(n.value);
+      return true;
+    case Op::kVar: {
+      if (!eval_plain(n.a, a)) return false;
+      const double x = a.num();
+      if (!(std::fabs(x) < 1e9)) return false;
+      int num = static_cast<int>(x);
+      if (num != x) num = static_cast<int>(round_half_away(x));  // #[1.6] is #2
+      if (num == 0) {
+        out = Value::null();
+        return true;
+      }
+      if (!VariableStore::is_local(num) && !VariableStore::is_common(num) &&
+          !VariableStore::is_persistent(num)) {
+        return false;
+      }
+      out = vars.get(num);
+      return true;
+    }
+    case Op::kNeg:
+      if (!eval_plain(n.a, a)) return false;
+      out = Value::of(0.0 - a.num());
+      return true;
+    case Op::kAdd:
+    case Op::kSub:
+    case Op::kMul:
+    case Op::kDiv: {
+      if (!eval_plain(n.a, a) || !eval_plain(n.b, b)) return false;
+      const double x = a.num(), y = b.num();
+      const double r = n.op == Op::kAdd   ? x + y
+                       : n.op == Op::kSub ? x - y
+                       : n.op == Op::kMul ? x * y
+                                          : x / y;
+      if (!std::isfinite(r)) return false;  // also x / 0
+      out = Value::of(r + 0.0);
+      return true;
+    }
+    case Op::kEq:
+    case Op::kNe: {
+      if (!eval_plain(n.a, a) || !eval_plain(n.b, b)) return false;
+      const bool eq = a.vacant == b.vacant && (a.vacant || a.v == b.v);
+      out = Value::of(eq == (n.op == Op::kEq) ? 1.0 : 0.0);
+      return true;
+    }
+    case Op::kGt:
+    case Op::kGe:
+    case Op::kLt:
+    case Op::kLe: {
+      if (!eval_plain(n.a, a) || !eval_plain(n.b, b)) return false;
+      const double x = a.num(), y = b.num();
+      const bool r = n.op == Op::kGt   ? x > y
+                     : n.op == Op::kGe ? x >= y
+                     : n.op == Op::kLt ? x < y
+                                       : x <= y;
+      out = Value::of(r ? 1.0 : 0.0);
+      return true;
+    }
+    case Op::kFunc:
+      break;
+    default:
+      return false;
+  }
+  using gcode::Func;
+  if (!eval_plain(n.a, a)) return false;
+  const double x = a.num();
+  double r = 0.0;
+  switch (n.fn) {
+    case Func::kSin:
+      r = std::sin(x * kRad);
+      break;
+    case Func::kCos:
+      r = std::cos(x * kRad);
+      break;
+    case Func::kAtan:
+      if (n.b != gcode::kNoExpr) {
+        if (!eval_plain(n.b, b)) return false;
+        if (x == 0.0 && b.num() == 0.0) return false;
+        r = std::atan2(x, b.num()) / kRad;
+      } else {
+        r = std::atan(x) / kRad;
+      }
+      if (!nat && r < 0.0) r += 360.0;
+      break;
+    case Func::kSqrt:
+      if (x < 0.0) return false;
+      r = std::sqrt(x);
+      break;
+    case Func::kAbs:
+      r = std::fabs(x);
+      break;
+    case Func::kFix:
+      r = std::trunc(x);
+      break;
+    case Func::kFup:
+      r = x >= 0 ? std::ceil(x) : std::floor(x);
+      break;
+    default:
+      return false;
+  }
+  if (!std::isfinite(r)) return false;
+  out = Value::of(r + 0.0);
+  return true;
+}
+
 Result<Value> Interpreter::Impl::eval(gcode::ExprId id) {
+  Value v;
+  if (eval_plain(id, v)) return v;
+  return eval_general(id);
+}
+
+// Every rule, with its alarms (eval_plain is the fast path of the same rules).
+Result<Value> Interpreter::Impl::eval_general(gcode::ExprId id) {
   if (id < 0 || static_cast<std::size_t>(id) >= blk.nodes.size()) {
     return fail(AlarmId::kMacroFormat, "missing expression", loc(cur_col));
   }
@@ -73,16 +197,16 @@ Result<Value> Interpreter::Impl::eval(gcode::ExprId id) {
     case Op::kNamedVar:
       return read_named_var(blk.names[static_cast<std::size_t>(n.name)], loc(n.column));
     case Op::kNeg: {
-      auto a = eval(n.a);
+      auto a = eval_general(n.a);
       if (!a) return a;
       return Value::of(0.0 - a->num());  // -#1 with #1 vacant is 0, not -0
     }
     case Op::kFunc:
       break;
     default: {
-      auto a = eval(n.a);
+      auto a = eval_general(n.a);
       if (!a) return a;
-      auto b = eval(n.b);
+      auto b = eval_general(n.b);
       if (!b) return b;
       const double x = a->num();
       const double y = b->num();
@@ -140,7 +264,7 @@ Result<Value> Interpreter::Impl::eval(gcode::ExprId id) {
     }
   }
   // Functions.
-  auto a = eval(n.a);
+  auto a = eval_general(n.a);
   if (!a) return a;
   const double x = a->num();
   auto bad = [&](const char* what) { return fail(AlarmId::kIllegalArgument, what, loc(n.column)); };
@@ -173,7 +297,7 @@ Result<Value> Interpreter::Impl::eval(gcode::ExprId id) {
       break;
     case Func::kAtan:
       if (n.b != gcode::kNoExpr) {
-        auto b = eval(n.b);
+        auto b = eval_general(n.b);
         if (!b) return b;
         if (x == 0.0 && b->num() == 0.0) return bad("ATAN[0]/[0]");
         r = std::atan2(x, b->num()) / kRad;
@@ -209,7 +333,7 @@ Result<Value> Interpreter::Impl::eval(gcode::ExprId id) {
       break;
     case Func::kPow: {
       if (n.b == gcode::kNoExpr) return bad("POW needs two arguments");
-      auto b = eval(n.b);
+      auto b = eval_general(n.b);
       if (!b) return b;
       const double y = b->num();
       if (x < 0.0 && y != std::trunc(y)) return bad("POW of a negative base to a fractional power");

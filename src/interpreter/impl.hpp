@@ -72,6 +72,7 @@ struct WordVal {
 // The words of one block, by address.
 struct Words {
   std::array<std::optional<WordVal>, 26> w;
+  std::uint32_t letters = 0;  // bit c set: w[c] holds a word
   int g_count = 0;
   std::array<int, 16> g{};  // G codes x10 (G54.1 -> 541)
   std::array<std::uint32_t, 16> g_col{};
@@ -107,12 +108,12 @@ struct Interpreter::Impl {
   int axis_count = 0;
   std::array<char, kMaxAxes> axis_letter{};
   std::array<int, 26> axis_of_letter{};  // -1 when the letter is not an axis
+  std::uint32_t axis_letters = 0;        // bit c set: letter 'A' + c is an axis
 
   std::vector<std::unique_ptr<ProgramFile>> files;
   std::vector<Frame> frames;
   gcode::Block blk;
-  gcode::RawBlock raw;
-  std::string raw_text;        // copy of the current block's text (skip records)
+  gcode::RawBlock raw;         // the current block's text: valid until the next block is read
   gcode::SourcePos block_pos;  // position of the current block
   Pending pending = Pending::kNone;
   PendingSkip pending_skip;
@@ -212,6 +213,8 @@ struct Interpreter::Impl {
 
   // expr.cpp
   Result<Value> eval(gcode::ExprId id);
+  Result<Value> eval_general(gcode::ExprId id);
+  bool eval_plain(gcode::ExprId id, Value& out) const noexcept;
   Result<int> var_number(gcode::ExprId lhs);
   Result<void> assign(gcode::ExprId lhs, Value v);
 

@@ -21,6 +21,7 @@ Result<void> Interpreter::Impl::init(const AxisVec& start) {
   for (int i = 0; i < axis_count; ++i) {
     axis_letter[static_cast<std::size_t>(i)] = mc.axes[static_cast<std::size_t>(i)].name;
     axis_of_letter[static_cast<std::size_t>(mc.axes[static_cast<std::size_t>(i)].name - 'A')] = i;
+    axis_letters |= 1u << (mc.axes[static_cast<std::size_t>(i)].name - 'A');
   }
   length_axis = mc.axis_index('Z');
   axis_scale.fill(1.0);
@@ -149,7 +150,6 @@ Result<Step> Interpreter::Impl::step(CommandSink& out) {
       }
       break;
     }
-    raw_text.assign(raw.text);
     auto counted = count_statement(loc(cur_col));
     if (!counted) return std::unexpected(counted.error());
   }

@@ -2,6 +2,7 @@
 // (Fanuc): messages; G65 call; F S T; modal G codes (units first); data
 // setting and coordinate shifts (G10 G52 G92); dwell; motion; M codes.
 #include <algorithm>
+#include <bit>
 #include <cmath>
 
 #include "interpreter/impl.hpp"
@@ -188,6 +189,7 @@ Result<void> Interpreter::Impl::collect_words(Words& words) {
                   std::string("address ") + w.letter + " twice in one block", loc(w.column));
     }
     slot = v;
+    words.letters |= 1u << (w.letter - 'A');
   }
   return {};
 }
@@ -497,10 +499,8 @@ Result<Step> Interpreter::Impl::execute_nc(const Words& words, CommandSink& out)
   }
 
   // Addresses that mean nothing here are refused, so a typo is not ignored.
-  for (int c = 0; c < 26; ++c) {
-    const char letter = static_cast<char>('A' + c);
-    if (!words.w[static_cast<std::size_t>(c)] || axis_of_letter[static_cast<std::size_t>(c)] >= 0)
-      continue;
+  for (std::uint32_t rest = words.letters & ~axis_letters; rest != 0; rest &= rest - 1) {
+    const char letter = static_cast<char>('A' + std::countr_zero(rest));
     if (mc.lathe() && (letter == 'U' || letter == 'W')) continue;
     if (mc.lathe() && letter == 'H' && axis_of_letter['C' - 'A'] < 0) {
       // H is the incremental C of system A; a lathe has no tool length offset.

@@ -226,7 +226,7 @@ Result<Step> Interpreter::Impl::skip_block(const Words& words, const AxisVec& ta
   // The record the report shows.
   SkipRecord& rec = pending_skip.record;
   rec.line = cur_line;
-  std::string_view text = raw_text;
+  std::string_view text = raw.text;
   while (!text.empty() && (text.back() == ' ' || text.back() == '\t' || text.back() == '\r')) {
     text.remove_suffix(1);
   }
