@@ -17,48 +17,22 @@ namespace skipnc::gcode {
 using ExprId = std::int32_t;  // index into Block::nodes; -1 = none
 inline constexpr ExprId kNoExpr = -1;
 
+// clang-format off
 enum class Op : std::uint8_t {
   kNumber,    // value
   kVar,       // #a          (a: expression giving the variable number)
   kNamedVar,  // #<name> or #_NAME   (name: index into Block::names)
   kNeg,       // -a
-  kAdd,
-  kSub,
-  kMul,
-  kDiv,
-  kMod,
-  kAnd,
-  kOr,
-  kXor,  // a op b
-  kEq,
-  kNe,
-  kGt,
-  kGe,
-  kLt,
-  kLe,    // a op b (conditions)
-  kFunc,  // fn(a) or fn(a, b)
+  kAdd, kSub, kMul, kDiv, kMod, kAnd, kOr, kXor,  // a op b
+  kEq, kNe, kGt, kGe, kLt, kLe,                   // a op b (conditions)
+  kFunc,      // fn(a) or fn(a, b)
 };
 
 enum class Func : std::uint8_t {
-  kNone,
-  kSin,
-  kCos,
-  kTan,
-  kAsin,
-  kAcos,
-  kAtan,
-  kSqrt,
-  kAbs,
-  kRound,
-  kFix,
-  kFup,
-  kLn,
-  kExp,
-  kPow,
-  kBin,
-  kBcd,
-  kAdp,
+  kNone, kSin, kCos, kTan, kAsin, kAcos, kAtan, kSqrt, kAbs, kRound, kFix, kFup,
+  kLn, kExp, kPow, kBin, kBcd, kAdp,
 };
+// clang-format on
 
 struct ExprNode {      // 32 bytes: the largest member first
   double value = 0.0;  // kNumber
