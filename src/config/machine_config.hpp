@@ -105,7 +105,7 @@ std::vector<std::string> builtin_machine_names();
 class Parameters {
  public:
   Parameters() = default;
-  explicit Parameters(const Dialect* dialect) : dialect_(dialect) {}
+  explicit Parameters(const Dialect* dialect);
 
   double get(int number) const noexcept;
   bool bit(int number, int b) const noexcept;
@@ -115,8 +115,13 @@ class Parameters {
   const std::map<int, double>& overrides() const noexcept { return values_; }
 
  private:
+  void set(int number, double value);
+
   const Dialect* dialect_ = nullptr;
-  std::map<int, double> values_;
+  std::map<int, double> values_;  // the settings applied
+  // Every parameter's effective value, by number: get() is a binary search
+  // (it is read in every motion block).
+  std::vector<std::pair<int, double>> table_;
 };
 
 }  // namespace skipnc::config

@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <string>
@@ -6,12 +7,33 @@
 
 namespace skipnc::config {
 
-double Parameters::get(int number) const noexcept {
-  if (auto it = values_.find(number); it != values_.end()) return it->second;
-  if (dialect_ != nullptr) {
-    if (const ParamDef* d = dialect_->param(number)) return d->default_value;
+Parameters::Parameters(const Dialect* dialect) : dialect_(dialect) {
+  if (dialect_ == nullptr) return;
+  table_.reserve(dialect_->params.size());
+  for (const ParamDef& p : dialect_->params) {
+    // The first definition of a number counts (as Dialect::param finds it).
+    if (dialect_->param(p.number) == &p) table_.emplace_back(p.number, p.default_value);
   }
-  return 0.0;
+  std::sort(table_.begin(), table_.end());
+}
+
+double Parameters::get(int number) const noexcept {
+  const auto it =
+      std::lower_bound(table_.begin(), table_.end(), number,
+                       [](const std::pair<int, double>& e, int n) { return e.first < n; });
+  return it != table_.end() && it->first == number ? it->second : 0.0;
+}
+
+void Parameters::set(int number, double value) {
+  values_[number] = value;
+  const auto it =
+      std::lower_bound(table_.begin(), table_.end(), number,
+                       [](const std::pair<int, double>& e, int n) { return e.first < n; });
+  if (it != table_.end() && it->first == number) {
+    it->second = value;
+  } else {
+    table_.insert(it, {number, value});
+  }
 }
 
 bool Parameters::bit(int number, int b) const noexcept {
@@ -21,7 +43,8 @@ bool Parameters::bit(int number, int b) const noexcept {
 
 Result<void> Parameters::apply(const ParamSetting& s) {
   const ParamDef* d = dialect_ != nullptr ? dialect_->param(s.number) : nullptr;
-  const std::string name = std::to_string(s.number) + (s.bit >= 0 ? "#" + std::to_string(s.bit) : "");
+  const std::string name =
+      std::to_string(s.number) + (s.bit >= 0 ? "#" + std::to_string(s.bit) : "");
   if (d == nullptr) {
     return fail(AlarmId::kConfig,
                 "parameter " + name + " is not a parameter of dialect '" +
@@ -30,27 +53,29 @@ Result<void> Parameters::apply(const ParamSetting& s) {
   }
   if (s.bit >= 0) {
     if (d->kind != ParamKind::kBits) {
-      return fail(AlarmId::kConfig, "parameter " + std::to_string(s.number) + " (" + d->name +
-                                        ") is not a bit parameter", s.loc);
+      return fail(
+          AlarmId::kConfig,
+          "parameter " + std::to_string(s.number) + " (" + d->name + ") is not a bit parameter",
+          s.loc);
     }
     if (s.bit > 7 || (s.value != 0.0 && s.value != 1.0)) {
       return fail(AlarmId::kConfig, "parameter " + name + " takes 0 or 1", s.loc);
     }
     const auto cur = static_cast<long long>(get(s.number));
     const long long mask = 1LL << s.bit;
-    values_[s.number] = static_cast<double>(s.value != 0.0 ? (cur | mask) : (cur & ~mask));
+    set(s.number, static_cast<double>(s.value != 0.0 ? (cur | mask) : (cur & ~mask)));
     return {};
   }
   if (!(s.value >= d->min && s.value <= d->max) ||
       (d->kind != ParamKind::kReal && s.value != std::floor(s.value))) {
-    return fail(AlarmId::kConfig,
-                "parameter " + name + " (" + d->name + ") = " + std::to_string(s.value) +
-                    " is out of range: " +
-                    (d->kind == ParamKind::kReal ? "a number" : "a whole number") + " from " +
-                    std::to_string(d->min) + " to " + std::to_string(d->max),
-                s.loc);
+    return fail(
+        AlarmId::kConfig,
+        "parameter " + name + " (" + d->name + ") = " + std::to_string(s.value) +
+            " is out of range: " + (d->kind == ParamKind::kReal ? "a number" : "a whole number") +
+            " from " + std::to_string(d->min) + " to " + std::to_string(d->max),
+        s.loc);
   }
-  values_[s.number] = s.value;
+  set(s.number, s.value);
   return {};
 }
 

@@ -10,6 +10,7 @@
 #pragma once
 
 #include <array>
+#include <bit>
 #include <cstdio>
 #include <memory>
 #include <optional>
@@ -81,6 +82,15 @@ struct Words {
   bool has(char c) const noexcept { return w[static_cast<std::size_t>(c - 'A')].has_value(); }
   const WordVal& at(char c) const noexcept { return *w[static_cast<std::size_t>(c - 'A')]; }
   std::optional<WordVal>& slot(char c) noexcept { return w[static_cast<std::size_t>(c - 'A')]; }
+  // Empties the slots in use (a cleared Words is as a new one).
+  void clear() noexcept {
+    for (std::uint32_t rest = letters; rest != 0; rest &= rest - 1) {
+      w[static_cast<std::size_t>(std::countr_zero(rest))].reset();
+    }
+    letters = 0;
+    g_count = 0;
+    m_count = 0;
+  }
   bool has_g(int code) const noexcept {
     for (int i = 0; i < g_count; ++i) {
       if (g[static_cast<std::size_t>(i)] == code) return true;
@@ -113,7 +123,8 @@ struct Interpreter::Impl {
   std::vector<std::unique_ptr<ProgramFile>> files;
   std::vector<Frame> frames;
   gcode::Block blk;
-  gcode::RawBlock raw;         // the current block's text: valid until the next block is read
+  Words cur_words;      // the current block's words (reused: cleared, not rebuilt, per block)
+  gcode::RawBlock raw;  // the current block's text: valid until the next block is read
   gcode::SourcePos block_pos;  // position of the current block
   Pending pending = Pending::kNone;
   PendingSkip pending_skip;

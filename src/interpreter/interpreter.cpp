@@ -179,10 +179,10 @@ Result<Step> Interpreter::Impl::execute(CommandSink& out) {
     if (blk.has_n) modal.seq = static_cast<int>(blk.n % 100000000);  // #4114
     return execute_statement(out);
   }
-  Words words;
-  auto c = collect_words(words);
+  cur_words.clear();
+  auto c = collect_words(cur_words);
   if (!c) return std::unexpected(c.error());
-  return execute_nc(words, out);
+  return execute_nc(cur_words, out);
 }
 
 Result<void> Interpreter::Impl::sync(const SyncState& s) {
