@@ -4,32 +4,10 @@
 #include <iterator>
 #include <type_traits>
 
+#include "core/decimal.hpp"
+
 namespace skipnc::canon {
 namespace {
-
-// Two decimal digits at a time: "00".."99".
-constexpr char kDigitPairs[] =
-    "00010203040506070809101112131415161718192021222324252627282930313233343536373839"
-    "40414243444546474849505152535455565758596061626364656667686970717273747576777879"
-    "8081828384858687888990919293949596979899";
-
-// Writes a (< 10^18) backwards, ending at e; returns the first character.
-char* digits_back(char* e, unsigned long long a) noexcept {
-  while (a >= 100) {
-    const auto i = static_cast<std::size_t>(a % 100) * 2;
-    a /= 100;
-    *--e = kDigitPairs[i + 1];
-    *--e = kDigitPairs[i];
-  }
-  if (a >= 10) {
-    const auto i = static_cast<std::size_t>(a) * 2;
-    *--e = kDigitPairs[i + 1];
-    *--e = kDigitPairs[i];
-  } else {
-    *--e = static_cast<char>('0' + a);
-  }
-  return e;
-}
 
 // Room a number takes at most (std::to_chars of a double needs 24).
 constexpr std::size_t kNumberRoom = 32;
@@ -46,23 +24,7 @@ char* number_at(char* p, double v) noexcept {
     const double scaled = v * 1000.0;
     const auto m = static_cast<long long>(scaled < 0 ? scaled - 0.5 : scaled + 0.5);
     if (static_cast<double>(m) / 1000.0 == v) {
-      auto a = m < 0 ? static_cast<unsigned long long>(-m) : static_cast<unsigned long long>(m);
-      if (m < 0) *p++ = '-';
-      const unsigned long long whole = a / 1000;
-      unsigned frac = static_cast<unsigned>(a % 1000);
-      char tmp[24];
-      char* e = tmp + sizeof tmp;
-      char* s = digits_back(e, whole);
-      while (s != e) *p++ = *s++;
-      if (frac != 0) {
-        *p++ = '.';
-        *p++ = static_cast<char>('0' + frac / 100);
-        frac %= 100;
-        if (frac != 0) {
-          *p++ = static_cast<char>('0' + frac / 10);
-          if (frac % 10 != 0) *p++ = static_cast<char>('0' + frac % 10);
-        }
-      }
+      p = decimal::write_scaled<3>(p, m);
       return p;
     }
   }
@@ -103,15 +65,7 @@ class LineWriter {
   }
   void put(char c) noexcept { *p_++ = c; }
   void number(double v) noexcept { p_ = number_at(p_, v); }
-  void integer(long long v) noexcept {
-    char tmp[24];
-    char* e = tmp + sizeof tmp;
-    const auto a =
-        v < 0 ? 0ULL - static_cast<unsigned long long>(v) : static_cast<unsigned long long>(v);
-    char* s = digits_back(e, a);
-    if (v < 0) *p_++ = '-';
-    while (s != e) *p_++ = *s++;
-  }
+  void integer(long long v) noexcept { p_ = decimal::write_int(p_, v); }
   void axes(const AxisVec& v, const AxisNames& names) noexcept {
     for (int i = 0; i < names.count; ++i) {
       *p_++ = ' ';

@@ -15,7 +15,7 @@
 namespace skipnc::report {
 
 struct ReportInput {
-  std::string program;             // as given on the command line
+  std::string program;  // as given on the command line
   std::string dialect;
   const config::MachineConfig* machine = nullptr;  // null when the run could not start
   const config::Dialect* dialect_table = nullptr;  // for alarm numbers
@@ -56,6 +56,7 @@ class CsvTrace final : public machine::TraceSink {
   bool header_done_ = false;
   bool failed_ = false;
   std::string buf_;
+  std::vector<char> row_;  // one row's text, sized for the longest row by header()
 };
 
 }  // namespace skipnc::report

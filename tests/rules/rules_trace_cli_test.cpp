@@ -121,5 +121,40 @@ TEST(Rules, rule_32_compass_handshake_columns_in_the_trace) {
   EXPECT_LT(parse_csv(read_file(trace)).col("G31SkipMove.Active"), 0);
 }
 
+// The trace's numbers are rounded to 6 decimals (1 nm), trailing zeros
+// dropped.
+TEST(Trace, numbers_are_written_to_six_decimals) {
+  TempDir tmp;
+  const auto nc = tmp.write("t.nc", "G21 G90 G54 G1 X1.2345678 Z-0.5 F777.7\nM30\n");
+  const auto trace = tmp.path / "trace.csv";
+  const auto r = run_cli({"run", nc.string(), "--trace", trace.string(), "-q"});
+  ASSERT_EQ(r.exit_code, 0);
+  const std::string text = read_file(trace);
+  std::istringstream in(text);
+  std::string line;
+  std::getline(in, line);  // header
+  std::size_t cells = 0, fractional = 0;
+  while (std::getline(in, line)) {
+    std::istringstream ls(line);
+    std::string cell;
+    while (std::getline(ls, cell, ',')) {
+      ++cells;
+      ASSERT_EQ(cell.find_first_of("eE"), std::string::npos) << cell;
+      const auto dot = cell.find('.');
+      if (dot == std::string::npos) continue;
+      ++fractional;
+      ASSERT_LE(cell.size() - dot - 1, 6u) << cell;
+      ASSERT_NE(cell.back(), '0') << cell;
+    }
+  }
+  EXPECT_GT(cells, 1000u);
+  EXPECT_GT(fractional, 100u);
+  // The last row: the command at the end point, X1.2345678 to the nearest
+  // nanometre.
+  const Csv c = parse_csv(text);
+  EXPECT_DOUBLE_EQ(c.rows.back()[static_cast<std::size_t>(c.col("X_cmd"))], 1.234568);
+  EXPECT_DOUBLE_EQ(c.rows.back()[static_cast<std::size_t>(c.col("Z_cmd"))], -0.5);
+}
+
 }  // namespace
 }  // namespace skipnc::rules
