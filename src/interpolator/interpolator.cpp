@@ -73,9 +73,9 @@ const AxisVec& Interpolator::tick() noexcept {
   }
 
   if (seg_ != nullptr) {
-    pos_ = seg_->position_at(seg_time_);
-    vel_ = seg_->velocity_at(seg_time_) * scale_;
-    speed_ = seg_->speed_at(seg_time_) * scale_;
+    seg_->sample(seg_time_, pos_, vel_, speed_);
+    vel_ = vel_ * scale_;
+    speed_ *= scale_;
     line_ = seg_->line;
     tag_ = seg_->tag;
   } else {

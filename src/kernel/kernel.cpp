@@ -230,7 +230,7 @@ double Kernel::advance_time_scale() noexcept {
   const double v_nom = seg != nullptr ? seg->v_max : 0.0;
   const double step = v_nom > 0.0 ? min_accel_mm_s2_ * cfg_.clock.period_s() / v_nom : 1e300;
   auto ramp = [&](double& x, double target) {
-    x = target > x ? std::fmin(target, x + step) : std::fmax(target, x - step);
+    x = target > x ? std::min(target, x + step) : std::max(target, x - step);
   };
   ramp(hold_factor_, hold ? 0.0 : 1.0);
   ramp(override_factor_, ovr);

@@ -125,6 +125,8 @@ void ProbeScene::advance(const AxisVec& before, const AxisVec& after) noexcept {
   edge_count_ = 0;
   touch_on_ = false;
   if (pending_tool_) change_tool(before);
+  // Nothing to sense or to hit: a scene without probe, setter, gauges or parts.
+  if (!probe_ && !setter_ && gauges_.empty() && material_.empty()) return;
   SensorEdge e[2];
   if (probe_ && probe_in_spindle()) {
     const int n = probe_->advance(ball_at(before), ball_at(after), e);

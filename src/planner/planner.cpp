@@ -421,6 +421,39 @@ AxisVec Segment::velocity_at(double t) const noexcept {
   return tangent_at(t) * speed_at(t);
 }
 
+void Segment::sample(double t, AxisVec& position, AxisVec& velocity, double& speed) const noexcept {
+  if (kind == Kind::kDwell || kind == Kind::kRapidNonLinear || !(t > 0.0) || t >= duration) {
+    position = position_at(t);
+    velocity = velocity_at(t);
+    speed = speed_at(t);
+    return;
+  }
+  // Inside a line, rapid or arc: distance and speed from one phase of the profile.
+  double s = 0.0, v = 0.0;
+  if (t < t_acc) {
+    s = (v_entry + 0.5 * accel * t) * t;
+    v = v_entry + accel * t;
+  } else if (t < t_acc + t_cruise) {
+    s = d_acc + v_cruise * (t - t_acc);
+    v = v_cruise;
+  } else {
+    const double tau = duration - t;
+    s = length - (v_exit + 0.5 * accel * tau) * tau;
+    v = v_exit + accel * tau;
+  }
+  s = std::clamp(s, 0.0, length);
+  speed = v;
+  if (kind == Kind::kArc) {
+    position = arc_point(*this, s);
+    velocity = arc_direction(*this, s / length) * v;
+    return;
+  }
+  for (int i = 0; i < kMaxAxes; ++i) {
+    position[i] = start[i] + unit[i] * s;
+    velocity[i] = unit[i] * v;
+  }
+}
+
 // ---------------------------------------------------------------------------
 // Planner
 

@@ -19,8 +19,8 @@
 namespace skipnc::planner {
 
 struct AxisLimits {
-  double max_velocity_mm_s = 500.0;   // cutting-feed upper limit of the axis
-  double rapid_mm_s = 500.0;          // rapid traverse rate of the axis
+  double max_velocity_mm_s = 500.0;  // cutting-feed upper limit of the axis
+  double rapid_mm_s = 500.0;         // rapid traverse rate of the axis
   double max_accel_mm_s2 = 2000.0;
 };
 
@@ -34,8 +34,8 @@ struct Limits {
 struct Move {
   enum class Kind : std::uint8_t { kLine, kRapid, kRapidNonLinear, kArc, kDwell };
   Kind kind = Kind::kLine;
-  AxisVec target;                 // machine coordinates, mm
-  double feed_mm_s = 0.0;         // kLine and kArc: requested path speed
+  AxisVec target;          // machine coordinates, mm
+  double feed_mm_s = 0.0;  // kLine and kArc: requested path speed
   // kArc:
   double center0 = 0.0;
   double center1 = 0.0;
@@ -44,11 +44,11 @@ struct Move {
   int extra_turns = 0;
   // kDwell:
   double dwell_s = 0.0;
-  bool exact_stop = false;        // velocity is zero at the end of this move
-  bool no_accel = false;          // no automatic acc/dec: the path speed steps to the feed
-                                  // at the start and stays there (G31 with SKF = 0)
+  bool exact_stop = false;  // velocity is zero at the end of this move
+  bool no_accel = false;    // no automatic acc/dec: the path speed steps to the feed
+                            // at the start and stays there (G31 with SKF = 0)
   std::uint32_t line = 0;
-  std::uint32_t tag = 0;          // caller's identifier, carried to the segment
+  std::uint32_t tag = 0;  // caller's identifier, carried to the segment
 };
 
 // A planned segment. Geometry is fixed at push time; the profile (entry and
@@ -57,8 +57,8 @@ struct Segment {
   Move::Kind kind = Move::Kind::kLine;
   AxisVec start;
   AxisVec end;
-  AxisVec unit;            // kLine/kRapid: direction; kRapidNonLinear: per-axis sign
-  double length = 0.0;     // path length, mm (kRapidNonLinear: longest axis time basis)
+  AxisVec unit;         // kLine/kRapid: direction; kRapidNonLinear: per-axis sign
+  double length = 0.0;  // path length, mm (kRapidNonLinear: longest axis time basis)
   // kArc geometry
   canon::Plane plane;
   double center0 = 0.0, center1 = 0.0, radius = 0.0;
@@ -67,10 +67,10 @@ struct Segment {
   AxisVec linear_per_mm;                  // other axes' travel per mm of path (arcs)
   // Profile
   double v_entry = 0.0, v_exit = 0.0, v_cruise = 0.0;  // mm/s
-  double accel = 0.0;      // mm/s^2 along the path (infinite when no_accel)
+  double accel = 0.0;  // mm/s^2 along the path (infinite when no_accel)
   double t_acc = 0.0, t_cruise = 0.0, t_dec = 0.0;
-  double duration = 0.0;   // seconds
-  double v_max = 0.0;      // requested speed after limits
+  double duration = 0.0;  // seconds
+  double v_max = 0.0;     // requested speed after limits
   double v_entry_max = 0.0;
   bool exact_stop = false;
   bool no_accel = false;
@@ -96,6 +96,9 @@ struct Segment {
   // Machine velocity at time t, mm/s per axis (speed_at * tangent_at, or the
   // per-axis profiles of kRapidNonLinear).
   AxisVec velocity_at(double t) const noexcept;
+  // position_at, velocity_at and speed_at together, the profile read once
+  // (the interpolator's sample of each servo period).
+  void sample(double t, AxisVec& position, AxisVec& velocity, double& speed) const noexcept;
 };
 
 // A fixed-capacity ring of segments shared by the planner (producer, outside
