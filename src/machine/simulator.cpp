@@ -1,5 +1,6 @@
 #include "machine/simulator.hpp"
 
+#include <array>
 #include <cmath>
 #include <type_traits>
 
@@ -99,18 +100,29 @@ Result<RunResult> Simulator::run(const interp::Setup& setup, const RunOptions& o
   k.set_locked_axes(locked);
   plant.set_locked(locked);
   kernel::OperatorState op;
-  op.dry_run_feed_mm_min =
-      d_.sw.dry_run_feed_param != 0 ? p_.get(d_.sw.dry_run_feed_param) * (m_.inch_machine ? 25.4 : 1.0)
-                                    : 0.0;
+  op.dry_run_feed_mm_min = d_.sw.dry_run_feed_param != 0
+                               ? p_.get(d_.sw.dry_run_feed_param) * (m_.inch_machine ? 25.4 : 1.0)
+                               : 0.0;
   std::size_t next_action = 0;  // scene [[operator]] actions not yet applied
 
   const int n = m_.axis_count();
+  // Per axis, fixed for the run: the excess following error that raises the
+  // servo alarm (negative: not checked) and the stroke limits.
+  std::array<double, kMaxAxes> fe_limit{}, stroke_lo{}, stroke_hi{};
+  for (int i = 0; i < n; ++i) {
+    const auto k_i = static_cast<std::size_t>(i);
+    const auto& a = m_.axes[k_i];
+    fe_limit[k_i] =
+        a.kp_per_s <= 0.0 || locked.has(i) ? -1.0 : 1.5 * a.rapid_mm_min / 60.0 / a.kp_per_s + 1.0;
+    stroke_lo[k_i] = a.min_mm - 1e-9;
+    stroke_hi[k_i] = a.max_mm + 1e-9;
+  }
   kernel::TickInput tin;
   kernel::TickOutput tout;
   tout.commanded = home;
   AxisVec cmd_prev = home;
-  bool waiting = false;     // the interpreter waits for a sync
-  bool ending = false;      // the program ended; the machine finishes its motion
+  bool waiting = false;  // the interpreter waits for a sync
+  bool ending = false;   // the program ended; the machine finishes its motion
   double next_progress = 1.0;
   const std::string_view file = setup.program_name;
 
@@ -188,8 +200,8 @@ Result<RunResult> Simulator::run(const interp::Setup& setup, const RunOptions& o
     // alarm, beyond any lag the axis shows at its rapid rate.
     for (int i = 0; i < n && res.status == RunStatus::kCompleted; ++i) {
       const auto& a = m_.axes[static_cast<std::size_t>(i)];
-      if (a.kp_per_s <= 0.0 || locked.has(i)) continue;
-      const double limit = 1.5 * a.rapid_mm_min / 60.0 / a.kp_per_s + 1.0;
+      const double limit = fe_limit[static_cast<std::size_t>(i)];
+      if (limit < 0.0) continue;
       const double fe = cmd_prev[i] - plant.actual()[i];
       if (std::fabs(fe) > limit) {
         alarm(Error{AlarmId::kServoExcessError,
@@ -200,9 +212,9 @@ Result<RunResult> Simulator::run(const interp::Setup& setup, const RunOptions& o
     }
     if (res.status != RunStatus::kCompleted) break;
     for (int i = 0; i < n; ++i) {
-      const auto& a = m_.axes[static_cast<std::size_t>(i)];
       const double c = tout.commanded[i];
-      if (c > a.max_mm + 1e-9 || c < a.min_mm - 1e-9) {
+      if (c > stroke_hi[static_cast<std::size_t>(i)] ||
+          c < stroke_lo[static_cast<std::size_t>(i)]) {
         alarm(stroke_alarm(m_, i, c, file, tout.line));
         break;
       }
@@ -237,13 +249,14 @@ Result<RunResult> Simulator::run(const interp::Setup& setup, const RunOptions& o
       break;
     }
     if (k.now() >= m_.limits.max_ticks) {
-      alarm(Error{AlarmId::kTimeLimit,
-                  "the run passed limits.max_time_s of simulated time", SourceLoc{file, tout.line, 1}, -1});
+      alarm(Error{AlarmId::kTimeLimit, "the run passed limits.max_time_s of simulated time",
+                  SourceLoc{file, tout.line, 1}, -1});
       break;
     }
     if (opts.interrupt != nullptr && opts.interrupt->load(std::memory_order_relaxed)) {
       res.status = RunStatus::kInterrupted;
-      res.alarm = Error{AlarmId::kInterrupted, "stopped by a signal", SourceLoc{file, in.line(), 1}, -1};
+      res.alarm =
+          Error{AlarmId::kInterrupted, "stopped by a signal", SourceLoc{file, in.line(), 1}, -1};
       break;
     }
     if (opts.progress) {
