@@ -73,7 +73,7 @@ const AxisVec& Interpolator::tick() noexcept {
   }
 
   if (seg_ != nullptr) {
-    seg_->sample(seg_time_, pos_, vel_, speed_);
+    seg_->sample(seg_time_, queue_.limits().axis_count, pos_, vel_, speed_);
     vel_ = vel_ * scale_;
     speed_ *= scale_;
     line_ = seg_->line;

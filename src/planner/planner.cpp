@@ -421,7 +421,8 @@ AxisVec Segment::velocity_at(double t) const noexcept {
   return tangent_at(t) * speed_at(t);
 }
 
-void Segment::sample(double t, AxisVec& position, AxisVec& velocity, double& speed) const noexcept {
+void Segment::sample(double t, int axis_count, AxisVec& position, AxisVec& velocity,
+                     double& speed) const noexcept {
   if (kind == Kind::kDwell || kind == Kind::kRapidNonLinear || !(t > 0.0) || t >= duration) {
     position = position_at(t);
     velocity = velocity_at(t);
@@ -448,7 +449,7 @@ void Segment::sample(double t, AxisVec& position, AxisVec& velocity, double& spe
     velocity = arc_direction(*this, s / length) * v;
     return;
   }
-  for (int i = 0; i < kMaxAxes; ++i) {
+  for (int i = 0; i < axis_count; ++i) {
     position[i] = start[i] + unit[i] * s;
     velocity[i] = unit[i] * v;
   }

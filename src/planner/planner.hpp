@@ -97,8 +97,11 @@ struct Segment {
   // per-axis profiles of kRapidNonLinear).
   AxisVec velocity_at(double t) const noexcept;
   // position_at, velocity_at and speed_at together, the profile read once
-  // (the interpolator's sample of each servo period).
-  void sample(double t, AxisVec& position, AxisVec& velocity, double& speed) const noexcept;
+  // (the interpolator's sample of each servo period). Axes from axis_count
+  // on are left as they are in position and velocity (a machine's unused
+  // axes never move).
+  void sample(double t, int axis_count, AxisVec& position, AxisVec& velocity,
+              double& speed) const noexcept;
 };
 
 // A fixed-capacity ring of segments shared by the planner (producer, outside
