@@ -224,11 +224,15 @@ double Kernel::advance_time_scale() noexcept {
                                           seg->kind == planner::Move::Kind::kArc);
   const bool fixed =
       cutting && skip_.active && !skip_.done && seg->tag == skip_tag_ && skip_.spec.feed_fixed;
-  const double ovr = std::fmax(0.0, op_.override_pct) / 100.0;
+  const double ovr = override_;
   const bool hold =
       op_.feed_hold || op_.interlock || (fixed && skip_.spec.override_zero_stops && ovr <= 0.0);
   const double v_nom = seg != nullptr ? seg->v_max : 0.0;
-  const double step = v_nom > 0.0 ? min_accel_mm_s2_ * cfg_.clock.period_s() / v_nom : 1e300;
+  if (v_nom != ramp_v_nom_) {  // a new segment's speed: the step once, not every period
+    ramp_v_nom_ = v_nom;
+    ramp_step_ = v_nom > 0.0 ? min_accel_mm_s2_ * cfg_.clock.period_s() / v_nom : 1e300;
+  }
+  const double step = ramp_step_;
   auto ramp = [&](double& x, double target) {
     x = target > x ? std::min(target, x + step) : std::max(target, x - step);
   };

@@ -11,6 +11,7 @@
 #pragma once
 
 #include <array>
+#include <cmath>
 #include <cstdint>
 
 #include "canon/canon.hpp"
@@ -111,7 +112,10 @@ class Kernel {
   // interlock and override 0 % bring the path to rest at the axes'
   // acceleration; override and dry run do not act on a skip block whose
   // spec says feed_fixed.
-  void set_operator(const OperatorState& op) noexcept { op_ = op; }
+  void set_operator(const OperatorState& op) noexcept {
+    op_ = op;
+    override_ = std::fmax(0.0, op_.override_pct) / 100.0;
+  }
   const OperatorState& operator_state() const noexcept { return op_; }
   // Axes that do not move (machine lock, Z-axis cancel): their actual
   // position is not compared with the command.
@@ -166,6 +170,9 @@ class Kernel {
   double hold_factor_ = 1.0;      // ramps to 0 in feed hold / interlock
   double override_factor_ = 1.0;  // ramps to the feed override
   double min_accel_mm_s2_ = 0.0;  // smallest axis acceleration: feed hold ramps
+  double override_ = 1.0;         // op_.override_pct as a factor (set_operator)
+  double ramp_v_nom_ = 0.0;       // the path speed ramp_step_ was computed for
+  double ramp_step_ = 1e300;      // change of the hold and override factors per period
 };
 
 }  // namespace skipnc::kernel

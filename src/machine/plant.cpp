@@ -10,6 +10,9 @@ Plant::Plant(const config::MachineConfig& m, const Scene& scene, ServoClock cloc
   for (int i = 0; i < n_; ++i) {
     const double kp = m.axes[static_cast<std::size_t>(i)].kp_per_s;
     decay_[static_cast<std::size_t>(i)] = kp > 0 ? std::exp(-kp * clock_.period_s()) : 0.0;
+    lag_gain_[static_cast<std::size_t>(i)] =
+        kp > 0 ? (1.0 - m.axes[static_cast<std::size_t>(i)].feedforward) / (kp * clock_.period_s())
+               : 0.0;
   }
   auto signal_for = [&](const canon::SignalAddr& a) -> Signal& {
     for (auto& s : signals_) {
@@ -72,9 +75,9 @@ void Plant::advance(Tick k, const AxisVec& from, const AxisVec& to,
       a1 = to[i];  // ideal servo: the axis is where it is commanded
     } else {
       // e' = (1 - ff) * vc - kp * e, exact over the period.
-      const double vc = (to[i] - from[i]) / T;
       const double e0 = from[i] - actual_[i];
-      const double ess = (1.0 - ax.feedforward) * vc / kp;
+      // (1 - ff) * vc / kp with vc = (to - from) / T.
+      const double ess = (to[i] - from[i]) * lag_gain_[static_cast<std::size_t>(i)];
       const double e1 = ess + (e0 - ess) * decay_[static_cast<std::size_t>(i)];
       a1 = to[i] - e1;
     }
@@ -127,7 +130,8 @@ void Plant::advance(Tick k, const AxisVec& from, const AxisVec& to,
       auto frac_of = [&](double t) { return (t - t0) / T; };
       auto inside = [&](double f) { return f > kEps && f <= 1.0 + kEps; };
       const double f_on = frac_of(on_t), f_off = frac_of(off_t);
-      if (p.duration_s > 0.0 && inside(f_on)) events_.push_back(Event{std::fmin(f_on, 1.0), s, true});
+      if (p.duration_s > 0.0 && inside(f_on))
+        events_.push_back(Event{std::fmin(f_on, 1.0), s, true});
       if (p.duration_s > 0.0 && inside(f_off)) {
         events_.push_back(Event{std::fmin(f_off, 1.0), s, false});
       }
@@ -153,7 +157,8 @@ void Plant::advance(Tick k, const AxisVec& from, const AxisVec& to,
       if (!mine || level == sig.level) continue;
       sig.level = level;
       if (in.edge_count < kernel::TickInput::kMaxEdges) {
-        in.edges[static_cast<std::size_t>(in.edge_count++)] = kernel::SignalEdge{sig.addr, level, e.frac};
+        in.edges[static_cast<std::size_t>(in.edge_count++)] =
+            kernel::SignalEdge{sig.addr, level, e.frac};
       }
     }
   }

@@ -79,7 +79,8 @@ class Plant {
   AxisVec torque_;
   AxisVec torque_limit_;
   AxisMask locked_;
-  std::array<double, kMaxAxes> decay_{};  // exp(-kp * T)
+  std::array<double, kMaxAxes> decay_{};     // exp(-kp * T)
+  std::array<double, kMaxAxes> lag_gain_{};  // (1 - feedforward) / (kp * T)
   std::vector<Source> sources_;
   std::vector<Signal> signals_;
   struct Event {
