@@ -60,8 +60,7 @@ void Plant::reset(const AxisVec& position) {
 
 void Plant::advance(Tick k, const AxisVec& from, const AxisVec& to,
                     kernel::TickInput& in) noexcept {
-  const double T = clock_.period_s();
-  const double t_now = clock_.seconds(k);
+  const double t_now = scene_.loads.empty() ? 0.0 : clock_.seconds(k);  // only loads need it
   const AxisVec before = actual_;
   for (int i = 0; i < n_; ++i) {
     const auto& ax = m_.axes[static_cast<std::size_t>(i)];
@@ -127,6 +126,7 @@ void Plant::advance(Tick k, const AxisVec& from, const AxisVec& to,
       // below a period keeps an instant on a period boundary from being lost
       // (or counted twice) to rounding.
       constexpr double kEps = 1e-9;
+      const double T = clock_.period_s();
       auto frac_of = [&](double t) { return (t - t0) / T; };
       auto inside = [&](double f) { return f > kEps && f <= 1.0 + kEps; };
       const double f_on = frac_of(on_t), f_off = frac_of(off_t);
