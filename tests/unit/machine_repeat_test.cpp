@@ -37,18 +37,22 @@ std::map<std::string, json> by_name(const json& j) {
   return out;
 }
 
+// 100 runs of the bore-centre cycle: enough for the statistics below, and
+// within the test time limit under the sanitizers (a run is ~15,000 periods).
+constexpr int kRuns = 100;
+
 TEST(Repeat, SummarisesEveryLatchedValueAndVariable) {
   skipnc::test::TempDir tmp;
   int rc = -1;
-  const json j = repeat(200, 7, tmp, &rc);
+  const json j = repeat(kRuns, 7, tmp, &rc);
   EXPECT_EQ(rc, 0);
   EXPECT_EQ(j["format"], "skipnc-repeat/1");
-  EXPECT_EQ(j["runs"], 200);
+  EXPECT_EQ(j["runs"], kRuns);
   EXPECT_EQ(j["seed"], 7);
   auto v = by_name(j);
   ASSERT_TRUE(v.count("#130") && v.count("#131") && v.count("#132"));
   ASSERT_TRUE(v.count("skip 1 (line 11) X") && v.count("skip 4 (line 21) Y"));
-  for (const auto& [name, s] : v) EXPECT_EQ(s["count"], 200) << name;
+  for (const auto& [name, s] : v) EXPECT_EQ(s["count"], kRuns) << name;
   // The nominal run (no scatter) shows the lobing: the X- touch switches
   // 2 um later than the X+ touch, so the X centre is 1 um low; Y is not.
   EXPECT_NEAR(v["#130"]["nominal"].get<double>(), -80.123 - 0.001, 1e-6);
@@ -57,14 +61,15 @@ TEST(Repeat, SummarisesEveryLatchedValueAndVariable) {
   // the diameter the program computes with a 1 mm radius by 10 um.
   EXPECT_NEAR(v["#132"]["nominal"].get<double>(), 40.01, 1e-6);
   // Each touch scatters by 0.5 um; a centre is half the difference of two
-  // touches: 0.5 / sqrt(2) um. 200 runs: within 15 %.
+  // touches: 0.5 / sqrt(2) um. 100 runs: within 20 % (about 2.8 standard
+  // errors of a standard deviation estimated from 100 samples).
   const double sigma = 0.0005;
-  EXPECT_NEAR(v["skip 1 (line 11) X"]["std"].get<double>(), sigma, 0.15 * sigma);
-  EXPECT_NEAR(v["#131"]["std"].get<double>(), sigma / std::sqrt(2.0), 0.15 * sigma / std::sqrt(2.0));
-  EXPECT_NEAR(v["#132"]["std"].get<double>(), sigma * std::sqrt(2.0), 0.15 * sigma * std::sqrt(2.0));
-  EXPECT_NEAR(v["#131"]["mean"].get<double>(), 30.456, 4 * sigma / std::sqrt(2.0 * 200.0));
+  EXPECT_NEAR(v["skip 1 (line 11) X"]["std"].get<double>(), sigma, 0.2 * sigma);
+  EXPECT_NEAR(v["#131"]["std"].get<double>(), sigma / std::sqrt(2.0), 0.2 * sigma / std::sqrt(2.0));
+  EXPECT_NEAR(v["#132"]["std"].get<double>(), sigma * std::sqrt(2.0), 0.2 * sigma * std::sqrt(2.0));
+  EXPECT_NEAR(v["#131"]["mean"].get<double>(), 30.456, 4 * sigma / std::sqrt(2.0 * kRuns));
   // Worst case: the largest deviation from the nominal run, between 2 and
-  // 5 sigma for 200 normal samples, and consistent with min and max.
+  // 5 sigma for 100 normal samples, and consistent with min and max.
   for (const char* name : {"#130", "#131", "#132"}) {
     const json& s = v[name];
     const double worst = s["worst"].get<double>();
