@@ -17,6 +17,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <optional>
 
 #include "interpreter/impl.hpp"
 
@@ -27,6 +28,127 @@ constexpr double kRad = 3.14159265358979323846 / 180.0;
 
 double round_half_away(double x) noexcept {
   return std::round(x);
+}
+
+// What the control raises for a function's bad argument.
+struct FuncFault {
+  AlarmId id;
+  const char* why;
+};
+
+// The context a function's value depends on.
+struct FuncContext {
+  bool nat;                // 6004#0 NAT: signed ranges of ATAN / ASIN
+  double round_increment;  // ROUND inside an address word (0: whole numbers)
+  bool inch;               // ADP: the least input increment is 0.0001 inch
+};
+
+// The value of fn at x (and y, the second argument of ATAN and POW, when
+// given), in r; or the fault to raise. One set of rules for both evaluators.
+std::optional<FuncFault> function_value(gcode::Func fn, double x, const double* y,
+                                        const FuncContext& cx, double& r) noexcept {
+  using gcode::Func;
+  auto bad = [](const char* what) { return FuncFault{AlarmId::kIllegalArgument, what}; };
+  switch (fn) {
+    case Func::kSin:
+      r = std::sin(x * kRad);
+      return std::nullopt;
+    case Func::kCos:
+      r = std::cos(x * kRad);
+      return std::nullopt;
+    case Func::kTan:
+      if (std::fmod(std::fabs(x), 180.0) == 90.0) {
+        return FuncFault{AlarmId::kDivisionByZero, "TAN of an odd multiple of 90 degrees"};
+      }
+      r = std::tan(x * kRad);
+      return std::nullopt;
+    case Func::kAsin:
+      if (x < -1.0 || x > 1.0) return bad("ASIN of a value outside -1..1");
+      r = std::asin(x) / kRad;
+      if (!cx.nat && r < 0.0) r += 360.0;  // NAT = 0: 270..90
+      return std::nullopt;
+    case Func::kAcos:
+      if (x < -1.0 || x > 1.0) return bad("ACOS of a value outside -1..1");
+      r = std::acos(x) / kRad;
+      return std::nullopt;
+    case Func::kAtan:
+      if (y != nullptr) {
+        if (x == 0.0 && *y == 0.0) return bad("ATAN[0]/[0]");
+        r = std::atan2(x, *y) / kRad;
+      } else {
+        r = std::atan(x) / kRad;
+      }
+      if (!cx.nat && r < 0.0) r += 360.0;  // NAT = 0: 0..360
+      return std::nullopt;
+    case Func::kSqrt:
+      if (x < 0.0) return bad("SQRT of a negative value");
+      r = std::sqrt(x);
+      return std::nullopt;
+    case Func::kAbs:
+      r = std::fabs(x);
+      return std::nullopt;
+    case Func::kRound:
+      r = cx.round_increment > 0.0 ? round_half_away(x / cx.round_increment) * cx.round_increment
+                                   : round_half_away(x);
+      return std::nullopt;
+    case Func::kFix:
+      r = std::trunc(x);
+      return std::nullopt;
+    case Func::kFup:
+      r = x >= 0 ? std::ceil(x) : std::floor(x);
+      return std::nullopt;
+    case Func::kLn:
+      if (x <= 0.0) return bad("LN of a value that is not positive");
+      r = std::log(x);
+      return std::nullopt;
+    case Func::kExp:
+      r = std::exp(x);
+      return std::nullopt;
+    case Func::kPow:
+      if (y == nullptr) return bad("POW needs two arguments");
+      if (x < 0.0 && *y != std::trunc(*y))
+        return bad("POW of a negative base to a fractional power");
+      if (x == 0.0 && *y <= 0.0) return bad("POW of zero to a power that is not positive");
+      r = std::pow(x, *y);
+      return std::nullopt;
+    case Func::kBin: {
+      // BCD -> binary
+      if (x < 0 || x != std::trunc(x) || x > 9.0e15) return bad("BIN of a value that is not BCD");
+      auto v = static_cast<std::uint64_t>(x);
+      std::uint64_t out = 0, mul = 1;
+      while (v != 0) {
+        const std::uint64_t d = v & 0xF;
+        if (d > 9) return bad("BIN of a value that is not BCD");
+        out += d * mul;
+        mul *= 10;
+        v >>= 4;
+      }
+      r = static_cast<double>(out);
+      return std::nullopt;
+    }
+    case Func::kBcd: {
+      if (x < 0 || x != std::trunc(x) || x > 9.0e15)
+        return bad("BCD of a negative or fractional value");
+      auto v = static_cast<std::uint64_t>(x);
+      std::uint64_t out = 0;
+      int shift = 0;
+      while (v != 0 && shift < 64) {
+        out |= (v % 10) << shift;
+        v /= 10;
+        shift += 4;
+      }
+      r = static_cast<double>(out);
+      return std::nullopt;
+    }
+    case Func::kAdp:
+      // ADP: the value of an argument written without a decimal point, as
+      // if written with one (X10 -> #24 = 0.010 -> ADP[#24] = 10).
+      r = x / (cx.inch ? 0.0001 : 0.001);
+      return std::nullopt;
+    case Func::kNone:
+      break;
+  }
+  return FuncFault{AlarmId::kMacroFormat, "function not available in this control"};
 }
 
 }  // namespace
@@ -58,10 +180,11 @@ Result<void> Interpreter::Impl::assign(gcode::ExprId lhs, Value v) {
 
 // The common case of evaluation, without building Result objects: numbers,
 // local/common/persistent variables, the four operations, comparisons and
-// the usual functions. It gives up (false) wherever the rules need more: an
-// alarm, a system or named variable, a rarer operator. eval() then
-// evaluates the expression the general way, which gives the same value or
-// the alarm; nothing here has a side effect, so the second pass is safe.
+// functions (function_value holds their rules for both paths). It gives up
+// (false) wherever the rules need more: an alarm, a system or named
+// variable, a rarer operator. eval() then evaluates the expression the
+// general way, which gives the same value or the alarm; nothing here has a
+// side effect, so the second pass is safe.
 bool Interpreter::Impl::eval_plain(gcode::ExprId id, Value& out) const noexcept {
   if (id < 0 || static_cast<std::size_t>(id) >= blk.nodes.size()) return false;
   const gcode::ExprNode& n = blk.nodes[static_cast<std::size_t>(id)];
@@ -131,43 +254,15 @@ bool Interpreter::Impl::eval_plain(gcode::ExprId id, Value& out) const noexcept 
     default:
       return false;
   }
-  using gcode::Func;
   if (!eval_plain(n.a, a)) return false;
-  const double x = a.num();
-  double r = 0.0;
-  switch (n.fn) {
-    case Func::kSin:
-      r = std::sin(x * kRad);
-      break;
-    case Func::kCos:
-      r = std::cos(x * kRad);
-      break;
-    case Func::kAtan:
-      if (n.b != gcode::kNoExpr) {
-        if (!eval_plain(n.b, b)) return false;
-        if (x == 0.0 && b.num() == 0.0) return false;
-        r = std::atan2(x, b.num()) / kRad;
-      } else {
-        r = std::atan(x) / kRad;
-      }
-      if (!nat && r < 0.0) r += 360.0;
-      break;
-    case Func::kSqrt:
-      if (x < 0.0) return false;
-      r = std::sqrt(x);
-      break;
-    case Func::kAbs:
-      r = std::fabs(x);
-      break;
-    case Func::kFix:
-      r = std::trunc(x);
-      break;
-    case Func::kFup:
-      r = x >= 0 ? std::ceil(x) : std::floor(x);
-      break;
-    default:
-      return false;
+  double y = 0.0;
+  if (n.b != gcode::kNoExpr) {
+    if (!eval_plain(n.b, b)) return false;
+    y = b.num();
   }
+  double r = 0.0;
+  const FuncContext cx{nat, word_round_increment, modal.units == Units::kInch};
+  if (function_value(n.fn, a.num(), n.b != gcode::kNoExpr ? &y : nullptr, cx, r)) return false;
   if (!std::isfinite(r)) return false;
   out = Value::of(r + 0.0);
   return true;
@@ -266,117 +361,16 @@ Result<Value> Interpreter::Impl::eval_general(gcode::ExprId id) {
   // Functions.
   auto a = eval_general(n.a);
   if (!a) return a;
-  const double x = a->num();
-  auto bad = [&](const char* what) { return fail(AlarmId::kIllegalArgument, what, loc(n.column)); };
-  using gcode::Func;
+  double y = 0.0;
+  if (n.b != gcode::kNoExpr) {
+    auto b = eval_general(n.b);
+    if (!b) return b;
+    y = b->num();
+  }
   double r = 0.0;
-  switch (n.fn) {
-    case Func::kSin:
-      r = std::sin(x * kRad);
-      break;
-    case Func::kCos:
-      r = std::cos(x * kRad);
-      break;
-    case Func::kTan: {
-      const double m = std::fmod(std::fabs(x), 180.0);
-      if (m == 90.0) {
-        return fail(AlarmId::kDivisionByZero, "TAN of an odd multiple of 90 degrees",
-                    loc(n.column));
-      }
-      r = std::tan(x * kRad);
-      break;
-    }
-    case Func::kAsin:
-      if (x < -1.0 || x > 1.0) return bad("ASIN of a value outside -1..1");
-      r = std::asin(x) / kRad;
-      if (!nat && r < 0.0) r += 360.0;  // NAT = 0: 270..90
-      break;
-    case Func::kAcos:
-      if (x < -1.0 || x > 1.0) return bad("ACOS of a value outside -1..1");
-      r = std::acos(x) / kRad;
-      break;
-    case Func::kAtan:
-      if (n.b != gcode::kNoExpr) {
-        auto b = eval_general(n.b);
-        if (!b) return b;
-        if (x == 0.0 && b->num() == 0.0) return bad("ATAN[0]/[0]");
-        r = std::atan2(x, b->num()) / kRad;
-      } else {
-        r = std::atan(x) / kRad;
-      }
-      if (!nat && r < 0.0) r += 360.0;  // NAT = 0: 0..360
-      break;
-    case Func::kSqrt:
-      if (x < 0.0) return bad("SQRT of a negative value");
-      r = std::sqrt(x);
-      break;
-    case Func::kAbs:
-      r = std::fabs(x);
-      break;
-    case Func::kRound:
-      r = word_round_increment > 0.0
-              ? round_half_away(x / word_round_increment) * word_round_increment
-              : round_half_away(x);
-      break;
-    case Func::kFix:
-      r = std::trunc(x);
-      break;
-    case Func::kFup:
-      r = x >= 0 ? std::ceil(x) : std::floor(x);
-      break;
-    case Func::kLn:
-      if (x <= 0.0) return bad("LN of a value that is not positive");
-      r = std::log(x);
-      break;
-    case Func::kExp:
-      r = std::exp(x);
-      break;
-    case Func::kPow: {
-      if (n.b == gcode::kNoExpr) return bad("POW needs two arguments");
-      auto b = eval_general(n.b);
-      if (!b) return b;
-      const double y = b->num();
-      if (x < 0.0 && y != std::trunc(y)) return bad("POW of a negative base to a fractional power");
-      if (x == 0.0 && y <= 0.0) return bad("POW of zero to a power that is not positive");
-      r = std::pow(x, y);
-      break;
-    }
-    case Func::kBin: {
-      // BCD -> binary
-      if (x < 0 || x != std::trunc(x) || x > 9.0e15) return bad("BIN of a value that is not BCD");
-      auto v = static_cast<std::uint64_t>(x);
-      std::uint64_t out = 0, mul = 1;
-      while (v != 0) {
-        const std::uint64_t d = v & 0xF;
-        if (d > 9) return bad("BIN of a value that is not BCD");
-        out += d * mul;
-        mul *= 10;
-        v >>= 4;
-      }
-      r = static_cast<double>(out);
-      break;
-    }
-    case Func::kBcd: {
-      if (x < 0 || x != std::trunc(x) || x > 9.0e15)
-        return bad("BCD of a negative or fractional value");
-      auto v = static_cast<std::uint64_t>(x);
-      std::uint64_t out = 0;
-      int shift = 0;
-      while (v != 0 && shift < 64) {
-        out |= (v % 10) << shift;
-        v /= 10;
-        shift += 4;
-      }
-      r = static_cast<double>(out);
-      break;
-    }
-    case Func::kAdp:
-      // ADP: the value of an argument written without a decimal point, as
-      // if written with one (X10 -> #24 = 0.010 -> ADP[#24] = 10).
-      r = x / (modal.units == Units::kInch ? 0.0001 : 0.001);
-      break;
-    case Func::kNone:
-      return fail(AlarmId::kMacroFormat, "function not available in this control", loc(n.column));
+  const FuncContext cx{nat, word_round_increment, modal.units == Units::kInch};
+  if (auto f = function_value(n.fn, a->num(), n.b != gcode::kNoExpr ? &y : nullptr, cx, r)) {
+    return fail(f->id, f->why, loc(n.column));
   }
   if (!std::isfinite(r)) return fail(AlarmId::kOverflow, "result out of range", loc(n.column));
   return Value::of(r + 0.0);  // no -0
