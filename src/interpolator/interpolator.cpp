@@ -74,8 +74,10 @@ const AxisVec& Interpolator::tick() noexcept {
 
   if (seg_ != nullptr) {
     seg_->sample(seg_time_, queue_.limits().axis_count, pos_, vel_, speed_);
-    vel_ = vel_ * scale_;
-    speed_ *= scale_;
+    if (scale_ != 1.0) {
+      vel_ = vel_ * scale_;
+      speed_ *= scale_;
+    }
     line_ = seg_->line;
     tag_ = seg_->tag;
   } else {

@@ -7,6 +7,7 @@ namespace skipnc::kernel {
 
 Kernel::Kernel(const KernelConfig& cfg)
     : cfg_(cfg), planner_(cfg.limits, cfg.queue_capacity), interp_(planner_) {
+  all_axes_ = (1U << cfg_.limits.axis_count) - 1U;
   min_accel_mm_s2_ = 1e300;
   for (int i = 0; i < cfg_.limits.axis_count; ++i) {
     min_accel_mm_s2_ =
@@ -19,6 +20,7 @@ void Kernel::set_position(const AxisVec& machine) noexcept {
   cmd_ = machine;
   cmd_prev_ = machine;
   actual_prev_ = machine;
+  in_position_ = true;  // at rest there
 }
 
 void Kernel::push(const canon::Stamped& stamped) {
@@ -219,6 +221,7 @@ void Kernel::monitor_skip(const TickInput& in) noexcept {
 // run replaces a cutting move's feed at once (the ratio is per segment). A
 // skip block with a fixed feed runs at 100 % whatever the override says.
 double Kernel::advance_time_scale() noexcept {
+  if (full_rate_) return 1.0;
   const planner::Segment* seg = planner_.front();
   const bool cutting = seg != nullptr && (seg->kind == planner::Move::Kind::kLine ||
                                           seg->kind == planner::Move::Kind::kArc);
@@ -245,6 +248,7 @@ double Kernel::advance_time_scale() noexcept {
       scale *= std::fmin(op_.dry_run_feed_mm_min / 60.0, cfg_.limits.max_feed_mm_s) / seg->v_max;
     }
   }
+  update_full_rate();
   return scale;
 }
 
@@ -263,13 +267,18 @@ void Kernel::tick(const TickInput& in, TickOutput& out) noexcept {
   cmd_prev_ = cmd_;
   cmd_ = interp_.tick();
   actual_prev_ = in.actual;
-  bool inpos = true;
-  for (int i = 0; i < cfg_.limits.axis_count; ++i) {
-    inpos = inpos && (locked_.has(i) || std::fabs(cmd_[i] - in.actual[i]) <= cfg_.in_position_mm);
+  // In position: every axis within the width, or locked (one bit per axis,
+  // no branch per axis). It matters only once the motion has ended (idle(),
+  // the end of a skip block), so it is not looked at before.
+  in_position_ = false;
+  if (interp_.idle()) {
+    unsigned inpos = locked_.bits;
+    for (int i = 0; i < cfg_.limits.axis_count; ++i) {
+      inpos |= static_cast<unsigned>(std::fabs(cmd_[i] - in.actual[i]) <= cfg_.in_position_mm) << i;
+    }
+    in_position_ = (inpos & all_axes_) == all_axes_;
   }
-  in_position_ = inpos;
-  if (skip_.active && !skip_.done && skip_started_ && !skip_latch_pending_ && interp_.idle() &&
-      in_position_) {
+  if (skip_.active && !skip_.done && skip_started_ && !skip_latch_pending_ && in_position_) {
     skip_.done = true;
     skip_.stop_position = cmd_;
     if (latch_at_stop_) {
@@ -286,8 +295,10 @@ void Kernel::tick(const TickInput& in, TickOutput& out) noexcept {
   out.skip_active = skip_.active && !skip_.done;
   out.handshake = handshake_;
   out.torque_limit_pct = AxisVec{};
+  out.torque_limited = false;
   if (out.skip_active && skip_.spec.torque_ends && skip_.spec.torque_axis >= 0) {
     out.torque_limit_pct[skip_.spec.torque_axis] = skip_.spec.torque_limit_pct;
+    out.torque_limited = skip_.spec.torque_limit_pct > 0.0;
   }
   out.time_scale = time_scale_;
 }

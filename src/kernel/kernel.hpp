@@ -59,7 +59,8 @@ struct TickOutput {
   // Torque limit the servo applies, % per axis (0: the servo's own limit).
   // Set on the axis of a torque limit skip while it runs.
   AxisVec torque_limit_pct;
-  double time_scale = 1.0;  // feed override / feed hold as applied this period
+  bool torque_limited = false;  // some axis of torque_limit_pct is set
+  double time_scale = 1.0;      // feed override / feed hold as applied this period
 };
 
 // What the operator does at the machine (scene [[operator]], see
@@ -115,6 +116,7 @@ class Kernel {
   void set_operator(const OperatorState& op) noexcept {
     op_ = op;
     override_ = std::fmax(0.0, op_.override_pct) / 100.0;
+    update_full_rate();
   }
   const OperatorState& operator_state() const noexcept { return op_; }
   // Axes that do not move (machine lock, Z-axis cancel): their actual
@@ -144,6 +146,12 @@ class Kernel {
   void trigger(double frac, const TickInput& in, int input, bool torque) noexcept;
   void begin_stop() noexcept;  // the skip's stop, once the control has seen the signal
   double advance_time_scale() noexcept;
+  // Most periods: no hold, no dry run, override 100 % and both ramp factors
+  // settled at 1. The time scale is 1 whatever the segment.
+  void update_full_rate() noexcept {
+    full_rate_ = override_ == 1.0 && hold_factor_ == 1.0 && override_factor_ == 1.0 &&
+                 !op_.feed_hold && !op_.interlock && !op_.dry_run;
+  }
 
   KernelConfig cfg_;
   planner::Planner planner_;
@@ -153,7 +161,7 @@ class Kernel {
   AxisVec cmd_;       // command for t_k (output at tick k-1)
   AxisVec cmd_prev_;  // command for t_{k-1}
   AxisVec actual_prev_;
-  bool in_position_ = true;
+  bool in_position_ = true;  // motion idle and every axis in position (tick)
   std::uint32_t next_tag_ = 1;
   std::uint32_t skip_tag_ = 0;
   SkipResult skip_;
@@ -166,6 +174,7 @@ class Kernel {
   SkipHandshake handshake_;
   OperatorState op_;
   AxisMask locked_;
+  unsigned all_axes_ = 0;  // one bit per axis of limits.axis_count
   double time_scale_ = 1.0;
   double hold_factor_ = 1.0;      // ramps to 0 in feed hold / interlock
   double override_factor_ = 1.0;  // ramps to the feed override
@@ -173,6 +182,7 @@ class Kernel {
   double override_ = 1.0;         // op_.override_pct as a factor (set_operator)
   double ramp_v_nom_ = 0.0;       // the path speed ramp_step_ was computed for
   double ramp_step_ = 1e300;      // change of the hold and override factors per period
+  bool full_rate_ = true;         // see update_full_rate
 };
 
 }  // namespace skipnc::kernel

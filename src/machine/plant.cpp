@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace skipnc::machine {
 
@@ -13,6 +14,14 @@ Plant::Plant(const config::MachineConfig& m, const Scene& scene, ServoClock cloc
     lag_gain_[static_cast<std::size_t>(i)] =
         kp > 0 ? (1.0 - m.axes[static_cast<std::size_t>(i)].feedforward) / (kp * clock_.period_s())
                : 0.0;
+    torque_per_mm_[static_cast<std::size_t>(i)] =
+        m.axes[static_cast<std::size_t>(i)].torque_pct_per_mm;
+    torque_max_[static_cast<std::size_t>(i)] = m.axes[static_cast<std::size_t>(i)].torque_max_pct;
+  }
+  set_locked(AxisMask{});
+  plain_servo_ = scene_.stops.empty() && scene_.loads.empty();
+  for (int i = 0; i < n_; ++i) {
+    plain_servo_ = plain_servo_ && m.axes[static_cast<std::size_t>(i)].kp_per_s > 0.0;
   }
   auto signal_for = [&](const canon::SignalAddr& a) -> Signal& {
     for (auto& s : signals_) {
@@ -35,6 +44,16 @@ Plant::Plant(const config::MachineConfig& m, const Scene& scene, ServoClock cloc
     signal_for(probing_.source_signal(i)).sources.push_back(sources_.size() - 1);
   }
   events_.reserve(sources_.size() * 2 + 4);
+}
+
+void Plant::set_locked(AxisMask axes) noexcept {
+  locked_ = axes;
+  for (int i = 0; i < n_; ++i) {
+    const auto& a = m_.axes[static_cast<std::size_t>(i)];
+    excess_limit_[static_cast<std::size_t>(i)] =
+        a.kp_per_s <= 0.0 || locked_.has(i) ? std::numeric_limits<double>::infinity()
+                                            : 1.5 * a.rapid_mm_min / 60.0 / a.kp_per_s + 1.0;
+  }
 }
 
 void Plant::reset(const AxisVec& position) {
@@ -60,8 +79,39 @@ void Plant::reset(const AxisVec& position) {
 
 void Plant::advance(Tick k, const AxisVec& from, const AxisVec& to,
                     kernel::TickInput& in) noexcept {
-  const double t_now = scene_.loads.empty() ? 0.0 : clock_.seconds(k);  // only loads need it
   const AxisVec before = actual_;
+  bool excess = false;
+  if (plain_servo_ && locked_.empty() && !limited_) {
+    // The common case, the same arithmetic as the loop below without its
+    // stops, loads, locked axes and torque limits.
+    for (int i = 0; i < n_; ++i) {
+      const auto k_i = static_cast<std::size_t>(i);
+      const double e0 = from[i] - actual_[i];
+      const double ess = (to[i] - from[i]) * lag_gain_[k_i];
+      const double e1 = ess + (e0 - ess) * decay_[k_i];
+      const double a1 = to[i] - e1;
+      actual_[i] = a1;
+      const double fe = to[i] - a1;
+      excess |= std::fabs(fe) > excess_limit_[k_i];
+      const double limit = torque_max_[k_i];
+      torque_[i] = std::clamp(torque_per_mm_[k_i] * fe + 0.0, -limit, limit);
+    }
+  } else {
+    excess = advance_servo(k, before, from, to);
+  }
+  excess_ = excess;
+  in.actual = actual_;
+  in.torque_pct = torque_;
+  in.edge_count = 0;
+  probing_.advance(before, actual_);
+  if (sources_.empty()) return;
+  source_edges(k, before, in);
+}
+
+bool Plant::advance_servo(Tick k, const AxisVec& before, const AxisVec& from,
+                          const AxisVec& to) noexcept {
+  const double t_now = scene_.loads.empty() ? 0.0 : clock_.seconds(k);  // only loads need it
+  bool excess = false;
   for (int i = 0; i < n_; ++i) {
     const auto& ax = m_.axes[static_cast<std::size_t>(i)];
     if (locked_.has(i)) {
@@ -88,6 +138,7 @@ void Plant::advance(Tick k, const AxisVec& from, const AxisVec& to,
     }
     actual_[i] = a1;
     const double fe = to[i] - a1;
+    excess |= std::fabs(fe) > excess_limit_[static_cast<std::size_t>(i)];
     double load = 0.0;
     for (const Load& l : scene_.loads) {
       if (l.axis == i && t_now >= l.at_time_s && t_now < l.at_time_s + l.duration_s) {
@@ -98,12 +149,10 @@ void Plant::advance(Tick k, const AxisVec& from, const AxisVec& to,
     if (torque_limit_[i] > 0.0) limit = std::fmin(limit, torque_limit_[i]);
     torque_[i] = std::clamp(ax.torque_pct_per_mm * fe + load, -limit, limit);
   }
-  in.actual = actual_;
-  in.torque_pct = torque_;
-  in.edge_count = 0;
-  probing_.advance(before, actual_);
-  if (sources_.empty()) return;
+  return excess;
+}
 
+void Plant::source_edges(Tick k, const AxisVec& before, kernel::TickInput& in) noexcept {
   // Source events inside the period, in time order.
   events_.clear();
   const double t0 = clock_.seconds(k - 1);

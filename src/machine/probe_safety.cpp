@@ -96,7 +96,7 @@ void ProbeSafety::warn_braking(const canon::Skip& s, std::uint32_t line) {
       limit, what));
 }
 
-std::optional<SafetyAlarm> ProbeSafety::after_period(Plant& plant, const kernel::Kernel& k,
+std::optional<SafetyAlarm> ProbeSafety::check_period(Plant& plant, const kernel::Kernel& k,
                                                      std::uint32_t line, std::string_view file) {
   // The line that was running during the period is the one the kernel
   // showed after the previous tick.

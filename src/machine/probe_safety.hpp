@@ -42,7 +42,15 @@ class ProbeSafety final : public interp::CommandSink {
   bool holds_reading() const noexcept { return tool_change_.has_value(); }
   // After each kernel tick. `line` is the line the kernel shows now.
   [[nodiscard]] std::optional<SafetyAlarm> after_period(Plant& plant, const kernel::Kernel& k,
-                                                        std::uint32_t line, std::string_view file);
+                                                        std::uint32_t line, std::string_view file) {
+    const ProbeScene& ps = plant.probing();
+    if (!tool_change_ && ps.fault().kind == PlantFault::Kind::kNone &&
+        !(protection_ && ps.touch_switched_on())) {
+      period_line_ = line;  // nothing to do (most periods)
+      return std::nullopt;
+    }
+    return check_period(plant, k, line, file);
+  }
   const std::vector<std::string>& messages() const noexcept { return messages_; }
 
   // Distance the axes travel after a switch at this feed before they stop:
@@ -51,6 +59,8 @@ class ProbeSafety final : public interp::CommandSink {
   double braking_distance(const canon::Skip& s, const AxisVec& from) const noexcept;
 
  private:
+  std::optional<SafetyAlarm> check_period(Plant& plant, const kernel::Kernel& k, std::uint32_t line,
+                                          std::string_view file);
   std::string where(const AxisVec& machine) const;
   void warn_braking(const canon::Skip& s, std::uint32_t line);
 

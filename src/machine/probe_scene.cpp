@@ -50,6 +50,7 @@ ProbeScene::ProbeScene(const Probing& spec, const config::MachineConfig& m)
   }
   edges_.resize(sources_.size() * 2 + 2);
   spindle_tool_ = spec_.spindle_tool;
+  senses_ = probe_ || setter_ || !gauges_.empty() || !material_.empty();
 }
 
 geo::Vec3 ProbeScene::point(const AxisVec& p) const noexcept {
@@ -121,12 +122,9 @@ void ProbeScene::change_tool(const AxisVec& at) noexcept {
   }
 }
 
-void ProbeScene::advance(const AxisVec& before, const AxisVec& after) noexcept {
-  edge_count_ = 0;
-  touch_on_ = false;
+void ProbeScene::advance_sensors(const AxisVec& before, const AxisVec& after) noexcept {
   if (pending_tool_) change_tool(before);
-  // Nothing to sense or to hit: a scene without probe, setter, gauges or parts.
-  if (!probe_ && !setter_ && gauges_.empty() && material_.empty()) return;
+  if (!senses_) return;
   SensorEdge e[2];
   if (probe_ && probe_in_spindle()) {
     const int n = probe_->advance(ball_at(before), ball_at(after), e);

@@ -50,7 +50,11 @@ class ProbeScene {
 
   void reset(const AxisVec& actual) noexcept;
   // The actual position went from `before` to `after` in this period.
-  void advance(const AxisVec& before, const AxisVec& after) noexcept;
+  void advance(const AxisVec& before, const AxisVec& after) noexcept {
+    edge_count_ = 0;
+    touch_on_ = false;
+    if (pending_tool_ || senses_) advance_sensors(before, after);
+  }
 
   struct Edge {
     std::size_t source = 0;
@@ -86,6 +90,8 @@ class ProbeScene {
   geo::Column tool_column(const ToolSpec& t, const AxisVec& machine) const noexcept;
 
  private:
+  // advance() after its bookkeeping: tool change and the sensors.
+  void advance_sensors(const AxisVec& before, const AxisVec& after) noexcept;
   enum class Kind : std::uint8_t { kProbe, kSetter, kGauge };
   struct Source {
     Kind kind = Kind::kProbe;
@@ -113,6 +119,8 @@ class ProbeScene {
   int spindle_tool_ = 0;
   std::optional<int> pending_tool_;
   bool touch_on_ = false;
+  // Something to sense or to hit: a probe, a setter, gauges or parts.
+  bool senses_ = false;
   double touch_frac_ = 1.0;
   AxisVec touch_at_;
   PlantFault fault_;

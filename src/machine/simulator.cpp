@@ -106,14 +106,11 @@ Result<RunResult> Simulator::run(const interp::Setup& setup, const RunOptions& o
   std::size_t next_action = 0;  // scene [[operator]] actions not yet applied
 
   const int n = m_.axis_count();
-  // Per axis, fixed for the run: the excess following error that raises the
-  // servo alarm (negative: not checked) and the stroke limits.
-  std::array<double, kMaxAxes> fe_limit{}, stroke_lo{}, stroke_hi{};
+  // Per axis, fixed for the run: the stroke limits.
+  std::array<double, kMaxAxes> stroke_lo{}, stroke_hi{};
   for (int i = 0; i < n; ++i) {
     const auto k_i = static_cast<std::size_t>(i);
     const auto& a = m_.axes[k_i];
-    fe_limit[k_i] =
-        a.kp_per_s <= 0.0 || locked.has(i) ? -1.0 : 1.5 * a.rapid_mm_min / 60.0 / a.kp_per_s + 1.0;
     stroke_lo[k_i] = a.min_mm - 1e-9;
     stroke_hi[k_i] = a.max_mm + 1e-9;
   }
@@ -171,7 +168,8 @@ Result<RunResult> Simulator::run(const interp::Setup& setup, const RunOptions& o
 
     // One servo period.
     const AxisVec& cmd = tout.commanded;
-    plant.set_torque_limit(tout.torque_limit_pct);
+    if (tout.torque_limited || plant.torque_limited())
+      plant.set_torque_limit(tout.torque_limit_pct);
     plant.advance(k.now() + 1, cmd_prev, cmd, tin);
     cmd_prev = cmd;
     k.tick(tin, tout);
@@ -198,28 +196,40 @@ Result<RunResult> Simulator::run(const interp::Setup& setup, const RunOptions& o
     // Excess following error: an axis held by a stop while the command runs
     // on (a torque limit skip with no torque limit commanded) ends in a servo
     // alarm, beyond any lag the axis shows at its rapid rate.
-    for (int i = 0; i < n && res.status == RunStatus::kCompleted; ++i) {
-      const auto& a = m_.axes[static_cast<std::size_t>(i)];
-      const double limit = fe_limit[static_cast<std::size_t>(i)];
-      if (limit < 0.0) continue;
-      const double fe = cmd_prev[i] - plant.actual()[i];
-      if (std::fabs(fe) > limit) {
-        alarm(Error{AlarmId::kServoExcessError,
-                    std::string("axis ") + a.name + ": following error " + std::to_string(fe) +
-                        " mm exceeds " + std::to_string(limit) + " mm",
-                    SourceLoc{file, tout.line, 1}, -1});
+    if (plant.excess_error()) {
+      for (int i = 0; i < n; ++i) {
+        const double limit = plant.excess_error_limit(i);
+        const double fe = cmd_prev[i] - plant.actual()[i];
+        if (std::fabs(fe) > limit) {
+          alarm(Error{AlarmId::kServoExcessError,
+                      std::string("axis ") + m_.axes[static_cast<std::size_t>(i)].name +
+                          ": following error " + std::to_string(fe) + " mm exceeds " +
+                          std::to_string(limit) + " mm",
+                      SourceLoc{file, tout.line, 1}, -1});
+          break;
+        }
       }
+      break;
     }
-    if (res.status != RunStatus::kCompleted) break;
+    // The stroke limits, on the command for the next period (checked over
+    // all axes without a branch; the axis is looked for only when one is out).
+    bool beyond = false;
     for (int i = 0; i < n; ++i) {
       const double c = tout.commanded[i];
-      if (c > stroke_hi[static_cast<std::size_t>(i)] ||
-          c < stroke_lo[static_cast<std::size_t>(i)]) {
-        alarm(stroke_alarm(m_, i, c, file, tout.line));
-        break;
-      }
+      beyond |= (c > stroke_hi[static_cast<std::size_t>(i)]) |
+                (c < stroke_lo[static_cast<std::size_t>(i)]);
     }
-    if (res.status != RunStatus::kCompleted) break;
+    if (beyond) {
+      for (int i = 0; i < n; ++i) {
+        const double c = tout.commanded[i];
+        if (c > stroke_hi[static_cast<std::size_t>(i)] ||
+            c < stroke_lo[static_cast<std::size_t>(i)]) {
+          alarm(stroke_alarm(m_, i, c, file, tout.line));
+          break;
+        }
+      }
+      break;
+    }
 
     if (waiting && k.idle() && (!k.skip().active || k.skip().done)) {
       interp::SyncState s;
