@@ -31,21 +31,9 @@ char* number_at(char* p, double v) noexcept {
   return std::to_chars(p, p + kNumberRoom, v + 0.0).ptr;
 }
 
-void number_to(fmt::memory_buffer& out, double v) {
-  char buf[kNumberRoom];
-  out.append(buf, number_at(buf, v));
-}
-
-void axes_to(fmt::memory_buffer& out, const AxisVec& v, const AxisNames& axes) {
-  for (int i = 0; i < axes.count; ++i) {
-    out.push_back(' ');
-    out.push_back(axes.names[i]);
-    number_to(out, v[i]);
-  }
-}
-
-// Writes the text of the common commands (lines, rapids, arcs) straight into
-// a reserved stretch of the buffer: they are nearly every line of a program.
+// Writes the text of the common commands (lines, rapids, arcs; the axes of a
+// skip) straight into a reserved stretch of the buffer: they are nearly every
+// line of a program.
 class LineWriter {
  public:
   // Room for the longest line of those commands: the line number, the name,
@@ -157,8 +145,11 @@ void format_to(fmt::memory_buffer& out, const Stamped& s, const AxisNames& axes)
           fmt::format_to(it, "DWELL {}", c.seconds);
         } else if constexpr (std::is_same_v<T, Skip>) {
           const SkipSpec& sp = c.spec;
-          fmt::format_to(it, "SKIP");
-          axes_to(out, c.target, axes);
+          {
+            LineWriter w(out);
+            w.text("SKIP");
+            w.axes(c.target, axes);
+          }
           fmt::format_to(it, " F{} KIND={}", c.feed_mm_per_min,
                          sp.kind == SkipKind::kSkip        ? "skip"
                          : sp.kind == SkipKind::kMultiStep ? "multi_step"
