@@ -9,15 +9,14 @@
 namespace skipnc::gcode {
 
 struct ParseLimits {
-  int max_bracket_depth = 64;     // nesting of [ ] (the dialect may refuse deeper)
-  int max_digits = 15;            // significant digits in one number
+  int max_bracket_depth = 64;  // nesting of [ ] (the dialect may refuse deeper)
+  int max_digits = 15;         // significant digits in one number
 };
 
 // Parses the text of exactly one block (no end-of-block character inside,
 // except within comments). `loc` is the location of text[0]. On success `out`
 // holds the block; on failure `out` is unspecified and the error says where.
-[[nodiscard]] Result<void> parse_block(std::string_view text, SourceLoc loc,
-                                       std::uint64_t offset, Block& out,
-                                       const ParseLimits& limits = {});
+[[nodiscard]] Result<void> parse_block(std::string_view text, SourceLoc loc, std::uint64_t offset,
+                                       Block& out, const ParseLimits& limits = {});
 
 }  // namespace skipnc::gcode

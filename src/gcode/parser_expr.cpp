@@ -1,0 +1,496 @@
+// Block parser, expressions: precedence climbing (one loop per bracket
+// level), functions and variables (rules: the top of parser.cpp).
+#include <algorithm>
+#include <array>
+#include <bit>
+#include <cstdint>
+#include <cstring>
+#include <ranges>
+#include <string>
+#include <string_view>
+
+#include "gcode/parser_impl.hpp"
+
+namespace skipnc::gcode::detail {
+namespace {
+
+// Longer names before their prefixes (SQRT before SQR).
+constexpr std::array<FuncName, 20> kFuncs = {{
+    {"SIN", Func::kSin},   {"COS", Func::kCos},   {"TAN", Func::kTan},     {"ASIN", Func::kAsin},
+    {"ACOS", Func::kAcos}, {"ATAN", Func::kAtan}, {"ATN", Func::kAtan},    {"SQRT", Func::kSqrt},
+    {"SQR", Func::kSqrt},  {"ABS", Func::kAbs},   {"ROUND", Func::kRound}, {"RND", Func::kRound},
+    {"FIX", Func::kFix},   {"FUP", Func::kFup},   {"LN", Func::kLn},       {"EXP", Func::kExp},
+    {"POW", Func::kPow},   {"BIN", Func::kBin},   {"BCD", Func::kBcd},     {"ADP", Func::kAdp},
+}};
+
+constexpr std::array<FuncGroup, 26> make_func_groups() {
+  std::array<FuncGroup, 26> g{};
+  for (std::size_t i = 0; i < kFuncs.size(); ++i) {
+    FuncGroup& f = g[static_cast<std::size_t>(kFuncs[i].name[0] - 'A')];
+    f.index[f.count++] = static_cast<std::uint8_t>(i);
+  }
+  return g;
+}
+constexpr std::array<FuncGroup, 26> kFuncGroups = make_func_groups();
+
+// Letters of a name packed in an integer, the first one lowest.
+constexpr std::uint64_t name_key(std::string_view name) {
+  std::uint64_t k = 0;
+  for (std::size_t i = 0; i < name.size(); ++i) {
+    k |= std::uint64_t{static_cast<unsigned char>(name[i])} << (8 * i);
+  }
+  return k;
+}
+constexpr std::size_t kMaxFuncName = 5;  // ROUND
+constexpr std::array<std::uint64_t, kFuncs.size()> make_func_keys() {
+  std::array<std::uint64_t, kFuncs.size()> k{};
+  for (std::size_t i = 0; i < kFuncs.size(); ++i) k[i] = name_key(kFuncs[i].name);
+  return k;
+}
+constexpr std::array<std::uint64_t, kFuncs.size()> kFuncKeys = make_func_keys();
+// The bytes of each name in its key.
+constexpr std::array<std::uint64_t, kFuncs.size()> make_func_masks() {
+  std::array<std::uint64_t, kFuncs.size()> m{};
+  for (std::size_t i = 0; i < kFuncs.size(); ++i) {
+    m[i] = (std::uint64_t{1} << (8 * kFuncs[i].name.size())) - 1;
+  }
+  return m;
+}
+constexpr std::array<std::uint64_t, kFuncs.size()> kFuncMasks = make_func_masks();
+static_assert(std::ranges::all_of(kFuncs,
+                                  [](const FuncName& f) { return f.name.size() <= kMaxFuncName; }));
+
+// Expression trees of a variable reference "#n" are two levels deep.
+static_assert(kMaxExprDepth >= 2);
+
+}  // namespace
+
+// Binary operator at p_, consumed. Returns its precedence, 3 for * / MOD
+// AND, 2 for + - OR XOR, 1 for the comparisons; 0, consuming nothing, when
+// there is none.
+inline int Parser::binary_op(Op& op) {
+  if (p_ == end_) return 0;
+  switch (*p_) {
+    case '*':
+      op = Op::kMul;
+      ++p_;
+      return 3;
+    case '/':
+      op = Op::kDiv;
+      ++p_;
+      return 3;
+    case '+':
+      op = Op::kAdd;
+      ++p_;
+      return 2;
+    case '-':
+      op = Op::kSub;
+      ++p_;
+      return 2;
+    case 'M':
+    case 'm':
+      op = Op::kMod;
+      return match_kw("MOD") ? 3 : 0;
+    case 'A':
+    case 'a':
+      op = Op::kAnd;
+      return match_kw("AND") ? 3 : 0;
+    case 'O':
+    case 'o':
+      op = Op::kOr;
+      return match_kw("OR") ? 2 : 0;
+    case 'X':
+    case 'x':
+      op = Op::kXor;
+      return match_kw("XOR") ? 2 : 0;
+    case 'E':
+    case 'e':
+      op = Op::kEq;
+      return match_kw("EQ") ? 1 : 0;
+    case 'N':
+    case 'n':
+      op = Op::kNe;
+      return match_kw("NE") ? 1 : 0;
+    case 'G':
+    case 'g':
+      if (match_kw("GT")) {
+        op = Op::kGt;
+        return 1;
+      }
+      op = Op::kGe;
+      return match_kw("GE") ? 1 : 0;
+    case 'L':
+    case 'l':
+      if (match_kw("LT")) {
+        op = Op::kLt;
+        return 1;
+      }
+      op = Op::kLe;
+      return match_kw("LE") ? 1 : 0;
+    default:
+      return 0;
+  }
+}
+
+// Operators by precedence climbing: operands are read in a loop, and the
+// operators waiting for their right-hand side are kept on a small stack, at
+// most one per precedence level. Binary operators group from the left; a
+// binary node's column is that of its left operand's first character.
+ExprId Parser::parse_expr() {
+  struct Pending {
+    ExprId lhs;
+    std::uint32_t start;  // column of lhs
+    std::uint16_t depth;  // of lhs
+    Op op;
+    std::uint8_t prec;
+  };
+  std::array<Pending, 3> stack;
+  std::size_t n = 0;
+  for (;;) {
+    // An operand; p_ then at the next significant character.
+    const char* const at = skip(p_);
+    p_ = at;
+    const int c = at_char(at);
+    ExprId a = kFail;
+    int depth = 1;  // of a
+    if (c == '#') {
+      if (var_number_fast(a)) {
+        depth = 2;
+      } else {
+        a = parse_var_general(false);
+        if (a == kFail) return kFail;
+        depth = depth_of(a);
+        p_ = skip(p_);
+      }
+    } else if (is_digit(c) || c == '.') {
+      double v = 0.0;
+      bool point = false;
+      if (number_fast(v, point)) {
+        a = add_number(v, col(at));
+      } else {
+        a = parse_number_node();
+        if (a == kFail) return kFail;
+        p_ = skip(p_);
+      }
+    } else if (c == '[') {
+      if (!enter(at)) return kFail;
+      ++p_;
+      a = parse_expr();
+      if (a == kFail || !close_bracket(at)) return kFail;
+      leave();
+      depth = depth_of(a);
+      p_ = skip(p_);
+    } else {
+      const FuncName* f = nullptr;
+      if (is_upper(c & ~0x20)) f = find_function(c & ~0x20);
+      a = f != nullptr ? parse_function(f->fn, at) : parse_operand(c);
+      if (a == kFail) return kFail;
+      depth = depth_of(a);
+      p_ = skip(p_);
+    }
+    // The next operator; the waiting ones that bind at least as tightly get
+    // their right-hand side.
+    std::uint32_t start = col(at);
+    Op op = Op::kNumber;
+    const int prec = binary_op(op);
+    while (n > 0 && stack[n - 1].prec >= prec) {
+      const Pending& t = stack[--n];
+      depth = 1 + std::max<int>(t.depth, depth);
+      if (depth > kMaxExprDepth) [[unlikely]] {
+        too_deep(t.start);
+        return kFail;
+      }
+      a = push_node(t.op, t.start, t.lhs, a, depth);
+      start = t.start;
+    }
+    if (prec == 0) return a;
+    stack[n++] =
+        Pending{a, start, static_cast<std::uint16_t>(depth), op, static_cast<std::uint8_t>(prec)};
+  }
+}
+
+ExprId Parser::parse_number_node() {
+  const char* at = p_;
+  double v = 0.0;
+  bool point = false;
+  if (!parse_number(v, point)) return kFail;
+  return add_number(v, col(at));
+}
+
+// `c`: the character at p_ as written.
+ExprId Parser::parse_operand(int c) {
+  if (c == '-' || c == '+') return parse_signed();
+  return parse_primary(c < 0 ? c : static_cast<unsigned char>(to_upper(static_cast<char>(c))));
+}
+
+// Signs are read in a loop (no recursion): "- - -#1" is three kNeg nodes
+// chained through their `a`, the last one pointing at the operand.
+ExprId Parser::parse_signed() {
+  ExprId first = kNoExpr;
+  ExprId last = kNoExpr;
+  int c = peek();
+  for (; c == '-' || c == '+'; c = peek()) {
+    if (c == '-') {
+      const ExprId n = add_node(Op::kNeg, col(p_));
+      if (last == kNoExpr) {
+        first = n;
+      } else {
+        node(last).a = n;
+      }
+      last = n;
+    }
+    ++p_;
+  }
+  const ExprId operand = parse_primary(c);
+  if (operand == kFail) return kFail;
+  if (last == kNoExpr) return operand;
+  node(last).a = operand;
+  // The chain's depths, now that its operand is known.
+  int signs = 0;
+  for (ExprId i = first; i != operand; i = node(i).a) ++signs;
+  int depth = signs + depth_of(operand);
+  if (depth > kMaxExprDepth) {
+    too_deep(node(first).column);
+    return kFail;
+  }
+  for (ExprId i = first; i != operand; i = node(i).a) {
+    node(i).depth = static_cast<std::uint16_t>(depth--);
+  }
+  return first;
+}
+
+// The function whose name is at p_ (`c`: its first letter, upper-cased),
+// p_ past the name; nullptr, p_ unchanged, when there is none.
+const FuncName* Parser::find_function(int c) {
+  const FuncGroup& g = kFuncGroups[static_cast<std::size_t>(c - 'A')];
+  // The letters written together at p_, up to the longest name. Unless a
+  // space follows them (a name may be spelt "S I N"), the function is the
+  // first of its group whose name they begin with, as match_kw would find.
+  const char* const at = p_;
+  const auto max = std::min(static_cast<std::size_t>(end_ - at), kMaxFuncName);
+  std::size_t n = 1;
+  while (n < max && is_letter(at[n])) ++n;
+  if (n < kMaxFuncName && at + n != end_ && is_space(at[n])) [[unlikely]] {
+    return find_function_spaced(g);
+  }
+  // The bytes at p_ with letters upper-cased. A name is letters only, so
+  // the bytes after the n letters can never match one.
+  std::uint64_t key = 0;
+  if (end_ - at >= 8) {
+    std::memcpy(&key, at, 8);
+    if constexpr (std::endian::native == std::endian::big) key = std::byteswap(key);
+  } else {
+    for (std::size_t i = 0; i < n; ++i) {
+      key |= std::uint64_t{static_cast<unsigned char>(at[i])} << (8 * i);
+    }
+  }
+  key &= 0xDFDFDFDFDFDFDFDFu;  // upper case: n letters, then anything
+  for (std::size_t i = 0; i < g.count; ++i) {
+    const std::size_t f = g.index[i];
+    // Equal bytes are letters: the name is among the n letters.
+    if ((key & kFuncMasks[f]) == kFuncKeys[f]) {
+      p_ = at + kFuncs[f].name.size();
+      return &kFuncs[f];
+    }
+  }
+  return nullptr;
+}
+
+// find_function() when the name may have spaces in it.
+const FuncName* Parser::find_function_spaced(const FuncGroup& g) {
+  for (std::size_t i = 0; i < g.count; ++i) {
+    const FuncName& f = kFuncs[g.index[i]];
+    if (match_kw(f.name)) return &f;
+  }
+  return nullptr;
+}
+
+// `c`: the upper-cased character at p_.
+ExprId Parser::parse_primary(int c) {
+  if (c == '#') return parse_var(false);
+  if (is_digit(c) || c == '.') return parse_number_node();
+  if (c == '[') return parse_bracket();
+  if (is_upper(c)) {
+    const char* at = p_;
+    const FuncName* f = find_function(c);
+    if (f != nullptr) return parse_function(f->fn, at);
+  }
+  return bad_operand(c, p_);
+}
+
+// No operand at `at` (`c`: its upper-cased character).
+ExprId Parser::bad_operand(int c, const char* at) {
+  if (is_upper(c)) {
+    const char* e = at;
+    while (e < end_ && (is_name_char(*e) || is_space(*e))) ++e;
+    return error_expr(AlarmId::kMacroFormat, "unknown function or operator " + excerpt(at, e), at);
+  }
+  if (c < 0) return error_expr(AlarmId::kMacroFormat, "expression ends too early", at);
+  if (c == ']') return error_expr(AlarmId::kMacroFormat, "operand missing before ']'", at);
+  return error_expr(AlarmId::kMacroFormat, "expected a value, found " + show_char(*at), at);
+}
+
+ExprId Parser::parse_bracket() {
+  const char* open = p_;
+  if (!enter(open)) return kFail;
+  ++p_;
+  const ExprId e = parse_expr();
+  if (e == kFail || !close_bracket(open)) return kFail;
+  leave();
+  return e;
+}
+
+// p_ just after the function name.
+ExprId Parser::parse_function(Func fn, const char* at) {
+  if (peek() != '[') {
+    unexpected("'[' after the function name", p_);
+    return kFail;
+  }
+  const char* open = p_;
+  if (!enter(open)) return kFail;
+  ++p_;
+  const ExprId a = parse_expr();
+  if (a == kFail) return kFail;
+  ExprId b = kNoExpr;
+  if (peek() == ',') {
+    if (fn != Func::kAtan && fn != Func::kPow) {
+      return error_expr(AlarmId::kMacroFormat, "this function takes one argument", p_);
+    }
+    ++p_;
+    b = parse_expr();
+    if (b == kFail) return kFail;
+  }
+  if (!close_bracket(open)) return kFail;
+  leave();
+  if (fn == Func::kAtan && b == kNoExpr) {
+    // Fanuc form ATAN[a]/[b]: a '/' directly followed by '['.
+    const char* q = skip(p_);
+    if (q < end_ && *q == '/') {
+      const char* r = skip(q + 1);
+      if (r < end_ && *r == '[') {
+        p_ = r;
+        b = parse_bracket();
+        if (b == kFail) return kFail;
+      }
+    }
+  }
+  if (fn == Func::kPow && b == kNoExpr) {
+    return error_expr(AlarmId::kMacroFormat, "POW needs two arguments: POW[a,b]", at);
+  }
+  const ExprId n = add_node(Op::kFunc, col(at), a, b);
+  if (n == kFail) return kFail;
+  node(n).fn = fn;
+  return n;
+}
+
+// Name after "#<" or "#_" (p_ at '<' or '_'). Upper-cased, spaces dropped.
+// "#_NAME[i]" keeps the index text in the name. `raw`: inside DPRNT text,
+// where a space ends the name.
+bool Parser::parse_named(std::string& name, bool raw) {
+  const char* at = p_;
+  name.clear();
+  if (*p_ == '<') {
+    ++p_;
+    for (;;) {
+      if (p_ == end_) return error(AlarmId::kMacroFormat, "'#<' name is not closed by '>'", at);
+      const char c = *p_++;
+      if (c == '>') break;
+      if (is_space(c)) continue;
+      const auto u = static_cast<unsigned char>(c);
+      if (u < 0x21 || u > 0x7e || c == '<' || c == '(' || c == ')') {
+        return error(AlarmId::kIllegalChar, show_char(c) + " in a variable name", p_ - 1);
+      }
+      name += to_upper(c);
+    }
+    if (name.empty()) return error(AlarmId::kMacroFormat, "empty variable name '#<>'", at);
+    return true;
+  }
+  // '_' name: letters, digits, '_' written together, then an optional index.
+  while (p_ < end_ && is_name_char(*p_)) name += to_upper(*p_++);
+  if (name.size() < 2) return error(AlarmId::kMacroFormat, "'#_' without a name", at);
+  const char* q = raw ? p_ : skip(p_);
+  if (q < end_ && *q == '[') {
+    const char* open = q;
+    int level = 0;
+    for (; q < end_; ++q) {
+      const char c = *q;
+      if (is_space(c)) continue;
+      if (c == '[') {
+        if (level + depth_ >= max_depth_) {
+          return error(AlarmId::kBracketNesting,
+                       "brackets nested deeper than " + std::to_string(max_depth_) + " levels", q);
+        }
+        ++level;
+      } else if (c == ']') {
+        --level;
+      } else {
+        const auto u = static_cast<unsigned char>(c);
+        if (u < 0x21 || u > 0x7e || c == '(' || c == ')') {
+          return error(AlarmId::kIllegalChar, show_char(c) + " in a variable index", q);
+        }
+      }
+      name += to_upper(c);
+      if (level == 0) break;
+    }
+    if (level != 0) return error(AlarmId::kBracketNesting, "'[' is not closed", open);
+    p_ = q + 1;
+  }
+  return true;
+}
+
+// Variable reference at p_ ('#'): #123, #[expr], ##1, #<name>, #_NAME[i].
+// `raw`: inside DPRNT text, where spaces end the variable number.
+ExprId Parser::parse_var(bool raw) {
+  ExprId id = kNoExpr;
+  if (!raw && var_number_fast(id)) return id;
+  return parse_var_general(raw);
+}
+
+// The general case of parse_var.
+ExprId Parser::parse_var_general(bool raw) {
+  const char* at = p_;
+  ++p_;
+  const char* q = raw ? p_ : skip(p_);
+  const char c = q < end_ ? *q : '\0';
+  if (q < end_ && is_digit(c)) {
+    p_ = q;
+    std::int64_t v = 0;
+    if (raw) {
+      const char* s = p_;
+      while (p_ < end_ && is_digit(*p_)) ++p_;
+      if (p_ - s > uint_digits_) {
+        return error_expr(AlarmId::kTooManyDigits, "variable number " + excerpt(s, p_), s);
+      }
+      for (const char* d = s; d < p_; ++d) v = v * 10 + (*d - '0');
+    } else {
+      bool any = false;
+      if (!parse_uint(v, "variable number", any)) return kFail;
+    }
+    return add_var_number(v, col(q), col(at));
+  }
+  if (q < end_ && c == '[') {
+    p_ = q;
+    const ExprId e = parse_bracket();
+    if (e == kFail) return kFail;
+    return add_node(Op::kVar, col(at), e);
+  }
+  if (q < end_ && c == '#') {
+    p_ = q;
+    if (!enter(q)) return kFail;
+    const ExprId e = parse_var(raw);
+    if (e == kFail) return kFail;
+    leave();
+    return add_node(Op::kVar, col(at), e);
+  }
+  if (q < end_ && (c == '<' || c == '_')) {
+    p_ = q;
+    std::string name;
+    if (!parse_named(name, raw)) return kFail;
+    const ExprId n = add_node(Op::kNamedVar, col(at));
+    node(n).name = add_name(std::move(name));
+    return n;
+  }
+  return error_expr(AlarmId::kNoValue, "'#' without a variable number", at);
+}
+
+}  // namespace skipnc::gcode::detail
