@@ -113,13 +113,26 @@ class PartSet {
     if (it == index_.end()) {
       it = index_.emplace(name, parts_.size()).first;
       parts_.push_back(geo::Part{name, {}, {}});
+      first_.push_back(&t);
     }
     return parts_[it->second];
+  }
+  // A part with holes and no solid is refused at the first table that names it.
+  Result<void> check_solids(std::string_view origin) const {
+    for (std::size_t i = 0; i < parts_.size(); ++i) {
+      if (parts_[i].solids.empty()) {
+        return config_error(
+            *first_[i], origin,
+            "part '" + parts_[i].name + "' has holes but no solid to cut them from");
+      }
+    }
+    return {};
   }
   std::vector<geo::Part> take() { return std::move(parts_); }
 
  private:
   std::vector<geo::Part> parts_;
+  std::vector<const toml::table*> first_;  // per part, the first table that names it
   std::map<std::string, std::size_t> index_;
   geo::Part scratch_;
 };
@@ -361,13 +374,9 @@ Result<Probing> parse_probing(const toml::table& root, std::string_view origin,
   PartSet parts;
   auto r = parse_parts(root, rd, parts);
   if (!r) return std::unexpected(r.error());
+  r = parts.check_solids(origin);
+  if (!r) return std::unexpected(r.error());
   out.parts = parts.take();
-  for (const auto& part : out.parts) {
-    if (part.solids.empty()) {
-      return fail(AlarmId::kConfig, std::string(origin) + ": part '" + part.name +
-                                        "' has holes but no solid to cut them from");
-    }
-  }
   for (const char* key : {"probe", "tool_setter"}) {
     const auto* n = root.get(key);
     if (n != nullptr && n->as_table() == nullptr) {

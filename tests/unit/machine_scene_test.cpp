@@ -114,18 +114,33 @@ void expect_error(const std::string& text, std::uint32_t line) {
 
 TEST(SceneProbing, RefusesWhatCannotBe) {
   expect_error("[[box]]\nmin = [0, 0, 0]\nmax = [1, 1, 1]\ncolour = \"red\"\n", 4);  // unknown key
-  expect_error("[[box]]\nmin = [0, 0]\nmax = [1, 1, 1]\n", 2);                         // 2 numbers
-  expect_error("[[box]]\nmin = [0, 0, 5]\nmax = [1, 1, 1]\n", 1);                      // max < min
-  expect_error("[[bore]]\ncenter = [0, 0]\nradius = 5\n", 0);                          // no solid
+  expect_error("[[box]]\nmin = [0, 0]\nmax = [1, 1, 1]\n", 2);                       // 2 numbers
+  expect_error("[[box]]\nmin = [0, 0, 5]\nmax = [1, 1, 1]\n", 1);                    // max < min
+  expect_error("[[bore]]\ncenter = [0, 0]\nradius = 5\n", 1);                        // no solid
+  // A named part's holes need a solid of the same part: the first table that names it.
+  expect_error(
+      "[[box]]\nmin = [0, 0, 0]\nmax = [9, 9, 9]\n\n[[bore]]\npart = \"plate\"\n"
+      "center = [0, 0]\nradius = 5\n",
+      5);
   expect_error("[[cylinder]]\ncenter = [0, 0]\nradius = -1\nbottom = 0\ntop = 1\n", 3);
   expect_error("[[plane]]\npoint = [0, 0, 0]\nnormal = [0, 0, 0]\n", 1);
-  expect_error("[probe]\nsignal = \"SKIP\"\nball_radius = 1\npre_travel = 1\nmax_overtravel = 1\n", 4);
+  expect_error("[probe]\nsignal = \"SKIP\"\nball_radius = 1\npre_travel = 1\nmax_overtravel = 1\n",
+               4);
   expect_error("[probe]\nsignal = \"Y0.4\"\nball_radius = 1\nmax_overtravel = 1\n", 2);
   expect_error("[probe]\nsignal = \"SKIP\"\nball_radius = 1\n", 1);  // max_overtravel missing
   expect_error("spindle_tool = 3\n[[tool]]\nnumber = 1\nlength = 10\nradius = 1\n", 1);
-  expect_error("[[tool]]\nnumber = 1\nlength = 10\nradius = 1\n[[tool]]\nnumber = 1\nlength = 5\nradius = 1\n", 5);
-  expect_error("[[gauge]]\naxis = \"Q\"\ncenter = 0\nraw_diameter = 5\nsteps = [{ signal = \"SKIP1\", diameter = 4 }]\n", 2);
-  expect_error("[[gauge]]\naxis = \"X\"\ncenter = 0\nraw_diameter = 5\nsteps = [{ signal = \"SKIP1\", diameter = 6 }]\n", 5);
+  expect_error(
+      "[[tool]]\nnumber = 1\nlength = 10\nradius = 1\n[[tool]]\nnumber = 1\nlength = 5\nradius = "
+      "1\n",
+      5);
+  expect_error(
+      "[[gauge]]\naxis = \"Q\"\ncenter = 0\nraw_diameter = 5\nsteps = [{ signal = \"SKIP1\", "
+      "diameter = 4 }]\n",
+      2);
+  expect_error(
+      "[[gauge]]\naxis = \"X\"\ncenter = 0\nraw_diameter = 5\nsteps = [{ signal = \"SKIP1\", "
+      "diameter = 6 }]\n",
+      5);
 }
 
 }  // namespace
