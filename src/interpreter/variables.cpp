@@ -6,14 +6,17 @@
 #include <fstream>
 #include <sstream>
 
-#include <fcntl.h>
-#include <unistd.h>
+#include "core/file.hpp"
 
 namespace skipnc::interp {
 
-VariableStore::VariableStore() { locals_.emplace_back(); }
+VariableStore::VariableStore() {
+  locals_.emplace_back();
+}
 
-void VariableStore::push_level() { locals_.emplace_back(); }
+void VariableStore::push_level() {
+  locals_.emplace_back();
+}
 
 void VariableStore::pop_level() {
   if (locals_.size() > 1) locals_.pop_back();
@@ -42,9 +45,13 @@ Value VariableStore::get_named(const std::string& name) const noexcept {
   return Value::null();
 }
 
-void VariableStore::set_named(const std::string& name, Value v) { named_[name] = v; }
+void VariableStore::set_named(const std::string& name, Value v) {
+  named_[name] = v;
+}
 
-void VariableStore::clear_common() noexcept { common_.fill(Value::null()); }
+void VariableStore::clear_common() noexcept {
+  common_.fill(Value::null());
+}
 
 // File format: one line per non-vacant variable, "#<n> = <value>" with 17
 // significant digits; comment lines start with ';'. Unknown content is an
@@ -84,31 +91,7 @@ Result<void> save_persistent(const std::string& path, const std::array<Value, 50
     std::snprintf(buf, sizeof buf, "#%zu = %.17g\n", i + 500, values[i].v);
     text += buf;
   }
-  const std::string tmp = path + ".tmp";
-  const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
-  if (fd < 0) {
-    return fail(AlarmId::kFileAccess, "cannot write '" + tmp + "': " + std::strerror(errno));
-  }
-  std::size_t done = 0;
-  while (done < text.size()) {
-    const ssize_t w = ::write(fd, text.data() + done, text.size() - done);
-    if (w < 0) {
-      if (errno == EINTR) continue;
-      ::close(fd);
-      ::unlink(tmp.c_str());
-      return fail(AlarmId::kFileAccess, "cannot write '" + tmp + "': " + std::strerror(errno));
-    }
-    done += static_cast<std::size_t>(w);
-  }
-  if (::fsync(fd) != 0 || ::close(fd) != 0) {
-    ::unlink(tmp.c_str());
-    return fail(AlarmId::kFileAccess, "cannot flush '" + tmp + "'");
-  }
-  if (std::rename(tmp.c_str(), path.c_str()) != 0) {
-    ::unlink(tmp.c_str());
-    return fail(AlarmId::kFileAccess, "cannot replace '" + path + "': " + std::strerror(errno));
-  }
-  return {};
+  return write_file_atomic(path, text);
 }
 
 }  // namespace skipnc::interp

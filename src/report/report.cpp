@@ -13,6 +13,7 @@
 
 #include "config/skip_inputs.hpp"
 #include "core/decimal.hpp"
+#include "core/file.hpp"
 
 namespace skipnc::report {
 
@@ -127,27 +128,7 @@ Result<void> write_atomic(const std::string& path, const std::string& text) {
     std::cout << text << std::flush;
     return {};
   }
-  const std::string tmp = path + ".tmp";
-  const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
-  if (fd < 0) {
-    return fail(AlarmId::kFileAccess, "cannot write '" + tmp + "': " + std::strerror(errno));
-  }
-  std::size_t done = 0;
-  while (done < text.size()) {
-    const ssize_t w = ::write(fd, text.data() + done, text.size() - done);
-    if (w < 0) {
-      if (errno == EINTR) continue;
-      ::close(fd);
-      ::unlink(tmp.c_str());
-      return fail(AlarmId::kFileAccess, "cannot write '" + tmp + "': " + std::strerror(errno));
-    }
-    done += static_cast<std::size_t>(w);
-  }
-  if (::fsync(fd) != 0 || ::close(fd) != 0 || std::rename(tmp.c_str(), path.c_str()) != 0) {
-    ::unlink(tmp.c_str());
-    return fail(AlarmId::kFileAccess, "cannot write '" + path + "': " + std::strerror(errno));
-  }
-  return {};
+  return write_file_atomic(path, text);
 }
 
 CsvTrace::CsvTrace(std::string path, const config::MachineConfig& m, const machine::Plant*)
