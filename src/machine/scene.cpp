@@ -16,23 +16,6 @@ using config::get_string;
 
 namespace {
 
-Result<canon::SignalAddr> signal_of(const toml::table& t, std::string_view origin,
-                                    const config::Dialect& d, const config::Parameters& p,
-                                    std::string& name) {
-  const auto* n = t.get("signal");
-  if (!n) return config_error(t, origin, "needs signal = \"X0.4\" (or SKIP, SKIP1..SKIP12)");
-  auto s = get_string(*n, origin, "signal");
-  if (!s) return std::unexpected(s.error());
-  auto a = config::parse_signal_name(*s, d, p);
-  if (!a) {
-    return config_error(
-        *n, origin,
-        "signal '" + *s + "' is not X<0-127>.<0-7>, G<0-511>.<0-7>, SKIP or SKIP1..SKIP12");
-  }
-  name = *s;
-  return *a;
-}
-
 Result<int> axis_of(const toml::table& t, std::string_view origin, const config::MachineConfig& m) {
   const auto* n = t.get("axis");
   if (!n) return config_error(t, origin, "needs axis = \"X\" (a machine axis)");
@@ -80,7 +63,7 @@ Result<Scene> parse_scene(std::string_view text, std::string_view origin,
     auto k = check_keys(t, {"signal", "axis", "at", "direction"}, origin, "[[trigger]]");
     if (!k) return k;
     Trigger tr;
-    auto sig = signal_of(t, origin, d, p, tr.signal_name);
+    auto sig = scene_signal(t, origin, d, p, tr.signal_name);
     if (!sig) return std::unexpected(sig.error());
     tr.signal = *sig;
     auto ax = axis_of(t, origin, m);
@@ -100,7 +83,7 @@ Result<Scene> parse_scene(std::string_view text, std::string_view origin,
     auto k = check_keys(t, {"signal", "at_time", "duration"}, origin, "[[pulse]]");
     if (!k) return k;
     Pulse pu;
-    auto sig = signal_of(t, origin, d, p, pu.signal_name);
+    auto sig = scene_signal(t, origin, d, p, pu.signal_name);
     if (!sig) return std::unexpected(sig.error());
     pu.signal = *sig;
     auto at = number_of(t, "at_time", origin, 0.0, 1e9);

@@ -16,10 +16,10 @@ namespace skipnc::machine {
 // A level signal, on while the axis's actual position is beyond a plane.
 struct Trigger {
   canon::SignalAddr signal;
-  std::string signal_name;   // as written
+  std::string signal_name;  // as written
   int axis = 0;
-  double at = 0.0;           // machine coordinate, mm
-  bool decreasing = true;    // on while axis < at (else while axis > at)
+  double at = 0.0;         // machine coordinate, mm
+  bool decreasing = true;  // on while axis < at (else while axis > at)
 };
 
 // A timed pulse.
@@ -34,7 +34,7 @@ struct Pulse {
 struct Stop {
   int axis = 0;
   double at = 0.0;
-  bool decreasing = true;    // blocks motion toward smaller coordinates (axis >= at)
+  bool decreasing = true;  // blocks motion toward smaller coordinates (axis >= at)
 };
 
 // An external load on an axis motor for a while (a burr, a chip): its
@@ -50,8 +50,8 @@ struct Load {
 // switch from then on. Scene [[operator]] (docs/skip-dialects.md).
 struct OperatorAction {
   double at_time_s = 0.0;
-  std::optional<bool> feed_hold;   // true: feed hold; false: cycle start (released)
-  std::optional<bool> interlock;   // all-axis interlock
+  std::optional<bool> feed_hold;       // true: feed hold; false: cycle start (released)
+  std::optional<bool> interlock;       // all-axis interlock
   std::optional<double> override_pct;  // feed override, 0-200 %
   std::optional<bool> dry_run;
 };
@@ -66,13 +66,10 @@ struct Scene {
   Probing probing;  // parts, probe, tools, tool setter, gauges (scene_parts.hpp)
 };
 
-
 [[nodiscard]] Result<Scene> parse_scene(std::string_view toml_text, std::string_view origin,
-                                        const config::MachineConfig& m,
-                                        const config::Dialect& d, const config::Parameters& p);
-[[nodiscard]] Result<Scene> load_scene_file(const std::string& path,
-                                            const config::MachineConfig& m,
-                                            const config::Dialect& d,
-                                            const config::Parameters& p);
+                                        const config::MachineConfig& m, const config::Dialect& d,
+                                        const config::Parameters& p);
+[[nodiscard]] Result<Scene> load_scene_file(const std::string& path, const config::MachineConfig& m,
+                                            const config::Dialect& d, const config::Parameters& p);
 
 }  // namespace skipnc::machine

@@ -75,19 +75,7 @@ struct Reader {
   }
 
   Result<canon::SignalAddr> signal(const toml::table& t, std::string& name) const {
-    const auto* n = t.get("signal");
-    if (n == nullptr)
-      return config_error(t, origin, "needs signal = \"X0.4\" (or SKIP, SKIP1..SKIP12)");
-    auto s = get_string(*n, origin, "signal");
-    if (!s) return std::unexpected(s.error());
-    auto a = config::parse_signal_name(*s, d, p);
-    if (!a) {
-      return config_error(
-          *n, origin,
-          "signal '" + *s + "' is not X<0-127>.<0-7>, G<0-511>.<0-7>, SKIP or SKIP1..SKIP12");
-    }
-    name = *s;
-    return *a;
+    return scene_signal(t, origin, d, p, name);
   }
 };
 
@@ -365,6 +353,24 @@ Result<GaugeSpec> parse_gauge(const toml::table& t, const Reader& rd) {
 }
 
 }  // namespace
+
+Result<canon::SignalAddr> scene_signal(const toml::table& t, std::string_view origin,
+                                       const config::Dialect& d, const config::Parameters& p,
+                                       std::string& name) {
+  const auto* n = t.get("signal");
+  if (n == nullptr)
+    return config_error(t, origin, "needs signal = \"X0.4\" (or SKIP, SKIP1..SKIP12)");
+  auto s = get_string(*n, origin, "signal");
+  if (!s) return std::unexpected(s.error());
+  auto a = config::parse_signal_name(*s, d, p);
+  if (!a) {
+    return config_error(
+        *n, origin,
+        "signal '" + *s + "' is not X<0-127>.<0-7>, G<0-511>.<0-7>, SKIP or SKIP1..SKIP12");
+  }
+  name = *s;
+  return *a;
+}
 
 Result<Probing> parse_probing(const toml::table& root, std::string_view origin,
                               const config::MachineConfig& m, const config::Dialect& d,

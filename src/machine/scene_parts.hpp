@@ -100,6 +100,13 @@ inline constexpr std::string_view kProbingKeys[] = {
     "box",   "cylinder", "sphere",      "plane", "bore",        "pocket",
     "probe", "tool",     "tool_setter", "gauge", "spindle_tool"};
 
+// The `signal` key of a scene table ("X0.4", "SKIP", "SKIP1".."SKIP12"): its
+// address, and its text in `name`. Errors name the table or the key.
+[[nodiscard]] Result<canon::SignalAddr> scene_signal(const toml::table& t, std::string_view origin,
+                                                     const config::Dialect& d,
+                                                     const config::Parameters& p,
+                                                     std::string& name);
+
 [[nodiscard]] Result<Probing> parse_probing(const toml::table& root, std::string_view origin,
                                             const config::MachineConfig& m,
                                             const config::Dialect& d, const config::Parameters& p);
