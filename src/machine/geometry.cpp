@@ -385,27 +385,15 @@ Material::Material(std::vector<Part> parts) : parts_(std::move(parts)) {
 
 void Material::add_solid_features(int part, int solid) {
   const Shape& s = parts_[static_cast<std::size_t>(part)].solids[static_cast<std::size_t>(solid)];
-  auto feature = [&](FeatureKind k) {
-    Feature f;
-    f.kind = k;
-    f.part = part;
-    f.owner = solid;
-    return f;
-  };
-  auto plane = [&](Vec3 p, Vec3 n) {
-    Feature f = feature(FeatureKind::kPlane);
-    f.p = p;
-    f.n = n;
-    features_.push_back(f);
-  };
+  const FeatureMaker fm{features_, part, solid, false};
   switch (s.kind) {
     case ShapeKind::kBox: {
-      plane(s.lo, {-1, 0, 0});
-      plane(s.hi, {1, 0, 0});
-      plane(s.lo, {0, -1, 0});
-      plane(s.hi, {0, 1, 0});
-      plane(s.lo, {0, 0, -1});
-      plane(s.hi, {0, 0, 1});
+      fm.plane(s.lo, {-1, 0, 0});
+      fm.plane(s.hi, {1, 0, 0});
+      fm.plane(s.lo, {0, -1, 0});
+      fm.plane(s.hi, {0, 1, 0});
+      fm.plane(s.lo, {0, 0, -1});
+      fm.plane(s.hi, {0, 0, 1});
       std::array<Vec3, 8> corner{};
       for (unsigned i = 0; i < 8; ++i) {
         corner[i] = Vec3{(i & 1U) ? s.hi.x : s.lo.x, (i & 2U) ? s.hi.y : s.lo.y,
@@ -414,7 +402,7 @@ void Material::add_solid_features(int part, int solid) {
       for (unsigned i = 0; i < 8; ++i) {
         for (unsigned bit = 1; bit < 8; bit <<= 1U) {
           if ((i & bit) != 0U) continue;
-          Feature f = feature(FeatureKind::kSegment);
+          Feature f = fm.make(FeatureKind::kSegment);
           f.p = corner[i];
           f.q = corner[i | bit];
           features_.push_back(f);
@@ -423,14 +411,14 @@ void Material::add_solid_features(int part, int solid) {
       break;
     }
     case ShapeKind::kCylinder: {
-      Feature wall = feature(FeatureKind::kOuterWall);
+      Feature wall = fm.make(FeatureKind::kOuterWall);
       wall.p = s.lo;
       wall.r = s.radius;
       features_.push_back(wall);
-      plane(s.hi, {0, 0, 1});
-      plane(s.lo, {0, 0, -1});
+      fm.plane(s.hi, {0, 0, 1});
+      fm.plane(s.lo, {0, 0, -1});
       for (double z : {s.lo.z, s.hi.z}) {
-        Feature rim = feature(FeatureKind::kCircle);
+        Feature rim = fm.make(FeatureKind::kCircle);
         rim.p = Vec3{s.lo.x, s.lo.y, z};
         rim.r = s.radius;
         features_.push_back(rim);
@@ -438,48 +426,35 @@ void Material::add_solid_features(int part, int solid) {
       break;
     }
     case ShapeKind::kSphere: {
-      Feature f = feature(FeatureKind::kBall);
+      Feature f = fm.make(FeatureKind::kBall);
       f.p = s.center;
       f.r = s.radius;
       features_.push_back(f);
       break;
     }
     case ShapeKind::kHalfSpace:
-      plane(s.center, s.normal);
+      fm.plane(s.center, s.normal);
       break;
   }
 }
 
 void Material::add_hole_features(int part, int hole) {
   const Shape& h = parts_[static_cast<std::size_t>(part)].holes[static_cast<std::size_t>(hole)];
-  auto feature = [&](FeatureKind k) {
-    Feature f;
-    f.kind = k;
-    f.part = part;
-    f.owner = hole;
-    f.of_hole = true;
-    return f;
-  };
-  auto plane = [&](Vec3 p, Vec3 n) {
-    Feature f = feature(FeatureKind::kPlane);
-    f.p = p;
-    f.n = n;
-    features_.push_back(f);
-  };
+  const FeatureMaker fm{features_, part, hole, true};
   // The walls face into the hole: material is outside it.
   if (h.kind == ShapeKind::kCylinder) {
-    Feature wall = feature(FeatureKind::kInnerWall);
+    Feature wall = fm.make(FeatureKind::kInnerWall);
     wall.p = h.lo;
     wall.r = h.radius;
     features_.push_back(wall);
   } else {
-    plane(h.lo, {1, 0, 0});
-    plane(h.hi, {-1, 0, 0});
-    plane(h.lo, {0, 1, 0});
-    plane(h.hi, {0, -1, 0});
+    fm.plane(h.lo, {1, 0, 0});
+    fm.plane(h.hi, {-1, 0, 0});
+    fm.plane(h.lo, {0, 1, 0});
+    fm.plane(h.hi, {0, -1, 0});
   }
-  plane(h.lo, {0, 0, 1});   // floor
-  plane(h.hi, {0, 0, -1});  // ceiling
+  fm.plane(h.lo, {0, 0, 1});   // floor
+  fm.plane(h.hi, {0, 0, -1});  // ceiling
 }
 
 // The convex edges a hole makes where it leaves a solid: rims at the solid's
@@ -488,14 +463,7 @@ void Material::add_rims(int part, int hole, int solid) {
   const Part& pt = parts_[static_cast<std::size_t>(part)];
   const Shape& h = pt.holes[static_cast<std::size_t>(hole)];
   const Shape& s = pt.solids[static_cast<std::size_t>(solid)];
-  auto feature = [&](FeatureKind k) {
-    Feature f;
-    f.kind = k;
-    f.part = part;
-    f.owner = hole;
-    f.of_hole = true;
-    return f;
-  };
+  const FeatureMaker fm{features_, part, hole, true};
   std::array<double, 2> levels{};
   int nl = 0;
   if (s.kind == ShapeKind::kBox || s.kind == ShapeKind::kCylinder) {
@@ -510,7 +478,7 @@ void Material::add_rims(int part, int hole, int solid) {
     const double z = levels[static_cast<std::size_t>(i)];
     if (!(z > h.lo.z && z < h.hi.z)) continue;
     if (h.kind == ShapeKind::kCylinder) {
-      Feature rim = feature(FeatureKind::kCircle);
+      Feature rim = fm.make(FeatureKind::kCircle);
       rim.p = Vec3{h.lo.x, h.lo.y, z};
       rim.r = h.radius;
       features_.push_back(rim);
@@ -518,7 +486,7 @@ void Material::add_rims(int part, int hole, int solid) {
       const std::array<Vec3, 4> c{Vec3{h.lo.x, h.lo.y, z}, Vec3{h.hi.x, h.lo.y, z},
                                   Vec3{h.hi.x, h.hi.y, z}, Vec3{h.lo.x, h.hi.y, z}};
       for (std::size_t k = 0; k < 4; ++k) {
-        Feature e = feature(FeatureKind::kSegment);
+        Feature e = fm.make(FeatureKind::kSegment);
         e.p = c[k];
         e.q = c[(k + 1) % 4];
         features_.push_back(e);
@@ -537,7 +505,7 @@ void Material::add_rims(int part, int hole, int solid) {
       double xs[2], ys[2];
       const int n = intersect2(a, b, xs, ys);
       for (int k = 0; k < n; ++k) {
-        Feature e = feature(FeatureKind::kSegment);
+        Feature e = fm.make(FeatureKind::kSegment);
         e.p = Vec3{xs[k], ys[k], zlo};
         e.q = Vec3{xs[k], ys[k], zhi};
         features_.push_back(e);

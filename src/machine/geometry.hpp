@@ -139,6 +139,27 @@ class Material {
     Vec3 n;
     double r = 0.0;
   };
+  // Makes the features of one solid (or hole) of a part into a list.
+  struct FeatureMaker {
+    std::vector<Feature>& out;
+    int part;
+    int owner;
+    bool of_hole;
+    Feature make(FeatureKind k) const noexcept {
+      Feature f;
+      f.kind = k;
+      f.part = part;
+      f.owner = owner;
+      f.of_hole = of_hole;
+      return f;
+    }
+    void plane(Vec3 p, Vec3 n) const {
+      Feature f = make(FeatureKind::kPlane);
+      f.p = p;
+      f.n = n;
+      out.push_back(f);
+    }
+  };
   void add_solid_features(int part, int solid);
   void add_hole_features(int part, int hole);
   void add_rims(int part, int hole, int solid);
