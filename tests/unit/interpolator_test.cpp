@@ -9,6 +9,8 @@
 #include <numbers>
 #include <vector>
 
+#include "support/motion.hpp"
+
 namespace skipnc::interp {
 namespace {
 
@@ -17,26 +19,8 @@ using planner::Move;
 using planner::Planner;
 using Kind = Move::Kind;
 
-Limits mill_limits() {
-  Limits lim;
-  lim.axis_count = 3;
-  for (auto& a : lim.axes) {
-    a.max_velocity_mm_s = 20000.0 / 60.0;
-    a.rapid_mm_s = 500.0;
-    a.max_accel_mm_s2 = 2000.0;
-  }
-  lim.period_s = 0.001;
-  lim.max_feed_mm_s = 20000.0 / 60.0;
-  return lim;
-}
-
-AxisVec xyz(double x, double y, double z) {
-  AxisVec v;
-  v[0] = x;
-  v[1] = y;
-  v[2] = z;
-  return v;
-}
+using test::mill_limits;
+using test::xyz;
 
 Move line(AxisVec to, double feed, std::uint32_t tag = 0) {
   Move m;

@@ -11,17 +11,12 @@
 #include "machine/plant.hpp"
 #include "machine/probe_safety.hpp"
 #include "machine/simulator.hpp"
+#include "support/motion.hpp"
 
 namespace skipnc::machine {
 namespace {
 
-AxisVec xyz(double x, double y, double z) {
-  AxisVec v;
-  v[0] = x;
-  v[1] = y;
-  v[2] = z;
-  return v;
-}
+using test::xyz;
 
 struct Rig {
   config::MachineConfig m = *config::builtin_machine("mill3");
@@ -94,7 +89,7 @@ TEST(ProbeSafety, ACrashReportsHowFarPastTheLimitTheStylusWent) {
   ASSERT_EQ(f.kind, PlantFault::Kind::kProbeCrash);
   EXPECT_NEAR(f.at[2], -40.0 + 1.0 - 0.5, 1e-9);  // deflection 0.5: the ball centre at Z-39.5
   EXPECT_NEAR(f.limit, 0.5, 1e-12);
-  EXPECT_NEAR(f.deflection, 1.0 + 3.0, 1e-9);     // centre 3 mm into the plate at Z-43
+  EXPECT_NEAR(f.deflection, 1.0 + 3.0, 1e-9);  // centre 3 mm into the plate at Z-43
   EXPECT_NEAR(f.overshoot, 3.5, 1e-9);
   EXPECT_NEAR(f.latest[2], -43.0, 1e-9);
 }
@@ -115,8 +110,7 @@ TEST(ProbeSafety, AToolChangedInByM06CollidesWithThePart) {
   EXPECT_NEAR((*res->alarm_position)[2], 60.0, 1e-8);  // 1 nm of overlap counts
   // The probe (T0 here) back in the spindle: a move onto the top is probe
   // protection where the ball switches.
-  auto back =
-      r.run("G21 G90 G54\nG0 Z150.\nT1 M06\nG0 X20. Y20.\nT0 M06\nG1 Z-45. F3000.\nM30\n");
+  auto back = r.run("G21 G90 G54\nG0 Z150.\nT1 M06\nG0 X20. Y20.\nT0 M06\nG1 Z-45. F3000.\nM30\n");
   ASSERT_TRUE(back && back->alarm);
   EXPECT_EQ(back->alarm->id, AlarmId::kProbeProtection);
   EXPECT_NEAR((*back->alarm_position)[2], -39.0, 1e-9);

@@ -6,31 +6,15 @@
 #include <cmath>
 #include <numbers>
 
+#include "support/motion.hpp"
+
 namespace skipnc::planner {
 namespace {
 
 using Kind = Move::Kind;
 
-Limits mill_limits() {
-  Limits lim;
-  lim.axis_count = 3;
-  for (auto& a : lim.axes) {
-    a.max_velocity_mm_s = 20000.0 / 60.0;
-    a.rapid_mm_s = 500.0;
-    a.max_accel_mm_s2 = 2000.0;
-  }
-  lim.period_s = 0.001;
-  lim.max_feed_mm_s = 20000.0 / 60.0;
-  return lim;
-}
-
-AxisVec xyz(double x, double y, double z) {
-  AxisVec v;
-  v[0] = x;
-  v[1] = y;
-  v[2] = z;
-  return v;
-}
+using test::mill_limits;
+using test::xyz;
 
 Move line(AxisVec to, double feed, bool exact_stop = false) {
   Move m;
