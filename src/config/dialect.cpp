@@ -77,6 +77,7 @@ Result<void> load_switches(const toml::table& t, std::string_view origin, Switch
       {"machine_lock_param", &sw.machine_lock_param, 0, 99999},
       {"z_cancel_param", &sw.z_cancel_param, 0, 99999},
       {"dry_run_feed_param", &sw.dry_run_feed_param, 0, 99999},
+      {"block_delete_param", &sw.block_delete_param, 0, 99999},
       {"macro_bracket_depth", &sw.macro_bracket_depth, 1, 64},
   };
   const BoolKey bools[] = {
@@ -357,6 +358,7 @@ Result<Dialect> parse_dialect(std::string_view toml_text, std::string_view origi
       {"machine_lock_param", sw.machine_lock_param},
       {"z_cancel_param", sw.z_cancel_param},
       {"dry_run_feed_param", sw.dry_run_feed_param},
+      {"block_delete_param", sw.block_delete_param},
   };
   for (const auto& [key, number] : refs) {
     if (number != 0 && d.param(number) == nullptr) {

@@ -106,6 +106,7 @@ struct Switches {
   int machine_lock_param = 0;             // skipnc: machine lock switch
   int z_cancel_param = 0;                 // skipnc: Z-axis cancel switch
   int dry_run_feed_param = 0;             // dry-run feed, mm/min
+  int block_delete_param = 0;             // skipnc: block delete switches /1../9 (bit n-1)
   bool tool_position_offset = false;      // G45-G48 exist (NCT)
   bool calculator_decimal_default = false;
 };

@@ -113,9 +113,12 @@ Result<Step> Interpreter::Impl::step(CommandSink& out) {
         return Step::kEnd;
       }
       f.resume = f.file->src->tell();
-      if (blk.block_delete >= 0) {
-        // Block delete switch: off in a simulation unless a later option sets it.
-        (void)0;
+      // Block delete ("/" or "/n" at the start of the block): the block is
+      // read and ignored while the operator's switch n is on (the dialect's
+      // block_delete_param, bit n - 1).
+      if (blk.block_delete >= 1 && dialect.sw.block_delete_param != 0 &&
+          params.bit(dialect.sw.block_delete_param, blk.block_delete - 1)) {
+        continue;
       }
       if (blk.percent) {
         if (frames.size() == 1 && block_pos.offset == f.start.offset) continue;  // tape start
