@@ -168,10 +168,14 @@ TEST(KernelSkip, TorqueLimitIsAnOutputWhileTheTorqueSkipRuns) {
   spec.torque_limit_pct = 35.0;
   b.skip(10.0, 600.0, spec);
   b.tick();
-  EXPECT_EQ(b.tick().torque_limit_pct[0], 35.0);
+  const auto running = b.tick();
+  EXPECT_EQ(running.torque_limit_pct[0], 35.0);
+  EXPECT_TRUE(running.torque_limited);
   b.tick({}, 40.0);
   for (int i = 0; i < 5; ++i) b.tick();
-  EXPECT_EQ(b.tick().torque_limit_pct[0], 0.0) << "released when the block is done";
+  const auto done = b.tick();
+  EXPECT_EQ(done.torque_limit_pct[0], 0.0) << "released when the block is done";
+  EXPECT_FALSE(done.torque_limited);
 }
 
 TEST(KernelSkip, FixedFeedSkipIgnoresOverrideButNotFeedHold) {
