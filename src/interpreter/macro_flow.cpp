@@ -11,14 +11,12 @@
 // (the loop is dropped from the frame's loop stack when the target is
 // outside its WHILE..END range); jumping into a loop is refused by the END
 // that finds no matching DO.
-#include <fcntl.h>
-#include <unistd.h>
-
 #include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <limits>
 
+#include "core/file.hpp"
 #include "interpreter/impl.hpp"
 
 namespace skipnc::interp {
@@ -232,28 +230,11 @@ Result<void> Interpreter::Impl::print_line(SourceLoc where) {
 // file beside it, then a rename. Nothing is written anywhere else.
 Result<void> Interpreter::Impl::write_dprnt() const {
   if (!dprnt_used || setup.dprnt_path.empty()) return {};
-  const std::string& path = setup.dprnt_path;
-  const std::string tmp = path + ".tmp";
-  const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
-  if (fd < 0) {
-    return fail(AlarmId::kFileAccess, "DPRNT: cannot write '" + tmp + "': " + std::strerror(errno));
-  }
-  std::size_t done = 0;
-  while (done < dprnt_text.size()) {
-    const ssize_t w = ::write(fd, dprnt_text.data() + done, dprnt_text.size() - done);
-    if (w < 0) {
-      if (errno == EINTR) continue;
-      ::close(fd);
-      ::unlink(tmp.c_str());
-      return fail(AlarmId::kFileAccess,
-                  "DPRNT: cannot write '" + tmp + "': " + std::strerror(errno));
-    }
-    done += static_cast<std::size_t>(w);
-  }
-  if (::fsync(fd) != 0 || ::close(fd) != 0 || std::rename(tmp.c_str(), path.c_str()) != 0) {
-    ::unlink(tmp.c_str());
-    return fail(AlarmId::kFileAccess,
-                "DPRNT: cannot write '" + path + "': " + std::strerror(errno));
+  auto r = write_file_atomic(setup.dprnt_path, dprnt_text);
+  if (!r) {
+    Error e = r.error();
+    e.detail = "DPRNT: " + e.detail;
+    return std::unexpected(std::move(e));
   }
   return {};
 }
