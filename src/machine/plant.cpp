@@ -8,21 +8,18 @@ namespace skipnc::machine {
 
 Plant::Plant(const config::MachineConfig& m, const Scene& scene, ServoClock clock)
     : m_(m), scene_(scene), clock_(clock), n_(m.axis_count()), probing_(scene_.probing, m) {
-  for (int i = 0; i < n_; ++i) {
-    const double kp = m.axes[static_cast<std::size_t>(i)].kp_per_s;
-    decay_[static_cast<std::size_t>(i)] = kp > 0 ? std::exp(-kp * clock_.period_s()) : 0.0;
-    lag_gain_[static_cast<std::size_t>(i)] =
-        kp > 0 ? (1.0 - m.axes[static_cast<std::size_t>(i)].feedforward) / (kp * clock_.period_s())
-               : 0.0;
-    torque_per_mm_[static_cast<std::size_t>(i)] =
-        m.axes[static_cast<std::size_t>(i)].torque_pct_per_mm;
-    torque_max_[static_cast<std::size_t>(i)] = m.axes[static_cast<std::size_t>(i)].torque_max_pct;
-  }
-  set_locked(AxisMask{});
   plain_servo_ = scene_.stops.empty() && scene_.loads.empty();
   for (int i = 0; i < n_; ++i) {
-    plain_servo_ = plain_servo_ && m.axes[static_cast<std::size_t>(i)].kp_per_s > 0.0;
+    const auto k_i = static_cast<std::size_t>(i);
+    const config::AxisConfig& a = m.axes[k_i];
+    const double kp = a.kp_per_s;
+    decay_[k_i] = kp > 0 ? std::exp(-kp * clock_.period_s()) : 0.0;
+    lag_gain_[k_i] = kp > 0 ? (1.0 - a.feedforward) / (kp * clock_.period_s()) : 0.0;
+    torque_per_mm_[k_i] = a.torque_pct_per_mm;
+    torque_max_[k_i] = a.torque_max_pct;
+    plain_servo_ = plain_servo_ && kp > 0.0;
   }
+  set_locked(AxisMask{});
   auto signal_for = [&](const canon::SignalAddr& a) -> Signal& {
     for (auto& s : signals_) {
       if (s.addr == a) return s;
