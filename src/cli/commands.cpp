@@ -2,7 +2,6 @@
 
 #include <atomic>
 #include <chrono>
-#include <csignal>
 #include <cstdio>
 #include <filesystem>
 #include <fmt/format.h>
@@ -12,6 +11,7 @@
 
 #include "canon/print.hpp"
 #include "cli/plot.hpp"
+#include "cli/outputs.hpp"
 #include "cli/session.hpp"
 #include "config/skip_inputs.hpp"
 #include "core/embedded.hpp"
@@ -21,25 +21,11 @@
 namespace skipnc::cli {
 namespace {
 
-std::atomic<bool> g_interrupt{false};
-
-extern "C" void on_signal(int) { g_interrupt.store(true); }
-
 std::string program_name_of(const std::string& path) { return path; }
 
-int start_failure(const RunArgs& a, const Error& e, const Session* s) {
-  std::cerr << "skipnc: " << describe(e, s ? &s->dialect : nullptr) << "\n";
-  if (!a.report.empty()) {
-    report::ReportInput in;
-    in.program = a.program;
-    in.dialect = s && !s->dialect.name.empty() ? s->dialect.name : a.dialect;
-    in.machine = s && !s->machine.axes.empty() ? &s->machine : nullptr;
-    in.dialect_table = s && !s->dialect.name.empty() ? &s->dialect : nullptr;
-    in.start_error = e;
-    auto w = report::write_atomic(a.report, report::to_json(in));
-    if (!w) std::cerr << "skipnc: " << w.error().detail << "\n";
-  }
-  return 2;
+// Outputs that go to standard output move the summary to standard error.
+bool is_stdout(const std::string& name) {
+  return name == "-" || name == "/dev/stdout" || name == "/dev/fd/1" || name == "/proc/self/fd/1";
 }
 
 std::string fmt_axes(const AxisVec& v, const config::MachineConfig& m) {
@@ -87,35 +73,31 @@ int execute(const RunArgs& a, Session& s, interp::Setup setup, bool explain) {
     if (!r) return start_failure(a, r.error(), &s);
     vars.push_back(*r);
   }
+  if (auto c = check_plot_files(a.plot); !c) return start_failure(a, c.error(), &s);
+  if (auto c = check_outputs(a, s); !c) return start_failure(a, c.error(), &s);
   std::unique_ptr<report::CsvTrace> trace;
   if (!a.trace.empty()) {
     trace = std::make_unique<report::CsvTrace>(a.trace, s.machine, nullptr);
     auto o = trace->open();
     if (!o) return start_failure(a, o.error(), &s);
+    // A trace that cannot go on (a full disk, a closed pipe, its size
+    // limit) stops the run.
+    trace->on_stop([] { run_stop().request(StopReason::kOutput); });
   }
-  if (auto c = check_plot_files(a.plot); !c) return start_failure(a, c.error(), &s);
-  std::signal(SIGINT, on_signal);
-  std::signal(SIGTERM, on_signal);
   machine::Simulator sim(s.machine, s.dialect, *s.params, s.scene);
   machine::RunOptions opts;
   opts.trace = trace.get();
-  opts.interrupt = &g_interrupt;
+  opts.interrupt = &run_stop().flag;
   std::unique_ptr<PlotCapture> plot;
   if (!a.plot.empty()) plot = std::make_unique<PlotCapture>(s.machine, opts);
-  const bool tty = ::isatty(STDERR_FILENO) != 0 && !a.quiet;
-  const auto wall0 = std::chrono::steady_clock::now();
-  bool progress_shown = false;
-  if (tty) {
-    opts.progress = [&](double t, std::uint32_t line) {
-      const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
-      if (wall < 1.0) return;
-      std::fprintf(stderr, "\r  %.0f s simulated, line %u ...", t, line);
-      progress_shown = true;
-    };
-  }
+  std::optional<Watchdog> watchdog;
+  watchdog.emplace(Watchdog::Options{s.machine.limits.max_cpu_s, a.progress,
+                                     ::isatty(STDERR_FILENO) != 0 && !a.quiet && !explain});
+  opts.progress = [&](double t, std::uint32_t line) { watchdog->update(t, line); };
   auto res = sim.run(setup, opts);
-  if (progress_shown) std::fprintf(stderr, "\r%60s\r", "");
+  watchdog.reset();
   if (!res) return start_failure(a, res.error(), &s);
+  explain_stop(*res, trace.get(), s.machine);
   report::ReportInput in;
   in.program = a.program;
   in.dialect = s.dialect.name;
@@ -129,33 +111,30 @@ int execute(const RunArgs& a, Session& s, interp::Setup setup, bool explain) {
     if (val && !val->vacant) out = val->v;
     in.variables.emplace_back(v.key, out);
   }
-  int rc = in.result.status == machine::RunStatus::kCompleted ? 0 : 1;
+  // An output that could not be written is an alarm of the run, in the
+  // report too (before, a full disk left "completed").
+  bool output_failed = false;
+  auto output_error = [&](const Error& e) {
+    std::cerr << "skipnc: " << e.detail << "\n";
+    output_failed = true;
+    if (in.result.status == machine::RunStatus::kCompleted) {
+      in.result.status = machine::RunStatus::kAlarm;
+      in.result.alarm = e;
+    }
+  };
   if (trace) {
-    auto f = trace->finish();
-    if (!f) {
-      std::cerr << "skipnc: " << f.error().detail << "\n";
-      rc = rc == 0 ? 1 : rc;
-    }
-  }
-  if (!a.report.empty()) {
-    auto w = report::write_atomic(a.report, report::to_json(in));
-    if (!w) {
-      std::cerr << "skipnc: " << w.error().detail << "\n";
-      rc = rc == 0 ? 1 : rc;
-    }
+    if (auto f = trace->finish(); !f) output_error(f.error());
   }
   if (plot) {
     const std::string text = setup.program_path.empty() ? setup.program_text : read_program_text(a.program);
-    auto w = plot->write(a.plot, s, in.result, {a.program, text, in.variables});
-    if (!w) {
-      std::cerr << "skipnc: " << w.error().detail << "\n";
-      rc = rc == 0 ? 1 : rc;
+    if (auto w = plot->write(a.plot, s, in.result, {a.program, text, in.variables}); !w) {
+      output_error(w.error());
     }
   }
-  std::FILE* out = a.report == "-" || a.trace == "-" ? stderr : stdout;
-  if (explain) {
-    return rc;
-  }
+  int rc = in.result.status == machine::RunStatus::kCompleted && !output_failed ? 0 : 1;
+  if (!write_report(a, report::to_json(in))) rc = 1;
+  if (explain) return rc;
+  std::FILE* out = is_stdout(a.report) || is_stdout(a.trace) ? stderr : stdout;
   if (in.result.alarm) std::cerr << "skipnc: " << describe(*in.result.alarm, &s.dialect) << "\n";
   if (!a.quiet) print_summary(out, in.result, s, a.program);
   return rc;
@@ -186,13 +165,16 @@ class PrintSink final : public interp::CommandSink {
     if (buf_.size() > (1 << 16)) flush();
   }
   void flush() {
-    std::fwrite(buf_.data(), 1, buf_.size(), stdout);
+    if (std::fwrite(buf_.data(), 1, buf_.size(), stdout) != buf_.size()) failed_ = true;
     buf_.clear();
   }
+  // Standard output refused the text (a full disk, a closed pipe).
+  bool failed() const noexcept { return failed_; }
 
  private:
   canon::AxisNames axes_;
   fmt::memory_buffer buf_;
+  bool failed_ = false;
 };
 
 }  // namespace
@@ -211,7 +193,22 @@ int canon_command(const RunArgs& a) {
   auto in = interp::Interpreter::create(make_setup(a, s), AxisVec{});
   if (!in) return start_failure(a, in.error(), &s);
   PrintSink sink(s.machine);
+  Watchdog watchdog(Watchdog::Options{s.machine.limits.max_cpu_s, false, false});
   for (;;) {
+    // Stopped by a signal or the processor-time limit; output that cannot
+    // be written ends the command too.
+    if (run_stop().flag.load(std::memory_order_relaxed) || sink.failed()) {
+      sink.flush();
+      const Error e = sink.failed()
+                          ? Error{AlarmId::kFileAccess, "cannot write standard output", {}, -1}
+                      : run_stop().why() == StopReason::kCpuLimit
+                          ? Error{AlarmId::kCpuLimit, "more than limits.max_cpu_s of processor time",
+                                  SourceLoc{a.program, (*in)->line(), 1}, -1}
+                          : Error{AlarmId::kInterrupted, "stopped by a signal",
+                                  SourceLoc{a.program, (*in)->line(), 1}, -1};
+      std::cerr << "skipnc: " << describe(e, &s.dialect) << "\n";
+      return 1;
+    }
     auto st = (*in)->step(sink);
     if (!st) {
       sink.flush();
@@ -235,7 +232,7 @@ int canon_command(const RunArgs& a) {
     }
   }
   sink.flush();
-  return 0;
+  return sink.failed() ? 1 : 0;
 }
 
 // One line per skip feature that differs between the dialects.
@@ -362,20 +359,30 @@ int demo_command(const RunArgs& args) {
     if (nl == std::string_view::npos) break;
     i = nl + 1;
   }
+  if (auto c = check_plot_files(a.plot); !c) return start_failure(a, c.error(), &s);
+  if (auto c = check_outputs(a, s); !c) return start_failure(a, c.error(), &s);
   std::unique_ptr<report::CsvTrace> trace;
   if (!a.trace.empty()) {
     trace = std::make_unique<report::CsvTrace>(a.trace, s.machine, nullptr);
     auto t = trace->open();
     if (!t) return start_failure(a, t.error(), &s);
+    trace->on_stop([] { run_stop().request(StopReason::kOutput); });
   }
-  if (auto c = check_plot_files(a.plot); !c) return start_failure(a, c.error(), &s);
   machine::RunOptions opts;
   opts.trace = trace.get();
+  opts.interrupt = &run_stop().flag;
   std::unique_ptr<PlotCapture> plot;
   if (!a.plot.empty()) plot = std::make_unique<PlotCapture>(s.machine, opts);
   auto res = sim.run(setup, opts);
   if (!res) return start_failure(a, res.error(), &s);
-  if (trace) (void)trace->finish();
+  explain_stop(*res, trace.get(), s.machine);
+  bool output_failed = false;
+  if (trace) {
+    if (auto f = trace->finish(); !f) {
+      std::cerr << "skipnc: " << f.error().detail << "\n";
+      output_failed = true;
+    }
+  }
   const auto& r = *res;
   std::cout << "\nWhat happened:\n";
   for (const auto& sk : r.skips) {
@@ -405,17 +412,19 @@ int demo_command(const RunArgs& args) {
     in.dialect_table = &s.dialect;
     in.result = r;
     for (int n : {100, 101, 102, 5223}) in.variables.emplace_back(std::to_string(n), var(n));
-    auto w = report::write_atomic(a.report, report::to_json(in));
-    if (!w) std::cerr << "skipnc: " << w.error().detail << "\n";
+    output_failed |= !write_report(a, report::to_json(in));
   }
   if (plot) {
     std::vector<std::pair<std::string, std::optional<double>>> vars;
     for (int n : {100, 101, 102, 5223}) vars.emplace_back(std::to_string(n), var(n));
     auto w = plot->write(a.plot, s, r, {a.program, prog->content, vars});
-    if (!w) std::cerr << "skipnc: " << w.error().detail << "\n";
+    if (!w) {
+      std::cerr << "skipnc: " << w.error().detail << "\n";
+      output_failed = true;
+    }
   }
   std::cout << "\nTry it yourself: skipnc run PROGRAM --scene SCENE --report report.json --var 5063\n";
-  return r.status == machine::RunStatus::kCompleted ? 0 : 1;
+  return r.status == machine::RunStatus::kCompleted && !output_failed ? 0 : 1;
 }
 
 }  // namespace skipnc::cli

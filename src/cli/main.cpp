@@ -2,12 +2,23 @@
 #include <CLI/CLI.hpp>
 #include <iostream>
 
+#include <cstdio>
+#include <exception>
+#include <system_error>
+
 #include "cli/commands.hpp"
+#include "cli/guard.hpp"
+#include "cli/outputs.hpp"
 #include "cli/repeat.hpp"
 #include "cli/plot.hpp"
 #include "cli/show.hpp"
 
-int main(int argc, char** argv) {
+namespace {
+
+// The parsed command's arguments, for the last-resort report.
+const skipnc::cli::RunArgs* g_args = nullptr;
+
+int run_main(int argc, char** argv) {
   using skipnc::cli::RunArgs;
   CLI::App app{"skipnc: a CNC kernel and simulated machine built around the G31 skip function"};
   app.require_subcommand(1);
@@ -27,6 +38,10 @@ int main(int argc, char** argv) {
   run->add_option("-I,--include", run_args.include, "subprogram folder (repeatable)");
   run->add_option("--dprnt", run_args.dprnt, "file for DPRNT output (POPEN/PCLOS)");
   run->add_flag("-q,--quiet", run_args.quiet, "no summary on standard output");
+  run->add_flag("--progress", run_args.progress,
+                "a progress line on standard error every 2 s (also without a terminal)");
+  run->add_flag("--save-persistent", run_args.save_persistent,
+                "with --repeat: save the nominal run's #500-#999 (by default nothing is saved)");
   run->add_option("--repeat", run_args.repeat,
                   "run N times with the probe's scatter; report mean, std dev, worst case")
       ->check(CLI::Range(1, 1000000));
@@ -60,6 +75,8 @@ int main(int argc, char** argv) {
   plot->add_option("--report", plot_args.report, "also write the JSON report here");
   plot->add_option("-I,--include", plot_args.include, "subprogram folder (repeatable)");
   plot->add_flag("-q,--quiet", plot_args.quiet, "no summary on standard output");
+  plot->add_flag("--progress", plot_args.progress,
+                 "a progress line on standard error every 2 s (also without a terminal)");
 
   auto* dialects = app.add_subcommand("dialects", "list the dialects and what differs");
 
@@ -75,13 +92,52 @@ int main(int argc, char** argv) {
     return rc == 0 ? 0 : 2;
   }
   if (run->parsed()) {
+    g_args = &run_args;
     return run_args.repeat > 0 ? skipnc::cli::repeat_command(run_args)
                                : skipnc::cli::run_command(run_args);
   }
-  if (canon->parsed()) return skipnc::cli::canon_command(canon_args);
-  if (demo->parsed()) return skipnc::cli::demo_command(demo_args);
-  if (plot->parsed()) return skipnc::cli::plot_command(plot_args);
+  if (canon->parsed()) {
+    g_args = &canon_args;
+    return skipnc::cli::canon_command(canon_args);
+  }
+  if (demo->parsed()) {
+    g_args = &demo_args;
+    return skipnc::cli::demo_command(demo_args);
+  }
+  if (plot->parsed()) {
+    g_args = &plot_args;
+    return skipnc::cli::plot_command(plot_args);
+  }
   if (dialects->parsed()) return skipnc::cli::dialects_command();
   if (show->parsed()) return skipnc::cli::show_command(show_args);
   return 2;
+}
+
+}  // namespace
+
+// No exception leaves skipnc: the last resort writes the report with the
+// internal-error alarm. Text that standard output refused (a full disk, a
+// closed pipe) makes the exit status non-zero.
+int main(int argc, char** argv) {
+  skipnc::cli::install_signal_handlers();
+  int rc = 0;
+  try {
+    rc = run_main(argc, argv);
+  } catch (const std::system_error& e) {
+    if (std::ferror(stdout)) {
+      std::fprintf(stderr, "skipnc: cannot write standard output: %s\n", e.what());
+      rc = rc == 0 ? 1 : rc;
+    } else {
+      rc = skipnc::cli::internal_failure(g_args, e.what());
+    }
+  } catch (const std::exception& e) {
+    rc = skipnc::cli::internal_failure(g_args, e.what());
+  } catch (...) {
+    rc = skipnc::cli::internal_failure(g_args, "an exception of unknown type");
+  }
+  if (auto f = skipnc::cli::finish_stdout(); !f) {
+    std::fprintf(stderr, "skipnc: %s\n", f.error().detail.c_str());
+    if (rc == 0) rc = 1;
+  }
+  return rc;
 }

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "cli/session.hpp"
+#include "core/utf8.hpp"
 #include "machine/simulator.hpp"
 #include "report/report.hpp"
 
@@ -48,9 +49,9 @@ Stats stats_of(const Series& s) {
   return st;
 }
 
-std::string json_string(const std::string& s) {
+std::string json_string(const std::string& text) {
   std::string out = "\"";
-  for (char c : s) {
+  for (char c : utf8::make_valid(text)) {
     if (c == '"' || c == '\\') {
       out += '\\';
       out += c;

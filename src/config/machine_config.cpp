@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <type_traits>
 
 #include "config/toml_util.hpp"
 #include "core/embedded.hpp"
@@ -93,6 +94,59 @@ Result<void> load_offsets(const toml::table& t, MachineConfig& m, std::string_vi
         load_axis_values(node, m, origin, key.str(), m.work_offsets[static_cast<std::size_t>(idx)]);
     if (!v) return std::unexpected(v.error());
     m.work_offsets[static_cast<std::size_t>(idx)] = *v;
+  }
+  return {};
+}
+
+// [limits]: every key with its range. The ranges' upper ends are the sane
+// maxima (issue 21): a value beyond them is a mistake (max_macro_levels =
+// 1e12), refused with its file:line:column, never cast into an int.
+struct LimitKey {
+  std::string_view key;
+  double min, max;
+  bool whole;  // a count: a whole number
+  void (*set)(MachineConfig&, double);
+};
+constexpr double kGiB = 1024.0 * 1024.0 * 1024.0;
+template <auto Member>
+constexpr void set_count(MachineConfig& m, double v) {
+  using T = std::remove_reference_t<decltype(m.limits.*Member)>;
+  m.limits.*Member = static_cast<T>(v);
+}
+constexpr LimitKey kLimitKeys[] = {
+    // simulated seconds (about 3 years), kept as servo periods
+    {"max_time_s", 1e-3, 1e8, false,
+     [](MachineConfig& m, double v) {
+       m.limits.max_ticks = static_cast<std::int64_t>(v * 1e9 / static_cast<double>(m.period_ns));
+     }},
+    {"max_macro_statements", 1, 1e12, true, set_count<&Limits::max_macro_statements>},
+    {"max_macro_levels", 1, 100, true, set_count<&Limits::max_macro_levels>},  // Fanuc: 4 or 5
+    {"max_subprogram_levels", 1, 100, true, set_count<&Limits::max_subprogram_levels>},  // 10, 15
+    {"max_cpu_s", 1e-3, 1e6, false, set_count<&Limits::max_cpu_s>},
+    {"max_message_bytes", 1, kGiB, true, set_count<&Limits::max_message_bytes>},
+    {"max_dprnt_bytes", 1, kGiB, true, set_count<&Limits::max_dprnt_bytes>},
+    {"max_named_variables", 1, 1e7, true, set_count<&Limits::max_named_variables>},
+    {"max_label_index_bytes", 4096, kGiB, true, set_count<&Limits::max_label_index_bytes>},
+    {"max_trace_bytes", 1, 1024 * kGiB, true, set_count<&Limits::max_trace_bytes>},
+};
+
+Result<void> load_limits(const toml::table& t, MachineConfig& m, std::string_view origin) {
+  for (const auto& [key, node] : t) {
+    const LimitKey* k = nullptr;
+    for (const auto& c : kLimitKeys) k = c.key == key.str() ? &c : k;
+    if (k == nullptr) {
+      std::string list;
+      for (const auto& c : kLimitKeys) list += (list.empty() ? "" : ", ") + std::string(c.key);
+      return config_error(node, origin,
+                          "unknown key '" + std::string(key.str()) + "' in [limits] (known: " +
+                              list + ")");
+    }
+    auto v = get_number(node, origin, k->key, k->min, k->max);
+    if (!v) return std::unexpected(v.error());
+    if (k->whole && *v != std::trunc(*v)) {
+      return config_error(node, origin, std::string(k->key) + " must be a whole number");
+    }
+    k->set(m, *v);
   }
   return {};
 }
@@ -404,23 +458,8 @@ Result<MachineConfig> parse_machine_at(std::string_view text, std::string_view o
   if (const auto* n = t.get("limits")) {
     const auto* lt = n->as_table();
     if (!lt) return config_error(*n, origin, "[limits] must be a table");
-    auto k = check_keys(
-        *lt, {"max_time_s", "max_macro_statements", "max_macro_levels", "max_subprogram_levels"},
-        origin, "[limits]");
-    if (!k) return std::unexpected(k.error());
-    for (const auto& [key, node] : *lt) {
-      auto v = get_number(node, origin, key.str(), 1, 1e12);
-      if (!v) return std::unexpected(v.error());
-      if (key.str() == "max_time_s") {
-        m.limits.max_ticks = static_cast<std::int64_t>(*v * 1e9 / static_cast<double>(m.period_ns));
-      } else if (key.str() == "max_macro_statements") {
-        m.limits.max_macro_statements = static_cast<std::int64_t>(*v);
-      } else if (key.str() == "max_macro_levels") {
-        m.limits.max_macro_levels = static_cast<int>(*v);
-      } else {
-        m.limits.max_subprogram_levels = static_cast<int>(*v);
-      }
-    }
+    auto r = load_limits(*lt, m, origin);
+    if (!r) return std::unexpected(r.error());
   }
   return m;
 }

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/utf8.hpp"
 #include "report/report.hpp"
 
 namespace skipnc::plot {
@@ -264,30 +265,9 @@ std::string num(double v, int decimals) {
 }
 
 std::string clean_utf8(std::string_view text) {
-  std::string out;
-  out.reserve(text.size());
-  for (std::size_t i = 0; i < text.size(); ++i) {
-    const auto c = static_cast<unsigned char>(text[i]);
-    if (c < 0x80) {
-      out += static_cast<char>(c);
-      continue;
-    }
-    const std::size_t len = c >= 0xC2 && c < 0xE0   ? 2
-                            : c >= 0xE0 && c < 0xF0 ? 3
-                            : c >= 0xF0 && c < 0xF5 ? 4
-                                                    : 0;
-    bool ok = len > 0 && i + len <= text.size();
-    for (std::size_t k = 1; ok && k < len; ++k) {
-      ok = (static_cast<unsigned char>(text[i + k]) & 0xC0) == 0x80;
-    }
-    if (ok) {
-      out.append(text.substr(i, len));
-      i += len - 1;
-    } else {
-      out += '?';
-    }
-  }
-  return out;
+  // One rule for every text skipnc writes as UTF-8: U+FFFD for each maximal
+  // ill-formed subpart (core/utf8.hpp).
+  return utf8::make_valid(text);
 }
 
 std::string skip_var_name(const config::Dialect& d, int axis_index, char axis_name) {

@@ -193,8 +193,8 @@ void add_scene_extent(const machine::Scene& scene, Box3& extent);
 // "#5063" (Fanuc-style numbered) or the dialect's named variable.
 std::string skip_var_name(const config::Dialect& d, int axis_index, char axis_name);
 
-// The text with every byte that is not part of valid UTF-8 replaced by '?'
-// (program comments may be Latin-1).
+// The text with every ill-formed part of UTF-8 replaced by U+FFFD
+// (utf8::make_valid; program comments may be Latin-1).
 std::string clean_utf8(std::string_view text);
 
 // Number text for labels: fixed decimals, no "-0".

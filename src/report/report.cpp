@@ -19,6 +19,9 @@ namespace skipnc::report {
 
 using nlohmann::ordered_json;
 
+// Trace rows are written in pieces of this size (a system call per 64 KiB).
+constexpr std::size_t kTraceBufferBytes = std::size_t{1} << 16;
+
 AlarmView view_alarm(const Error& e, const config::Dialect* d) {
   AlarmView v;
   if (d != nullptr) {
@@ -120,34 +123,53 @@ std::string to_json(const ReportInput& in) {
   j["final"] = fin;
   j["messages"] = r.messages;
   if (in.machine != nullptr) j["machine"] = in.machine->name;
-  return j.dump(2) + "\n";
+  // Every text of the report is valid UTF-8: bytes that are not (a Latin-1
+  // comment, a file name, a command-line word) are replaced visibly with
+  // U+FFFD, one per maximal ill-formed subpart, the rule of utf8::make_valid
+  // (core/utf8.hpp); dump() then never throws.
+  return j.dump(2, ' ', false, ordered_json::error_handler_t::replace) + "\n";
 }
 
 Result<void> write_atomic(const std::string& path, const std::string& text) {
-  if (path == "-") {
-    std::cout << text << std::flush;
-    return {};
-  }
   return write_file_atomic(path, text);
 }
 
 CsvTrace::CsvTrace(std::string path, const config::MachineConfig& m, const machine::Plant*)
-    : path_(std::move(path)), tmp_(path_ + ".tmp"), m_(m) {}
+    : path_(std::move(path)),
+      m_(m),
+      max_bytes_(static_cast<std::uint64_t>(m.limits.max_trace_bytes)) {}
 
-CsvTrace::~CsvTrace() {
-  if (f_ != nullptr) {
-    std::fclose(f_);
-    ::unlink(tmp_.c_str());
-  }
-}
+CsvTrace::~CsvTrace() = default;  // an unfinished trace's temporary file is removed
 
 Result<void> CsvTrace::open() {
-  f_ = path_ == "-" ? stdout : std::fopen(tmp_.c_str(), "wb");
-  if (f_ == nullptr) {
-    return fail(AlarmId::kFileAccess, "cannot write trace '" + tmp_ + "': " + std::strerror(errno));
+  auto f = OutputFile::open(path_);
+  if (!f) {
+    Error e = f.error();
+    e.detail = "trace: " + e.detail;
+    return std::unexpected(std::move(e));
   }
-  buf_.reserve(1 << 16);
+  out_ = std::move(*f);
+  opened_ = true;
+  buf_.reserve(kTraceBufferBytes + 1024);
   return {};
+}
+
+void CsvTrace::fail_with(Error e) {
+  if (error_) return;
+  error_ = std::move(e);
+  buf_.clear();
+  if (stop_) stop_();
+}
+
+void CsvTrace::flush_buffer() {
+  if (buf_.empty() || error_) return;
+  auto w = out_.write(buf_);
+  buf_.clear();
+  if (!w) {
+    Error e = w.error();
+    e.detail = "trace: " + e.detail;
+    fail_with(std::move(e));
+  }
 }
 
 void CsvTrace::header(const machine::TraceRow& r) {
@@ -197,8 +219,11 @@ char* trace_number(char* p, double v) noexcept {
 }  // namespace
 
 void CsvTrace::row(const machine::TraceRow& r) {
-  if (f_ == nullptr || failed_) return;
-  if (!header_done_) header(r);
+  if (!opened_ || error_) return;
+  if (!header_done_) {
+    header(r);
+    bytes_ += buf_.size();
+  }
   const int n = m_.axis_count();
   const std::size_t signals = r.plant != nullptr ? r.plant->signal_count() : 0;
   const std::size_t room =
@@ -228,29 +253,38 @@ void CsvTrace::row(const machine::TraceRow& r) {
     }
   }
   *p++ = '\n';
-  buf_.append(row_.data(), p);
-  if (buf_.size() > (1 << 16)) {
-    if (std::fwrite(buf_.data(), 1, buf_.size(), f_) != buf_.size()) failed_ = true;
-    buf_.clear();
+  const auto len = static_cast<std::uint64_t>(p - row_.data());
+  if (bytes_ + len > max_bytes_) {
+    // Whole rows up to the limit are kept; the run stops here.
+    flush_buffer();
+    fail_with(Error{AlarmId::kTraceLimit,
+                    "the trace reached limits.max_trace_bytes (" + std::to_string(max_bytes_) +
+                        " bytes) at " + std::to_string(r.time_s) + " s",
+                    {}, -1});
+    return;
   }
+  bytes_ += len;
+  buf_.append(row_.data(), p);
+  if (buf_.size() >= kTraceBufferBytes) flush_buffer();
 }
 
 Result<void> CsvTrace::finish() {
-  if (f_ == nullptr) return {};
-  if (!buf_.empty() && std::fwrite(buf_.data(), 1, buf_.size(), f_) != buf_.size()) failed_ = true;
-  buf_.clear();
-  if (f_ == stdout) {
-    std::fflush(f_);
-    f_ = nullptr;
-    return {};
+  if (!opened_) return {};
+  opened_ = false;
+  flush_buffer();
+  if (error_ && error_->id == AlarmId::kFileAccess) {
+    out_.discard();
+    return std::unexpected(*error_);
   }
-  const bool ok = !failed_ && std::fflush(f_) == 0 && ::fsync(::fileno(f_)) == 0;
-  std::fclose(f_);
-  f_ = nullptr;
-  if (!ok || std::rename(tmp_.c_str(), path_.c_str()) != 0) {
-    ::unlink(tmp_.c_str());
-    return fail(AlarmId::kFileAccess, "cannot write trace '" + path_ + "'");
+  // Past the size limit the rows written so far are a whole trace: kept.
+  auto c = out_.commit();
+  if (!c) {
+    Error e = c.error();
+    e.detail = "trace: " + e.detail;
+    if (!error_) error_ = e;
+    return std::unexpected(std::move(e));
   }
+  if (error_) return std::unexpected(*error_);
   return {};
 }
 

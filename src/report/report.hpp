@@ -4,12 +4,14 @@
 #pragma once
 
 #include <cstdio>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "config/dialect.hpp"
 #include "config/machine_config.hpp"
+#include "core/file.hpp"
 #include "machine/simulator.hpp"
 
 namespace skipnc::report {
@@ -26,7 +28,8 @@ struct ReportInput {
 
 std::string to_json(const ReportInput& in);
 
-// Writes `text` to `path` atomically ("-": standard output).
+// Writes `text` to `path` atomically ("-": standard output; a device or a
+// FIFO in place): write_file_atomic (core/file.hpp).
 [[nodiscard]] Result<void> write_atomic(const std::string& path, const std::string& text);
 
 // The alarm as the user sees it: number, code, message.
@@ -37,8 +40,13 @@ struct AlarmView {
 };
 AlarmView view_alarm(const Error& e, const config::Dialect* d);
 
-// CSV trace: one row per servo period. Rows go to "<path>.tmp" and the file
-// is renamed when the run ends (complete up to the last period run).
+// CSV trace: one row per servo period, written as the run goes (an
+// OutputFile: a regular file through a unique temporary renamed when the run
+// ends, complete up to the last period run; a device, a FIFO or standard
+// output in place). A write error (a full disk, a closed pipe) or passing
+// `limits.max_trace_bytes` ends the trace: no more rows are written, the
+// stop callback is called once (the run should stop), and finish() returns
+// the error (kFileAccess, or kTraceLimit with the rows up to the limit kept).
 class CsvTrace final : public machine::TraceSink {
  public:
   CsvTrace(std::string path, const config::MachineConfig& m, const machine::Plant* plant_hint);
@@ -46,15 +54,23 @@ class CsvTrace final : public machine::TraceSink {
   [[nodiscard]] Result<void> open();
   void row(const machine::TraceRow& r) override;
   [[nodiscard]] Result<void> finish();
+  void on_stop(std::function<void()> stop) { stop_ = std::move(stop); }
+  // The error that ended the trace early, if any.
+  const std::optional<Error>& error() const noexcept { return error_; }
 
  private:
   void header(const machine::TraceRow& r);
+  void flush_buffer();
+  void fail_with(Error e);
   std::string path_;
-  std::string tmp_;
   const config::MachineConfig& m_;
-  std::FILE* f_ = nullptr;
+  OutputFile out_;
+  bool opened_ = false;
+  std::uint64_t max_bytes_ = 0;
+  std::uint64_t bytes_ = 0;  // rows accepted (written or buffered)
   bool header_done_ = false;
-  bool failed_ = false;
+  std::optional<Error> error_;
+  std::function<void()> stop_;
   std::string buf_;
   std::vector<char> row_;  // one row's text, sized for the longest row by header()
 };

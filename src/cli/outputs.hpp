@@ -1,0 +1,54 @@
+// What a command writes besides its summary: the report, and how a run that
+// could not start, failed inside skipnc, or was stopped early is reported.
+// Every path here ends with a whole report when one was asked for.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include "cli/commands.hpp"
+#include "cli/guard.hpp"
+#include "cli/session.hpp"
+#include "machine/simulator.hpp"
+#include "report/report.hpp"
+
+namespace skipnc::cli {
+
+// The dialect whose numbers a report uses: the session's; before the session
+// has one (a bad machine file), the -d dialect, else fanuc. Every dialect
+// numbers skipnc's own alarms alike (config: 9090, SN9090; base.toml).
+const config::Dialect* report_dialect(const RunArgs& a, const Session* s);
+
+// Writes the report (`a.report`; nothing when none was asked for). Errors go
+// to standard error and make the returned value false.
+bool write_report(const RunArgs& a, const std::string& json);
+// True once a report was written whole by this process.
+bool report_written() noexcept;
+
+// The run could not start: the message on standard error, the report (when
+// asked for and not itself the cause), exit status 2.
+int start_failure(const RunArgs& a, const Error& e, const Session* s);
+
+// The last resort of main(): an exception reached the top. The report (when
+// asked for and not written yet) has the internal-error alarm (SN9000); exit 1.
+int internal_failure(const RunArgs* a, std::string_view what) noexcept;
+
+// Refuses, before anything runs, two outputs (report, trace, plots, DPRNT
+// file, persistent variables) that are one file, or an output that is one of
+// the inputs (program, machine file, scene file): kUsage naming both. A
+// refused report is not written at all when it is an input.
+[[nodiscard]] Result<void> check_outputs(const RunArgs& a, const Session& s);
+
+// A run that the simulator ended as interrupted because skipnc asked it to
+// (run_stop()): the alarm that says why. The processor-time limit is
+// cpu_limit, an output that failed is its own error (file_access,
+// trace_limit), a signal stays `interrupted` and names the signal.
+void explain_stop(machine::RunResult& r, const report::CsvTrace* trace,
+                  const config::MachineConfig& m);
+
+// Flushes standard output; an error when anything written to it was lost
+// (a full disk, a closed pipe).
+[[nodiscard]] Result<void> finish_stdout();
+
+}  // namespace skipnc::cli
