@@ -27,6 +27,9 @@ int main(int argc, char** argv) {
   run->add_option("-I,--include", run_args.include, "subprogram folder (repeatable)");
   run->add_option("--dprnt", run_args.dprnt, "file for DPRNT output (POPEN/PCLOS)");
   run->add_flag("-q,--quiet", run_args.quiet, "no summary on standard output");
+  run->add_option("--expect", run_args.expect,
+                  "CI check: #140=-0.05+-0.001, #140=vacant, status=completed, alarm=9061 "
+                  "(repeatable; exit status 3 when one fails)");
   run->add_option("--repeat", run_args.repeat,
                   "run N times with the probe's scatter; report mean, std dev, worst case")
       ->check(CLI::Range(1, 1000000));
