@@ -6,6 +6,7 @@
 #include "cli/repeat.hpp"
 #include "cli/plot.hpp"
 #include "cli/sweep.hpp"
+#include "cli/show.hpp"
 
 int main(int argc, char** argv) {
   using skipnc::cli::RunArgs;
@@ -75,6 +76,10 @@ int main(int argc, char** argv) {
   sweep->add_option("--seed", sweep_args.seed, "seed of the draws (default: the spec's)")
       ->check(CLI::Range(0LL, 9000000000000000000LL));
   sweep->add_flag("-q,--quiet", sweep_args.quiet, "no summary on standard output");
+  skipnc::cli::ShowArgs show_args;
+  auto* show = app.add_subcommand("show", "print a built-in file: machine NAME, machines, demo");
+  show->add_option("what", show_args.what, "machine, machines or demo")->required();
+  show->add_option("name", show_args.name, "the built-in machine's name (mill3, lathe2, ...)");
 
   try {
     app.parse(argc, argv);
@@ -91,5 +96,6 @@ int main(int argc, char** argv) {
   if (plot->parsed()) return skipnc::cli::plot_command(plot_args);
   if (dialects->parsed()) return skipnc::cli::dialects_command();
   if (sweep->parsed()) return skipnc::cli::sweep_command(sweep_args);
+  if (show->parsed()) return skipnc::cli::show_command(show_args);
   return 2;
 }

@@ -10,12 +10,6 @@
 namespace skipnc::cli {
 namespace {
 
-void shift_shape(machine::geo::Shape& sh, const machine::geo::Vec3& d) {
-  sh.lo = sh.lo + d;
-  sh.hi = sh.hi + d;
-  sh.center = sh.center + d;
-}
-
 // The scene with the parts, triggers and stops moved and the probe's scatter
 // changed.
 machine::Scene varied_scene(const machine::Scene& base, const config::MachineConfig& m,
@@ -23,10 +17,9 @@ machine::Scene varied_scene(const machine::Scene& base, const config::MachineCon
   machine::Scene sc = base;
   const machine::geo::Vec3 d{v.part_shift[0], v.part_shift[1], v.part_shift[2]};
   if (d != machine::geo::Vec3{}) {
-    for (auto& part : sc.probing.parts) {
-      for (auto& sh : part.solids) shift_shape(sh, d);
-      for (auto& sh : part.holes) shift_shape(sh, d);
-    }
+    // A part's shapes are in its own frame (docs/scene.md, frames): moving
+    // the part in machine coordinates moves the frame's origin.
+    for (auto& part : sc.probing.parts) part.place.origin = part.place.origin + d;
     auto along = [&](int axis) {
       const char name = m.axes[static_cast<std::size_t>(axis)].name;
       return name == 'X' ? d.x : name == 'Y' ? d.y : name == 'Z' ? d.z : 0.0;
