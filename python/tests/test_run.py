@@ -10,7 +10,7 @@ import pytest
 import skipnc
 
 SRC = os.environ["SKIPNC_SOURCE_DIR"]
-SWEEP = os.path.join(SRC, "tests", "golden", "sweep")
+SWEEP = os.path.join(SRC, "tests", "sweep")
 TOUCH = os.path.join(SWEEP, "touch.nc")
 PLANE = {"trigger": [{"signal": "X0.4", "axis": "Z", "at": -3.0, "direction": "decreasing"}]}
 

@@ -9,7 +9,7 @@ import pytest
 import skipnc
 
 SRC = os.environ["SKIPNC_SOURCE_DIR"]
-SPEC = os.path.join(SRC, "tests", "golden", "sweep", "touch.sweep.toml")
+SPEC = os.path.join(SRC, "tests", "sweep", "touch.sweep.toml")
 
 
 def test_rows_follow_the_exact_latch_rule():

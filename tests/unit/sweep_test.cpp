@@ -15,7 +15,7 @@
 namespace skipnc::cli {
 namespace {
 
-const std::string kDir = std::string(SKIPNC_SOURCE_DIR) + "/tests/golden/sweep/";
+const std::string kDir = std::string(SKIPNC_SOURCE_DIR) + "/tests/sweep/";
 
 SweepPlan load(const std::string& name, SweepOverrides o = {}) {
   SweepPlan p;
