@@ -46,6 +46,17 @@ Result<void> Interpreter::Impl::init(const AxisVec& start) {
     auto r = load_persistent(mc.persistent_vars, vars.persistent());
     if (!r) return r;
   }
+  for (const auto& [n, v] : setup.variables) {
+    if (VariableStore::is_persistent(n)) {
+      vars.persistent()[static_cast<std::size_t>(n - 500)] = Value::of(v);
+    } else if (VariableStore::is_local(n) || VariableStore::is_common(n)) {
+      vars.set(n, Value::of(v));
+    } else {
+      return fail(AlarmId::kUsage,
+                  "variable #" + std::to_string(n) +
+                      " cannot be set before a run (#1-#33, #100-#199, #500-#999)");
+    }
+  }
   auto file = std::make_unique<ProgramFile>();
   file->display = setup.program_name;
   if (setup.program_path.empty()) {

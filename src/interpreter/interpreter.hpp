@@ -31,6 +31,11 @@ struct Setup {
   std::string program_name = "program";   // shown in errors and reports
   std::vector<std::string> include_dirs;  // subprogram lookup; the program's folder when empty
   std::string dprnt_path;                 // DPRNT output file; empty: DPRNT lines go to messages only
+  // Macro variables set before the first block (#1-#33 of the main program,
+  // #100-#199, #500-#999; a #500-#999 value replaces the persistent file's
+  // and is written back only if the program changes a variable). Python
+  // module and sweeps.
+  std::vector<std::pair<int, double>> variables;
 };
 
 class CommandSink {
