@@ -161,7 +161,7 @@ int execute(const RunArgs& a, Session& s, interp::Setup setup, bool explain) {
   // --expect: checked on the run's outcome; variables as the control holds them.
   std::vector<std::string> failed;
   if (!expects.empty()) {
-    RunOutcome got;
+    ObservedRun got;
     got.status = in.result.status == machine::RunStatus::kCompleted   ? "completed"
                  : in.result.status == machine::RunStatus::kInterrupted ? "interrupted"
                                                                         : "alarm";

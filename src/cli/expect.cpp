@@ -80,7 +80,7 @@ Result<Expectation> parse_expectation(const std::string& text) {
   return e;
 }
 
-std::string check_expectation(const Expectation& e, const RunOutcome& o) {
+std::string check_expectation(const Expectation& e, const ObservedRun& o) {
   switch (e.kind) {
     case Expectation::Kind::kStatus:
       if (o.status == e.status) return {};

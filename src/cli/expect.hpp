@@ -31,7 +31,7 @@ struct Expectation {
 [[nodiscard]] Result<Expectation> parse_expectation(const std::string& text);
 
 // What the run gave, for the checks.
-struct RunOutcome {
+struct ObservedRun {
   std::string status;  // "completed", "alarm", "interrupted"
   int alarm = 0;       // alarm number, 0 when none
   std::vector<std::pair<std::string, std::optional<double>>>
@@ -39,6 +39,6 @@ struct RunOutcome {
 };
 
 // Empty when the expectation holds; else the line that says why not.
-std::string check_expectation(const Expectation& e, const RunOutcome& o);
+std::string check_expectation(const Expectation& e, const ObservedRun& o);
 
 }  // namespace skipnc::cli
