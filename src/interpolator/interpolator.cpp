@@ -65,6 +65,7 @@ const AxisVec& Interpolator::tick() noexcept {
     remaining -= left;
     pos_ = seg_->end;
     line_ = seg_->line;
+    source_ = seg_->source;
     tag_ = seg_->tag;
     queue_.pop_front();
     seg_ = queue_.front();
@@ -79,6 +80,7 @@ const AxisVec& Interpolator::tick() noexcept {
       speed_ *= scale_;
     }
     line_ = seg_->line;
+    source_ = seg_->source;
     tag_ = seg_->tag;
   } else {
     vel_ = AxisVec{};
@@ -112,6 +114,10 @@ void Interpolator::decelerate(double decel_mm_s2) noexcept {
   seg_time_ = 0.0;
   speed_ = v0;
   queue_.reset(ramp_start_ + ramp_dir_ * (v0 * v0 / (2.0 * decel_mm_s2)));
+}
+
+AxisVec Interpolator::segment_start() const noexcept {
+  return seg_ != nullptr ? seg_->start : pos_;
 }
 
 void Interpolator::set_position(const AxisVec& pos) noexcept {

@@ -21,6 +21,7 @@
 #include "gcode/ast.hpp"
 #include "gcode/parser.hpp"
 #include "gcode/source.hpp"
+#include "interpreter/codes.hpp"
 #include "interpreter/interpreter.hpp"
 
 namespace skipnc::interp {
@@ -56,6 +57,7 @@ struct Frame {
   gcode::SourcePos start;    // first block of the program
   gcode::SourcePos resume;   // next block to read when this frame runs again
   std::int64_t program = 0;  // O number (0: main program without one)
+  std::uint32_t context = 0;  // CallContext index
   int repeats_left = 0;      // M98 L / G65 L
   bool macro = false;        // G65/G66 call: owns a local-variable level
   bool modal_call = false;   // a G66 call (no re-entry of the modal macro inside)
@@ -102,6 +104,43 @@ struct Words {
 // What the interpreter is waiting for at a synchronisation point.
 enum class Pending : std::uint8_t { kNone, kRerun, kSkip };
 
+// The plan of one NC block (ncblock.cpp plan_block): its codes by group,
+// its one-shot action and the modal state it leaves. Built without changing
+// the interpreter.
+struct BlockPlan {
+  std::array<const CodeDef*, kGroupSlots> group{};  // the block's code of each modal group
+  std::array<std::uint32_t, kGroupSlots> column{};
+  Action action = Action::kNone;  // the group-00 command (G09 and G53 are flags)
+  int action_code = 0;
+  bool exact_stop = false;     // G09
+  bool machine_coord = false;  // G53
+  int tool_pos_offset = 0;     // 45..48 for G45-G48
+  bool call = false;           // G65 / G66 block
+  std::int64_t call_program = 0;
+  int call_repeats = 1;
+  bool spindle_changed = false;
+  ModalState next;
+};
+
+// What a block may change before it fails: restored when it does.
+struct BlockUndo {
+  ModalState modal;
+  AxisVec pos, tool_pos_offset, g45_delta, lathe_tool_offset, tool_offset_pending;
+  AxisVec local_shift, g92_shift;
+  double length_offset = 0.0, last_e = 0.0, last_cut_feed = 0.0, turning_cycle_z = 0.0;
+  bool have_turning_cycle_z = false, motion_since_sync = false, ended = false;
+  int wear_offset = 0;
+  std::size_t messages = 0;
+  Pending pending = Pending::kNone;
+  std::int64_t parts_count = 0;
+};
+
+// The commands of the block being executed, passed on when it succeeds.
+struct BlockBuffer final : CommandSink {
+  std::vector<canon::Stamped> cmds;
+  void emit(const canon::Stamped& cmd) override { cmds.push_back(cmd); }
+};
+
 struct PendingSkip {
   SkipRecord record;
   AxisVec target;  // programmed end point, machine coordinates
@@ -122,9 +161,11 @@ struct Interpreter::Impl {
 
   std::vector<std::unique_ptr<ProgramFile>> files;
   std::vector<Frame> frames;
+  std::vector<CallContext> contexts;  // every call path met; [0] the main program
   gcode::Block blk;
-  Words cur_words;      // the current block's words (reused: cleared, not rebuilt, per block)
-  gcode::RawBlock raw;  // the current block's text: valid until the next block is read
+  BlockBuffer block_buffer;  // the running block's commands (reused)
+  Words cur_words;           // the current block's words (reused: cleared, not rebuilt, per block)
+  gcode::RawBlock raw;       // the current block's text: valid until the next block is read
   gcode::SourcePos block_pos;  // position of the current block
   Pending pending = Pending::kNone;
   PendingSkip pending_skip;
@@ -215,7 +256,9 @@ struct Interpreter::Impl {
   // macro_call.cpp
   Result<void> find_program(std::int64_t number, ProgramFile*& file, gcode::SourcePos& pos,
                             SourceLoc where);
-  Result<void> call(std::int64_t program, int repeats, bool macro, SourceLoc where);
+  Result<void> call(std::int64_t program, int repeats, bool macro, SourceLoc where,
+                    bool modal_call = false);
+  std::uint32_t context_of(CallContext c);  // index of c, added when new
   Result<Step> return_from_sub(std::optional<std::int64_t> label, SourceLoc where);
   Result<void> macro_call(std::int64_t program, int repeats, bool modal_call, SourceLoc where);
   Result<void> collect_argument(const gcode::Word& w, const WordVal& v, int& ijk_set,
@@ -239,6 +282,29 @@ struct Interpreter::Impl {
   // ncblock.cpp
   Result<void> collect_words(Words& words);
   Result<Step> execute_nc(const Words& words, CommandSink& out);
+  Result<void> plan_block(const Words& words, BlockPlan& plan);
+  Result<void> plan_g_codes(const Words& words, BlockPlan& plan);
+  Result<void> plan_one_shot(const CodeDef& def, std::uint32_t col, BlockPlan& plan);
+  Result<void> plan_call(const Words& words, BlockPlan& plan);
+  Result<void> plan_addresses(const Words& words) const;
+  Result<void> plan_modal(const Words& words, BlockPlan& plan);
+  Result<int> offset_number(const Words& words, char letter) const;
+  Result<Step> commit_block(const Words& words, const BlockPlan& plan, CommandSink& out);
+  void commit_messages();
+  Result<Step> commit_call(const BlockPlan& plan);
+  void commit_modal(const Words& words, const BlockPlan& plan, CommandSink& out);
+  Result<void> commit_tool(const Words& words, const BlockPlan& plan, const ModalState& before,
+                           CommandSink& out);
+  void commit_spindle(const Words& words, bool changed, CommandSink& out);
+  void commit_shift(const Words& words, bool local);
+  void commit_tool_pos_offset(const Words& words, int g);
+  Result<Step> commit_action(const Words& words, const BlockPlan& plan, CommandSink& out,
+                             bool& moved);
+  Result<std::optional<Step>> commit_m_codes(const Words& words, CommandSink& out);
+  Result<Step> commit_sub_call(const Words& words);
+  Result<Step> commit_sub_return(const Words& words);
+  BlockUndo save_block_state() const;
+  void restore_block_state(const BlockUndo& u);
   double unit_mm() const noexcept { return modal.units == Units::kInch ? 25.4 : 1.0; }
   double word_length(const WordVal& w, bool rotary) const noexcept;  // program units
   double offset_total(int axis) const noexcept;                      // mm

@@ -54,6 +54,7 @@ struct TickOutput {
   AxisVec velocity;   // commanded velocity, mm/s
   double path_speed = 0.0;
   std::uint32_t line = 0;  // source line of the active motion
+  std::uint32_t source = 0;  // and its call context (canon::Stamped::source)
   bool skip_active = false;
   SkipHandshake handshake;
   // Torque limit the servo applies, % per axis (0: the servo's own limit).
@@ -87,6 +88,7 @@ struct SkipResult {
   canon::SkipSpec spec;
   AxisVec target;
   std::uint32_t line = 0;
+  std::uint32_t source = 0;
 };
 
 struct KernelConfig {
@@ -143,6 +145,7 @@ class Kernel {
  private:
   bool input_active(int index, bool level) const noexcept;
   void monitor_skip(const TickInput& in) noexcept;
+  void start_skip_block(const TickInput& in) noexcept;
   void trigger(double frac, const TickInput& in, int input, bool torque) noexcept;
   void begin_stop() noexcept;  // the skip's stop, once the control has seen the signal
   double advance_time_scale() noexcept;
