@@ -1,18 +1,18 @@
 #include "cli/commands.hpp"
 
+#include <fmt/format.h>
+#include <unistd.h>
+
 #include <atomic>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
-#include <fmt/format.h>
 #include <iostream>
-
-#include <unistd.h>
 
 #include "canon/print.hpp"
 #include "cli/expect.hpp"
-#include "cli/plot.hpp"
 #include "cli/outputs.hpp"
+#include "cli/plot.hpp"
 #include "cli/session.hpp"
 #include "config/skip_inputs.hpp"
 #include "core/embedded.hpp"
@@ -154,7 +154,8 @@ int execute(const RunArgs& a, Session& s, interp::Setup setup, bool explain) {
     if (auto f = trace->finish(); !f) output_error(f.error());
   }
   if (plot) {
-    const std::string text = setup.program_path.empty() ? setup.program_text : read_program_text(a.program);
+    const std::string text =
+        setup.program_path.empty() ? setup.program_text : read_program_text(a.program);
     if (auto w = plot->write(a.plot, s, in.result, {a.program, text, in.variables}); !w) {
       output_error(w.error());
     }
@@ -280,13 +281,13 @@ int canon_command(const RunArgs& a) {
     // be written ends the command too.
     if (run_stop().flag.load(std::memory_order_relaxed) || sink.failed()) {
       sink.flush();
-      const Error e = sink.failed()
-                          ? Error{AlarmId::kFileAccess, "cannot write standard output", {}, -1}
-                      : run_stop().why() == StopReason::kCpuLimit
-                          ? Error{AlarmId::kCpuLimit, "more than limits.max_cpu_s of processor time",
-                                  SourceLoc{a.program, (*in)->line(), 1}, -1}
-                          : Error{AlarmId::kInterrupted, "stopped by a signal",
-                                  SourceLoc{a.program, (*in)->line(), 1}, -1};
+      const Error e =
+          sink.failed() ? Error{AlarmId::kFileAccess, "cannot write standard output", {}, -1}
+          : run_stop().why() == StopReason::kCpuLimit
+              ? Error{AlarmId::kCpuLimit, "more than limits.max_cpu_s of processor time",
+                      SourceLoc{a.program, (*in)->line(), 1}, -1}
+              : Error{AlarmId::kInterrupted, "stopped by a signal",
+                      SourceLoc{a.program, (*in)->line(), 1}, -1};
       std::cerr << "skipnc: " << describe(e, &s.dialect) << "\n";
       return 1;
     }

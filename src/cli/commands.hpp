@@ -21,8 +21,7 @@ struct RunArgs {
   bool quiet = false;
   int repeat = 0;          // --repeat N: N runs with the probe's scatter (cli/repeat.hpp)
   long long seed = -1;     // --seed S: first seed of those runs (-1: the scene's)
-  bool progress = false;         // --progress: a line on standard error every few seconds
-  bool save_persistent = false;  // --save-persistent: --repeat saves the nominal run's #500-#999
+  bool progress = false;   // --progress: a line on standard error every few seconds
 };
 
 int run_command(const RunArgs& a);

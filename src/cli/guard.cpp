@@ -74,14 +74,18 @@ Watchdog::~Watchdog() {
   if (shown_ && o_.terminal && !o_.lines) std::fprintf(stderr, "\r%70s\r", "");
 }
 
-void Watchdog::start_run() noexcept { cpu0_.store(process_cpu_s()); }
+void Watchdog::start_run() noexcept {
+  cpu0_.store(process_cpu_s());
+}
 
 void Watchdog::update(double simulated_s, std::uint32_t line) noexcept {
   sim_s_.store(simulated_s, std::memory_order_relaxed);
   line_.store(line, std::memory_order_relaxed);
 }
 
-double Watchdog::run_cpu_s() const noexcept { return process_cpu_s() - cpu0_.load(); }
+double Watchdog::run_cpu_s() const noexcept {
+  return process_cpu_s() - cpu0_.load();
+}
 
 void Watchdog::show(double wall_s, bool final_line) {
   const double sim = sim_s_.load(std::memory_order_relaxed);

@@ -1,18 +1,17 @@
 // skipnc: command line (spec/cli.md).
 #include <CLI/CLI.hpp>
-#include <iostream>
-
 #include <cstdio>
 #include <exception>
+#include <iostream>
 #include <system_error>
 
 #include "cli/commands.hpp"
 #include "cli/guard.hpp"
 #include "cli/outputs.hpp"
-#include "cli/repeat.hpp"
 #include "cli/plot.hpp"
-#include "cli/sweep.hpp"
+#include "cli/repeat.hpp"
 #include "cli/show.hpp"
+#include "cli/sweep.hpp"
 
 namespace {
 
@@ -41,8 +40,6 @@ int run_main(int argc, char** argv) {
   run->add_flag("-q,--quiet", run_args.quiet, "no summary on standard output");
   run->add_flag("--progress", run_args.progress,
                 "a progress line on standard error every 2 s (also without a terminal)");
-  run->add_flag("--save-persistent", run_args.save_persistent,
-                "with --repeat: save the nominal run's #500-#999 (by default nothing is saved)");
   run->add_option("--expect", run_args.expect,
                   "CI check: #140=-0.05+-0.001, #140=vacant, status=completed, alarm=9061 "
                   "(repeatable; exit status 3 when one fails)");

@@ -50,7 +50,9 @@ const config::Dialect* report_dialect(const RunArgs& a, const Session* s) {
   return fallback ? &*fallback : nullptr;
 }
 
-bool report_written() noexcept { return g_report_written.load(); }
+bool report_written() noexcept {
+  return g_report_written.load();
+}
 
 bool write_report(const RunArgs& a, const std::string& json) {
   if (a.report.empty()) return true;
@@ -100,7 +102,8 @@ int internal_failure(const RunArgs* a, std::string_view what) noexcept {
 Result<void> check_outputs(const RunArgs& a, const Session& s) {
   std::vector<Named> outputs;
   std::vector<Named> inputs;
-  auto add = [](std::vector<Named>& list, std::string what, const std::string& name) -> Result<void> {
+  auto add = [](std::vector<Named>& list, std::string what,
+                const std::string& name) -> Result<void> {
     if (name.empty()) return {};
     auto t = resolve_output(name);
     if (!t) return std::unexpected(t.error());
@@ -127,16 +130,18 @@ Result<void> check_outputs(const RunArgs& a, const Session& s) {
 
   auto refuse = [&](const Named& o, const Named& other, bool input) {
     if (input && o.what == "--report") g_report_is_input.store(true);
-    return fail(AlarmId::kUsage, o.what + " " + o.name + " is the same file as " + other.what +
-                                     (other.what.starts_with("--") ? " " + other.name : " (" + other.name + ")") +
-                                     ": nothing was run, nothing written over");
+    return fail(AlarmId::kUsage,
+                o.what + " " + o.name + " is the same file as " + other.what +
+                    (other.what.starts_with("--") ? " " + other.name : " (" + other.name + ")") +
+                    ": nothing was run, nothing written over");
   };
   for (std::size_t i = 0; i < outputs.size(); ++i) {
     for (const auto& in : inputs) {
       if (same_file(outputs[i].target, in.target)) return refuse(outputs[i], in, true);
     }
     for (std::size_t j = i + 1; j < outputs.size(); ++j) {
-      if (same_file(outputs[i].target, outputs[j].target)) return refuse(outputs[j], outputs[i], false);
+      if (same_file(outputs[i].target, outputs[j].target))
+        return refuse(outputs[j], outputs[i], false);
     }
   }
   return {};

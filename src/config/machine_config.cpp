@@ -123,10 +123,6 @@ constexpr LimitKey kLimitKeys[] = {
     {"max_macro_levels", 1, 100, true, set_count<&Limits::max_macro_levels>},  // Fanuc: 4 or 5
     {"max_subprogram_levels", 1, 100, true, set_count<&Limits::max_subprogram_levels>},  // 10, 15
     {"max_cpu_s", 1e-3, 1e6, false, set_count<&Limits::max_cpu_s>},
-    {"max_message_bytes", 1, kGiB, true, set_count<&Limits::max_message_bytes>},
-    {"max_dprnt_bytes", 1, kGiB, true, set_count<&Limits::max_dprnt_bytes>},
-    {"max_named_variables", 1, 1e7, true, set_count<&Limits::max_named_variables>},
-    {"max_label_index_bytes", 4096, kGiB, true, set_count<&Limits::max_label_index_bytes>},
     {"max_trace_bytes", 1, 1024 * kGiB, true, set_count<&Limits::max_trace_bytes>},
 };
 
@@ -137,9 +133,9 @@ Result<void> load_limits(const toml::table& t, MachineConfig& m, std::string_vie
     if (k == nullptr) {
       std::string list;
       for (const auto& c : kLimitKeys) list += (list.empty() ? "" : ", ") + std::string(c.key);
-      return config_error(node, origin,
-                          "unknown key '" + std::string(key.str()) + "' in [limits] (known: " +
-                              list + ")");
+      return config_error(
+          node, origin,
+          "unknown key '" + std::string(key.str()) + "' in [limits] (known: " + list + ")");
     }
     auto v = get_number(node, origin, k->key, k->min, k->max);
     if (!v) return std::unexpected(v.error());

@@ -61,19 +61,14 @@ struct ParamSetting {
 
 // Bounds on what one run may take ([limits] in the machine file; each key's
 // range is in kLimitKeys, machine_config.cpp, and docs/machine.md). Each
-// bound that is passed is its own alarm, except the label index, which only
-// trades memory for reading time.
+// bound that is passed is its own alarm.
 struct Limits {
   std::int64_t max_ticks = 3'600'000'000;  // simulated time limit (1000 h at 1 ms)
   std::int64_t max_macro_statements = 100'000'000;
   int max_macro_levels = 4;
   int max_subprogram_levels = 10;
-  double max_cpu_s = 3600.0;                         // processor time of one run (cpu_limit)
-  std::int64_t max_message_bytes = 16LL << 20;       // messages kept for the report (message_limit)
-  std::int64_t max_dprnt_bytes = 64LL << 20;         // text of the --dprnt file (dprnt_limit)
-  std::int64_t max_named_variables = 100'000;        // #<name> variables (named_variable_limit)
-  std::int64_t max_label_index_bytes = 16LL << 20;   // N-label index of one program file
-  std::int64_t max_trace_bytes = 4LL << 30;          // the --trace file (trace_limit)
+  double max_cpu_s = 3600.0;                 // processor time of one run (cpu_limit)
+  std::int64_t max_trace_bytes = 4LL << 30;  // the --trace file (trace_limit)
 };
 
 struct MachineConfig {

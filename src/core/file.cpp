@@ -25,18 +25,20 @@ constexpr int kTemporaryAttempts = 64;
 constexpr std::string_view kTemporaryInfix = ".tmp-";
 constexpr std::size_t kTemporaryRandomChars = 6;
 
-std::string reason(int err) { return std::strerror(err); }
+std::string reason(int err) {
+  return std::strerror(err);
+}
 
 std::unexpected<Error> io_error(std::string_view what, const std::string& name, int err) {
-  return fail(AlarmId::kFileAccess,
-              std::string(what) + " '" + name + "': " + reason(err));
+  return fail(AlarmId::kFileAccess, std::string(what) + " '" + name + "': " + reason(err));
 }
 
 // "-", /dev/stdout, /dev/stderr, /dev/fd/N, /proc/self/fd/N: a descriptor.
 int descriptor_of(std::string_view name) noexcept {
   if (name == "-" || name == "/dev/stdout") return STDOUT_FILENO;
   if (name == "/dev/stderr") return STDERR_FILENO;
-  for (std::string_view prefix : {std::string_view("/dev/fd/"), std::string_view("/proc/self/fd/")}) {
+  for (std::string_view prefix :
+       {std::string_view("/dev/fd/"), std::string_view("/proc/self/fd/")}) {
     if (name.starts_with(prefix) && name.size() > prefix.size()) {
       int fd = -1;
       const char* first = name.data() + prefix.size();
@@ -53,8 +55,8 @@ std::string random_suffix() {
       "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789";
   thread_local std::mt19937_64 rng = [] {
     std::random_device rd;
-    const auto now = static_cast<std::uint64_t>(
-        std::chrono::steady_clock::now().time_since_epoch().count());
+    const auto now =
+        static_cast<std::uint64_t>(std::chrono::steady_clock::now().time_since_epoch().count());
     std::seed_seq seq{rd(), rd(), static_cast<unsigned>(::getpid()), static_cast<unsigned>(now),
                       static_cast<unsigned>(now >> 32)};
     return std::mt19937_64(seq);
@@ -148,7 +150,9 @@ bool same_file(const OutputTarget& a, const OutputTarget& b) noexcept {
   return false;
 }
 
-OutputFile::~OutputFile() { discard(); }
+OutputFile::~OutputFile() {
+  discard();
+}
 
 OutputFile::OutputFile(OutputFile&& o) noexcept
     : target_(std::move(o.target_)),

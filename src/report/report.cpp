@@ -373,7 +373,8 @@ void CsvTrace::row(const machine::TraceRow& r) {
     fail_with(Error{AlarmId::kTraceLimit,
                     "the trace reached limits.max_trace_bytes (" + std::to_string(max_bytes_) +
                         " bytes) at " + std::to_string(r.time_s) + " s",
-                    {}, -1});
+                    {},
+                    -1});
     return;
   }
   bytes_ += len;
