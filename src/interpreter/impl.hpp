@@ -54,13 +54,13 @@ inline constexpr int kWorkSystems = 7 + kExtraWorkSystems;
 // One level of the call stack.
 struct Frame {
   ProgramFile* file = nullptr;
-  gcode::SourcePos start;    // first block of the program
-  gcode::SourcePos resume;   // next block to read when this frame runs again
-  std::int64_t program = 0;  // O number (0: main program without one)
+  gcode::SourcePos start;     // first block of the program
+  gcode::SourcePos resume;    // next block to read when this frame runs again
+  std::int64_t program = 0;   // O number (0: main program without one)
   std::uint32_t context = 0;  // CallContext index
-  int repeats_left = 0;      // M98 L / G65 L
-  bool macro = false;        // G65/G66 call: owns a local-variable level
-  bool modal_call = false;   // a G66 call (no re-entry of the modal macro inside)
+  int repeats_left = 0;       // M98 L / G65 L
+  bool macro = false;         // G65/G66 call: owns a local-variable level
+  bool modal_call = false;    // a G66 call (no re-entry of the modal macro inside)
   std::vector<Loop> loops;
 };
 
@@ -309,7 +309,12 @@ struct Interpreter::Impl {
   double word_length(const WordVal& w, bool rotary) const noexcept;  // program units
   double offset_total(int axis) const noexcept;                      // mm
   double work_of(int axis, double machine_mm) const noexcept;        // program units
-  double machine_of(int axis, double work_units) const noexcept;     // mm
+  // The tool offsets on an axis (length, G45-G48, lathe tool offset), mm.
+  double tool_offset_total(int axis) const noexcept;
+  // A position variable's value: work_of, or with the tool offsets left in
+  // (the tool reference point) when the dialect says so for that variable.
+  double position_var(int axis, double machine_mm, bool tool_offsets) const noexcept;
+  double machine_of(int axis, double work_units) const noexcept;  // mm
   Result<void> set_tool_length(const Words& words, LengthComp mode);
   Result<void> data_setting(const Words& words, SourceLoc where);
 

@@ -36,9 +36,23 @@ Result<void> Interpreter::Impl::dwell(const Words& words, CommandSink& out) {
 }
 
 Result<void> Interpreter::Impl::reference_return(const Words& words, int g, CommandSink& out) {
-  (void)g;
-  // Through the intermediate point (X/Z absolute, U/W incremental) to the
-  // reference position, machine zero.
+  // G30: P2-P4 choose the 2nd-4th reference point (P omitted: the 2nd), from
+  // the machine file's [reference_points]; G28: the reference position,
+  // machine zero.
+  const AxisVec* point = nullptr;
+  if (g == 30) {
+    int p = 2;
+    if (words.has('P')) {
+      const double v = words.at('P').value;
+      if (v != 2.0 && v != 3.0 && v != 4.0) {
+        return fail(AlarmId::kBadValue, "G30 P must be 2, 3 or 4 (2nd-4th reference point)",
+                    loc(words.at('P').column));
+      }
+      p = static_cast<int>(v);
+    }
+    point = &mc.reference_points[static_cast<std::size_t>(p - 2)];
+  }
+  // Through the intermediate point (X/Z absolute, U/W incremental).
   AxisVec mid;
   AxisMask moved;
   auto t = axis_targets(words, false, mid, moved);
@@ -46,7 +60,7 @@ Result<void> Interpreter::Impl::reference_return(const Words& words, int g, Comm
   if (moved.empty()) return {};
   AxisVec ref = pos;
   for (int i = 0; i < axis_count; ++i) {
-    if (moved.has(i)) ref[i] = 0.0;
+    if (moved.has(i)) ref[i] = point != nullptr ? (*point)[i] : 0.0;
   }
   const bool linear = params.bit(1401, 1);
   emit(out, canon::Rapid{mid, linear});

@@ -82,6 +82,18 @@ double Interpreter::Impl::work_of(int axis, double machine_mm) const noexcept {
   return (machine_mm * axis_scale[static_cast<std::size_t>(axis)] - offset_total(axis)) / unit_mm();
 }
 
+double Interpreter::Impl::tool_offset_total(int axis) const noexcept {
+  double o = tool_pos_offset[axis] + lathe_tool_offset[axis];
+  if (axis == length_axis) o += length_offset;
+  return o;
+}
+
+double Interpreter::Impl::position_var(int axis, double machine_mm,
+                                       bool tool_offsets) const noexcept {
+  const double w = work_of(axis, machine_mm);
+  return tool_offsets ? w + tool_offset_total(axis) / unit_mm() : w;
+}
+
 double Interpreter::Impl::machine_of(int axis, double work_units) const noexcept {
   return (work_units * unit_mm() + offset_total(axis)) / axis_scale[static_cast<std::size_t>(axis)];
 }

@@ -247,21 +247,25 @@ Result<Step> Interpreter::Impl::skip_block(const Words& words, const AxisVec& ta
 }
 
 // The machine's answer to a skip block. The latched position is stored in
-// the dialect's variables, in work coordinates of the offsets active now
-// (tool length and G45-G48 included); without a signal the programmed end
+// the dialect's variables, in work coordinates of the offsets active now,
+// with the tool offsets in them or not as the dialect says (skip_tool_offsets:
+// the tool reference point, Fanuc-class); without a signal the programmed end
 // point is stored. The next block starts where the axes came to rest
 // (#5001..), which differs from the latch by the stopping distance.
 Result<void> Interpreter::Impl::finish_skip(const SyncState& s) {
   PendingSkip& ps = pending_skip;
   const AxisVec latch = s.triggered ? s.latch_machine : ps.target;
   skip_machine = latch;
-  for (int i = 0; i < axis_count; ++i) skip_work[i] = work_of(i, latch[i]);
+  for (int i = 0; i < axis_count; ++i) {
+    skip_work[i] = position_var(i, latch[i], dialect.sw.skip_tool_offsets);
+  }
   have_skip = true;
   pos = s.machine_position;
   SkipRecord rec = ps.record;
   rec.triggered = s.triggered;
   rec.time_s = s.time_s;
   rec.position = skip_work;
+  rec.position_has_tool_offsets = dialect.sw.skip_tool_offsets;
   rec.machine_position = latch;
   for (int i = 0; i < axis_count; ++i) rec.end_position[i] = work_of(i, pos[i]);
   if (s.triggered && s.input_index >= 0 && s.input_index < canon::SkipSpec::kMaxInputs) {
