@@ -7,6 +7,9 @@
 //   ncblock.cpp      address words, modal groups, offsets, data setting
 //   motion.cpp       rapid, feed, arc, dwell commands
 //   skip.cpp         the skip family (G31): dialect rules in, results out
+//   mill_codes.cpp   the mill's codes beside the core table: canned cycles,
+//                    G68/G16/G51/G51.1 frames, codes without effect, codes
+//                    not simulated (pure parts in cycles.cpp, transform.cpp)
 #pragma once
 
 #include <array>
@@ -21,7 +24,9 @@
 #include "gcode/ast.hpp"
 #include "gcode/parser.hpp"
 #include "gcode/source.hpp"
+#include "interpreter/cycles.hpp"
 #include "interpreter/interpreter.hpp"
+#include "interpreter/transform.hpp"
 
 namespace skipnc::interp {
 
@@ -186,6 +191,14 @@ struct Interpreter::Impl {
   bool dprnt_open = false;
   bool dprnt_used = false;
 
+  // mill_codes.cpp: canned cycle data (modal until G80 or group 01) and the
+  // program -> work frame (G68 rotation, G51 scaling, G51.1 mirror, G16).
+  cycles::Data cycle_data;
+  xform::Transform frame;
+  bool polar = false;           // G16
+  double polar_angle = 0.0;     // last polar angle (G91 adds to it)
+  double rotation_angle = 0.0;  // last G68 R (5400#0 RIN: G91 adds to it)
+
   Impl(const Setup& s);
   ~Impl();
 
@@ -246,6 +259,24 @@ struct Interpreter::Impl {
   double machine_of(int axis, double work_units) const noexcept;     // mm
   Result<void> set_tool_length(const Words& words, LengthComp mode);
   Result<void> data_setting(const Words& words, SourceLoc where);
+
+  // mill_codes.cpp
+  // The codes of mill_codes.cpp seen in one block.
+  struct MillRequest {
+    int frame_code = 0;  // 680 690 500 510 501 511 (x10), 0: none
+    SourceLoc frame_at;
+    std::optional<Cycle> cycle;
+    int skip_step = 0;  // G31.1-G31.3 (Mitsubishi multi-step skip function 1)
+  };
+  // The G31.n of the block being executed (0: G31 or no skip), for skip_block.
+  int skip_step = 0;
+  // Parameters of G31.n: the skip condition; the feed is the next number.
+  static constexpr int kSkipStepParam = 1175;
+  Result<bool> mill_code(int code, SourceLoc at, MillRequest& req);
+  Result<bool> apply_frame_code(const Words& words, const MillRequest& req);
+  bool frame_active() const noexcept { return polar || frame.active(); }
+  Result<void> frame_targets(const Words& words, AxisVec& target, AxisMask& moved);
+  Result<void> check_cutter_comp(SourceLoc where) const;
 
   // motion.cpp
   Result<Step> motion(const Words& words, CommandSink& out, bool skip, bool g53);

@@ -278,11 +278,17 @@ Result<Step> Interpreter::Impl::execute_nc(const Words& words, CommandSink& out)
   int g45 = 0;
   ModalState next = modal;
   std::optional<Motion> motion_code;
+  MillRequest mill;  // mill_codes.cpp: cycles, frames, codes without effect
   for (int i = 0; i < words.g_count; ++i) {
     const int code = words.g[static_cast<std::size_t>(i)];
     const Group grp = group_of(code);
     const SourceLoc at = loc(words.g_col[static_cast<std::size_t>(i)]);
-    if (grp == Group::kNone) return fail(AlarmId::kUnknownGCode, g_name(code), at);
+    if (grp == Group::kNone) {
+      auto known = mill_code(code, at, mill);
+      if (!known) return std::unexpected(known.error());
+      if (!*known) return fail(AlarmId::kUnknownGCode, g_name(code), at);
+      continue;
+    }
     if (mc.lathe()) {
       if (const char* why = lathe_refusal(code))
         return fail(AlarmId::kUnknownGCode, g_name(code) + why, at);
@@ -294,7 +300,11 @@ Result<Step> Interpreter::Impl::execute_nc(const Words& words, CommandSink& out)
         next.feed_mode = code == 980 ? FeedMode::kPerMinute : FeedMode::kPerRev;
         continue;
       }
-    } else if (code == 500 || code == 960 || code == 970) {
+    } else if (code == 500) {
+      auto known = mill_code(code, at, mill);  // G50 of the mill: scaling cancel
+      if (!known) return std::unexpected(known.error());
+      continue;
+    } else if (code == 960 || code == 970) {
       return fail(AlarmId::kUnknownGCode,
                   g_name(code) + " is a code of the lathe (G-code system A) only", at);
     }
@@ -448,6 +458,8 @@ Result<Step> Interpreter::Impl::execute_nc(const Words& words, CommandSink& out)
         return fail(AlarmId::kUnknownGCode, g_name(code), at);
     }
   }
+  skip_step = mill.skip_step;  // G31.1-G31.3: a G31 (skip.cpp)
+  if (skip_step != 0) g31 = true;
   const SourceLoc block_loc = loc(cur_col);
 
   // G65 / G66: every other word is an argument (collected in block order by
@@ -552,6 +564,9 @@ Result<Step> Interpreter::Impl::execute_nc(const Words& words, CommandSink& out)
     return fail(AlarmId::kPlaneChangeInComp, "plane change with G41/G42 active", block_loc);
   }
   if (motion_code) next.motion = *motion_code;
+  // Group 09: a cycle code sets it; G80 and any group-01 code end it.
+  if (motion_code && !mc.lathe()) next.cycle = Cycle::kNone;
+  if (mill.cycle) next.cycle = *mill.cycle;
 
   // Commit the modal part of the block: from here on the block's words are
   // interpreted in its own modes (G20/G21, G90/G91, G54...).
@@ -582,8 +597,27 @@ Result<Step> Interpreter::Impl::execute_nc(const Words& words, CommandSink& out)
   }
   if (spindle_changed) emit_spindle(out);
 
+  if (modal.cycle != Cycle::kNone && before.cycle == Cycle::kNone) {
+    // A new cycle mode: the initial level is the present Z (B-63944EN 5.1).
+    cycle_data = cycles::Data{};
+    const int z = axis_of_letter['Z' - 'A'];
+    if (z >= 0) {
+      const int x = axis_of_letter['X' - 'A'], y = axis_of_letter['Y' - 'A'];
+      cycle_data.initial =
+          xform::to_program(frame, {x >= 0 ? work_of(x, pos[x]) : 0.0,
+                                    y >= 0 ? work_of(y, pos[y]) : 0.0, work_of(z, pos[z])})[2];
+    }
+  }
+  bool frame_block = false;  // G68 G51 G51.1: the axis words are the mode's data
+  if (mill.frame_code != 0) {
+    auto r = apply_frame_code(words, mill);
+    if (!r) return undo(r.error());
+    frame_block = *r;
+  }
   bool moved = false;
-  if (g10) {
+  if (frame_block) {
+    // G68 X Y R, G51 X Y Z P, G51.1 X Y: centres and factors, no move.
+  } else if (g10) {
     auto r = data_setting(words, block_loc);
     if (!r) return undo(r.error());
   } else if (g50) {
@@ -615,7 +649,11 @@ Result<Step> Interpreter::Impl::execute_nc(const Words& words, CommandSink& out)
         modal.motion == Motion::kCwArc || modal.motion == Motion::kCcwArc
             ? (words.has('I') || words.has('J') || words.has('K') || words.has('R'))
             : false;
-    if (g31 || any_axis || arc_words || g45 != 0) {
+    if (modal.cycle != Cycle::kNone && !g31 && (any_axis || words.has('R'))) {
+      auto m = canned_cycle(words, out);
+      if (!m) return undo(m.error());
+      moved = true;
+    } else if (g31 || any_axis || arc_words || g45 != 0) {
       if (g45 != 0) {
         // G45-G48: the move is extended (G45, G47) or shortened (G46, G48)
         // by the D offset; G47/G48 by twice the offset. The direction is
@@ -635,6 +673,10 @@ Result<Step> Interpreter::Impl::execute_nc(const Words& words, CommandSink& out)
           tool_pos_offset[i] += shift;
           if (inc) g45_delta[i] = shift;
         }
+      }
+      if (!g31) {
+        auto c = check_cutter_comp(block_loc);
+        if (!c) return undo(c.error());
       }
       auto m = motion(words, out, g31, g53);
       if (!m) return undo(m.error());
