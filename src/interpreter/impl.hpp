@@ -113,6 +113,9 @@ struct PendingSkip {
   bool alarm_on_miss = false;
   SourceLoc loc;
   std::array<std::string, canon::SkipSpec::kMaxInputs> input_names;
+  int g37_axis = -1;         // G37: the measured axis (-1: a G31)
+  double g37_target = 0.0;   // G37: the measuring position, machine mm
+  double g37_epsilon = 0.0;  // G37: the allowed range, mm
 };
 
 struct Interpreter::Impl {
@@ -267,16 +270,21 @@ struct Interpreter::Impl {
     SourceLoc frame_at;
     std::optional<Cycle> cycle;
     int skip_step = 0;  // G31.1-G31.3 (Mitsubishi multi-step skip function 1)
+    bool g37 = false;   // automatic tool length measurement
   };
   // The G31.n of the block being executed (0: G31 or no skip), for skip_block.
   int skip_step = 0;
   // Parameters of G31.n: the skip condition; the feed is the next number.
   static constexpr int kSkipStepParam = 1175;
+  // G37: a dialect has it when it defines epsilon (mill_codes.cpp).
+  static constexpr int kG37EpsilonParam = 6254;
   Result<bool> mill_code(int code, SourceLoc at, MillRequest& req);
   Result<bool> apply_frame_code(const Words& words, const MillRequest& req);
   bool frame_active() const noexcept { return polar || frame.active(); }
   Result<void> frame_targets(const Words& words, AxisVec& target, AxisMask& moved);
   Result<void> check_cutter_comp(SourceLoc where) const;
+  Result<Step> g37_block(const Words& words, CommandSink& out);
+  Result<void> finish_g37(const SyncState& s);
 
   // motion.cpp
   Result<Step> motion(const Words& words, CommandSink& out, bool skip, bool g53);

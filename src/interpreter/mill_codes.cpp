@@ -8,9 +8,11 @@
 // centre), B-63944EN: 5.1 canned cycles, 6.x scaling, coordinate system
 // rotation and mirror image; Fanuc 0i-A connection manual B-63503EN-1
 // (parameters 5400#0 RIN, 5410).
+#include <cctype>
 #include <cmath>
 #include <string>
 
+#include "config/skip_inputs.hpp"
 #include "interpreter/codes.hpp"
 #include "interpreter/impl.hpp"
 
@@ -57,7 +59,8 @@ constexpr MillCode kMillCodes[] = {
     {71, Kind::kNotSimulated, Cycle::kNone, "cylindrical interpolation"},
     {411, Kind::kNotSimulated, Cycle::kNone, "normal direction control left"},
     {421, Kind::kNotSimulated, Cycle::kNone, "normal direction control right"},
-    {370, Kind::kNotSimulated, Cycle::kNone, "automatic tool length measurement"},
+    // G37: simulated where the dialect has its parameters (fanuc.toml).
+    {370, Kind::kNotSimulated, Cycle::kNone, "automatic tool length measurement on this control"},
     // G31.1-G31.3: simulated where the dialect has their parameters.
     {311, Kind::kNotSimulated, Cycle::kNone, "multi-step skip on this control"},
     {312, Kind::kNotSimulated, Cycle::kNone, "multi-step skip on this control"},
@@ -75,6 +78,20 @@ const MillCode* find(int code) {
   }
   return nullptr;
 }
+
+// G37 (B-63944EN "Automatic tool length measurement"): parameters 6241 the
+// measurement feed, 6251 gamma (the rapid approach ends gamma before the
+// measuring position), 6254 epsilon (the signal must come within epsilon of
+// it); the measuring position reached signals XAE, YAE, ZAE of the machining
+// centre are X4.0, X4.1, X4.2 (Fanuc connection manual, signal list).
+constexpr int kG37FeedParam = 6241;
+constexpr int kG37GammaParam = 6251;
+struct MeasureSignal {
+  char axis;
+  canon::SignalAddr addr;
+};
+constexpr MeasureSignal kMeasureSignals[] = {
+    {'X', {'X', 4, 0}}, {'Y', {'X', 4, 1}}, {'Z', {'X', 4, 2}}};
 
 std::string name(int code) {
   return "G" + std::to_string(code / 10) + (code % 10 ? "." + std::to_string(code % 10) : "");
@@ -98,6 +115,10 @@ Result<bool> Interpreter::Impl::mill_code(int code, SourceLoc at, MillRequest& r
     // Multi-step skip function 1: the dialect has its parameters
     // (mitsubishi.toml); a G31 whose signals and feed come from them.
     req.skip_step = code - 310;
+    return true;
+  }
+  if (code == 370 && dialect.param(kG37EpsilonParam) != nullptr) {
+    req.g37 = true;  // the dialect has G37's parameters (fanuc.toml)
     return true;
   }
   switch (c->kind) {
@@ -278,6 +299,114 @@ Result<void> Interpreter::Impl::check_cutter_comp(SourceLoc where) const {
                   " cutter radius compensation with D" + std::to_string(modal.d) + " = " +
                   std::to_string(r) + " mm is not simulated by skipnc",
               where);
+}
+
+// G37 X_ / Y_ / Z_: rapid to gamma before the measuring position, then at the
+// measurement feed until the measuring position reached signal of the axis,
+// at most epsilon past it. finish_g37 checks the range and corrects the
+// active H.
+Result<Step> Interpreter::Impl::g37_block(const Words& words, CommandSink& out) {
+  const SourceLoc at = loc(cur_col);
+  if (words.has('H')) {
+    return fail(AlarmId::kG37HCode, "H in a G37 block", loc(words.at('H').column));
+  }
+  int axis = -1;
+  canon::SignalAddr signal{};
+  for (const MeasureSignal& m : kMeasureSignals) {
+    if (!words.has(m.axis) || axis_of_letter[static_cast<std::size_t>(m.axis - 'A')] < 0) continue;
+    if (axis >= 0) return fail(AlarmId::kG37Axis, "G37 measures one axis only", at);
+    axis = axis_of_letter[static_cast<std::size_t>(m.axis - 'A')];
+    signal = m.addr;
+  }
+  if (axis < 0) {
+    return fail(AlarmId::kG37Axis, "G37 needs one of X, Y, Z (the measuring position)", at);
+  }
+  for (int i = 0; i < axis_count; ++i) {
+    const char c = axis_letter[static_cast<std::size_t>(i)];
+    if (i != axis && words.has(c)) return fail(AlarmId::kG37Axis, "G37 measures one axis only", at);
+  }
+  if (modal.h == 0 || modal.length == LengthComp::kOff) {
+    return fail(AlarmId::kG37NoOffset, "G37 without an active tool length offset (G43 H..)", at);
+  }
+  AxisVec target;
+  AxisMask moved;
+  auto t = axis_targets(words, false, target, moved);
+  if (!t) return std::unexpected(t.error());
+  const double dir = target[axis] > pos[axis] ? 1.0 : -1.0;
+  if (target[axis] == pos[axis]) {
+    return fail(AlarmId::kG37Axis, "G37 from the measuring position itself", at);
+  }
+  const double gamma = params.get(kG37GammaParam);
+  const double epsilon = params.get(kG37EpsilonParam);
+  const double feed = params.get(kG37FeedParam);
+  if (!(feed > 0.0)) return fail(AlarmId::kNoFeed, "G37 feed (parameter 6241) is 0", at);
+  AxisVec approach = pos;
+  approach[axis] = target[axis] - dir * gamma;
+  if (dir * (approach[axis] - pos[axis]) > 0.0) {
+    emit(out, canon::Rapid{approach, params.bit(1401, 1)});
+    pos = approach;
+  }
+  canon::Skip sk;
+  sk.target = pos;
+  sk.target[axis] = target[axis] + dir * epsilon;
+  sk.feed_mm_per_min = feed;
+  canon::SkipSpec& spec = sk.spec;
+  spec.kind = canon::SkipKind::kSkip;
+  spec.inputs[0] = signal;
+  spec.input_count = 1;
+  spec.stop = canon::SkipStop::kImmediate;
+  spec.latch = mc.latch;
+  spec.latch_delay_s = mc.latch_delay_s;
+  spec.servo_delay_comp = mc.servo_delay_comp;
+  pending_skip = PendingSkip{};
+  pending_skip.input_names[0] = config::signal_name(signal);
+  SkipRecord& rec = pending_skip.record;
+  rec.line = cur_line;
+  std::string_view text = raw.text;
+  while (!text.empty() && std::isspace(static_cast<unsigned char>(text.back()))) {
+    text.remove_suffix(1);
+  }
+  while (!text.empty() && std::isspace(static_cast<unsigned char>(text.front()))) {
+    text.remove_prefix(1);
+  }
+  rec.block = std::string(text);
+  rec.kind = spec.kind;
+  pending_skip.target = sk.target;
+  pending_skip.loc = at;
+  pending_skip.g37_axis = axis;
+  pending_skip.g37_target = target[axis];
+  pending_skip.g37_epsilon = epsilon;
+  emit(out, sk);
+  pos = sk.target;
+  motion_since_sync = true;
+  pending = Pending::kSkip;
+  return Step::kSync;
+}
+
+// The signal must have come within epsilon of the measuring position; the
+// difference between where it came and the measuring position is added to
+// the active H (its wear: the geometry stays as set), and the offset is
+// applied again.
+Result<void> Interpreter::Impl::finish_g37(const SyncState& s) {
+  const PendingSkip& ps = pending_skip;
+  if (!s.triggered) {
+    return fail(AlarmId::kG37Signal,
+                "the measuring position reached signal did not come within " +
+                    std::to_string(ps.g37_epsilon) + " mm of the measuring position",
+                ps.loc);
+  }
+  const double diff_mm = s.latch_machine[ps.g37_axis] - ps.g37_target;
+  if (std::fabs(diff_mm) > ps.g37_epsilon + 1e-9) {
+    return fail(AlarmId::kG37Signal,
+                "the measuring position reached signal came " + std::to_string(std::fabs(diff_mm)) +
+                    " mm before the measuring position (allowed: " +
+                    std::to_string(ps.g37_epsilon) + " mm)",
+                ps.loc);
+  }
+  auto& t = tools[static_cast<std::size_t>(modal.h)];
+  t.length_wear += modal.length == LengthComp::kMinus ? -diff_mm : diff_mm;
+  Words none;
+  return set_tool_length(none, modal.length);
 }
 
 // One block in canned cycle mode: the hole data are updated from the block

@@ -617,6 +617,10 @@ Result<Step> Interpreter::Impl::execute_nc(const Words& words, CommandSink& out)
   bool moved = false;
   if (frame_block) {
     // G68 X Y R, G51 X Y Z P, G51.1 X Y: centres and factors, no move.
+  } else if (mill.g37) {
+    auto m = g37_block(words, out);  // mill_codes.cpp
+    if (!m) return undo(m.error());
+    return *m;
   } else if (g10) {
     auto r = data_setting(words, block_loc);
     if (!r) return undo(r.error());

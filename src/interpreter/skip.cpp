@@ -309,6 +309,7 @@ Result<void> Interpreter::Impl::finish_skip(const SyncState& s) {
     return fail(AlarmId::kSkipMiss, "the block reached its end point without a skip signal",
                 ps.loc);
   }
+  if (ps.g37_axis >= 0) return finish_g37(s);  // mill_codes.cpp
   return {};
 }
 
