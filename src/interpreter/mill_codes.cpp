@@ -93,6 +93,9 @@ struct MeasureSignal {
 constexpr MeasureSignal kMeasureSignals[] = {
     {'X', {'X', 4, 0}}, {'Y', {'X', 4, 1}}, {'Z', {'X', 4, 2}}};
 
+// Most pecks of one G73/G83 hole (see canned_cycle).
+constexpr double kMaxPecks = 10000;
+
 std::string name(int code) {
   return "G" + std::to_string(code / 10) + (code % 10 ? "." + std::to_string(code % 10) : "");
 }
@@ -472,6 +475,14 @@ Result<Step> Interpreter::Impl::canned_cycle(const Words& words, CommandSink& ou
     // Other axes of the block (A, B, ...) are positioned with X and Y.
     AxisVec base = target;
     const cycles::Levels lv = cycles::resolve_levels(d, modal.distance == Distance::kIncremental);
+    if (cycles::pecks(modal.cycle) && std::fabs(lv.bottom - lv.r) / d.q > kMaxPecks) {
+      // A bound of skipnc's (the control has none): a Q far smaller than the
+      // depth would make millions of moves from one block.
+      return fail(AlarmId::kBadValue,
+                  "Q" + std::to_string(d.q) + " makes more than " +
+                      std::to_string(static_cast<int>(kMaxPecks)) + " pecks in one hole",
+                  words.has('Q') ? loc(words.at('Q').column) : at);
+    }
     h.initial = d.initial;
     h.r = lv.r;
     h.bottom = lv.bottom;
