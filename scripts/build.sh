@@ -1,13 +1,21 @@
 #!/usr/bin/env bash
-# Configures and builds one flavour: release (default) or asan (ASan + UBSan).
-# Usage: scripts/build.sh [release|asan]
+# Configures and builds one flavour, warnings as errors (SKIPNC_WERROR=ON; a
+# plain `cmake` build leaves them warnings):
+#   release  (default) build/, RelWithDebInfo, with the tests
+#   asan     build-asan/, Debug with AddressSanitizer + UndefinedBehaviorSanitizer
+#   demo     build/, only the skipnc binary (no tests)
+# Usage: scripts/build.sh [release|asan|demo]
 set -euo pipefail
 cd "$(dirname "$0")/.."
 flavour=${1:-release}
+targets=()
 case $flavour in
-  release) dir=build; flags=(-DCMAKE_BUILD_TYPE=RelWithDebInfo) ;;
-  asan) dir=build-asan; flags=(-DCMAKE_BUILD_TYPE=Debug -DSKIPNC_SANITIZE=ON) ;;
-  *) echo "build.sh: unknown flavour '$flavour' (release, asan)" >&2; exit 2 ;;
+  release) dir=build; flags=(-DCMAKE_BUILD_TYPE=RelWithDebInfo -DSKIPNC_TESTS=ON) ;;
+  asan) dir=build-asan; flags=(-DCMAKE_BUILD_TYPE=Debug -DSKIPNC_SANITIZE=ON -DSKIPNC_TESTS=ON) ;;
+  demo) dir=build; flags=(-DCMAKE_BUILD_TYPE=RelWithDebInfo -DSKIPNC_TESTS=OFF); targets=(--target skipnc) ;;
+  *) echo "build.sh: unknown flavour '$flavour' (release, asan, demo)" >&2; exit 2 ;;
 esac
-cmake -S . -B "$dir" -G Ninja "${flags[@]}" >/dev/null
-cmake --build "$dir" -j"$(nproc)"
+generator=()
+command -v ninja >/dev/null && [ ! -f "$dir/CMakeCache.txt" ] && generator=(-G Ninja)
+cmake -S . -B "$dir" "${generator[@]}" -DSKIPNC_WERROR=ON "${flags[@]}" >/dev/null
+cmake --build "$dir" -j"$(nproc)" "${targets[@]}"

@@ -1,14 +1,27 @@
 #!/usr/bin/env bash
-# Installs what skipnc needs to build and test, from Debian packages.
+# Installs what skipnc needs, from Debian packages.
+# Usage: scripts/setup.sh [demo|all]
+#   demo  only what building the skipnc binary needs (scripts/demo.sh)
+#   all   (default) also the tests, the Python module, the benchmarks, the
+#         plot page test (Chromium) and the fuzz stage (clang 16)
 # Idempotent: packages already present are left alone.
 set -euo pipefail
-pkgs=(cmake ninja-build g++ pkg-config libfmt-dev libcli11-dev libtomlplusplus-dev
-      nlohmann-json3-dev libgtest-dev libgmock-dev librapidcheck-dev libbenchmark-dev
-      python3
-      # the plot page test (tests/browser/plot_page_test.py): headless Chromium
-      chromium
-      # the fuzz stage (scripts/fuzz.sh): libFuzzer, ASan and UBSan of clang 16
-      clang-16 libclang-rt-16-dev)
+what=${1:-all}
+build=(cmake ninja-build g++ libfmt-dev libcli11-dev libtomlplusplus-dev nlohmann-json3-dev)
+case $what in
+  demo) pkgs=("${build[@]}") ;;
+  all)
+    pkgs=("${build[@]}" pkg-config libgtest-dev libgmock-dev librapidcheck-dev libbenchmark-dev
+          python3
+          # the Python module (python/) and its tests, the example, Dask sweeps
+          python3-dev pybind11-dev python3-numpy python3-pytest python3-matplotlib
+          python3-distributed
+          # the plot page test (tests/browser/plot_page_test.py): headless Chromium
+          chromium
+          # the fuzz stage (scripts/fuzz.sh): libFuzzer, ASan and UBSan of clang 16
+          clang-16 libclang-rt-16-dev) ;;
+  *) echo "setup.sh: unknown set '$what' (demo, all)" >&2; exit 2 ;;
+esac
 missing=()
 for p in "${pkgs[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

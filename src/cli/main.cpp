@@ -5,6 +5,7 @@
 #include "cli/commands.hpp"
 #include "cli/repeat.hpp"
 #include "cli/plot.hpp"
+#include "cli/show.hpp"
 
 int main(int argc, char** argv) {
   using skipnc::cli::RunArgs;
@@ -62,6 +63,11 @@ int main(int argc, char** argv) {
 
   auto* dialects = app.add_subcommand("dialects", "list the dialects and what differs");
 
+  skipnc::cli::ShowArgs show_args;
+  auto* show = app.add_subcommand("show", "print a built-in file: machine NAME, machines, demo");
+  show->add_option("what", show_args.what, "machine, machines or demo")->required();
+  show->add_option("name", show_args.name, "the built-in machine's name (mill3, lathe2, ...)");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -76,5 +82,6 @@ int main(int argc, char** argv) {
   if (demo->parsed()) return skipnc::cli::demo_command(demo_args);
   if (plot->parsed()) return skipnc::cli::plot_command(plot_args);
   if (dialects->parsed()) return skipnc::cli::dialects_command();
+  if (show->parsed()) return skipnc::cli::show_command(show_args);
   return 2;
 }

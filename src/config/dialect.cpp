@@ -89,6 +89,7 @@ Result<void> load_switches(const toml::table& t, std::string_view origin, Switch
       {"skip_ignored_when_locked", &sw.skip_ignored_when_locked},
       {"torque_skip", &sw.torque_skip},
       {"tool_position_offset", &sw.tool_position_offset},
+      {"g_same_group_last_wins", &sw.g_same_group_last_wins},
       {"calculator_decimal_default", &sw.calculator_decimal_default},
   };
   static constexpr Choice<SkipPMode> kPModes[] = {{"multi_step", SkipPMode::kMultiStep},

@@ -108,6 +108,9 @@ struct Switches {
   int dry_run_feed_param = 0;             // dry-run feed, mm/min
   int block_delete_param = 0;             // skipnc: block delete switches /1../9 (bit n-1)
   bool tool_position_offset = false;      // G45-G48 exist (NCT)
+  // Two G codes of one modal group in a block: the last one is used (true)
+  // or the block is refused with g_code_conflict (false).
+  bool g_same_group_last_wins = false;
   bool calculator_decimal_default = false;
 };
 

@@ -2,6 +2,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -11,13 +12,14 @@
 namespace skipnc::config {
 namespace {
 
-Result<AxisConfig> load_axis(const toml::table& t, std::string_view origin) {
+// An [[axis]] table over `a` (the axis of the same name the file extends, or
+// the defaults): only the keys it has change.
+Result<AxisConfig> load_axis(const toml::table& t, std::string_view origin, AxisConfig a) {
   auto keys = check_keys(t,
                          {"name", "min", "max", "rapid", "max_feed", "accel", "kp", "feedforward",
                           "torque_per_mm", "torque_max"},
                          origin, "[[axis]]");
   if (!keys) return std::unexpected(keys.error());
-  AxisConfig a;
   const auto* name = t.get("name");
   if (!name) return config_error(t, origin, "[[axis]] needs a name (\"X\", \"Y\", ...)");
   auto s = get_string(*name, origin, "name");
@@ -55,11 +57,12 @@ Result<AxisConfig> load_axis(const toml::table& t, std::string_view origin) {
   return a;
 }
 
+// Axis values over `v`: the axes the table names change, the others keep
+// what the extended file gave them.
 Result<AxisVec> load_axis_values(const toml::node& node, const MachineConfig& m,
-                                 std::string_view origin, std::string_view what) {
+                                 std::string_view origin, std::string_view what, AxisVec v) {
   const auto* t = node.as_table();
   if (!t) return config_error(node, origin, std::string(what) + " must be a table of axis values");
-  AxisVec v;
   for (const auto& [key, n] : *t) {
     const int i = key.str().size() == 1 ? m.axis_index(key.str()[0]) : -1;
     if (i < 0) {
@@ -86,7 +89,8 @@ Result<void> load_offsets(const toml::table& t, MachineConfig& m, std::string_vi
           node, origin,
           "unknown work offset '" + std::string(key.str()) + "' (known: EXT, G54 ... G59)");
     }
-    auto v = load_axis_values(node, m, origin, key.str());
+    auto v =
+        load_axis_values(node, m, origin, key.str(), m.work_offsets[static_cast<std::size_t>(idx)]);
     if (!v) return std::unexpected(v.error());
     m.work_offsets[static_cast<std::size_t>(idx)] = *v;
   }
@@ -111,7 +115,7 @@ Result<void> load_tools(const toml::table& t, MachineConfig& m, std::string_view
         {"length", "length_wear", "radius", "radius_wear", "x", "z", "x_wear", "z_wear", "tip"},
         origin, "a tool offset");
     if (!keys) return keys;
-    ToolOffset o;
+    ToolOffset o = m.tool_offsets.contains(number) ? m.tool_offsets[number] : ToolOffset{};
     for (const auto& [tk, tn] : *tab) {
       const auto name = tk.str();
       if (name == "tip") {
@@ -154,17 +158,82 @@ int MachineConfig::axis_index(char letter) const noexcept {
   return -1;
 }
 
-Result<MachineConfig> parse_machine(std::string_view text, std::string_view origin) {
+namespace {
+
+// How many files an `extends` chain may have: more is taken for a loop.
+constexpr int kMaxExtendsDepth = 8;
+
+Result<MachineConfig> parse_machine_at(std::string_view text, std::string_view origin, int depth);
+
+// The machine a file extends: a built-in machine's name, or a machine file
+// (relative to the folder of the file that names it). An error in that file
+// is reported at the `extends` key, with the other file's place in words.
+Result<MachineConfig> extended_machine(const toml::node& n, std::string_view origin, int depth) {
+  auto name = get_string(n, origin, "extends");
+  if (!name) return std::unexpected(name.error());
+  if (depth >= kMaxExtendsDepth) {
+    return config_error(n, origin,
+                        "extends: more than " + std::to_string(kMaxExtendsDepth) +
+                            " machine files extend each other (a loop?)");
+  }
+  const bool path = name->find('/') != std::string::npos || name->ends_with(".toml");
+  const EmbeddedFile* builtin = path ? nullptr : embedded_entry("machines/" + *name + ".toml");
+  Result<MachineConfig> base = std::unexpected(Error{});
+  std::string where;
+  if (builtin != nullptr) {
+    base = parse_machine_at(builtin->content, builtin->path, depth + 1);
+    where = "built-in " + *name;
+  } else {
+    std::filesystem::path file(*name);
+    if (file.is_relative() && !origin.starts_with("machines/")) {
+      // The folder of the file that names it, links followed (a golden
+      // test's machine file is a link to an example's).
+      std::error_code ec;
+      auto real = std::filesystem::canonical(std::filesystem::path(origin), ec);
+      if (ec) real = std::filesystem::path(origin);
+      file = real.parent_path() / file;
+    }
+    where = file.lexically_normal().string();
+    std::ifstream in(where, std::ios::binary);
+    if (!in) {
+      std::string known;
+      for (const auto& b : builtin_machine_names()) known += (known.empty() ? "" : ", ") + b;
+      return config_error(n, origin,
+                          "extends: '" + *name + "' is neither a built-in machine (" + known +
+                              ") nor a readable file ('" + where + "')");
+    }
+    std::stringstream ss;
+    ss << in.rdbuf();
+    const std::string text = ss.str();
+    base = parse_machine_at(text, where, depth + 1);
+  }
+  if (!base) {
+    const Error& e = base.error();
+    std::string at = where;
+    if (e.loc.line > 0) at += ":" + std::to_string(e.loc.line) + ":" + std::to_string(e.loc.column);
+    return config_error(n, origin, "extends " + *name + ": " + at + ": " + e.detail);
+  }
+  base->origin = where;
+  return base;
+}
+
+Result<MachineConfig> parse_machine_at(std::string_view text, std::string_view origin, int depth) {
   auto parsed = parse_toml(text, origin);
   if (!parsed) return std::unexpected(parsed.error());
   const toml::table& t = *parsed;
   auto keys = check_keys(t,
-                         {"name", "type", "dialect", "servo_period_ms", "inch", "in_position_mm",
-                          "spindle_max_rpm", "persistent_variables", "latch", "axis", "parameters",
-                          "work_offsets", "tool_offsets", "limits"},
+                         {"extends", "name", "type", "dialect", "servo_period_ms", "inch",
+                          "in_position_mm", "spindle_max_rpm", "persistent_variables", "latch",
+                          "axis", "parameters", "work_offsets", "tool_offsets", "limits"},
                          origin, "a machine file");
   if (!keys) return std::unexpected(keys.error());
   MachineConfig m;
+  if (const auto* n = t.get("extends")) {
+    auto base = extended_machine(*n, origin, depth);
+    if (!base) return std::unexpected(base.error());
+    m = std::move(*base);
+    m.extends = m.origin;
+  }
   m.origin = std::string(origin);
   if (const auto* n = t.get("name")) {
     auto s = get_string(*n, origin, "name");
@@ -194,7 +263,10 @@ Result<MachineConfig> parse_machine(std::string_view text, std::string_view orig
   if (const auto* n = t.get("servo_period_ms")) {
     auto v = get_number(*n, origin, "servo_period_ms", 0.0625, 100.0);
     if (!v) return std::unexpected(v.error());
+    const std::int64_t before = m.period_ns;
     m.period_ns = static_cast<std::int64_t>(std::llround(*v * 1e6));
+    // The time limit the extended machine set stays the same time.
+    if (!m.extends.empty()) m.limits.max_ticks = m.limits.max_ticks * before / m.period_ns;
   }
   if (const auto* n = t.get("inch")) {
     auto v = get_bool(*n, origin, "inch");
@@ -211,31 +283,58 @@ Result<MachineConfig> parse_machine(std::string_view text, std::string_view orig
     if (!s) return std::unexpected(s.error());
     m.persistent_vars = *s;
   }
+  // [[axis]]: a name the extended machine has changes that axis; a new name
+  // adds an axis after the others.
   const auto* axes = t.get("axis");
-  if (!axes || !axes->as_array() || axes->as_array()->empty()) {
-    return config_error(axes ? *axes : static_cast<const toml::node&>(t), origin,
-                        "a machine needs at least one [[axis]]");
+  if (axes == nullptr && m.axes.empty()) {
+    return config_error(t, origin, "a machine needs at least one [[axis]]");
   }
-  for (const auto& e : *axes->as_array()) {
+  if (axes != nullptr && (!axes->as_array() || axes->as_array()->empty())) {
+    return config_error(*axes, origin, "a machine needs at least one [[axis]]");
+  }
+  std::vector<bool> seen(m.axes.size(), false);
+  static const toml::array kNoAxes;
+  for (const auto& e : axes != nullptr ? *axes->as_array() : kNoAxes) {
     const auto* at = e.as_table();
     if (!at) return config_error(e, origin, "[[axis]] must be a table");
-    auto a = load_axis(*at, origin);
+    int existing = -1;
+    if (const auto* nm = at->get("name");
+        nm != nullptr && nm->value<std::string>() && nm->value<std::string>()->size() == 1) {
+      existing = m.axis_index((*nm->value<std::string>())[0]);
+    }
+    if (existing >= 0 && seen[static_cast<std::size_t>(existing)]) {
+      return config_error(e, origin,
+                          std::string("axis ") + m.axes[static_cast<std::size_t>(existing)].name +
+                              " is defined twice");
+    }
+    auto a = load_axis(*at, origin,
+                       existing >= 0 ? m.axes[static_cast<std::size_t>(existing)] : AxisConfig{});
     if (!a) return std::unexpected(a.error());
-    if (m.axis_index(a->name) >= 0) {
-      return config_error(e, origin, std::string("axis ") + a->name + " is defined twice");
-    }
-    if (m.axes.size() == static_cast<std::size_t>(kMaxAxes)) {
-      return config_error(e, origin, "at most " + std::to_string(kMaxAxes) + " axes");
-    }
     if (m.lathe() && a->name != 'X' && a->name != 'Z' && a->name != 'C') {
       // G-code system A: U, W and H are the incremental X, Z and C.
       return config_error(e, origin,
                           std::string("axis ") + a->name + ": a lathe has X, Z and optionally C");
     }
+    if (existing >= 0) {
+      m.axes[static_cast<std::size_t>(existing)] = *a;
+      seen[static_cast<std::size_t>(existing)] = true;
+      continue;
+    }
+    if (m.axes.size() == static_cast<std::size_t>(kMaxAxes)) {
+      return config_error(e, origin, "at most " + std::to_string(kMaxAxes) + " axes");
+    }
     m.axes.push_back(*a);
+    seen.push_back(true);
+  }
+  for (const auto& a : m.axes) {
+    if (m.lathe() && a.name != 'X' && a.name != 'Z' && a.name != 'C') {
+      return config_error(axes != nullptr ? *axes : static_cast<const toml::node&>(t), origin,
+                          std::string("axis ") + a.name + ": a lathe has X, Z and optionally C");
+    }
   }
   if (m.lathe() && (m.axis_index('X') < 0 || m.axis_index('Z') < 0)) {
-    return config_error(*axes, origin, "a lathe needs an X and a Z axis");
+    return config_error(axes != nullptr ? *axes : static_cast<const toml::node&>(t), origin,
+                        "a lathe needs an X and a Z axis");
   }
   if (const auto* n = t.get("latch")) {
     const auto* lt = n->as_table();
@@ -324,6 +423,12 @@ Result<MachineConfig> parse_machine(std::string_view text, std::string_view orig
     }
   }
   return m;
+}
+
+}  // namespace
+
+Result<MachineConfig> parse_machine(std::string_view text, std::string_view origin) {
+  return parse_machine_at(text, origin, 0);
 }
 
 Result<MachineConfig> load_machine_file(const std::string& path) {

@@ -68,7 +68,8 @@ struct Limits {
 
 struct MachineConfig {
   std::string name = "mill3";
-  std::string origin;  // file it came from, or "built-in mill3"
+  std::string origin;   // file it came from, or "built-in mill3"
+  std::string extends;  // the machine it extends (`extends`), as its origin; empty: none
   std::string dialect = "fanuc";
   MachineType type = MachineType::kMill;
   double spindle_max_rpm = 10000.0;  // the spindle's own top speed
@@ -93,6 +94,9 @@ struct MachineConfig {
   int axis_index(char letter) const noexcept;
 };
 
+// A machine file's text. `extends = "mill3"` (a built-in) or `extends =
+// "base.toml"` (a file, relative to `origin`'s folder) starts from that
+// machine; the keys of this file then change only what they name.
 [[nodiscard]] Result<MachineConfig> parse_machine(std::string_view toml_text,
                                                   std::string_view origin);
 [[nodiscard]] Result<MachineConfig> load_machine_file(const std::string& path);

@@ -114,6 +114,10 @@ void Interpolator::decelerate(double decel_mm_s2) noexcept {
   queue_.reset(ramp_start_ + ramp_dir_ * (v0 * v0 / (2.0 * decel_mm_s2)));
 }
 
+AxisVec Interpolator::segment_start() const noexcept {
+  return seg_ != nullptr ? seg_->start : pos_;
+}
+
 void Interpolator::set_position(const AxisVec& pos) noexcept {
   pos_ = pos;
   stop_now();

@@ -42,6 +42,8 @@ class Interpolator {
   // Sets the command position (after a follow-up: torque skip ends the block
   // at the mechanical stop position). Clears the queue.
   void set_position(const AxisVec& pos) noexcept;
+  // Start point of the segment being interpolated (the position when idle).
+  AxisVec segment_start() const noexcept;
 
  private:
   planner::Planner& queue_;

@@ -24,6 +24,7 @@
 #include "gcode/ast.hpp"
 #include "gcode/parser.hpp"
 #include "gcode/source.hpp"
+#include "interpreter/codes.hpp"
 #include "interpreter/cycles.hpp"
 #include "interpreter/interpreter.hpp"
 #include "interpreter/transform.hpp"
@@ -107,6 +108,59 @@ struct Words {
 // What the interpreter is waiting for at a synchronisation point.
 enum class Pending : std::uint8_t { kNone, kRerun, kSkip };
 
+// The codes of mill_codes.cpp seen in one block (planned, applied at commit).
+struct MillRequest {
+  int frame_code = 0;  // 680 690 500 510 501 511 (x10), 0: none
+  SourceLoc frame_at;
+  std::optional<Cycle> cycle;
+  std::optional<bool> polar;  // G16 (true) / G15 (false)
+  int skip_step = 0;          // G31.1-G31.3 (Mitsubishi multi-step skip function 1)
+  bool g37 = false;           // automatic tool length measurement
+};
+
+// The plan of one NC block (ncblock.cpp plan_block): its codes by group,
+// its one-shot action and the modal state it leaves. Built without changing
+// the interpreter.
+struct BlockPlan {
+  std::array<const CodeDef*, kGroupSlots> group{};  // the block's code of each modal group
+  std::array<std::uint32_t, kGroupSlots> column{};
+  Action action = Action::kNone;  // the group-00 command (G09 and G53 are flags)
+  int action_code = 0;
+  bool exact_stop = false;     // G09
+  bool machine_coord = false;  // G53
+  int tool_pos_offset = 0;     // 45..48 for G45-G48
+  bool call = false;           // G65 / G66 block
+  std::int64_t call_program = 0;
+  int call_repeats = 1;
+  bool spindle_changed = false;
+  MillRequest mill;  // cycles, frames, G16, G31.n, G37 (mill_codes.cpp)
+  ModalState next;
+};
+
+// What a block may change before it fails: restored when it does.
+struct BlockUndo {
+  ModalState modal;
+  AxisVec pos, tool_pos_offset, g45_delta, lathe_tool_offset, tool_offset_pending;
+  AxisVec local_shift, g92_shift;
+  double length_offset = 0.0, last_e = 0.0, last_cut_feed = 0.0, turning_cycle_z = 0.0;
+  bool have_turning_cycle_z = false, motion_since_sync = false, ended = false;
+  int wear_offset = 0;
+  std::size_t messages = 0;
+  Pending pending = Pending::kNone;
+  std::int64_t parts_count = 0;
+  cycles::Data cycle_data;
+  xform::Transform frame;
+  bool polar = false;
+  double polar_angle = 0.0, rotation_angle = 0.0;
+  int skip_step = 0;
+};
+
+// The commands of the block being executed, passed on when it succeeds.
+struct BlockBuffer final : CommandSink {
+  std::vector<canon::Stamped> cmds;
+  void emit(const canon::Stamped& cmd) override { cmds.push_back(cmd); }
+};
+
 struct PendingSkip {
   SkipRecord record;
   AxisVec target;  // programmed end point, machine coordinates
@@ -131,8 +185,9 @@ struct Interpreter::Impl {
   std::vector<std::unique_ptr<ProgramFile>> files;
   std::vector<Frame> frames;
   gcode::Block blk;
-  Words cur_words;      // the current block's words (reused: cleared, not rebuilt, per block)
-  gcode::RawBlock raw;  // the current block's text: valid until the next block is read
+  BlockBuffer block_buffer;  // the running block's commands (reused)
+  Words cur_words;           // the current block's words (reused: cleared, not rebuilt, per block)
+  gcode::RawBlock raw;       // the current block's text: valid until the next block is read
   gcode::SourcePos block_pos;  // position of the current block
   Pending pending = Pending::kNone;
   PendingSkip pending_skip;
@@ -255,6 +310,34 @@ struct Interpreter::Impl {
   // ncblock.cpp
   Result<void> collect_words(Words& words);
   Result<Step> execute_nc(const Words& words, CommandSink& out);
+  Result<void> plan_block(const Words& words, BlockPlan& plan);
+  Result<void> plan_g_codes(const Words& words, BlockPlan& plan);
+  Result<void> plan_one_shot(const CodeDef& def, std::uint32_t col, BlockPlan& plan);
+  Result<void> plan_call(const Words& words, BlockPlan& plan);
+  Result<void> plan_addresses(const Words& words) const;
+  Result<void> plan_mill(BlockPlan& plan) const;
+  void plan_cycle(BlockPlan& plan) const;
+  Result<void> plan_modal(const Words& words, BlockPlan& plan);
+  Result<int> offset_number(const Words& words, char letter) const;
+  Result<Step> commit_block(const Words& words, const BlockPlan& plan, CommandSink& out);
+  void commit_messages();
+  Result<Step> commit_call(const BlockPlan& plan);
+  void commit_modal(const Words& words, const BlockPlan& plan, CommandSink& out);
+  Result<void> commit_tool(const Words& words, const BlockPlan& plan, const ModalState& before,
+                           CommandSink& out);
+  void commit_spindle(const Words& words, bool changed, CommandSink& out);
+  void commit_shift(const Words& words, bool local);
+  void commit_tool_pos_offset(const Words& words, int g);
+  void commit_cycle_start(const ModalState& before);
+  Result<std::optional<Step>> commit_mill(const Words& words, const BlockPlan& plan,
+                                          CommandSink& out, bool& moved);
+  Result<Step> commit_action(const Words& words, const BlockPlan& plan, CommandSink& out,
+                             bool& moved);
+  Result<std::optional<Step>> commit_m_codes(const Words& words, CommandSink& out);
+  Result<Step> commit_sub_call(const Words& words);
+  Result<Step> commit_sub_return(const Words& words);
+  BlockUndo save_block_state() const;
+  void restore_block_state(const BlockUndo& u);
   double unit_mm() const noexcept { return modal.units == Units::kInch ? 25.4 : 1.0; }
   double word_length(const WordVal& w, bool rotary) const noexcept;  // program units
   double offset_total(int axis) const noexcept;                      // mm
@@ -264,21 +347,13 @@ struct Interpreter::Impl {
   Result<void> data_setting(const Words& words, SourceLoc where);
 
   // mill_codes.cpp
-  // The codes of mill_codes.cpp seen in one block.
-  struct MillRequest {
-    int frame_code = 0;  // 680 690 500 510 501 511 (x10), 0: none
-    SourceLoc frame_at;
-    std::optional<Cycle> cycle;
-    int skip_step = 0;  // G31.1-G31.3 (Mitsubishi multi-step skip function 1)
-    bool g37 = false;   // automatic tool length measurement
-  };
   // The G31.n of the block being executed (0: G31 or no skip), for skip_block.
   int skip_step = 0;
   // Parameters of G31.n: the skip condition; the feed is the next number.
   static constexpr int kSkipStepParam = 1175;
   // G37: a dialect has it when it defines epsilon (mill_codes.cpp).
   static constexpr int kG37EpsilonParam = 6254;
-  Result<bool> mill_code(int code, SourceLoc at, MillRequest& req);
+  Result<bool> mill_code(int code, SourceLoc at, MillRequest& req) const;
   Result<bool> apply_frame_code(const Words& words, const MillRequest& req);
   bool frame_active() const noexcept { return polar || frame.active(); }
   Result<void> frame_targets(const Words& words, AxisVec& target, AxisMask& moved);

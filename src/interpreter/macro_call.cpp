@@ -5,13 +5,19 @@
 // O10), in the running file, the main program file and every file already
 // loaded; then on the include path (-I, else the main program's folder), in
 // order, as the files O<n>.nc, O<n>.NC, o<n>.nc, <n>.nc, O<n>, and with the
-// number padded to four digits (O0010.nc, O0010). A program can only name a
+// number padded to four digits (O0010.nc, O0010); then inside the folder's
+// library files (*.nc, *.txt, *.prg, *.tap holding several programs, like a
+// punched ALL-PROG file), in name order. An -I that names a file makes that
+// file a library. A program can only name a
 // number: the file name is built here from digits, so no path a program
 // writes can reach outside the include folders, and a file found there
 // through a link that leads outside them is refused.
 #include <algorithm>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <string_view>
+#include <vector>
 
 #include "interpreter/impl.hpp"
 
@@ -30,6 +36,45 @@ bool inside(const fs::path& p, const fs::path& dir) {
   if (ec) return false;
   auto r = std::mismatch(rd.begin(), rd.end(), rp.begin(), rp.end());
   return r.first == rd.end();
+}
+
+// The file names that hold program O<n> alone, in the order they are tried.
+std::vector<std::string> program_file_names(std::int64_t number) {
+  const std::string n = std::to_string(number);
+  std::vector<std::string> names = {"O" + n + ".nc", "O" + n + ".NC", "o" + n + ".nc", n + ".nc",
+                                    "O" + n};
+  if (number < 1000) {
+    char padded[24];
+    std::snprintf(padded, sizeof padded, "%04lld", static_cast<long long>(number));
+    names.push_back("O" + std::string(padded) + ".nc");
+    names.push_back("O" + std::string(padded));
+  }
+  return names;
+}
+
+// The endings of the files of an include folder that are searched as
+// libraries (several programs in one file, like a punched ALL-PROG file).
+constexpr std::string_view kLibraryEndings[] = {".nc",  ".NC",  ".txt", ".TXT",
+                                                ".prg", ".PRG", ".tap", ".TAP"};
+
+// The library files of `dir` in name order: files with a library ending,
+// other than the ones named after the program (tried before), that stay
+// inside the folder when links are followed.
+std::vector<fs::path> library_files(const fs::path& dir, const std::vector<std::string>& skip) {
+  std::vector<fs::path> out;
+  std::error_code ec;
+  for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
+    const fs::path& p = it->path();
+    const std::string name = p.filename().string();
+    const bool library =
+        std::ranges::any_of(kLibraryEndings, [&](std::string_view e) { return name.ends_with(e); });
+    if (!library || std::ranges::find(skip, name) != skip.end()) continue;
+    std::error_code fe;
+    if (!fs::is_regular_file(p, fe) || !inside(p, dir)) continue;
+    out.push_back(p);
+  }
+  std::ranges::sort(out);
+  return out;
 }
 
 }  // namespace
@@ -97,44 +142,83 @@ Result<void> Interpreter::Impl::find_program(std::int64_t number, ProgramFile*& 
                                                                 : parent.string());
   }
   const std::string n = std::to_string(number);
-  std::vector<std::string> names = {"O" + n + ".nc", "O" + n + ".NC", "o" + n + ".nc", n + ".nc",
-                                    "O" + n};
-  if (number < 1000) {
-    char padded[24];
-    std::snprintf(padded, sizeof padded, "%04lld", static_cast<long long>(number));
-    names.push_back("O" + std::string(padded) + ".nc");
-    names.push_back("O" + std::string(padded));
-  }
+  const std::vector<std::string> names = program_file_names(number);
+  // A file not loaded yet: opened, scanned, kept in `files`. Null when it is
+  // already loaded (its programs were searched above).
+  auto load = [&](const fs::path& p) -> Result<ProgramFile*> {
+    for (const auto& f : files) {
+      std::error_code ec;
+      if (!f->path.empty() && fs::equivalent(f->path, p, ec)) return nullptr;
+    }
+    auto pf = std::make_unique<ProgramFile>();
+    pf->path = p.string();
+    pf->display = p.filename().string();
+    auto src = gcode::open_file_source(pf->path, pf->display);
+    if (!src) return std::unexpected(src.error());
+    pf->src = std::move(*src);
+    files.push_back(std::move(pf));
+    return files.back().get();
+  };
+  std::vector<std::string> libraries_tried;
+  // A library: a file holding several programs (%, O9810 ... M99, O9811 ...
+  // M99, %), searched for the O number only.
+  auto search_library = [&](const fs::path& p) -> Result<bool> {
+    libraries_tried.push_back(p.filename().string());
+    auto pf = load(p);
+    if (!pf) return std::unexpected(pf.error());
+    if (*pf == nullptr) return false;
+    return scan(**pf);
+  };
   for (const auto& d : dirs) {
+    std::error_code ec;
+    if (fs::is_regular_file(d, ec)) {  // -I ALL-PROG.TXT: a library file
+      auto r = search_library(fs::path(d));
+      if (!r) return std::unexpected(r.error());
+      if (*r) return {};
+      continue;
+    }
     const fs::path dir(d.empty() ? "." : d);
     for (const auto& name : names) {
       const fs::path p = dir / name;
-      std::error_code ec;
       if (!fs::is_regular_file(p, ec)) continue;
       if (!inside(p, dir)) {
         return fail(AlarmId::kProgramNotFound,
                     "program O" + n + ": '" + p.string() + "' leads outside the include folder",
                     where);
       }
-      auto pf = std::make_unique<ProgramFile>();
-      pf->path = p.string();
-      pf->display = p.filename().string();
-      auto src = gcode::open_file_source(pf->path, pf->display);
-      if (!src) return std::unexpected(src.error());
-      pf->src = std::move(*src);
-      ProgramFile* raw_pf = pf.get();
-      files.push_back(std::move(pf));
-      auto r = scan(*raw_pf);
+      auto pf = load(p);
+      if (!pf) return std::unexpected(pf.error());
+      if (*pf == nullptr) continue;
+      auto r = scan(**pf);
       if (!r) return std::unexpected(r.error());
       if (*r) return {};
       // A file named after the program without an O block: run it from the top.
-      file = raw_pf;
+      file = *pf;
       at = gcode::SourcePos{};
-      raw_pf->programs.emplace(number, at);
+      (*pf)->programs.emplace(number, at);
       return {};
     }
+    for (const fs::path& p : library_files(dir, names)) {
+      auto r = search_library(p);
+      if (!r) return std::unexpected(r.error());
+      if (*r) return {};
+    }
   }
-  return fail(AlarmId::kProgramNotFound, "program O" + n + " not found", where);
+  std::string detail = "program O" + n + " not found: looked in the programs loaded, then in";
+  for (const auto& d : dirs) detail += " '" + (d.empty() ? std::string(".") : d) + "'";
+  detail += " for";
+  for (const auto& name : names) detail += " " + name;
+  if (!libraries_tried.empty()) {
+    detail += ", and for O" + n + " inside";
+    constexpr std::size_t kShown = 8;  // library names listed; the rest are counted
+    for (std::size_t i = 0; i < libraries_tried.size() && i < kShown; ++i) {
+      detail += " " + libraries_tried[i];
+    }
+    if (libraries_tried.size() > kShown) {
+      detail += " and " + std::to_string(libraries_tried.size() - kShown) + " more files";
+    }
+  }
+  return fail(AlarmId::kProgramNotFound, detail, where);
 }
 
 // Nesting (Fanuc): G65/G66 macro calls up to 4 levels, M98 subprogram calls

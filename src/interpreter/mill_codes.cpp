@@ -111,7 +111,7 @@ double scaled_word(const WordVal& w, double increment, bool calculator) {
 // A G code that the core table does not hold. Returns false when the code
 // is not a code of the mill here either (the caller raises the improper G
 // code alarm).
-Result<bool> Interpreter::Impl::mill_code(int code, SourceLoc at, MillRequest& req) {
+Result<bool> Interpreter::Impl::mill_code(int code, SourceLoc at, MillRequest& req) const {
   const MillCode* c = find(code);
   if (c == nullptr || mc.lathe()) return false;
   if (code >= 311 && code <= 313 && dialect.param(kSkipStepParam) != nullptr) {
@@ -131,7 +131,7 @@ Result<bool> Interpreter::Impl::mill_code(int code, SourceLoc at, MillRequest& r
     case Kind::kFrame:
       if (code == 150 || code == 160) {
         // Group 17: changes only how X and Y are read, from this block on.
-        polar = code == 160;
+        req.polar = code == 160;
         return true;
       }
       if (req.frame_code != 0) {

@@ -1,50 +1,33 @@
-// Address words and modal groups. Order of execution inside one block
-// (Fanuc): messages; G65 call; F S T; modal G codes (units first); data
-// setting and coordinate shifts (G10 G52 G92); dwell; motion; M codes.
+// Address words and the block executor. A block runs in two stages:
+//   plan    (plan_block) reads the words, finds every G code in the code
+//           table (codes.cpp), checks groups, addresses and values, and
+//           builds the block's modal state in a BlockPlan; nothing of the
+//           interpreter changes;
+//   commit  (commit_block) applies the plan in the control's order, one
+//           function per step, emitting into the block's buffer.
+// A block that raises an alarm in either stage emits nothing and leaves
+// the interpreter as it was (execute_nc: undo record + buffer).
+//
+// Order of execution inside one block (Fanuc; cf. LinuxCNC convert_g):
+//   1. sequence number, (MSG, ...) messages
+//   2. G65 / G66 macro call (every other word is an argument)
+//   3. F, S, T, D and the modal groups (units, plane, distance, ...)
+//   4. tool length offset (group 08); lathe T offset
+//   5. spindle M03/M04/M05
+//   6. one-shot action: G10 data setting, G50/G92 coordinate setting, G52,
+//      G04 dwell, G28/G30 reference return
+//   7. motion (group 01, G31 skip, G45-G48)
+//   8. other M codes (M00 M01 M02 M30 M98 M99, machine M codes)
+//   9. G66 modal macro after a block that moved
 #include <algorithm>
 #include <bit>
 #include <cmath>
 
+#include "interpreter/codes.hpp"
 #include "interpreter/impl.hpp"
 
 namespace skipnc::interp {
 namespace {
-
-enum class Group : std::uint8_t {
-  kNone,
-  k00,
-  k01,
-  k02,
-  k03,
-  k05,
-  k06,
-  k07,
-  k08,
-  k09,
-  k10,
-  k12,
-  k14,
-  k15
-};
-
-struct GDef {
-  int code;  // x10
-  Group group;
-};
-
-// The G codes this interpreter executes. Anything else is an improper G code.
-constexpr GDef kGCodes[] = {
-    {0, Group::k01},   {10, Group::k01},  {20, Group::k01},  {30, Group::k01},  {40, Group::k00},
-    {90, Group::k00},  {100, Group::k00}, {170, Group::k02}, {180, Group::k02}, {190, Group::k02},
-    {200, Group::k06}, {210, Group::k06}, {280, Group::k00}, {300, Group::k00}, {310, Group::k00},
-    {400, Group::k07}, {410, Group::k07}, {420, Group::k07}, {430, Group::k08}, {440, Group::k08},
-    {450, Group::k00}, {460, Group::k00}, {470, Group::k00}, {480, Group::k00}, {490, Group::k08},
-    {520, Group::k00}, {530, Group::k00}, {540, Group::k14}, {550, Group::k14}, {560, Group::k14},
-    {570, Group::k14}, {580, Group::k14}, {590, Group::k14}, {541, Group::k14}, {610, Group::k15},
-    {640, Group::k15}, {650, Group::k00}, {660, Group::k12}, {670, Group::k12}, {800, Group::k09},
-    {900, Group::k03}, {910, Group::k03}, {920, Group::k00}, {940, Group::k05}, {950, Group::k05},
-    {980, Group::k10}, {990, Group::k10}, {500, Group::k00}, {960, Group::k02}, {970, Group::k02},
-};
 
 // G codes that G-code system A (a lathe) gives another meaning or does not
 // have, with what to write instead. The turning cycles are not modelled.
@@ -72,13 +55,6 @@ const char* lathe_refusal(int code) {
     default:
       return nullptr;
   }
-}
-
-Group group_of(int code) {
-  for (const auto& d : kGCodes) {
-    if (d.code == code) return d.group;
-  }
-  return Group::kNone;
 }
 
 std::string g_name(int code) {
@@ -265,252 +241,117 @@ Result<void> Interpreter::Impl::data_setting(const Words& words, SourceLoc where
   return fail(AlarmId::kBadValue, "G10 L" + std::to_string(l) + " is not supported", where);
 }
 
-Result<Step> Interpreter::Impl::execute_nc(const Words& words, CommandSink& out) {
-  for (const auto& c : blk.comments) {
-    const std::string& t = blk.names[static_cast<std::size_t>(c.text)];
-    if (t.size() >= 4 && t.compare(0, 4, "MSG,") == 0) messages.push_back(t.substr(4));
-  }
-  if (blk.has_n) modal.seq = static_cast<int>(blk.n % 100000000);
+// ---------------------------------------------------------------------------
+// Plan: nothing of the interpreter changes here.
 
-  // Classify the G codes.
-  bool g65 = false, g31 = false, g53 = false, g04 = false, g10 = false, g28 = false, g52 = false,
-       g92 = false, g50 = false;
-  int g45 = 0;
-  ModalState next = modal;
-  std::optional<Motion> motion_code;
-  MillRequest mill;  // mill_codes.cpp: cycles, frames, codes without effect
+// Finds each G word in the code table, puts it in its group's slot and
+// takes the group-00 action. Two codes of one modal group: the dialect's
+// alarm, or the last one wins where the control says so
+// (g_same_group_last_wins). Two group-00 actions (G04 G31, G31 G28,
+// G31 G92) are always refused: the block could do only one of them.
+Result<void> Interpreter::Impl::plan_g_codes(const Words& words, BlockPlan& plan) {
+  const bool lathe = mc.lathe();
   for (int i = 0; i < words.g_count; ++i) {
     const int code = words.g[static_cast<std::size_t>(i)];
-    const Group grp = group_of(code);
-    const SourceLoc at = loc(words.g_col[static_cast<std::size_t>(i)]);
-    if (grp == Group::kNone) {
-      auto known = mill_code(code, at, mill);
-      if (!known) return std::unexpected(known.error());
-      if (!*known) return fail(AlarmId::kUnknownGCode, g_name(code), at);
-      continue;
+    const std::uint32_t col = words.g_col[static_cast<std::size_t>(i)];
+    const SourceLoc at = loc(col);
+    const CodeDef* def = find_g(code, lathe);
+    if (def == nullptr) {
+      auto mill = mill_code(code, at, plan.mill);  // mill_codes.cpp
+      if (!mill) return std::unexpected(mill.error());
+      if (*mill) continue;
+      if (lathe) {
+        if (const char* why = lathe_refusal(code))
+          return fail(AlarmId::kUnknownGCode, g_name(code) + why, at);
+      } else if (find_g(code, true) != nullptr) {
+        return fail(AlarmId::kUnknownGCode,
+                    g_name(code) + " is a code of the lathe (G-code system A) only", at);
+      }
+      return fail(AlarmId::kUnknownGCode, g_name(code), at);
     }
-    if (mc.lathe()) {
-      if (const char* why = lathe_refusal(code))
-        return fail(AlarmId::kUnknownGCode, g_name(code) + why, at);
-      if (code == 900) {
-        motion_code = Motion::kTurningCycle;  // system A: G90 is a cycle, not absolute mode
-        continue;
-      }
-      if (code == 980 || code == 990) {
-        next.feed_mode = code == 980 ? FeedMode::kPerMinute : FeedMode::kPerRev;
-        continue;
-      }
-    } else if (code == 500) {
-      auto known = mill_code(code, at, mill);  // G50 of the mill: scaling cancel
-      if (!known) return std::unexpected(known.error());
-      continue;
-    } else if (code == 960 || code == 970) {
+    if ((def->avail & kToolPosOffsetDialect) != 0 && !dialect.sw.tool_position_offset) {
       return fail(AlarmId::kUnknownGCode,
-                  g_name(code) + " is a code of the lathe (G-code system A) only", at);
+                  g_name(code) + " (tool position offset) is not a code of this control", at);
     }
-    switch (code) {
-      case 0:
-        motion_code = Motion::kRapid;
-        break;
-      case 10:
-        motion_code = Motion::kLinear;
-        break;
-      case 20:
-        motion_code = Motion::kCwArc;
-        break;
-      case 30:
-        motion_code = Motion::kCcwArc;
-        break;
-      case 40:
-        g04 = true;
-        break;
-      case 90:  // G09: exact stop for this block only, read by motion() (motion.cpp)
-        break;
-      case 100:
-        g10 = true;
-        break;
-      case 170:
-        next.plane = PlaneSel::kXY;
-        break;
-      case 180:
-        next.plane = PlaneSel::kZX;
-        break;
-      case 190:
-        next.plane = PlaneSel::kYZ;
-        break;
-      case 200:
-        next.units = Units::kInch;
-        break;
-      case 210:
-        next.units = Units::kMetric;
-        break;
-      case 280:
-        g28 = true;
-        break;
-      case 300:
-        g28 = true;
-        break;
-      case 310:
-        g31 = true;
-        break;
-      case 400:
-        next.cutter = CutterComp::kOff;
-        break;
-      case 410:
-        next.cutter = CutterComp::kLeft;
-        break;
-      case 420:
-        next.cutter = CutterComp::kRight;
-        break;
-      case 430:
-        next.length = LengthComp::kPlus;
-        break;
-      case 440:
-        next.length = LengthComp::kMinus;
-        break;
-      case 490:
-        next.length = LengthComp::kOff;
-        break;
-      case 450:
-      case 460:
-      case 470:
-      case 480:
-        if (!dialect.sw.tool_position_offset) {
-          return fail(AlarmId::kUnknownGCode,
-                      g_name(code) + " (tool position offset) is not a code of this control", at);
-        }
-        g45 = code / 10;
-        break;
-      case 500:
-        g50 = true;
-        break;
-      case 520:
-        g52 = true;
-        break;
-      case 530:
-        g53 = true;
-        break;
-      case 540:
-      case 550:
-      case 560:
-      case 570:
-      case 580:
-      case 590:
-        next.work = (code - 530) / 10;
-        break;
-      case 541: {
-        // G54.1 Pn: additional work coordinate system n (1-300), after EXT
-        // and G54-G59 in work_offsets. P omitted: P1.
-        const double pn = words.has('P') ? words.at('P').value : 1.0;
-        if (pn != std::trunc(pn) || pn < 1 || pn > kExtraWorkSystems) {
-          return fail(AlarmId::kIllegalOffsetNumber, "G54.1 P" + std::to_string(pn) + ": P1-P300",
-                      words.has('P') ? loc(words.at('P').column) : at);
-        }
-        next.work = 6 + static_cast<int>(pn);
-        break;
-      }
-      case 610:
-        next.path = PathMode::kExactStop;
-        break;
-      case 640:
-        next.path = PathMode::kContinuous;
-        break;
-      case 650:
-        g65 = true;
-        break;
-      case 660:
-        next.modal_macro = true;
-        break;
-      case 670:
-        next.modal_macro = false;
-        break;
-      case 800:
-        next.cycle = Cycle::kNone;
-        break;
-      case 900:
-        next.distance = Distance::kAbsolute;
-        break;
-      case 910:
-        next.distance = Distance::kIncremental;
-        break;
-      case 920:
-        g92 = true;
-        break;
-      case 960:
-        next.spindle_mode = SpindleMode::kSurfaceSpeed;
-        break;
-      case 970:
-        next.spindle_mode = SpindleMode::kRpm;
-        break;
-      case 940:
-        next.feed_mode = FeedMode::kPerMinute;
-        break;
-      case 950:
-        next.feed_mode = FeedMode::kPerRev;
-        break;
-      case 980:
-        next.ret = ReturnLevel::kInitial;
-        break;
-      case 990:
-        next.ret = ReturnLevel::kR;
-        break;
-      default:
-        return fail(AlarmId::kUnknownGCode, g_name(code), at);
+    if (def->group == Group::k00) {
+      auto r = plan_one_shot(*def, col, plan);
+      if (!r) return r;
+      continue;
+    }
+    const auto g = static_cast<std::size_t>(def->group);
+    if (plan.group[g] != nullptr && plan.group[g]->code != code &&
+        !dialect.sw.g_same_group_last_wins) {
+      return fail(AlarmId::kGCodeConflict,
+                  g_name(plan.group[g]->code) + " and " + g_name(code) + " are both of group " +
+                      std::to_string(static_cast<int>(def->group)),
+                  at);
+    }
+    plan.group[g] = def;
+    plan.column[g] = col;
+  }
+  return {};
+}
+
+Result<void> Interpreter::Impl::plan_one_shot(const CodeDef& def, std::uint32_t col,
+                                              BlockPlan& plan) {
+  switch (def.action) {
+    case Action::kExactStop:
+      plan.exact_stop = true;
+      return {};
+    case Action::kMachineCoord:
+      plan.machine_coord = true;
+      return {};
+    default:
+      break;
+  }
+  if (plan.action != Action::kNone && plan.action_code != def.code) {
+    return fail(AlarmId::kGCodeConflict,
+                g_name(plan.action_code) + " and " + g_name(def.code) +
+                    " are both one-shot (group 00) commands",
+                loc(col));
+  }
+  plan.action = def.action;
+  plan.action_code = def.code;
+  if (def.action == Action::kToolPosOffset) plan.tool_pos_offset = def.code / 10;
+  return {};
+}
+
+// G65/G66 block: G, P and L are its own words, every other one an argument.
+Result<void> Interpreter::Impl::plan_call(const Words& words, BlockPlan& plan) {
+  const SourceLoc at = loc(cur_col);
+  if (!call_block) {
+    return fail(AlarmId::kMacroFormat, "G65/G66 must be written as a number (G65, not G#i)", at);
+  }
+  for (int i = 0; i < words.g_count; ++i) {
+    const int code = words.g[static_cast<std::size_t>(i)];
+    if (code != 650 && code != 660) {
+      return fail(AlarmId::kIllegalArgumentAddress,
+                  g_name(code) + " in a G65/G66 block: G cannot be an argument",
+                  loc(words.g_col[static_cast<std::size_t>(i)]));
     }
   }
-  skip_step = mill.skip_step;  // G31.1-G31.3: a G31 (skip.cpp)
-  if (skip_step != 0) g31 = true;
-  const SourceLoc block_loc = loc(cur_col);
-
-  // G65 / G66: every other word is an argument (collected in block order by
-  // collect_words); G66 runs the macro after each later block that moves,
-  // until G67. A second G66 replaces the first (nested modal calls are not
-  // modelled).
-  const bool g66 = words.has_g(660);
-  if (g65 || g66) {
-    if (!call_block) {
-      return fail(AlarmId::kMacroFormat, "G65/G66 must be written as a number (G65, not G#i)",
-                  block_loc);
-    }
-    if (words.g_count > 1) {
-      for (int i = 0; i < words.g_count; ++i) {
-        const int code = words.g[static_cast<std::size_t>(i)];
-        if (code != 650 && code != 660) {
-          return fail(AlarmId::kIllegalArgumentAddress,
-                      g_name(code) + " in a G65/G66 block: G cannot be an argument",
-                      loc(words.g_col[static_cast<std::size_t>(i)]));
-        }
-      }
-    }
-    if (!words.has('P')) {
-      return fail(AlarmId::kProgramNotFound,
-                  g65 ? "G65 needs P (program number)" : "G66 needs P (program number)", block_loc);
-    }
-    const double p = words.at('P').value;
-    double l = 1.0;
-    if (words.has('L')) l = words.at('L').value;
-    if (p != std::trunc(p) || p < 1 || p > 99999999) {
-      return fail(AlarmId::kProgramNotFound, "P" + std::to_string(p) + " is not a program number",
-                  loc(words.at('P').column));
-    }
-    if (l != std::trunc(l) || l < 0 || l > 9999) {
-      return fail(AlarmId::kBadValue, "L" + std::to_string(l) + ": repetitions are 0-9999",
-                  loc(words.at('L').column));
-    }
-    const auto repeats = static_cast<int>(l);
-    if (g65) {
-      if (repeats == 0) return Step::kContinue;
-      auto c = macro_call(static_cast<std::int64_t>(p), repeats, false, block_loc);
-      if (!c) return std::unexpected(c.error());
-      return Step::kContinue;
-    }
-    modal_macro_program = static_cast<std::int64_t>(p);
-    modal_macro_args = call_args;
-    modal.modal_macro = true;
-    return Step::kContinue;
+  const bool g65 = plan.action == Action::kMacroCall;
+  if (!words.has('P')) {
+    return fail(AlarmId::kProgramNotFound,
+                g65 ? "G65 needs P (program number)" : "G66 needs P (program number)", at);
   }
+  const double p = words.at('P').value;
+  const double l = words.has('L') ? words.at('L').value : 1.0;
+  if (p != std::trunc(p) || p < 1 || p > 99999999) {
+    return fail(AlarmId::kProgramNotFound, "P" + std::to_string(p) + " is not a program number",
+                loc(words.at('P').column));
+  }
+  if (l != std::trunc(l) || l < 0 || l > 9999) {
+    return fail(AlarmId::kBadValue, "L" + std::to_string(l) + ": repetitions are 0-9999",
+                loc(words.at('L').column));
+  }
+  plan.call_program = static_cast<std::int64_t>(p);
+  plan.call_repeats = static_cast<int>(l);
+  return {};
+}
 
-  // Addresses that mean nothing here are refused, so a typo is not ignored.
+// Addresses that mean nothing here are refused, so a typo is not ignored.
+Result<void> Interpreter::Impl::plan_addresses(const Words& words) const {
   for (std::uint32_t rest = words.letters & ~axis_letters; rest != 0; rest &= rest - 1) {
     const char letter = static_cast<char>('A' + std::countr_zero(rest));
     if (mc.lathe() && (letter == 'U' || letter == 'W')) continue;
@@ -524,239 +365,476 @@ Result<Step> Interpreter::Impl::execute_nc(const Words& words, CommandSink& out)
                 std::string("address ") + letter + " is not an address of this machine",
                 loc(words.at(letter).column));
   }
+  return {};
+}
 
-  // F S T
-  if (words.has('E')) last_e = words.at('E').value;
+// An offset number word (D, H): whole, 0 to the machine's offset count.
+Result<int> Interpreter::Impl::offset_number(const Words& words, char letter) const {
+  const double v = words.at(letter).value;
+  if (v != std::trunc(v) || v < 0 || v > mc.tool_offset_count) {
+    return fail(AlarmId::kIllegalOffsetNumber, std::string(1, letter) + std::to_string(v),
+                loc(words.at(letter).column));
+  }
+  return static_cast<int>(v);
+}
+
+// G31.n (mill_codes.cpp) is the block's skip.
+Result<void> Interpreter::Impl::plan_mill(BlockPlan& plan) const {
+  if (plan.mill.skip_step != 0) {
+    if (plan.action != Action::kNone && plan.action != Action::kSkip) {
+      return fail(AlarmId::kGCodeConflict,
+                  g_name(plan.action_code) + " and G31." + std::to_string(plan.mill.skip_step) +
+                      " are both one-shot (group 00) commands",
+                  loc(cur_col));
+    }
+    plan.action = Action::kSkip;
+    plan.action_code = 310;
+  }
+  return {};
+}
+
+void Interpreter::Impl::plan_cycle(BlockPlan& plan) const {
+  if (plan.group[static_cast<std::size_t>(Group::k01)] != nullptr && !mc.lathe()) {
+    plan.next.cycle = Cycle::kNone;
+  }
+  if (plan.mill.cycle) plan.next.cycle = *plan.mill.cycle;
+}
+
+// The block's modal state: the group codes, then F S T D.
+Result<void> Interpreter::Impl::plan_modal(const Words& words, BlockPlan& plan) {
+  ModalState& next = plan.next;
+  for (const CodeDef* def : plan.group) {
+    if (def != nullptr && def->set != nullptr) def->set(next);
+  }
+  if (const CodeDef* w = plan.group[static_cast<std::size_t>(Group::k14)];
+      w != nullptr && w->code == 541) {
+    // G54.1 Pn: additional work coordinate system n (1-300), after EXT and
+    // G54-G59 in work_offsets. P omitted: P1.
+    const double pn = words.has('P') ? words.at('P').value : 1.0;
+    if (pn != std::trunc(pn) || pn < 1 || pn > kExtraWorkSystems) {
+      return fail(AlarmId::kIllegalOffsetNumber, "G54.1 P" + std::to_string(pn) + ": P1-P300",
+                  loc(words.has('P') ? words.at('P').column
+                                     : plan.column[static_cast<std::size_t>(Group::k14)]));
+    }
+    next.work = 6 + static_cast<int>(pn);
+  }
   if (words.has('F')) {
     const double f = words.at('F').value;
     if (f < 0) return fail(AlarmId::kBadValue, "negative F", loc(words.at('F').column));
-    if (!(g31 && dialect.sw.skip_feed == config::SkipFeedRule::kBlockOrParam)) next.feed = f;
+    const bool block_only =
+        plan.action == Action::kSkip && dialect.sw.skip_feed == config::SkipFeedRule::kBlockOrParam;
+    if (!block_only) next.feed = f;
   }
-  bool spindle_changed = next.spindle_mode != modal.spindle_mode;
+  plan.spindle_changed = next.spindle_mode != modal.spindle_mode;
   if (words.has('S')) {
     const WordVal& sw = words.at('S');
-    if (mc.lathe()) {
-      if (sw.value < 0) return fail(AlarmId::kBadValue, "negative S", loc(sw.column));
-      if (g50) {
-        next.spindle_clamp_rpm = sw.value;  // G50 S: the G96 speed limit
-      } else {
-        next.spindle = sw.value;
-        spindle_changed = true;
-      }
+    if (mc.lathe() && sw.value < 0) return fail(AlarmId::kBadValue, "negative S", loc(sw.column));
+    if (mc.lathe() && plan.action == Action::kLatheCoordSet) {
+      next.spindle_clamp_rpm = sw.value;  // G50 S: the G96 speed limit
     } else {
       next.spindle = sw.value;
-      emit(out, canon::Spindle{next.spindle, 0});
+      plan.spindle_changed = plan.spindle_changed || mc.lathe();
     }
   }
-  if (words.has('T') && !mc.lathe()) {
-    next.tool = static_cast<int>(words.at('T').value);
-    emit(out, canon::ToolSelect{next.tool});
-  }
+  if (words.has('T') && !mc.lathe()) next.tool = static_cast<int>(words.at('T').value);
   if (words.has('D')) {
-    const double d = words.at('D').value;
-    if (d != std::trunc(d) || d < 0 || d > mc.tool_offset_count) {
-      return fail(AlarmId::kIllegalOffsetNumber, "D" + std::to_string(d),
-                  loc(words.at('D').column));
-    }
-    next.d = static_cast<int>(d);
+    auto d = offset_number(words, 'D');
+    if (!d) return std::unexpected(d.error());
+    next.d = *d;
+  }
+  if (words.has('H') && !mc.lathe()) {
+    auto h = offset_number(words, 'H');
+    if (!h) return std::unexpected(h.error());
   }
   if (next.plane != modal.plane && modal.cutter != CutterComp::kOff) {
-    return fail(AlarmId::kPlaneChangeInComp, "plane change with G41/G42 active", block_loc);
+    return fail(AlarmId::kPlaneChangeInComp, "plane change with G41/G42 active", loc(cur_col));
   }
-  if (motion_code) next.motion = *motion_code;
-  // Group 09: a cycle code sets it; G80 and any group-01 code end it.
-  if (motion_code && !mc.lathe()) next.cycle = Cycle::kNone;
-  if (mill.cycle) next.cycle = *mill.cycle;
+  return {};
+}
 
-  // Commit the modal part of the block: from here on the block's words are
-  // interpreted in its own modes (G20/G21, G90/G91, G54...).
-  const ModalState before = modal;
-  modal = next;
-  auto undo = [&](Error e) -> Result<Step> {
-    modal = before;
-    return std::unexpected(std::move(e));
-  };
+Result<void> Interpreter::Impl::plan_block(const Words& words, BlockPlan& plan) {
+  plan.next = modal;
+  auto g = plan_g_codes(words, plan);
+  if (!g) return g;
+  auto m = plan_mill(plan);
+  if (!m) return m;
+  const CodeDef* g12 = plan.group[static_cast<std::size_t>(Group::k12)];
+  plan.call = plan.action == Action::kMacroCall || (g12 != nullptr && g12->code == 660);
+  if (plan.call) return plan_call(words, plan);
+  auto a = plan_addresses(words);
+  if (!a) return a;
+  auto md = plan_modal(words, plan);
+  if (!md) return md;
+  plan_cycle(plan);
+  return {};
+}
+
+// ---------------------------------------------------------------------------
+// Commit: the steps of one block in the control's order.
+
+void Interpreter::Impl::commit_messages() {
+  for (const auto& c : blk.comments) {
+    const std::string& t = blk.names[static_cast<std::size_t>(c.text)];
+    if (t.size() >= 4 && t.compare(0, 4, "MSG,") == 0) messages.push_back(t.substr(4));
+  }
+  if (blk.has_n) modal.seq = static_cast<int>(blk.n % 100000000);
+}
+
+// G65: call now; G66: remember the macro for the blocks that move.
+Result<Step> Interpreter::Impl::commit_call(const BlockPlan& plan) {
+  if (plan.action == Action::kMacroCall) {
+    if (plan.call_repeats == 0) return Step::kContinue;
+    auto c = macro_call(plan.call_program, plan.call_repeats, false, loc(cur_col));
+    if (!c) return std::unexpected(c.error());
+    return Step::kContinue;
+  }
+  modal_macro_program = plan.call_program;
+  modal_macro_args = call_args;
+  modal.modal_macro = true;
+  return Step::kContinue;
+}
+
+// F S T D and the modal groups. From here on the block's words are read in
+// its own modes (G20/G21, G90/G91, G54...).
+void Interpreter::Impl::commit_modal(const Words& words, const BlockPlan& plan, CommandSink& out) {
+  if (words.has('E')) last_e = words.at('E').value;
+  if (words.has('S') && !mc.lathe()) emit(out, canon::Spindle{plan.next.spindle, 0});
+  if (words.has('T') && !mc.lathe()) emit(out, canon::ToolSelect{plan.next.tool});
+  const int seq = modal.seq;
+  modal = plan.next;
+  modal.seq = seq;
+}
+
+Result<void> Interpreter::Impl::commit_tool(const Words& words, const BlockPlan& plan,
+                                            const ModalState& before, CommandSink& out) {
+  (void)plan;
   if (modal.length != before.length || (words.has('H') && modal.length != LengthComp::kOff)) {
     auto r = set_tool_length(words, modal.length);
-    if (!r) return undo(r.error());
+    if (!r) return r;
   }
   if (words.has('T') && mc.lathe()) {
     auto r = lathe_tool(words, modal);
-    if (!r) return undo(r.error());
+    if (!r) return r;
     emit(out, canon::ToolSelect{modal.tool / 100});
   }
+  return {};
+}
+
+void Interpreter::Impl::commit_spindle(const Words& words, bool changed, CommandSink& out) {
   for (int i = 0; i < words.m_count; ++i) {
-    const int m = words.m[static_cast<std::size_t>(i)];
-    if (m != 3 && m != 4 && m != 5) continue;
-    modal.spindle_dir = m == 3 ? 1 : m == 4 ? -1 : 0;
+    const MAction a = m_action(words.m[static_cast<std::size_t>(i)]);
+    if (a != MAction::kSpindleCw && a != MAction::kSpindleCcw && a != MAction::kSpindleStop) {
+      continue;
+    }
+    modal.spindle_dir = a == MAction::kSpindleCw ? 1 : a == MAction::kSpindleCcw ? -1 : 0;
     if (mc.lathe()) {
-      spindle_changed = true;
+      changed = true;
     } else {
       emit(out, canon::Spindle{modal.spindle, modal.spindle_dir});
     }
   }
-  if (spindle_changed) emit_spindle(out);
+  if (changed) emit_spindle(out);
+}
 
-  if (modal.cycle != Cycle::kNone && before.cycle == Cycle::kNone) {
-    // A new cycle mode: the initial level is the present Z (B-63944EN 5.1).
-    cycle_data = cycles::Data{};
-    const int z = axis_of_letter['Z' - 'A'];
-    if (z >= 0) {
-      const int x = axis_of_letter['X' - 'A'], y = axis_of_letter['Y' - 'A'];
-      cycle_data.initial =
-          xform::to_program(frame, {x >= 0 ? work_of(x, pos[x]) : 0.0,
-                                    y >= 0 ? work_of(y, pos[y]) : 0.0, work_of(z, pos[z])})[2];
+// G52 / G92 axis words.
+void Interpreter::Impl::commit_shift(const Words& words, bool local) {
+  for (int i = 0; i < axis_count; ++i) {
+    const char c = axis_letter[static_cast<std::size_t>(i)];
+    if (!words.has(c)) continue;
+    const double v = word_length(words.at(c), false) * unit_mm();
+    if (local) {
+      local_shift[i] = v;
+    } else {
+      // G92: the current position becomes v in the work system.
+      g92_shift[i] = 0.0;
+      g92_shift[i] = pos[i] * axis_scale[static_cast<std::size_t>(i)] - v - offset_total(i);
     }
   }
-  bool frame_block = false;  // G68 G51 G51.1: the axis words are the mode's data
-  if (mill.frame_code != 0) {
-    auto r = apply_frame_code(words, mill);
-    if (!r) return undo(r.error());
-    frame_block = *r;
+}
+
+// G45-G48: the move is extended (G45, G47) or shortened (G46, G48) by the
+// D offset; G47/G48 by twice the offset. The direction is that of the
+// programmed move (from the previous programmed point in G90; a zero move
+// counts as positive). The shift stays with the axis: later positions and
+// #5061.. are in programmed coordinates.
+void Interpreter::Impl::commit_tool_pos_offset(const Words& words, int g) {
+  const auto& t = tools[static_cast<std::size_t>(modal.d)];
+  const double r = modal.d == 0 ? 0.0 : t.radius_geometry + t.radius_wear;
+  const double k = (g == 45 ? 1.0 : g == 46 ? -1.0 : g == 47 ? 2.0 : -2.0) * r;
+  const bool inc = modal.distance == Distance::kIncremental;
+  for (int i = 0; i < axis_count; ++i) {
+    const char c = axis_letter[static_cast<std::size_t>(i)];
+    if (!words.has(c)) continue;
+    const double v = word_length(words.at(c), false);
+    const double dist = inc ? v : v - work_of(i, pos[i]);
+    const double shift = (dist < 0.0 ? -1.0 : 1.0) * k;
+    tool_pos_offset[i] += shift;
+    if (inc) g45_delta[i] = shift;
   }
-  bool moved = false;
-  if (frame_block) {
-    // G68 X Y R, G51 X Y Z P, G51.1 X Y: centres and factors, no move.
-  } else if (mill.g37) {
-    auto m = g37_block(words, out);  // mill_codes.cpp
-    if (!m) return undo(m.error());
-    return *m;
-  } else if (g10) {
-    auto r = data_setting(words, block_loc);
-    if (!r) return undo(r.error());
-  } else if (g50) {
-    auto r = lathe_coordinate_setting(words);
-    if (!r) return undo(r.error());
-  } else if (g52 || g92) {
-    for (int i = 0; i < axis_count; ++i) {
-      const char c = axis_letter[static_cast<std::size_t>(i)];
-      if (!words.has(c)) continue;
-      const double v = word_length(words.at(c), false) * unit_mm();
-      if (g52) {
-        local_shift[i] = v;
-      } else {
-        // G92: the current position becomes v in the work system.
-        g92_shift[i] = 0.0;
-        g92_shift[i] = pos[i] * axis_scale[static_cast<std::size_t>(i)] - v - offset_total(i);
+}
+
+// The one-shot action or the motion of the block. `moved`: the block moved
+// (for G66).
+Result<Step> Interpreter::Impl::commit_action(const Words& words, const BlockPlan& plan,
+                                              CommandSink& out, bool& moved) {
+  const SourceLoc at = loc(cur_col);
+  switch (plan.action) {
+    case Action::kDataSetting:
+      if (auto r = data_setting(words, at); !r) return std::unexpected(r.error());
+      return Step::kContinue;
+    case Action::kLatheCoordSet:
+      if (auto r = lathe_coordinate_setting(words); !r) return std::unexpected(r.error());
+      return Step::kContinue;
+    case Action::kLocalShift:
+    case Action::kCoordSet:
+      commit_shift(words, plan.action == Action::kLocalShift);
+      return Step::kContinue;
+    case Action::kDwell:
+      if (auto r = dwell(words, out); !r) return std::unexpected(r.error());
+      return Step::kContinue;
+    case Action::kRefReturn:
+    case Action::kRefReturn2:
+      if (auto r = reference_return(words, plan.action_code / 10, out); !r) {
+        return std::unexpected(r.error());
       }
-    }
-  } else if (g04) {
-    auto r = dwell(words, out);
-    if (!r) return undo(r.error());
-  } else if (g28) {
-    auto r = reference_return(words, 28, out);
-    if (!r) return undo(r.error());
-    moved = true;
-  } else {
-    const bool any_axis = has_axis_word(words);
-    const bool arc_words =
-        modal.motion == Motion::kCwArc || modal.motion == Motion::kCcwArc
-            ? (words.has('I') || words.has('J') || words.has('K') || words.has('R'))
-            : false;
-    if (modal.cycle != Cycle::kNone && !g31 && (any_axis || words.has('R'))) {
-      auto m = canned_cycle(words, out);
-      if (!m) return undo(m.error());
       moved = true;
-    } else if (g31 || any_axis || arc_words || g45 != 0) {
-      if (g45 != 0) {
-        // G45-G48: the move is extended (G45, G47) or shortened (G46, G48)
-        // by the D offset; G47/G48 by twice the offset. The direction is
-        // that of the programmed move (from the previous programmed point in
-        // G90; a zero move counts as positive). The shift stays with the
-        // axis: later positions and #5061.. are in programmed coordinates.
-        const auto& t = tools[static_cast<std::size_t>(modal.d)];
-        const double r = modal.d == 0 ? 0.0 : t.radius_geometry + t.radius_wear;
-        const double k = (g45 == 45 ? 1.0 : g45 == 46 ? -1.0 : g45 == 47 ? 2.0 : -2.0) * r;
-        const bool inc = modal.distance == Distance::kIncremental;
-        for (int i = 0; i < axis_count; ++i) {
-          const char c = axis_letter[static_cast<std::size_t>(i)];
-          if (!words.has(c)) continue;
-          const double v = word_length(words.at(c), false);
-          const double dist = inc ? v : v - work_of(i, pos[i]);
-          const double shift = (dist < 0.0 ? -1.0 : 1.0) * k;
-          tool_pos_offset[i] += shift;
-          if (inc) g45_delta[i] = shift;
-        }
-      }
-      if (!g31) {
-        auto c = check_cutter_comp(block_loc);
-        if (!c) return undo(c.error());
-      }
-      auto m = motion(words, out, g31, g53);
-      if (!m) return undo(m.error());
-      if (*m == Step::kSync) return Step::kSync;
-      moved = true;
-    }
+      return Step::kContinue;
+    default:
+      break;
   }
-  // M codes after the motion.
+  const bool skip = plan.action == Action::kSkip;
+  const bool arc_words = (modal.motion == Motion::kCwArc || modal.motion == Motion::kCcwArc) &&
+                         (words.has('I') || words.has('J') || words.has('K') || words.has('R'));
+  if (!skip && !has_axis_word(words) && !arc_words && plan.tool_pos_offset == 0) {
+    return Step::kContinue;
+  }
+  if (plan.tool_pos_offset != 0) commit_tool_pos_offset(words, plan.tool_pos_offset);
+  if (!skip) {
+    auto c = check_cutter_comp(at);
+    if (!c) return std::unexpected(c.error());
+  }
+  auto m = motion(words, out, skip, plan.machine_coord);
+  if (!m) return m;
+  moved = true;
+  return *m;
+}
+
+Result<Step> Interpreter::Impl::commit_sub_call(const Words& words) {
+  const SourceLoc at = loc(cur_col);
+  if (!words.has('P')) return fail(AlarmId::kProgramNotFound, "M98 needs P", at);
+  const double p = words.at('P').value;
+  if (p != std::trunc(p) || p < 1 || p > 99999999) {
+    return fail(AlarmId::kProgramNotFound, "M98 P" + std::to_string(p), loc(words.at('P').column));
+  }
+  auto program = static_cast<std::int64_t>(p);
+  int repeats = 1;
+  if (words.has('L')) {
+    repeats = static_cast<int>(words.at('L').value);
+  } else if (program > 9999) {
+    // M98 Pxxxxyyyy: the first digits repeat, the last four name the program.
+    repeats = static_cast<int>(program / 10000);
+    program %= 10000;
+  }
+  if (repeats < 1) return Step::kContinue;
+  auto c = call(program, repeats, false, at);
+  if (!c) return std::unexpected(c.error());
+  return Step::kContinue;
+}
+
+Result<Step> Interpreter::Impl::commit_sub_return(const Words& words) {
+  std::optional<std::int64_t> label;
+  if (words.has('P')) {
+    const double pv = std::round(words.at('P').value);
+    if (pv < 1 || pv > 99999) {
+      return fail(
+          AlarmId::kIllegalSequenceNumber,
+          "M99 P" + std::to_string(words.at('P').value) + ": sequence numbers are 1 to 99999",
+          loc(words.at('P').column));
+    }
+    label = static_cast<std::int64_t>(pv);
+  }
+  return return_from_sub(label, loc(cur_col));
+}
+
+// M codes after the motion. nullopt: go on with the next step of the block.
+Result<std::optional<Step>> Interpreter::Impl::commit_m_codes(const Words& words,
+                                                              CommandSink& out) {
   for (int i = 0; i < words.m_count; ++i) {
     const int m = words.m[static_cast<std::size_t>(i)];
     modal.last_m = m;
-    switch (m) {
-      case 0:
+    switch (m_action(m)) {
+      case MAction::kProgramStop:
         emit(out, canon::Stop{canon::StopKind::kProgramStop});
         break;
-      case 1:
+      case MAction::kOptionalStop:
         emit(out, canon::Stop{canon::StopKind::kOptionalStop});
         break;
-      case 2:
-      case 30:
-        emit(out, canon::Stop{m == 2 ? canon::StopKind::kProgramEnd : canon::StopKind::kRewindEnd});
+      case MAction::kProgramEnd:
+      case MAction::kRewindEnd:
+        emit(out, canon::Stop{m_action(m) == MAction::kProgramEnd ? canon::StopKind::kProgramEnd
+                                                                  : canon::StopKind::kRewindEnd});
         ++parts_count;
         ended = true;
         return Step::kEnd;
-      case 98: {
-        if (!words.has('P')) return fail(AlarmId::kProgramNotFound, "M98 needs P", block_loc);
-        const double p = words.at('P').value;
-        if (p != std::trunc(p) || p < 1 || p > 99999999) {
-          return fail(AlarmId::kProgramNotFound, "M98 P" + std::to_string(p),
-                      loc(words.at('P').column));
-        }
-        auto program = static_cast<std::int64_t>(p);
-        int repeats = 1;
-        if (words.has('L')) {
-          repeats = static_cast<int>(words.at('L').value);
-        } else if (program > 9999) {
-          // M98 Pxxxxyyyy: the first digits repeat, the last four name the program.
-          repeats = static_cast<int>(program / 10000);
-          program %= 10000;
-        }
-        if (repeats < 1) return Step::kContinue;
-        auto c = call(program, repeats, false, block_loc);
-        if (!c) return std::unexpected(c.error());
-        return Step::kContinue;
-      }
-      case 99: {
-        std::optional<std::int64_t> label;
-        if (words.has('P')) {
-          const double pv = std::round(words.at('P').value);
-          if (pv < 1 || pv > 99999) {
-            return fail(
-                AlarmId::kIllegalSequenceNumber,
-                "M99 P" + std::to_string(words.at('P').value) + ": sequence numbers are 1 to 99999",
-                loc(words.at('P').column));
-          }
-          label = static_cast<std::int64_t>(pv);
-        }
-        return return_from_sub(label, block_loc);
-      }
-      case 3:
-      case 4:
-      case 5:
+      case MAction::kSubCall:
+        return commit_sub_call(words);
+      case MAction::kSubReturn:
+        return commit_sub_return(words);
+      case MAction::kSpindleCw:
+      case MAction::kSpindleCcw:
+      case MAction::kSpindleStop:
         break;
-      default:
+      case MAction::kMachine:
         emit(out, canon::MCode{m});
         break;
     }
   }
+  return std::optional<Step>{};
+}
 
+// A new cycle mode: the initial level is the present Z (B-63944EN 5.1).
+void Interpreter::Impl::commit_cycle_start(const ModalState& before) {
+  if (modal.cycle == Cycle::kNone || before.cycle != Cycle::kNone) return;
+  cycle_data = cycles::Data{};
+  const int z = axis_of_letter['Z' - 'A'];
+  if (z < 0) return;
+  const int x = axis_of_letter['X' - 'A'], y = axis_of_letter['Y' - 'A'];
+  cycle_data.initial =
+      xform::to_program(frame, {x >= 0 ? work_of(x, pos[x]) : 0.0,
+                                y >= 0 ? work_of(y, pos[y]) : 0.0, work_of(z, pos[z])})[2];
+}
+
+// The mill codes' action, in place of the group-00 action or motion: G68
+// G51 G51.1 take the axis words as their data (no move), a cycle mode
+// drills at the block's position. nullopt: the block goes on to
+// commit_action.
+Result<std::optional<Step>> Interpreter::Impl::commit_mill(const Words& words,
+                                                           const BlockPlan& plan, CommandSink& out,
+                                                           bool& moved) {
+  if (plan.mill.frame_code != 0) {
+    auto r = apply_frame_code(words, plan.mill);
+    if (!r) return std::unexpected(r.error());
+    if (*r) return Step::kContinue;
+  }
+  if (plan.action != Action::kNone) return std::optional<Step>{};
+  if (modal.cycle != Cycle::kNone && (has_axis_word(words) || words.has('R'))) {
+    auto m = canned_cycle(words, out);
+    if (!m) return std::unexpected(m.error());
+    moved = true;
+    return std::optional<Step>{Step::kContinue};
+  }
+  return std::optional<Step>{};
+}
+
+Result<Step> Interpreter::Impl::commit_block(const Words& words, const BlockPlan& plan,
+                                             CommandSink& out) {
+  commit_messages();
+  if (plan.call) return commit_call(plan);
+  const ModalState before = modal;
+  commit_modal(words, plan, out);
+  if (auto t = commit_tool(words, plan, before, out); !t) return std::unexpected(t.error());
+  commit_spindle(words, plan.spindle_changed, out);
+  if (plan.mill.polar) polar = *plan.mill.polar;
+  skip_step = plan.mill.skip_step;
+  commit_cycle_start(before);
+  bool moved = false;
+  auto mill = commit_mill(words, plan, out, moved);
+  if (!mill) return std::unexpected(mill.error());
+  if (plan.mill.g37) return g37_block(words, out);  // the block's last step
+  auto a = *mill ? Result<Step>{**mill} : commit_action(words, plan, out, moved);
+  if (!a || *a == Step::kSync) return a;
+  auto m = commit_m_codes(words, out);
+  if (!m) return std::unexpected(m.error());
+  if (*m) return **m;
   // G66: the modal macro runs after each block that moved, but not for the
   // moves of the macro it calls (nor of what that macro calls).
   if (moved && modal.modal_macro && modal_macro_program != 0 && !in_modal_call()) {
-    auto c = macro_call(modal_macro_program, 1, true, block_loc);
+    auto c = macro_call(modal_macro_program, 1, true, loc(cur_col));
     if (!c) return std::unexpected(c.error());
   }
   return Step::kContinue;
+}
+
+// ---------------------------------------------------------------------------
+// The block as a transaction.
+
+BlockUndo Interpreter::Impl::save_block_state() const {
+  BlockUndo u;
+  u.modal = modal;
+  u.pos = pos;
+  u.tool_pos_offset = tool_pos_offset;
+  u.g45_delta = g45_delta;
+  u.lathe_tool_offset = lathe_tool_offset;
+  u.tool_offset_pending = tool_offset_pending;
+  u.local_shift = local_shift;
+  u.g92_shift = g92_shift;
+  u.length_offset = length_offset;
+  u.last_e = last_e;
+  u.last_cut_feed = last_cut_feed;
+  u.turning_cycle_z = turning_cycle_z;
+  u.have_turning_cycle_z = have_turning_cycle_z;
+  u.wear_offset = wear_offset;
+  u.motion_since_sync = motion_since_sync;
+  u.messages = messages.size();
+  u.pending = pending;
+  u.parts_count = parts_count;
+  u.ended = ended;
+  u.cycle_data = cycle_data;
+  u.frame = frame;
+  u.polar = polar;
+  u.polar_angle = polar_angle;
+  u.rotation_angle = rotation_angle;
+  u.skip_step = skip_step;
+  return u;
+}
+
+void Interpreter::Impl::restore_block_state(const BlockUndo& u) {
+  modal = u.modal;
+  pos = u.pos;
+  tool_pos_offset = u.tool_pos_offset;
+  g45_delta = u.g45_delta;
+  lathe_tool_offset = u.lathe_tool_offset;
+  tool_offset_pending = u.tool_offset_pending;
+  local_shift = u.local_shift;
+  g92_shift = u.g92_shift;
+  length_offset = u.length_offset;
+  last_e = u.last_e;
+  last_cut_feed = u.last_cut_feed;
+  turning_cycle_z = u.turning_cycle_z;
+  have_turning_cycle_z = u.have_turning_cycle_z;
+  wear_offset = u.wear_offset;
+  motion_since_sync = u.motion_since_sync;
+  messages.resize(u.messages);
+  pending = u.pending;
+  parts_count = u.parts_count;
+  ended = u.ended;
+  cycle_data = u.cycle_data;
+  frame = u.frame;
+  polar = u.polar;
+  polar_angle = u.polar_angle;
+  rotation_angle = u.rotation_angle;
+  skip_step = u.skip_step;
+}
+
+// Plan, then commit into the block's buffer; the buffer reaches `out` only
+// when the whole block succeeded. G10 changes the offset tables only after
+// every check of its words has passed, and a call (M98, G65, M99) is the
+// block's last step, so they need no undo.
+Result<Step> Interpreter::Impl::execute_nc(const Words& words, CommandSink& out) {
+  BlockPlan plan;
+  auto p = plan_block(words, plan);
+  if (!p) return std::unexpected(p.error());
+  const BlockUndo undo = save_block_state();
+  block_buffer.cmds.clear();
+  auto r = commit_block(words, plan, block_buffer);
+  if (!r) {
+    restore_block_state(undo);
+    block_buffer.cmds.clear();
+    return r;
+  }
+  for (const canon::Stamped& c : block_buffer.cmds) out.emit(c);
+  block_buffer.cmds.clear();
+  return r;
 }
 
 void Interpreter::Impl::emit(CommandSink& out, canon::Command cmd) {

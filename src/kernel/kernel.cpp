@@ -147,23 +147,39 @@ void Kernel::begin_stop() noexcept {
   skip_stopping_ = true;
 }
 
+// The skip block has just become the active segment (in this period). A
+// level input already active then (Fanuc TSG = 0, NCT, Mitsubishi) ends the
+// block with no motion at all: the command goes back to the block's start
+// point before it reaches the servo, and that point and this period's time
+// are the latch.
+void Kernel::start_skip_block(const TickInput& in) noexcept {
+  skip_started_ = true;
+  handshake_ = SkipHandshake{true, false, false, false};
+  const canon::SkipSpec& spec = skip_.spec;
+  if (spec.ignore_inputs || spec.edge || !spec.active_at_start_ends) return;
+  for (int i = 0; i < spec.input_count; ++i) {
+    if (!input_active(i, signals_.get(spec.inputs[i]))) continue;
+    const AxisVec start = interp_.segment_start();
+    interp_.set_position(start);
+    cmd_ = start;
+    skip_.triggered = true;
+    skip_.input_index = i;
+    skip_.time_s = cfg_.clock.seconds(tick_ - 1);  // the period this command starts
+    skip_.latch_actual = in.actual;
+    skip_.latch_command = start;
+    skip_.latch_machine = start;
+    handshake_.skip = true;
+    handshake_.recorded = true;
+    skip_stopping_ = true;
+    return;
+  }
+}
+
 void Kernel::monitor_skip(const TickInput& in) noexcept {
   if (!skip_.active || skip_.done) return;
   const canon::SkipSpec& spec = skip_.spec;
   if (!skip_started_) {
-    if (interp_.tag() == skip_tag_) {
-      skip_started_ = true;
-      handshake_ = SkipHandshake{true, false, false, false};
-      // An input already active when the block starts.
-      if (!spec.ignore_inputs && !spec.edge && spec.active_at_start_ends) {
-        for (int i = 0; i < spec.input_count; ++i) {
-          if (input_active(i, signals_.get(spec.inputs[i]))) {
-            trigger(0.0, in, i, false);
-            return;
-          }
-        }
-      }
-    } else if (interp_.idle()) {
+    if (interp_.idle()) {
       // The skip move had no length: it ends at once, without a signal.
       skip_started_ = true;
       handshake_ = SkipHandshake{true, false, false, false};
@@ -266,6 +282,9 @@ void Kernel::tick(const TickInput& in, TickOutput& out) noexcept {
   }
   cmd_prev_ = cmd_;
   cmd_ = interp_.tick();
+  if (skip_.active && !skip_.done && !skip_started_ && interp_.tag() == skip_tag_) {
+    start_skip_block(in);
+  }
   actual_prev_ = in.actual;
   // In position: every axis within the width, or locked (one bit per axis,
   // no branch per axis). It matters only once the motion has ended (idle(),

@@ -143,6 +143,7 @@ class Kernel {
  private:
   bool input_active(int index, bool level) const noexcept;
   void monitor_skip(const TickInput& in) noexcept;
+  void start_skip_block(const TickInput& in) noexcept;
   void trigger(double frac, const TickInput& in, int input, bool torque) noexcept;
   void begin_stop() noexcept;  // the skip's stop, once the control has seen the signal
   double advance_time_scale() noexcept;

@@ -661,8 +661,13 @@ bool Material::first_contact(Vec3 a, Vec3 b, double radius, Contact& out) const 
   bool found = false;
   Contact c;
   for (const Feature& f : features_) {
-    if (contact_with(f, a, b, radius, c) && (!found || c.t < out.t)) {
+    // Each feature in its part's frame: a and b are moved there, the contact
+    // is moved back.
+    const Placement& pl = place_of(f);
+    if (contact_with(f, pl.to_local(a), pl.to_local(b), radius, c) && (!found || c.t < out.t)) {
       out = c;
+      out.point = pl.to_machine(c.point);
+      out.normal = pl.turn(c.normal);
       found = true;
     }
   }
@@ -722,12 +727,12 @@ double Material::part_sdf(const Part& part, Vec3 p) const noexcept {
 
 double Material::distance(Vec3 p) const noexcept {
   for (const Part& part : parts_) {
-    if (part_sdf(part, p) < 0.0) return 0.0;
+    if (part_sdf(part, part.place.to_local(p)) < 0.0) return 0.0;
   }
   double best = kInf;
   Vec3 q;
   for (const Feature& f : features_) {
-    const double d = feature_distance(f, p, q);
+    const double d = feature_distance(f, place_of(f).to_local(p), q);
     if (d < best && valid(f, q)) best = d;
   }
   return best;
@@ -735,13 +740,16 @@ double Material::distance(Vec3 p) const noexcept {
 
 double Material::depth(Vec3 p) const noexcept {
   double d = 0.0;
-  for (const Part& part : parts_) d = std::max(d, -part_sdf(part, p));
+  for (const Part& part : parts_) d = std::max(d, -part_sdf(part, part.place.to_local(p)));
   return d;
 }
 
-int Material::column_hits(const Column& c, double tol) const noexcept {
+int Material::column_hits(const Column& world, double tol) const noexcept {
   for (std::size_t p = 0; p < parts_.size(); ++p) {
     const Part& part = parts_[p];
+    // A vertical column stays vertical in a frame turned about Z.
+    const Vec3 foot = part.place.to_local(Vec3{world.x, world.y, world.bottom});
+    const Column c{foot.x, foot.y, world.radius, foot.z, foot.z + (world.top - world.bottom)};
     for (const Shape& s : part.solids) {
       if (column_shape_overlap(c, s) <= tol) continue;
       bool clear = false;

@@ -66,10 +66,40 @@ Shape make_half_space(Vec3 point, Vec3 normal);  // normal need not be unit
 // Signed distance from p to the shape's surface: negative inside.
 double signed_distance(const Shape& s, Vec3 p) noexcept;
 
+// Where a part stands: its shapes are given in a frame whose origin is
+// `origin` (machine coordinates) and whose X axis is turned by an angle about
+// Z (counter-clockwise seen from +Z). A rigid motion keeps distances, so
+// every contact is solved in the part's own frame, in the same closed form,
+// and turned back.
+struct Placement {
+  Vec3 origin;
+  double cos_a = 1.0;
+  double sin_a = 0.0;
+
+  static Placement about_z(Vec3 origin, double angle_rad) noexcept {
+    return Placement{origin, std::cos(angle_rad), std::sin(angle_rad)};
+  }
+  // This placement applied after `inner` (a frame given in this one).
+  Placement then(const Placement& inner) const noexcept {
+    return Placement{to_machine(inner.origin), cos_a * inner.cos_a - sin_a * inner.sin_a,
+                     sin_a * inner.cos_a + cos_a * inner.sin_a};
+  }
+  bool turned() const noexcept { return sin_a != 0.0 || cos_a != 1.0; }
+  constexpr Vec3 turn(Vec3 v) const noexcept {
+    return {cos_a * v.x - sin_a * v.y, sin_a * v.x + cos_a * v.y, v.z};
+  }
+  constexpr Vec3 unturn(Vec3 v) const noexcept {
+    return {cos_a * v.x + sin_a * v.y, -sin_a * v.x + cos_a * v.y, v.z};
+  }
+  constexpr Vec3 to_local(Vec3 p) const noexcept { return unturn(p - origin); }
+  constexpr Vec3 to_machine(Vec3 q) const noexcept { return origin + turn(q); }
+};
+
 struct Part {
   std::string name;
   std::vector<Shape> solids;
   std::vector<Shape> holes;  // boxes and cylinders; cut from this part's solids only
+  Placement place;           // the shapes are in this frame
 };
 
 struct Contact {
@@ -167,6 +197,9 @@ class Material {
   bool valid(const Feature& f, Vec3 q) const noexcept;
   double feature_distance(const Feature& f, Vec3 p, Vec3& closest) const noexcept;
   double part_sdf(const Part& part, Vec3 p) const noexcept;
+  const Placement& place_of(const Feature& f) const noexcept {
+    return parts_[static_cast<std::size_t>(f.part)].place;
+  }
 
   std::vector<Part> parts_;
   std::vector<Feature> features_;

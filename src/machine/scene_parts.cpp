@@ -4,6 +4,7 @@
 #include "machine/scene_parts.hpp"
 
 #include <array>
+#include <cmath>
 #include <limits>
 #include <map>
 
@@ -84,9 +85,85 @@ const toml::table* single(const toml::table& root, std::string_view key) {
   return n != nullptr ? n->as_table() : nullptr;
 }
 
-// Parts are grouped by name; a part's holes cut only its own solids.
+constexpr double kPi = 3.14159265358979323846;
+
+// The frames a scene places things in (docs/scene.md): "machine", the work
+// frames G54..G59 of the machine file (EXT + G5x, no rotation), and the
+// scene's own [[frame]] tables, each an origin and a turn about Z in a frame
+// named before it.
+class Frames {
+ public:
+  explicit Frames(const config::MachineConfig& m) {
+    frames_.emplace("machine", geo::Placement{});
+    static constexpr std::string_view kWork[] = {"G54", "G55", "G56", "G57", "G58", "G59"};
+    for (std::size_t k = 0; k < 6; ++k) {
+      geo::Vec3 o;
+      double* xyz[] = {&o.x, &o.y, &o.z};
+      for (int a = 0; a < 3; ++a) {
+        const int i = m.axis_index("XYZ"[a]);
+        if (i >= 0) *xyz[a] = m.work_offsets[0][i] + m.work_offsets[k + 1][i];
+      }
+      frames_.emplace(std::string(kWork[k]), geo::Placement{o, 1.0, 0.0});
+    }
+  }
+
+  Result<void> load(const toml::table& root, const Reader& rd) {
+    return config::each_table(root, "frame", rd.origin, [&](const toml::table& t) -> Result<void> {
+      auto k = check_keys(t, {"name", "base", "origin", "rotation"}, rd.origin, "[[frame]]");
+      if (!k) return k;
+      const auto* n = t.get("name");
+      if (n == nullptr) return config_error(t, rd.origin, "[[frame]] needs a name");
+      auto name = get_string(*n, rd.origin, "name");
+      if (!name) return std::unexpected(name.error());
+      if (name->empty() || frames_.contains(*name)) {
+        return config_error(*n, rd.origin,
+                            "frame '" + *name + "' is " +
+                                (name->empty() ? "not a name" : "defined already") +
+                                " (machine and G54..G59 are built in)");
+      }
+      auto base = resolve(t, rd.origin, "base");
+      if (!base) return std::unexpected(base.error());
+      geo::Vec3 o;
+      if (t.get("origin") != nullptr) {
+        auto v = rd.vec<3>(t, "origin");
+        if (!v) return std::unexpected(v.error());
+        o = {(*v)[0], (*v)[1], (*v)[2]};
+      }
+      auto deg = rd.number(t, "rotation", -360.0, 360.0, 0.0);
+      if (!deg) return std::unexpected(deg.error());
+      frames_.emplace(*name, base->then(geo::Placement::about_z(o, *deg * kPi / 180.0)));
+      return {};
+    });
+  }
+
+  // The frame `key` of table t names ("machine" when absent).
+  Result<geo::Placement> resolve(const toml::table& t, std::string_view origin,
+                                 std::string_view key = "frame") const {
+    const auto* n = t.get(key);
+    if (n == nullptr) return geo::Placement{};
+    auto name = get_string(*n, origin, key);
+    if (!name) return std::unexpected(name.error());
+    auto it = frames_.find(*name);
+    if (it == frames_.end()) {
+      std::string known;
+      for (const auto& [k, v] : frames_) known += (known.empty() ? "" : ", ") + k;
+      return config_error(*n, origin,
+                          "no frame '" + *name + "' (known here: " + known +
+                              "; a [[frame]] must come before what it places)");
+    }
+    return it->second;
+  }
+
+ private:
+  std::map<std::string, geo::Placement> frames_;
+};
+
+// Parts are grouped by name; a part's holes cut only its own solids. Every
+// table of a part places it in the same frame.
 class PartSet {
  public:
+  explicit PartSet(const Frames& frames) : frames_(frames) {}
+
   geo::Part& get(const toml::table& t, std::string_view origin, Result<void>& err) {
     std::string name;
     if (const auto* n = t.get("part")) {
@@ -97,11 +174,27 @@ class PartSet {
       }
       name = *s;
     }
+    auto place = frames_.resolve(t, origin);
+    if (!place) {
+      err = std::unexpected(place.error());
+      return scratch_;
+    }
+    const std::string frame =
+        t.get("frame") != nullptr ? *t.get("frame")->value<std::string>() : std::string("machine");
     auto it = index_.find(name);
     if (it == index_.end()) {
       it = index_.emplace(name, parts_.size()).first;
-      parts_.push_back(geo::Part{name, {}, {}});
+      parts_.push_back(geo::Part{name, {}, {}, *place});
       first_.push_back(&t);
+      frame_.push_back(frame);
+    } else if (frame_[it->second] != frame) {
+      err = config_error(
+          t.get("frame") != nullptr ? *t.get("frame") : static_cast<const toml::node&>(t), origin,
+          "part '" + name + "' is placed in frame '" + frame_[it->second] +
+              "' by its first table (line " +
+              std::to_string(first_[it->second]->source().begin.line) +
+              "): every table of a part uses the same frame");
+      return scratch_;
     }
     return parts_[it->second];
   }
@@ -119,8 +212,10 @@ class PartSet {
   std::vector<geo::Part> take() { return std::move(parts_); }
 
  private:
+  const Frames& frames_;
   std::vector<geo::Part> parts_;
   std::vector<const toml::table*> first_;  // per part, the first table that names it
+  std::vector<std::string> frame_;         // per part, the frame it is placed in
   std::map<std::string, std::size_t> index_;
   geo::Part scratch_;
 };
@@ -129,7 +224,8 @@ Result<void> parse_parts(const toml::table& root, const Reader& rd, PartSet& par
   const auto origin = rd.origin;
   auto box_like = [&](std::string_view key, bool hole) {
     return config::each_table(root, key, origin, [&](const toml::table& t) -> Result<void> {
-      auto k = check_keys(t, {"part", "min", "max"}, origin, "[[" + std::string(key) + "]]");
+      auto k =
+          check_keys(t, {"part", "frame", "min", "max"}, origin, "[[" + std::string(key) + "]]");
       if (!k) return k;
       auto lo = rd.vec<3>(t, "min");
       if (!lo) return std::unexpected(lo.error());
@@ -156,7 +252,7 @@ Result<void> parse_parts(const toml::table& root, const Reader& rd, PartSet& par
   if (!r) return r;
   auto round = [&](std::string_view key, bool hole) {
     return config::each_table(root, key, origin, [&](const toml::table& t) -> Result<void> {
-      auto k = check_keys(t, {"part", "center", "radius", "bottom", "top"}, origin,
+      auto k = check_keys(t, {"part", "frame", "center", "radius", "bottom", "top"}, origin,
                           "[[" + std::string(key) + "]]");
       if (!k) return k;
       auto c = rd.vec<2>(t, "center");
@@ -184,7 +280,7 @@ Result<void> parse_parts(const toml::table& root, const Reader& rd, PartSet& par
   r = round("bore", true);
   if (!r) return r;
   r = config::each_table(root, "sphere", origin, [&](const toml::table& t) -> Result<void> {
-    auto k = check_keys(t, {"part", "center", "radius"}, origin, "[[sphere]]");
+    auto k = check_keys(t, {"part", "frame", "center", "radius"}, origin, "[[sphere]]");
     if (!k) return k;
     auto c = rd.vec<3>(t, "center");
     if (!c) return std::unexpected(c.error());
@@ -198,7 +294,7 @@ Result<void> parse_parts(const toml::table& root, const Reader& rd, PartSet& par
   });
   if (!r) return r;
   return config::each_table(root, "plane", origin, [&](const toml::table& t) -> Result<void> {
-    auto k = check_keys(t, {"part", "point", "normal"}, origin, "[[plane]]");
+    auto k = check_keys(t, {"part", "frame", "point", "normal"}, origin, "[[plane]]");
     if (!k) return k;
     auto pt = rd.vec<3>(t, "point");
     if (!pt) return std::unexpected(pt.error());
@@ -215,12 +311,59 @@ Result<void> parse_parts(const toml::table& root, const Reader& rd, PartSet& par
   });
 }
 
+// The probe's length, gauge line to ball centre, kept in one place: the
+// scene's `length`, or the machine file's tool offset H`offset` (the probe's
+// T number by default; geometry + wear, as G43 applies it). Both may be given
+// only when they agree to 1 nm.
+Result<double> probe_length(const toml::table& t, const Reader& rd, int tool) {
+  std::optional<int> h;
+  if (t.get("offset") != nullptr) {
+    auto o = rd.integer(t, "offset", 1, rd.m.tool_offset_count, std::nullopt);
+    if (!o) return std::unexpected(o.error());
+    h = static_cast<int>(*o);
+  } else if (tool >= 1 && tool <= rd.m.tool_offset_count) {
+    h = tool;
+  }
+  const auto it = h ? rd.m.tool_offsets.find(*h) : rd.m.tool_offsets.end();
+  const auto* scene = t.get("length");
+  if (it == rd.m.tool_offsets.end()) {
+    if (t.get("offset") != nullptr) {
+      return config_error(*t.get("offset"), rd.origin,
+                          "offset = " + std::to_string(*h) +
+                              ": the machine file has no tool offset of that number "
+                              "([tool_offsets] " +
+                              std::to_string(*h) + " = { length = ... })");
+    }
+    return scene != nullptr ? get_number(*scene, rd.origin, "length", 0.0, kFar) : 0.0;
+  }
+  const double table = it->second.length_geometry + it->second.length_wear;
+  if (scene == nullptr) {
+    if (!(table >= 0.0 && table <= kFar)) {
+      return config_error(t, rd.origin,
+                          "the probe's length from H" + std::to_string(it->first) + " (" +
+                              std::to_string(table) + " mm) must be between 0 and 1e6 mm");
+    }
+    return table;
+  }
+  auto v = get_number(*scene, rd.origin, "length", 0.0, kFar);
+  if (!v) return v;
+  if (std::fabs(*v - table) > 1e-6) {
+    return config_error(*scene, rd.origin,
+                        "the probe's length is " + std::to_string(*v) + " mm here but H" +
+                            std::to_string(it->first) + " of the machine file (" + rd.m.origin +
+                            ") says " + std::to_string(table) +
+                            " mm: keep it in one place (drop this key, or the tool offset)");
+  }
+  return *v;
+}
+
 Result<ProbeSpec> parse_probe(const toml::table& t, const Reader& rd) {
   const auto origin = rd.origin;
-  auto k = check_keys(t,
-                      {"signal", "tool", "ball_radius", "length", "stylus_length", "body_radius",
-                       "pre_travel", "max_overtravel", "lobing", "repeatability", "seed"},
-                      origin, "[probe]");
+  auto k =
+      check_keys(t,
+                 {"signal", "tool", "offset", "ball_radius", "length", "stylus_length",
+                  "body_radius", "pre_travel", "max_overtravel", "lobing", "repeatability", "seed"},
+                 origin, "[probe]");
   if (!k) return std::unexpected(k.error());
   ProbeSpec p;
   auto sig = rd.signal(t, p.signal_name);
@@ -229,8 +372,7 @@ Result<ProbeSpec> parse_probe(const toml::table& t, const Reader& rd) {
   auto tool = rd.integer(t, "tool", 0, 99999999, 0);
   if (!tool) return std::unexpected(tool.error());
   p.tool = static_cast<int>(*tool);
-  const std::pair<std::string_view, double*> lengths[] = {{"length", &p.length},
-                                                          {"stylus_length", &p.stylus_length},
+  const std::pair<std::string_view, double*> lengths[] = {{"stylus_length", &p.stylus_length},
                                                           {"body_radius", &p.body_radius},
                                                           {"repeatability", &p.repeatability}};
   for (const auto& [key, field] : lengths) {
@@ -238,6 +380,9 @@ Result<ProbeSpec> parse_probe(const toml::table& t, const Reader& rd) {
     if (!v) return std::unexpected(v.error());
     *field = *v;
   }
+  auto length = probe_length(t, rd, p.tool);
+  if (!length) return std::unexpected(length.error());
+  p.length = *length;
   auto ball = rd.number(t, "ball_radius", 1e-3, 1000.0);
   if (!ball) return std::unexpected(ball.error());
   p.ball_radius = *ball;
@@ -279,9 +424,10 @@ Result<ProbeSpec> parse_probe(const toml::table& t, const Reader& rd) {
   return p;
 }
 
-Result<ToolSetterSpec> parse_setter(const toml::table& t, const Reader& rd) {
+Result<ToolSetterSpec> parse_setter(const toml::table& t, const Reader& rd, const Frames& frames) {
   auto k = check_keys(
-      t, {"signal", "center", "top", "radius", "thickness", "pre_travel", "max_overtravel"},
+      t,
+      {"signal", "frame", "center", "top", "radius", "thickness", "pre_travel", "max_overtravel"},
       rd.origin, "[tool_setter]");
   if (!k) return std::unexpected(k.error());
   ToolSetterSpec s;
@@ -307,6 +453,13 @@ Result<ToolSetterSpec> parse_setter(const toml::table& t, const Reader& rd) {
   auto over = rd.number(t, "max_overtravel", 0.0, 1000.0, 1.0);
   if (!over) return std::unexpected(over.error());
   s.max_overtravel = *over;
+  // A disc: only its centre and top move with the frame.
+  auto place = frames.resolve(t, rd.origin);
+  if (!place) return std::unexpected(place.error());
+  const geo::Vec3 c0 = place->to_machine({s.x, s.y, s.top});
+  s.x = c0.x;
+  s.y = c0.y;
+  s.top = c0.z;
   return s;
 }
 
@@ -377,8 +530,11 @@ Result<Probing> parse_probing(const toml::table& root, std::string_view origin,
                               const config::Parameters& p) {
   const Reader rd{origin, m, d, p};
   Probing out;
-  PartSet parts;
-  auto r = parse_parts(root, rd, parts);
+  Frames frames(m);
+  auto r = frames.load(root, rd);
+  if (!r) return std::unexpected(r.error());
+  PartSet parts(frames);
+  r = parse_parts(root, rd, parts);
   if (!r) return std::unexpected(r.error());
   r = parts.check_solids(origin);
   if (!r) return std::unexpected(r.error());
@@ -395,7 +551,7 @@ Result<Probing> parse_probing(const toml::table& root, std::string_view origin,
     out.probe = *probe;
   }
   if (const auto* t = single(root, "tool_setter")) {
-    auto setter = parse_setter(*t, rd);
+    auto setter = parse_setter(*t, rd, frames);
     if (!setter) return std::unexpected(setter.error());
     out.tool_setter = *setter;
   }

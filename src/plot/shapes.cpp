@@ -290,19 +290,26 @@ void add_part(const machine::geo::Part& part, const Frame3& f, std::vector<Shape
 
 void add_scene_extent(const machine::Scene& scene, Box3& extent) {
   for (const auto& part : scene.probing.parts) {
+    // Corners of each shape's box, placed in machine coordinates.
+    auto add = [&](double x0, double y0, double z0, double x1, double y1, double z1) {
+      for (int i = 0; i < 8; ++i) {
+        const machine::geo::Vec3 c{(i & 1) != 0 ? x1 : x0, (i & 2) != 0 ? y1 : y0,
+                                   (i & 4) != 0 ? z1 : z0};
+        extent.add(v3(part.place.to_machine(c)));
+      }
+    };
     for (const auto& s : part.solids) {
       switch (s.kind) {
         case machine::geo::ShapeKind::kBox:
-          extent.add(v3(s.lo));
-          extent.add(v3(s.hi));
+          add(s.lo.x, s.lo.y, s.lo.z, s.hi.x, s.hi.y, s.hi.z);
           break;
         case machine::geo::ShapeKind::kCylinder:
-          extent.add(Vec3{s.lo.x - s.radius, s.lo.y - s.radius, s.lo.z});
-          extent.add(Vec3{s.hi.x + s.radius, s.hi.y + s.radius, s.hi.z});
+          add(s.lo.x - s.radius, s.lo.y - s.radius, s.lo.z, s.hi.x + s.radius, s.hi.y + s.radius,
+              s.hi.z);
           break;
         case machine::geo::ShapeKind::kSphere:
-          extent.add(Vec3{s.center.x - s.radius, s.center.y - s.radius, s.center.z - s.radius});
-          extent.add(Vec3{s.center.x + s.radius, s.center.y + s.radius, s.center.z + s.radius});
+          add(s.center.x - s.radius, s.center.y - s.radius, s.center.z - s.radius,
+              s.center.x + s.radius, s.center.y + s.radius, s.center.z + s.radius);
           break;
         case machine::geo::ShapeKind::kHalfSpace:
           break;  // unbounded: drawn over what the rest needs
@@ -321,7 +328,17 @@ std::vector<Shape> scene_shapes(const machine::Scene& scene, const config::Machi
   const Frame3 f = frame_of(extent);
   for (const auto& t : scene.triggers) add_trigger(t, m, xyz, f, out);
   for (const auto& s : scene.stops) add_stop(s, m, xyz, f, out);
-  for (const auto& part : scene.probing.parts) add_part(part, f, out);
+  for (const auto& part : scene.probing.parts) {
+    // Shapes are drawn in the part's frame, then placed (a scene [[frame]]).
+    const std::size_t first = out.size();
+    add_part(part, f, out);
+    if (part.place.turned() || !(part.place.origin == machine::geo::Vec3{})) {
+      for (std::size_t i = first; i < out.size(); ++i) {
+        for (auto& p : out[i].pts) p = v3(part.place.to_machine({p.x, p.y, p.z}));
+        if (part.place.turned() && out[i].normal_axis != 2) out[i].normal_axis = -1;
+      }
+    }
+  }
   if (const auto& ts = scene.probing.tool_setter) {
     add_cylinder(ts->x, ts->y, ts->radius, ts->top - ts->thickness, ts->top, Ink::kSetter,
                  "tool setter " + ts->signal_name, out);

@@ -49,6 +49,21 @@ TEST(Rules, rule_14_tsg_0_level_an_input_active_at_block_start_ends_the_block) {
   EXPECT_NEAR(o.skip().position[2], 0.0, 0.02) << "latched where the block started";
 }
 
+// Level detection, input on when the G31 starts (issue 14): the block ends
+// with no motion at all, the latch is the block's start point (Z0, on the
+// machine too) and its time the block's start.
+Rig pulses(const char* dialect);
+TEST(Rules, rule_14_level_input_on_at_start_ends_the_block_without_any_motion) {
+  for (const char* d : {"fanuc", "nct", "mitsubishi"}) {
+    const Outcome o = pulses(d).run(kProbeZ);
+    ASSERT_TRUE(o.completed()) << d << " " << o.alarm_code();
+    ASSERT_TRUE(o.skip().triggered) << d;
+    EXPECT_EQ(o.skip().position[2], 0.0) << d << ": the latch is the start point";
+    EXPECT_EQ(o.skip().time_s, 0.0) << d << ": the latch time is the block start";
+    EXPECT_EQ(o.r.final_machine[2], 0.0) << d << ": not one period of motion";
+  }
+}
+
 TEST(Rules, rule_14_tsg_1_edge_an_input_active_at_block_start_waits_for_a_new_edge) {
   const Outcome o = pulses("fanuc").param("6200#0=1").machine(ideal_servo).run(kProbeZ);
   ASSERT_TRUE(o.completed());

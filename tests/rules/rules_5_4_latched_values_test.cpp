@@ -121,7 +121,7 @@ TEST(Rules, rule_23_g45_g48_in_absolute_mode_and_with_twice_the_offset) {
 }
 
 TEST(Rules, rule_23_g45_is_not_a_code_of_the_fanuc_dialect) {
-  const Outcome o = Rig("fanuc").run("G21 G90 G91 G45 X10. D1\nM30\n");
+  const Outcome o = Rig("fanuc").run("G21 G91 G45 X10. D1\nM30\n");
   EXPECT_EQ(o.alarm_id(), AlarmId::kUnknownGCode);
 }
 

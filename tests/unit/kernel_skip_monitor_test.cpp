@@ -87,7 +87,9 @@ TEST(KernelSkip, HandshakeActiveSkipRecordedDone) {
   Bench b;
   canon::SkipSpec spec;
   b.skip(10.0, 600.0, spec);
-  EXPECT_FALSE(b.tick().handshake.active) << "Active from the tick that sees the move start";
+  // Seed 003: Active is set at the start of the G31 move, i.e. in the tick
+  // whose command starts it.
+  EXPECT_TRUE(b.tick().handshake.active) << "Active from the tick that starts the move";
   EXPECT_TRUE(b.tick().handshake.active);
   const auto& hit = b.tick({kernel::SignalEdge{kSkip, true, 0.5}});
   EXPECT_TRUE(hit.handshake.skip);

@@ -1,0 +1,1 @@
+../../../examples/frames/bore_g54.nc

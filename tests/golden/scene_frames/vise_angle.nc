@@ -1,0 +1,1 @@
+../../../examples/frames/vise_angle.nc

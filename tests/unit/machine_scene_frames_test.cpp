@@ -1,0 +1,196 @@
+// Scenes as the setup sheet has them: parts and the tool setter placed in a
+// work frame of the machine file (G54..G59) or in a scene [[frame]] (an
+// origin and a turn about Z), and the probe's length kept in one place.
+// Expected contacts are worked out by hand from the geometry.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "config/dialect.hpp"
+#include "config/machine_config.hpp"
+#include "machine/geometry.hpp"
+#include "machine/scene.hpp"
+
+namespace skipnc::machine {
+namespace {
+
+// mill3 with EXT Z-1, G54 (100, 50, -200) and the probe's 150 mm in H20.
+const config::MachineConfig& shop() {
+  static const auto m = config::parse_machine(R"(extends = "mill3"
+[work_offsets]
+EXT = { Z = -1.0 }
+G54 = { X = 100.0, Y = 50.0, Z = -200.0 }
+[tool_offsets]
+20 = { length = 149.5, length_wear = 0.5 }
+)",
+                                              "shop.toml");
+  return *m;
+}
+
+Result<Scene> load(const std::string& text) {
+  static const auto d = config::builtin_dialect("fanuc");
+  static const config::Parameters p(&*d);
+  return parse_scene(text, "frames.scene.toml", shop(), *d, p);
+}
+
+constexpr double kPi = 3.14159265358979323846;
+
+TEST(SceneFrames, APartInG54StandsAtExtPlusG54) {
+  auto s = load(R"([[box]]
+part = "block"
+frame = "G54"
+min = [-10, -10, -20]
+max = [10, 10, 0]
+)");
+  ASSERT_TRUE(s) << s.error().detail;
+  const geo::Material mat(s->probing.parts);
+  // The top face is at work Z0: machine Z = EXT -1 + G54 -200 = -201. A 1 mm
+  // ball coming down at X100 Y50 from Z-190 to Z-210 touches it when its
+  // centre is at Z-200: half-way.
+  geo::Contact c;
+  ASSERT_TRUE(mat.first_contact({100, 50, -190}, {100, 50, -210}, 1.0, c));
+  EXPECT_NEAR(c.t, 0.5, 1e-12);
+  EXPECT_NEAR(c.point.z, -201.0, 1e-12);
+  EXPECT_NEAR(c.normal.z, 1.0, 1e-12);
+  // The side face X+ is at machine X110: a ball moving -X at Z-211 touches at
+  // centre X111.
+  ASSERT_TRUE(mat.first_contact({130, 50, -211}, {100, 50, -211}, 1.0, c));
+  EXPECT_NEAR(130.0 - 30.0 * c.t, 111.0, 1e-9);
+}
+
+TEST(SceneFrames, APartInATurnedFrameIsTouchedOnItsTurnedFace) {
+  auto s = load(R"([[frame]]
+name = "vise"
+base = "G54"
+origin = [5, 0, 0]
+rotation = 30.0
+[[box]]
+part = "jaw"
+frame = "vise"
+min = [0, 0, -20]
+max = [40, 20, 0]
+)");
+  ASSERT_TRUE(s) << s.error().detail;
+  const geo::Material mat(s->probing.parts);
+  // The jaw's front face is the line through the vise origin, machine
+  // (105, 50), along (cos 30, sin 30); outward normal n = (sin 30, -cos 30).
+  // A 1 mm ball moving +Y at X125 touches when (X - 105) sin 30 - (Y - 50)
+  // cos 30 = 1: Y = 50 + (20 * 0.5 - 1) / cos 30.
+  const double y = 50.0 + 9.0 / std::cos(30.0 * kPi / 180.0);
+  geo::Contact c;
+  ASSERT_TRUE(mat.first_contact({125, 40, -211}, {125, 80, -211}, 1.0, c));
+  EXPECT_NEAR(40.0 + 40.0 * c.t, y, 1e-9);
+  EXPECT_NEAR(c.normal.x, 0.5, 1e-12);  // n = (sin 30, -cos 30)
+  EXPECT_NEAR(c.normal.y, -std::cos(30.0 * kPi / 180.0), 1e-12);
+  // Distance and depth are taken in the part's frame too: the vise origin
+  // corner (105, 50, -201) is on the surface; 1 mm inside along the face
+  // normal is 1 mm deep.
+  EXPECT_NEAR(mat.distance({105.0 - 0.5 * 2, 50.0 + std::cos(30.0 * kPi / 180.0) * 2, -201.0 - 5}),
+              0.0, 1e-12);
+  EXPECT_NEAR(mat.depth({105 + 20 * std::cos(30 * kPi / 180) - 0.5 * 1.0,
+                         50 + 20 * 0.5 + std::cos(30 * kPi / 180) * 1.0, -211}),
+              1.0, 1e-9);
+}
+
+TEST(SceneFrames, ATurnedColumnCheckUsesThePartsFrame) {
+  auto s = load(R"([[frame]]
+name = "turned"
+origin = [0, 0, 0]
+rotation = 45.0
+[[box]]
+frame = "turned"
+min = [0, -1, -10]
+max = [100, 1, 0]
+)");
+  ASSERT_TRUE(s) << s.error().detail;
+  const geo::Material mat(s->probing.parts);
+  // A thin bar along the 45-degree diagonal: a 0.5 mm tool at (50, 50) stands
+  // on its axis; at (50, 0) it is 35 mm away.
+  EXPECT_EQ(mat.column_hits({50.0 * std::sqrt(0.5), 50.0 * std::sqrt(0.5), 0.5, -5, 100}, 1e-9), 0);
+  EXPECT_EQ(mat.column_hits({50, 0, 0.5, -5, 100}, 1e-9), -1);
+}
+
+TEST(SceneFrames, TheToolSetterIsPlacedInItsFrame) {
+  auto s = load(R"([tool_setter]
+signal = "SKIP"
+frame = "G54"
+center = [-250, -150]
+top = -100
+radius = 6
+)");
+  ASSERT_TRUE(s) << s.error().detail;
+  ASSERT_TRUE(s->probing.tool_setter);
+  EXPECT_DOUBLE_EQ(s->probing.tool_setter->x, -150.0);
+  EXPECT_DOUBLE_EQ(s->probing.tool_setter->y, -100.0);
+  EXPECT_DOUBLE_EQ(s->probing.tool_setter->top, -301.0);
+}
+
+TEST(SceneFrames, BadFramesAreRefusedWithTheirPlace) {
+  auto unknown = load("[[box]]\nframe = \"G60\"\nmin = [0, 0, 0]\nmax = [1, 1, 1]\n");
+  ASSERT_FALSE(unknown);
+  EXPECT_EQ(unknown.error().id, AlarmId::kConfig);
+  EXPECT_EQ(unknown.error().loc.line, 2u);
+  auto twice = load(R"([[box]]
+part = "p"
+min = [0, 0, 0]
+max = [1, 1, 1]
+[[bore]]
+part = "p"
+frame = "G54"
+center = [0, 0]
+radius = 0.2
+)");
+  ASSERT_FALSE(twice);
+  EXPECT_EQ(twice.error().loc.line, 7u);
+  auto builtin = load("[[frame]]\nname = \"G54\"\n");
+  ASSERT_FALSE(builtin);
+  EXPECT_EQ(builtin.error().loc.line, 2u);
+  auto later = load("[[frame]]\nname = \"a\"\nbase = \"b\"\n[[frame]]\nname = \"b\"\n");
+  ASSERT_FALSE(later);
+  EXPECT_EQ(later.error().loc.line, 3u);
+  auto turn = load("[[frame]]\nname = \"a\"\nrotation = 400.0\n");
+  ASSERT_FALSE(turn);
+  EXPECT_EQ(turn.error().loc.line, 3u);
+}
+
+TEST(ProbeLength, ComesFromTheMachineFilesToolOffsetWhenTheSceneLeavesItOut) {
+  auto s = load("[probe]\nsignal = \"SKIP\"\ntool = 20\nball_radius = 1\nmax_overtravel = 1\n");
+  ASSERT_TRUE(s) << s.error().detail;
+  EXPECT_DOUBLE_EQ(s->probing.probe->length, 150.0);  // H20: 149.5 + wear 0.5
+  auto other = load(
+      "[probe]\nsignal = \"SKIP\"\ntool = 7\noffset = 20\nball_radius = 1\n"
+      "max_overtravel = 1\n");
+  ASSERT_TRUE(other) << other.error().detail;
+  EXPECT_DOUBLE_EQ(other->probing.probe->length, 150.0);
+  auto none = load("[probe]\nsignal = \"SKIP\"\ntool = 7\nball_radius = 1\nmax_overtravel = 1\n");
+  ASSERT_TRUE(none);
+  EXPECT_DOUBLE_EQ(none->probing.probe->length, 0.0);
+  auto here = load(
+      "[probe]\nsignal = \"SKIP\"\ntool = 7\nlength = 120\nball_radius = 1\n"
+      "max_overtravel = 1\n");
+  ASSERT_TRUE(here);
+  EXPECT_DOUBLE_EQ(here->probing.probe->length, 120.0);
+}
+
+TEST(ProbeLength, TwoDifferentLengthsAreRefusedAtTheScenesKey) {
+  auto s = load(
+      "[probe]\nsignal = \"SKIP\"\ntool = 20\nball_radius = 1\nlength = 151\n"
+      "max_overtravel = 1\n");
+  ASSERT_FALSE(s);
+  EXPECT_EQ(s.error().id, AlarmId::kConfig);
+  EXPECT_EQ(s.error().loc.line, 5u);
+  EXPECT_EQ(s.error().loc.column, 10u);
+  auto same = load(
+      "[probe]\nsignal = \"SKIP\"\ntool = 20\nball_radius = 1\nlength = 150\n"
+      "max_overtravel = 1\n");
+  EXPECT_TRUE(same);
+  auto missing = load(
+      "[probe]\nsignal = \"SKIP\"\ntool = 20\noffset = 21\nball_radius = 1\n"
+      "max_overtravel = 1\n");
+  ASSERT_FALSE(missing);
+  EXPECT_EQ(missing.error().loc.line, 4u);
+}
+
+}  // namespace
+}  // namespace skipnc::machine
