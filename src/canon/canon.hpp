@@ -123,6 +123,10 @@ using Command =
 struct Stamped {
   Command cmd;
   std::uint32_t line = 0;
+  // Where the block is: the interpreter's call context (its file, O number
+  // and call stack; interp::CallContext), 0 for the main program.
+  std::uint32_t source = 0;
+  std::int32_t n = -1;  // the block's N number, -1 when it has none
 };
 
 }  // namespace skipnc::canon

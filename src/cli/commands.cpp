@@ -11,6 +11,7 @@
 #include <unistd.h>
 
 #include "canon/print.hpp"
+#include "cli/expect.hpp"
 #include "cli/plot.hpp"
 #include "cli/session.hpp"
 #include "config/skip_inputs.hpp"
@@ -50,6 +51,12 @@ std::string fmt_axes(const AxisVec& v, const config::MachineConfig& m) {
   return out;
 }
 
+// At most `width` characters: a longer text ends in an ellipsis.
+std::string shorten(const std::string& text, std::size_t width) {
+  if (text.size() <= width) return text;
+  return text.substr(0, width - 3) + "...";
+}
+
 void print_summary(std::FILE* f, const machine::RunResult& r, const Session& s,
                    const std::string& program) {
   const auto& m = s.machine;
@@ -60,10 +67,19 @@ void print_summary(std::FILE* f, const machine::RunResult& r, const Session& s,
     case machine::RunStatus::kInterrupted: fmt::print(f, "interrupted"); break;
   }
   fmt::print(f, " after {:.3f} s of machine time\n", r.time_s);
-  if (r.alarm) fmt::print(f, "  {}\n", describe(*r.alarm, &s.dialect));
+  if (r.alarm) {
+    fmt::print(f, "  {}\n", describe(*r.alarm, &s.dialect));
+    if (r.alarm_context != 0 && !r.contexts.empty())
+      fmt::print(f, "  at {}\n", report::where(r.contexts, r.alarm_context, r.alarm->loc.line));
+  }
   for (const auto& sk : r.skips) {
-    fmt::print(f, "  line {:>4}  {:<28} ", sk.line, sk.block.substr(0, 28));
-    if (sk.triggered) {
+    fmt::print(f, "  {}\n    {:<28} ", report::where(r.contexts, sk.context, sk.line, sk.n),
+               shorten(sk.block, 28));
+    if (sk.ended_by_alarm) {
+      fmt::print(f, "cut short by the alarm{}\n",
+                 sk.triggered ? fmt::format(" after {} at {:.4f} s, stored {}", sk.signal.empty() ? "signal" : sk.signal, sk.time_s, fmt_axes(sk.position, m))
+                              : std::string(" before any signal"));
+    } else if (sk.triggered) {
       fmt::print(f, "{} at {:.4f} s  stored {}  stopped {}\n", sk.signal.empty() ? "signal" : sk.signal,
                  sk.time_s, fmt_axes(sk.position, m), fmt_axes(sk.end_position, m));
     } else {
@@ -86,6 +102,18 @@ int execute(const RunArgs& a, Session& s, interp::Setup setup, bool explain) {
     auto r = parse_var_ref(v);
     if (!r) return start_failure(a, r.error(), &s);
     vars.push_back(*r);
+  }
+  std::vector<Expectation> expects;
+  std::vector<VarRef> expect_vars;
+  for (const auto& text : a.expect) {
+    auto e = parse_expectation(text);
+    if (!e) return start_failure(a, e.error(), &s);
+    if (e->kind == Expectation::Kind::kVariable) {
+      auto r = parse_var_ref("#" + e->var);
+      if (!r) return start_failure(a, r.error(), &s);
+      expect_vars.push_back(*r);
+    }
+    expects.push_back(*e);
   }
   std::unique_ptr<report::CsvTrace> trace;
   if (!a.trace.empty()) {
@@ -130,6 +158,30 @@ int execute(const RunArgs& a, Session& s, interp::Setup setup, bool explain) {
     in.variables.emplace_back(v.key, out);
   }
   int rc = in.result.status == machine::RunStatus::kCompleted ? 0 : 1;
+  // --expect: checked on the run's outcome; variables as the control holds them.
+  std::vector<std::string> failed;
+  if (!expects.empty()) {
+    ObservedRun got;
+    got.status = in.result.status == machine::RunStatus::kCompleted   ? "completed"
+                 : in.result.status == machine::RunStatus::kInterrupted ? "interrupted"
+                                                                        : "alarm";
+    if (in.result.alarm) got.alarm = report::view_alarm(*in.result.alarm, &s.dialect).number;
+    for (const auto& v : expect_vars) {
+      Result<interp::Value> val = v.name.empty() ? sim.interpreter()->read_variable(v.number)
+                                                 : sim.interpreter()->read_named(v.name);
+      std::optional<double> x;
+      if (val && !val->vacant) x = val->v;
+      got.variables.emplace_back(v.key, x);
+    }
+    bool outcome_expected = false;
+    for (const auto& e : expects) {
+      outcome_expected |= e.kind != Expectation::Kind::kVariable;
+      if (auto why = check_expectation(e, got); !why.empty()) failed.push_back(why);
+    }
+    // The run's outcome was asked for and held: an expected alarm is a pass.
+    if (outcome_expected && failed.empty()) rc = 0;
+    if (!failed.empty()) rc = 3;
+  }
   if (trace) {
     auto f = trace->finish();
     if (!f) {
@@ -158,6 +210,10 @@ int execute(const RunArgs& a, Session& s, interp::Setup setup, bool explain) {
   }
   if (in.result.alarm) std::cerr << "skipnc: " << describe(*in.result.alarm, &s.dialect) << "\n";
   if (!a.quiet) print_summary(out, in.result, s, a.program);
+  for (const auto& why : failed) std::cerr << "skipnc: " << why << "\n";
+  if (!expects.empty() && failed.empty() && !a.quiet) {
+    fmt::print(out, "  {} expectation{} held\n", expects.size(), expects.size() == 1 ? "" : "s");
+  }
   return rc;
 }
 
@@ -181,7 +237,28 @@ class PrintSink final : public interp::CommandSink {
     buf_.reserve(1 << 17);
   }
   ~PrintSink() override { flush(); }
+  // The interpreter whose call contexts name the files (set once it exists).
+  void set_interpreter(const interp::Interpreter* in) { in_ = in; }
   void emit(const canon::Stamped& c) override {
+    if (c.source != source_ && in_ != nullptr) {
+      // A FILE line where the commands start coming from another file or
+      // program: "FILE O9023.nc O9023 called from bore.nc:9 (G65 P9023)".
+      source_ = c.source;
+      const auto& cs = in_->contexts();
+      if (c.source < cs.size()) {
+        const interp::CallContext& cc = cs[c.source];
+        fmt::format_to(fmt::appender(buf_), "FILE {}", cc.file);
+        if (cc.program > 0) fmt::format_to(fmt::appender(buf_), " O{}", cc.program);
+        for (std::uint32_t k = c.source, depth = 0; k < cs.size() && depth < cs.size(); ++depth) {
+          const interp::CallContext& callee = cs[k];
+          if (callee.parent >= cs.size()) break;
+          fmt::format_to(fmt::appender(buf_), " called from {}:{} ({})", cs[callee.parent].file,
+                         callee.call_line, callee.call);
+          k = callee.parent;
+        }
+        buf_.push_back('\n');
+      }
+    }
     canon::format_to(buf_, c, axes_);
     if (buf_.size() > (1 << 16)) flush();
   }
@@ -193,6 +270,8 @@ class PrintSink final : public interp::CommandSink {
  private:
   canon::AxisNames axes_;
   fmt::memory_buffer buf_;
+  const interp::Interpreter* in_ = nullptr;
+  std::uint32_t source_ = 0;
 };
 
 }  // namespace
@@ -211,6 +290,7 @@ int canon_command(const RunArgs& a) {
   auto in = interp::Interpreter::create(make_setup(a, s), AxisVec{});
   if (!in) return start_failure(a, in.error(), &s);
   PrintSink sink(s.machine);
+  sink.set_interpreter(in->get());
   for (;;) {
     auto st = (*in)->step(sink);
     if (!st) {

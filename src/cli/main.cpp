@@ -5,6 +5,7 @@
 #include "cli/commands.hpp"
 #include "cli/repeat.hpp"
 #include "cli/plot.hpp"
+#include "cli/sweep.hpp"
 #include "cli/show.hpp"
 
 int main(int argc, char** argv) {
@@ -27,6 +28,9 @@ int main(int argc, char** argv) {
   run->add_option("-I,--include", run_args.include, "subprogram folder (repeatable)");
   run->add_option("--dprnt", run_args.dprnt, "file for DPRNT output (POPEN/PCLOS)");
   run->add_flag("-q,--quiet", run_args.quiet, "no summary on standard output");
+  run->add_option("--expect", run_args.expect,
+                  "CI check: #140=-0.05+-0.001, #140=vacant, status=completed, alarm=9061 "
+                  "(repeatable; exit status 3 when one fails)");
   run->add_option("--repeat", run_args.repeat,
                   "run N times with the probe's scatter; report mean, std dev, worst case")
       ->check(CLI::Range(1, 1000000));
@@ -63,6 +67,18 @@ int main(int argc, char** argv) {
 
   auto* dialects = app.add_subcommand("dialects", "list the dialects and what differs");
 
+  skipnc::cli::SweepArgs sweep_args;
+  auto* sweep = app.add_subcommand("sweep", "run a program in N scenarios on all cores");
+  sweep->add_option("spec", sweep_args.spec, "sweep spec (TOML)")->required();
+  sweep->add_option("--csv", sweep_args.csv, "the table as CSV (default: SPEC.sweep.csv here)");
+  sweep->add_option("--json", sweep_args.json, "table and summary as JSON (SPEC.sweep.json)");
+  sweep->add_option("-j,--workers", sweep_args.workers, "threads (0: every core; default: spec's)")
+      ->check(CLI::Range(0, 4096));
+  sweep->add_option("-n,--scenarios", sweep_args.scenarios, "scenarios (default: the spec's)")
+      ->check(CLI::Range(1LL, 100000000LL));
+  sweep->add_option("--seed", sweep_args.seed, "seed of the draws (default: the spec's)")
+      ->check(CLI::Range(0LL, 9000000000000000000LL));
+  sweep->add_flag("-q,--quiet", sweep_args.quiet, "no summary on standard output");
   skipnc::cli::ShowArgs show_args;
   auto* show = app.add_subcommand("show", "print a built-in file: machine NAME, machines, demo");
   show->add_option("what", show_args.what, "machine, machines or demo")->required();
@@ -82,6 +98,7 @@ int main(int argc, char** argv) {
   if (demo->parsed()) return skipnc::cli::demo_command(demo_args);
   if (plot->parsed()) return skipnc::cli::plot_command(plot_args);
   if (dialects->parsed()) return skipnc::cli::dialects_command();
+  if (sweep->parsed()) return skipnc::cli::sweep_command(sweep_args);
   if (show->parsed()) return skipnc::cli::show_command(show_args);
   return 2;
 }

@@ -65,6 +65,7 @@ const AxisVec& Interpolator::tick() noexcept {
     remaining -= left;
     pos_ = seg_->end;
     line_ = seg_->line;
+    source_ = seg_->source;
     tag_ = seg_->tag;
     queue_.pop_front();
     seg_ = queue_.front();
@@ -79,6 +80,7 @@ const AxisVec& Interpolator::tick() noexcept {
       speed_ *= scale_;
     }
     line_ = seg_->line;
+    source_ = seg_->source;
     tag_ = seg_->tag;
   } else {
     vel_ = AxisVec{};

@@ -28,6 +28,7 @@ class Interpolator {
   // Source line and tag of the active segment (of the last one when idle).
   std::uint32_t line() const noexcept { return line_; }
   std::uint32_t tag() const noexcept { return tag_; }
+  std::uint32_t source() const noexcept { return source_; }  // its call context
 
   // Scales the rate at which profile time advances (feed override, feed hold
   // at 0). Takes effect at the next tick.
@@ -54,6 +55,7 @@ class Interpolator {
   double speed_ = 0.0;
   double scale_ = 1.0;
   std::uint32_t line_ = 0;
+  std::uint32_t source_ = 0;
   std::uint32_t tag_ = 0;
   // Deceleration ramp after a skip (replaces the segment).
   bool ramp_ = false;

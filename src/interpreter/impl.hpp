@@ -62,6 +62,7 @@ struct Frame {
   gcode::SourcePos start;    // first block of the program
   gcode::SourcePos resume;   // next block to read when this frame runs again
   std::int64_t program = 0;  // O number (0: main program without one)
+  std::uint32_t context = 0;  // CallContext index
   int repeats_left = 0;      // M98 L / G65 L
   bool macro = false;        // G65/G66 call: owns a local-variable level
   bool modal_call = false;   // a G66 call (no re-entry of the modal macro inside)
@@ -184,6 +185,7 @@ struct Interpreter::Impl {
 
   std::vector<std::unique_ptr<ProgramFile>> files;
   std::vector<Frame> frames;
+  std::vector<CallContext> contexts;  // every call path met; [0] the main program
   gcode::Block blk;
   BlockBuffer block_buffer;  // the running block's commands (reused)
   Words cur_words;           // the current block's words (reused: cleared, not rebuilt, per block)
@@ -286,7 +288,9 @@ struct Interpreter::Impl {
   // macro_call.cpp
   Result<void> find_program(std::int64_t number, ProgramFile*& file, gcode::SourcePos& pos,
                             SourceLoc where);
-  Result<void> call(std::int64_t program, int repeats, bool macro, SourceLoc where);
+  Result<void> call(std::int64_t program, int repeats, bool macro, SourceLoc where,
+                    bool modal_call = false);
+  std::uint32_t context_of(CallContext c);  // index of c, added when new
   Result<Step> return_from_sub(std::optional<std::int64_t> label, SourceLoc where);
   Result<void> macro_call(std::int64_t program, int repeats, bool modal_call, SourceLoc where);
   Result<void> collect_argument(const gcode::Word& w, const WordVal& v, int& ijk_set,

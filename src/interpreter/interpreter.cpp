@@ -46,6 +46,17 @@ Result<void> Interpreter::Impl::init(const AxisVec& start) {
     auto r = load_persistent(mc.persistent_vars, vars.persistent());
     if (!r) return r;
   }
+  for (const auto& [n, v] : setup.variables) {
+    if (VariableStore::is_persistent(n)) {
+      vars.persistent()[static_cast<std::size_t>(n - 500)] = Value::of(v);
+    } else if (VariableStore::is_local(n) || VariableStore::is_common(n)) {
+      vars.set(n, Value::of(v));
+    } else {
+      return fail(AlarmId::kUsage,
+                  "variable #" + std::to_string(n) +
+                      " cannot be set before a run (#1-#33, #100-#199, #500-#999)");
+    }
+  }
   auto file = std::make_unique<ProgramFile>();
   file->display = setup.program_name;
   if (setup.program_path.empty()) {
@@ -60,6 +71,7 @@ Result<void> Interpreter::Impl::init(const AxisVec& start) {
   main.file = file.get();
   main.start = file->src->tell();
   main.resume = main.start;
+  contexts.push_back(CallContext{file->display, 0, CallContext::kNone, 0, ""});
   files.push_back(std::move(file));
   frames.push_back(main);
   return {};
@@ -141,7 +153,10 @@ Result<Step> Interpreter::Impl::step(CommandSink& out) {
             continue;
           }
         }
-        if (frames.size() == 1 && f.program == 0) f.program = blk.o;  // #4115 of the main program
+        if (frames.size() == 1 && f.program == 0) {
+          f.program = blk.o;  // #4115 of the main program
+          contexts.front().program = blk.o;
+        }
         continue;
       }
       if (blk.empty()) {
@@ -248,6 +263,15 @@ const std::vector<SkipRecord>& Interpreter::skips() const noexcept {
 }
 std::uint32_t Interpreter::line() const noexcept {
   return impl_->cur_line;
+}
+std::uint32_t Interpreter::context() const noexcept {
+  return impl_->frames.empty() ? 0 : impl_->frames.back().context;
+}
+const std::vector<CallContext>& Interpreter::contexts() const noexcept {
+  return impl_->contexts;
+}
+const SkipRecord* Interpreter::pending_skip() const noexcept {
+  return impl_->pending == Pending::kSkip ? &impl_->pending_skip.record : nullptr;
 }
 const AxisVec& Interpreter::position() const noexcept {
   return impl_->pos;

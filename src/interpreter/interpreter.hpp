@@ -7,6 +7,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -30,6 +31,11 @@ struct Setup {
   std::string program_name = "program";   // shown in errors and reports
   std::vector<std::string> include_dirs;  // subprogram lookup; the program's folder when empty
   std::string dprnt_path;                 // DPRNT output file; empty: DPRNT lines go to messages only
+  // Macro variables set before the first block (#1-#33 of the main program,
+  // #100-#199, #500-#999; a #500-#999 value replaces the persistent file's
+  // and is written back only if the program changes a variable). Python
+  // module and sweeps.
+  std::vector<std::pair<int, double>> variables;
 };
 
 class CommandSink {
@@ -51,9 +57,25 @@ struct SyncState {
   int input_index = -1;       // which selected input ended the block (-1: none/torque)
 };
 
+// Where a block runs: its file and program, and the call that led there.
+// Every distinct call path is one context; canon::Stamped::source, the
+// trace and the report name a block by (context, line). Context 0 is the
+// main program.
+struct CallContext {
+  static constexpr std::uint32_t kNone = 0xffffffffu;
+  std::string file;          // as shown (the file name as given or as found)
+  std::int64_t program = 0;  // O number (0: a main program without one)
+  std::uint32_t parent = kNone;  // the calling context
+  std::uint32_t call_line = 0;   // line of the calling block in the parent
+  std::string call;              // "G65 P9023", "M98 P1000", "G66 P9023"
+  friend bool operator==(const CallContext&, const CallContext&) = default;
+};
+
 // One executed skip block, as the report shows it.
 struct SkipRecord {
   std::uint32_t line = 0;
+  std::uint32_t context = 0;  // CallContext of the block
+  std::int32_t n = -1;        // N number of the block, -1 when none
   std::string block;            // the block's text
   canon::SkipKind kind = canon::SkipKind::kSkip;
   int p = -1;
@@ -63,6 +85,10 @@ struct SkipRecord {
   AxisVec position;             // stored (work coordinates, program units)
   AxisVec machine_position;     // the same instant, machine coordinates
   AxisVec end_position;         // where the axes came to rest, work coordinates
+  // The run stopped by an alarm (probe crash, stroke limit, ...) while the
+  // block ran: filled by the machine, which knows where.
+  bool ended_by_alarm = false;
+  std::optional<AxisVec> crash_machine;  // machine position of the alarm, when it has one
 };
 
 enum class Step : std::uint8_t { kContinue, kSync, kEnd };
@@ -92,6 +118,12 @@ class Interpreter {
   const std::vector<std::string>& messages() const noexcept;
   const std::vector<SkipRecord>& skips() const noexcept;
   std::uint32_t line() const noexcept;     // line of the block being executed
+  std::uint32_t context() const noexcept;  // its call context
+  // Every call context met so far (index = context id).
+  const std::vector<CallContext>& contexts() const noexcept;
+  // The skip block the machine is running (between step() returning kSync
+  // for it and sync()): its record without the result.
+  const SkipRecord* pending_skip() const noexcept;
   const AxisVec& position() const noexcept; // commanded machine position
   // Writes #500-#999 when they changed, and the DPRNT file when --dprnt
   // named one and the program opened it (POPEN); each file atomically.

@@ -224,8 +224,18 @@ Result<void> Interpreter::Impl::find_program(std::int64_t number, ProgramFile*& 
 // Nesting (Fanuc): G65/G66 macro calls up to 4 levels, M98 subprogram calls
 // up to 10 levels, each counted on its own (limits.max_macro_levels,
 // limits.max_subprogram_levels of the machine file).
-Result<void> Interpreter::Impl::call(std::int64_t program, int repeats, bool macro,
-                                     SourceLoc where) {
+// The context of a call: one per distinct call path (file, program, caller,
+// calling line and code), so that a block's context names its call stack.
+std::uint32_t Interpreter::Impl::context_of(CallContext c) {
+  for (std::size_t i = 0; i < contexts.size(); ++i) {
+    if (contexts[i] == c) return static_cast<std::uint32_t>(i);
+  }
+  contexts.push_back(std::move(c));
+  return static_cast<std::uint32_t>(contexts.size() - 1);
+}
+
+Result<void> Interpreter::Impl::call(std::int64_t program, int repeats, bool macro, SourceLoc where,
+                                     bool modal_call) {
   int subs = 0, macros = 0;
   for (std::size_t i = 1; i < frames.size(); ++i) (frames[i].macro ? macros : subs)++;
   if (macro && macros >= mc.limits.max_macro_levels) {
@@ -252,6 +262,9 @@ Result<void> Interpreter::Impl::call(std::int64_t program, int repeats, bool mac
   f.program = program;
   f.repeats_left = repeats - 1;
   f.macro = macro;
+  f.context = context_of(
+      CallContext{file->display, program, frames.back().context, where.line,
+                  (macro ? (modal_call ? "G66 P" : "G65 P") : "M98 P") + std::to_string(program)});
   frames.push_back(f);
   return file->src->seek(at);
 }
@@ -351,7 +364,7 @@ Result<void> Interpreter::Impl::collect_argument(const gcode::Word& w, const Wor
 Result<void> Interpreter::Impl::macro_call(std::int64_t program, int repeats, bool modal_call,
                                            SourceLoc where) {
   const std::array<Value, kLocalCount + 1> args = modal_call ? modal_macro_args : call_args;
-  auto c = call(program, repeats, true, where);
+  auto c = call(program, repeats, true, where, modal_call);
   if (!c) return c;
   frames.back().modal_call = modal_call;
   vars.push_level();

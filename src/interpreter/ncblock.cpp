@@ -838,7 +838,8 @@ Result<Step> Interpreter::Impl::execute_nc(const Words& words, CommandSink& out)
 }
 
 void Interpreter::Impl::emit(CommandSink& out, canon::Command cmd) {
-  out.emit(canon::Stamped{std::move(cmd), cur_line});
+  out.emit(canon::Stamped{std::move(cmd), cur_line, frames.back().context,
+                          blk.has_n ? static_cast<std::int32_t>(blk.n % 100000000) : -1});
 }
 
 }  // namespace skipnc::interp

@@ -243,6 +243,8 @@ Result<Step> Interpreter::Impl::skip_block(const Words& words, const AxisVec& ta
   // The record the report shows.
   SkipRecord& rec = pending_skip.record;
   rec.line = cur_line;
+  rec.context = frames.back().context;
+  rec.n = blk.has_n ? static_cast<std::int32_t>(blk.n % 100000000) : -1;
   std::string_view text = raw.text;
   while (!text.empty() && (text.back() == ' ' || text.back() == '\t' || text.back() == '\r')) {
     text.remove_suffix(1);

@@ -26,6 +26,7 @@ void Kernel::set_position(const AxisVec& machine) noexcept {
 void Kernel::push(const canon::Stamped& stamped) {
   planner::Move m;
   m.line = stamped.line;
+  m.source = stamped.source;
   m.tag = next_tag_++;
   if (next_tag_ == 0) next_tag_ = 1;
   std::visit(
@@ -65,6 +66,7 @@ void Kernel::push(const canon::Stamped& stamped) {
           skip_.spec = c.spec;
           skip_.target = c.target;
           skip_.line = stamped.line;
+          skip_.source = stamped.source;
           skip_tag_ = m.tag;
           skip_started_ = false;
           skip_stopping_ = false;
@@ -311,6 +313,7 @@ void Kernel::tick(const TickInput& in, TickOutput& out) noexcept {
   out.velocity = interp_.velocity();
   out.path_speed = interp_.path_speed();
   out.line = interp_.line();
+  out.source = interp_.source();
   out.skip_active = skip_.active && !skip_.done;
   out.handshake = handshake_;
   out.torque_limit_pct = AxisVec{};

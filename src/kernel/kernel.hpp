@@ -54,6 +54,7 @@ struct TickOutput {
   AxisVec velocity;   // commanded velocity, mm/s
   double path_speed = 0.0;
   std::uint32_t line = 0;  // source line of the active motion
+  std::uint32_t source = 0;  // and its call context (canon::Stamped::source)
   bool skip_active = false;
   SkipHandshake handshake;
   // Torque limit the servo applies, % per axis (0: the servo's own limit).
@@ -87,6 +88,7 @@ struct SkipResult {
   canon::SkipSpec spec;
   AxisVec target;
   std::uint32_t line = 0;
+  std::uint32_t source = 0;
 };
 
 struct KernelConfig {

@@ -4,6 +4,8 @@
 #include <array>
 #include <limits>
 
+#include "machine/mesh.hpp"
+
 namespace skipnc::machine::geo {
 namespace {
 
@@ -671,6 +673,20 @@ bool Material::first_contact(Vec3 a, Vec3 b, double radius, Contact& out) const 
       found = true;
     }
   }
+  for (std::size_t p = 0; p < parts_.size(); ++p) {
+    const Part& part = parts_[p];
+    for (const auto& mesh : part.meshes) {
+      double t = 0.0;
+      Vec3 point, normal;
+      if (mesh->first_contact(part.place.to_local(a), part.place.to_local(b), radius, t, point,
+                              normal) &&
+          (!found || t < out.t)) {
+        out =
+            Contact{t, part.place.to_machine(point), part.place.turn(normal), static_cast<int>(p)};
+        found = true;
+      }
+    }
+  }
   return found;
 }
 
@@ -726,10 +742,15 @@ double Material::part_sdf(const Part& part, Vec3 p) const noexcept {
 }
 
 double Material::distance(Vec3 p) const noexcept {
-  for (const Part& part : parts_) {
-    if (part_sdf(part, part.place.to_local(p)) < 0.0) return 0.0;
-  }
   double best = kInf;
+  for (const Part& part : parts_) {
+    const Vec3 q = part.place.to_local(p);
+    if (!part.solids.empty() && part_sdf(part, q) < 0.0) return 0.0;
+    for (const auto& mesh : part.meshes) {
+      if (mesh->inside(q)) return 0.0;
+      best = std::min(best, mesh->surface_distance(q));
+    }
+  }
   Vec3 q;
   for (const Feature& f : features_) {
     const double d = feature_distance(f, place_of(f).to_local(p), q);
@@ -740,7 +761,13 @@ double Material::distance(Vec3 p) const noexcept {
 
 double Material::depth(Vec3 p) const noexcept {
   double d = 0.0;
-  for (const Part& part : parts_) d = std::max(d, -part_sdf(part, part.place.to_local(p)));
+  for (const Part& part : parts_) {
+    const Vec3 q = part.place.to_local(p);
+    if (!part.solids.empty()) d = std::max(d, -part_sdf(part, q));
+    for (const auto& mesh : part.meshes) {
+      if (mesh->inside(q)) d = std::max(d, mesh->surface_distance(q));
+    }
+  }
   return d;
 }
 
@@ -750,6 +777,9 @@ int Material::column_hits(const Column& world, double tol) const noexcept {
     // A vertical column stays vertical in a frame turned about Z.
     const Vec3 foot = part.place.to_local(Vec3{world.x, world.y, world.bottom});
     const Column c{foot.x, foot.y, world.radius, foot.z, foot.z + (world.top - world.bottom)};
+    for (const auto& mesh : part.meshes) {
+      if (mesh->column_overlap(c) > tol) return static_cast<int>(p);
+    }
     for (const Shape& s : part.solids) {
       if (column_shape_overlap(c, s) <= tol) continue;
       bool clear = false;

@@ -16,6 +16,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -95,11 +96,15 @@ struct Placement {
   constexpr Vec3 to_machine(Vec3 q) const noexcept { return origin + turn(q); }
 };
 
+class TriMesh;  // mesh.hpp
+
 struct Part {
   std::string name;
   std::vector<Shape> solids;
   std::vector<Shape> holes;  // boxes and cylinders; cut from this part's solids only
   Placement place;           // the shapes are in this frame
+  // Closed triangle meshes (STL), solids of the part that its holes do not cut.
+  std::vector<std::shared_ptr<const TriMesh>> meshes;
 };
 
 struct Contact {

@@ -5,11 +5,14 @@
 
 #include <array>
 #include <cmath>
+#include <filesystem>
 #include <limits>
 #include <map>
+#include <memory>
 
 #include "config/skip_inputs.hpp"
 #include "config/toml_util.hpp"
+#include "machine/mesh.hpp"
 
 namespace skipnc::machine {
 
@@ -184,7 +187,7 @@ class PartSet {
     auto it = index_.find(name);
     if (it == index_.end()) {
       it = index_.emplace(name, parts_.size()).first;
-      parts_.push_back(geo::Part{name, {}, {}, *place});
+      parts_.push_back(geo::Part{name, {}, {}, *place, {}});
       first_.push_back(&t);
       frame_.push_back(frame);
     } else if (frame_[it->second] != frame) {
@@ -201,7 +204,7 @@ class PartSet {
   // A part with holes and no solid is refused at the first table that names it.
   Result<void> check_solids(std::string_view origin) const {
     for (std::size_t i = 0; i < parts_.size(); ++i) {
-      if (parts_[i].solids.empty()) {
+      if (parts_[i].solids.empty() && parts_[i].meshes.empty()) {
         return config_error(
             *first_[i], origin,
             "part '" + parts_[i].name + "' has holes but no solid to cut them from");
@@ -290,6 +293,31 @@ Result<void> parse_parts(const toml::table& root, const Reader& rd, PartSet& par
     geo::Part& part = parts.get(t, origin, err);
     if (!err) return err;
     part.solids.push_back(geo::make_sphere({(*c)[0], (*c)[1], (*c)[2]}, *radius));
+    return {};
+  });
+  if (!r) return r;
+  r = config::each_table(root, "mesh", origin, [&](const toml::table& t) -> Result<void> {
+    auto k = check_keys(t, {"part", "frame", "file", "scale"}, origin, "[[mesh]]");
+    if (!k) return k;
+    const auto* fn = t.get("file");
+    if (fn == nullptr) return config_error(t, origin, "[[mesh]] needs file = \"part.stl\"");
+    auto file = get_string(*fn, origin, "file");
+    if (!file) return std::unexpected(file.error());
+    auto scale = rd.number(t, "scale", 1e-6, 1e6, 1.0);
+    if (!scale) return std::unexpected(scale.error());
+    // Relative to the scene file's folder.
+    std::filesystem::path path(*file);
+    if (path.is_relative()) path = std::filesystem::path(origin).parent_path() / path;
+    auto tris = geo::read_stl(path.string(), *scale);
+    if (!tris) return config_error(*fn, origin, tris.error().detail);
+    auto mesh = std::make_shared<const geo::TriMesh>(std::move(*tris));
+    if (mesh->size() == 0) {
+      return config_error(*fn, origin, "STL '" + path.string() + "' has no triangle with an area");
+    }
+    Result<void> err;
+    geo::Part& part = parts.get(t, origin, err);
+    if (!err) return err;
+    part.meshes.push_back(std::move(mesh));
     return {};
   });
   if (!r) return r;

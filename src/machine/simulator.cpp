@@ -4,6 +4,7 @@
 #include <cmath>
 #include <type_traits>
 
+#include "config/skip_inputs.hpp"
 #include "machine/probe_safety.hpp"
 
 namespace skipnc::machine {
@@ -67,6 +68,28 @@ Error stroke_alarm(const config::MachineConfig& m, int axis, double pos, std::st
   return e;
 }
 
+// The skip block an alarm cut short, as far as it ran: its latch when the
+// input came, the instant, where the axes are now and the alarm's point.
+interp::SkipRecord cut_short_skip(const interp::SkipRecord& pending, const kernel::SkipResult& sk,
+                                  const std::optional<AxisVec>& alarm_position,
+                                  const interp::Interpreter& in) {
+  interp::SkipRecord rec = pending;
+  rec.ended_by_alarm = true;
+  rec.triggered = sk.triggered;
+  rec.time_s = sk.triggered ? sk.time_s : 0.0;
+  if (sk.triggered) {
+    rec.machine_position = sk.latch_machine;
+    rec.position = in.work_from_machine(sk.latch_machine);
+    if (sk.input_index >= 0 && sk.input_index < sk.spec.input_count) {
+      rec.signal = config::signal_name(sk.spec.inputs[sk.input_index]);
+    } else if (sk.torque_reached) {
+      rec.signal = "TORQUE";
+    }
+  }
+  rec.crash_machine = alarm_position;
+  return rec;
+}
+
 }  // namespace
 
 Simulator::Simulator(const config::MachineConfig& m, const config::Dialect& d,
@@ -121,16 +144,23 @@ Result<RunResult> Simulator::run(const interp::Setup& setup, const RunOptions& o
   bool waiting = false;  // the interpreter waits for a sync
   bool ending = false;   // the program ended; the machine finishes its motion
   double next_progress = 1.0;
-  const std::string_view file = setup.program_name;
+  // The file of a call context (interpreter storage; the table only grows
+  // while blocks are read, and a motion alarm ends the reading).
+  auto file_of = [&](std::uint32_t ctx) -> std::string_view {
+    const auto& cs = in.contexts();
+    return ctx < cs.size() ? std::string_view(cs[ctx].file) : std::string_view(setup.program_name);
+  };
 
-  auto alarm = [&](Error e) {
+  auto alarm = [&](Error e, std::uint32_t ctx) {
     res.status = RunStatus::kAlarm;
     res.alarm = std::move(e);
+    res.alarm_context = ctx;
   };
   // A program error stops the reading of blocks; the motion already queued
   // is finished first, as if the blocks ran one by one, so the stopping
   // point does not depend on how far the planner had read ahead.
   std::optional<Error> program_alarm;
+  std::uint32_t program_alarm_context = 0;
 
   for (;;) {
     // Feed the kernel until it is full or the interpreter must wait.
@@ -141,6 +171,7 @@ Result<RunResult> Simulator::run(const interp::Setup& setup, const RunOptions& o
       auto st = in.step(router);
       if (!st) {
         program_alarm = st.error();
+        program_alarm_context = in.context();
         ending = true;
         break;
       }
@@ -182,14 +213,15 @@ Result<RunResult> Simulator::run(const interp::Setup& setup, const RunOptions& o
       r.torque = &plant.torque();
       r.feed_mm_per_min = tout.path_speed * 60.0;
       r.line = tout.line;
+      r.file = file_of(tout.source);
       r.plant = &plant;
       r.handshake = tout.handshake;
       r.handshake_names = d_.handshake.empty() ? nullptr : &d_.handshake;
       opts.trace->row(r);
     }
     // Tool changes, probe crash, collision, probe protection.
-    if (auto s = safety.after_period(plant, k, tout.line, file)) {
-      alarm(std::move(s->error));
+    if (auto s = safety.after_period(plant, k, tout.line, file_of(tout.source))) {
+      alarm(std::move(s->error), tout.source);
       res.alarm_position = s->machine_position;
       break;
     }
@@ -205,7 +237,8 @@ Result<RunResult> Simulator::run(const interp::Setup& setup, const RunOptions& o
                       std::string("axis ") + m_.axes[static_cast<std::size_t>(i)].name +
                           ": following error " + std::to_string(fe) + " mm exceeds " +
                           std::to_string(limit) + " mm",
-                      SourceLoc{file, tout.line, 1}, -1});
+                      SourceLoc{file_of(tout.source), tout.line, 1}, -1},
+                tout.source);
           break;
         }
       }
@@ -224,7 +257,7 @@ Result<RunResult> Simulator::run(const interp::Setup& setup, const RunOptions& o
         const double c = tout.commanded[i];
         if (c > stroke_hi[static_cast<std::size_t>(i)] ||
             c < stroke_lo[static_cast<std::size_t>(i)]) {
-          alarm(stroke_alarm(m_, i, c, file, tout.line));
+          alarm(stroke_alarm(m_, i, c, file_of(tout.source), tout.line), tout.source);
           break;
         }
       }
@@ -250,23 +283,25 @@ Result<RunResult> Simulator::run(const interp::Setup& setup, const RunOptions& o
       waiting = false;
       auto r = in.sync(s);
       if (!r) {
-        alarm(r.error());
+        alarm(r.error(), in.context());
         break;
       }
     }
     if (ending && k.idle()) {
-      if (program_alarm) alarm(*program_alarm);
+      if (program_alarm) alarm(*program_alarm, program_alarm_context);
       break;
     }
     if (k.now() >= m_.limits.max_ticks) {
       alarm(Error{AlarmId::kTimeLimit, "the run passed limits.max_time_s of simulated time",
-                  SourceLoc{file, tout.line, 1}, -1});
+                  SourceLoc{file_of(tout.source), tout.line, 1}, -1},
+            tout.source);
       break;
     }
     if (opts.interrupt != nullptr && opts.interrupt->load(std::memory_order_relaxed)) {
       res.status = RunStatus::kInterrupted;
-      res.alarm =
-          Error{AlarmId::kInterrupted, "stopped by a signal", SourceLoc{file, in.line(), 1}, -1};
+      res.alarm = Error{AlarmId::kInterrupted, "stopped by a signal",
+                        SourceLoc{file_of(in.context()), in.line(), 1}, -1};
+      res.alarm_context = in.context();
       break;
     }
     if (opts.progress) {
@@ -282,12 +317,18 @@ Result<RunResult> Simulator::run(const interp::Setup& setup, const RunOptions& o
   res.final_machine = k.command();
   res.final_work = in.work_from_machine(res.final_machine);
   res.skips = in.skips();
+  if (const interp::SkipRecord* p = in.pending_skip(); p != nullptr && res.alarm) {
+    res.skips.push_back(cut_short_skip(*p, k.skip(), res.alarm_position, in));
+    res.skips.back().end_position = res.final_work;  // where the alarm stopped the axes
+  }
+  res.contexts = in.contexts();
+  res.program_inch = in.modal().units == interp::Units::kInch;
   res.messages = in.messages();
   for (auto& msg : router.messages) res.messages.push_back(msg);
   for (const auto& msg : safety.messages()) res.messages.push_back(msg);
   if (res.status == RunStatus::kCompleted || res.status == RunStatus::kAlarm) {
     auto saved = in.save_persistent();
-    if (!saved && res.status == RunStatus::kCompleted) alarm(saved.error());
+    if (!saved && res.status == RunStatus::kCompleted) alarm(saved.error(), 0);
   }
   return res;
 }

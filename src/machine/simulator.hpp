@@ -27,6 +27,7 @@ struct TraceRow {
   const AxisVec* torque = nullptr;
   double feed_mm_per_min = 0.0;
   std::uint32_t line = 0;
+  std::string_view file;  // file of the active block (valid during the call)
   const Plant* plant = nullptr;  // signal levels
   kernel::SkipHandshake handshake;  // the skip block's handshake
   const config::SkipHandshakeNames* handshake_names = nullptr;  // null: not shown
@@ -48,7 +49,11 @@ struct RunResult {
   AxisVec final_work;
   double time_s = 0.0;
   Tick ticks = 0;
-  std::vector<interp::SkipRecord> skips;
+  std::vector<interp::SkipRecord> skips;  // the last one ended_by_alarm when an alarm cut it short
+  // Where the alarm was raised: its call context (index into contexts).
+  std::uint32_t alarm_context = 0;
+  std::vector<interp::CallContext> contexts;
+  bool program_inch = false;  // G20 in effect at the end of the run
   std::vector<std::string> messages;
   std::vector<std::pair<std::string, std::optional<double>>> variables;  // filled by the caller
 };

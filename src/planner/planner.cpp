@@ -485,6 +485,7 @@ void Planner::push(const Move& move) {
   s.start = tail_;
   s.end = move.target;
   s.line = move.line;
+  s.source = move.source;
   s.tag = move.tag;
   s.exact_stop = move.exact_stop;
   s.no_accel = move.no_accel && (move.kind == Kind::kLine || move.kind == Kind::kArc);

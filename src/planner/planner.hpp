@@ -48,6 +48,7 @@ struct Move {
   bool no_accel = false;    // no automatic acc/dec: the path speed steps to the feed
                             // at the start and stays there (G31 with SKF = 0)
   std::uint32_t line = 0;
+  std::uint32_t source = 0;  // canon::Stamped::source, carried to the segment
   std::uint32_t tag = 0;  // caller's identifier, carried to the segment
 };
 
@@ -78,6 +79,7 @@ struct Segment {
   // kRapidNonLinear: one trapezoid per axis, all starting together.
   std::array<double, kMaxAxes> axis_t_acc{}, axis_t_total{}, axis_v{}, axis_a{};
   std::uint32_t line = 0;
+  std::uint32_t source = 0;
   std::uint32_t tag = 0;
   double d_acc = 0.0;        // path length of the acceleration phase, mm
   double radius_end = 0.0;   // kArc: radius at the end point (`radius` is the start's);

@@ -41,15 +41,76 @@ AlarmView view_alarm(const Error& e, const config::Dialect* d) {
   return v;
 }
 
+double clean(double v) noexcept {
+  if (!(std::fabs(v) < 1e6)) return v;
+  return std::round(v * 1e9) / 1e9 + 0.0;
+}
+
+std::string where(const std::vector<interp::CallContext>& contexts, std::uint32_t context,
+                  std::uint32_t line, int n) {
+  if (context >= contexts.size()) return "line " + std::to_string(line);
+  const interp::CallContext& here = contexts[context];
+  std::string out = here.file + ":" + std::to_string(line);
+  if (here.program > 0 || n >= 0) {
+    out += " (";
+    if (here.program > 0) out += "O" + std::to_string(here.program);
+    if (n >= 0) out += std::string(here.program > 0 ? " " : "") + "N" + std::to_string(n);
+    out += ")";
+  }
+  // Each context knows the block that called it, in its parent.
+  std::uint32_t c = context;
+  for (std::size_t depth = 0; depth < contexts.size(); ++depth) {
+    const interp::CallContext& callee = contexts[c];
+    if (callee.parent >= contexts.size()) break;
+    out += " called from " + contexts[callee.parent].file + ":" + std::to_string(callee.call_line) +
+           " (" + callee.call + ")";
+    c = callee.parent;
+  }
+  return out;
+}
+
 namespace {
 
-ordered_json axes_json(const AxisVec& v, const config::MachineConfig* m) {
+ordered_json axes_json(const AxisVec& v, const config::MachineConfig* m, double step = 0.0) {
   ordered_json o = ordered_json::object();
   if (m == nullptr) return o;
   for (int i = 0; i < m->axis_count(); ++i) {
-    o[std::string(1, m->axes[static_cast<std::size_t>(i)].name)] = v[i] + 0.0;
+    const double x = step > 0.0 ? std::round(v[i] / step) * step : v[i];
+    o[std::string(1, m->axes[static_cast<std::size_t>(i)].name)] = clean(x);
   }
   return o;
+}
+
+// The call stack of a block, innermost first: where each level runs, and
+// the call that started it.
+ordered_json stack_json(const std::vector<interp::CallContext>& cs, std::uint32_t ctx,
+                        std::uint32_t line) {
+  ordered_json a = ordered_json::array();
+  std::uint32_t at = line;
+  for (std::size_t depth = 0; ctx < cs.size() && depth < cs.size(); ++depth) {
+    const interp::CallContext& c = cs[ctx];
+    ordered_json o;
+    o["file"] = c.file;
+    o["line"] = at;
+    o["program"] =
+        c.program > 0 ? ordered_json("O" + std::to_string(c.program)) : ordered_json(nullptr);
+    o["call"] = c.call.empty() ? ordered_json(nullptr) : ordered_json(c.call);
+    a.push_back(o);
+    at = c.call_line;
+    ctx = c.parent;
+  }
+  return a;
+}
+
+ordered_json program_json(const std::vector<interp::CallContext>& cs, std::uint32_t ctx) {
+  if (ctx >= cs.size() || cs[ctx].program <= 0) return nullptr;
+  return "O" + std::to_string(cs[ctx].program);
+}
+
+const char* ended_by(const interp::SkipRecord& s) {
+  if (s.ended_by_alarm) return "alarm";
+  if (!s.triggered) return "end_point";
+  return s.signal == "TORQUE" ? "torque" : "signal";
 }
 
 const char* kind_name(canon::SkipKind k) {
@@ -90,36 +151,76 @@ std::string to_json(const ReportInput& in) {
     a["key"] = std::string(alarm_key(err->id));
     if (!in.start_error && r.alarm_position)
       a["machine_position"] = axes_json(*r.alarm_position, in.machine);
+    if (!in.start_error && !r.contexts.empty()) {
+      a["program"] = program_json(r.contexts, r.alarm_context);
+      a["where"] = where(r.contexts, r.alarm_context, err->loc.line);
+      a["call_stack"] = stack_json(r.contexts, r.alarm_context, err->loc.line);
+    }
     j["alarm"] = a;
   } else {
     j["alarm"] = nullptr;
   }
   ordered_json skips = ordered_json::array();
+  // Stored positions as the control stores them: in its least input
+  // increment (IS-B: 0.001 mm, 0.0001 inch).
+  const double increment = r.program_inch ? 0.0001 : 0.001;
   for (const auto& s : r.skips) {
     ordered_json o;
     o["line"] = s.line;
+    const bool known = s.context < r.contexts.size();
+    o["file"] = known ? ordered_json(r.contexts[s.context].file) : ordered_json(in.program);
+    o["program"] = program_json(r.contexts, s.context);
+    o["n"] = s.n >= 0 ? ordered_json(s.n) : ordered_json(nullptr);
+    o["where"] = known ? where(r.contexts, s.context, s.line, s.n) : std::string();
+    o["call_stack"] = stack_json(r.contexts, s.context, s.line);
     o["block"] = s.block;
     o["kind"] = kind_name(s.kind);
     o["p"] = s.p >= 0 ? ordered_json(s.p) : ordered_json(nullptr);
     o["signal"] = s.signal.empty() ? ordered_json(nullptr) : ordered_json(s.signal);
     o["triggered"] = s.triggered;
-    o["time"] = s.time_s;
-    o["position"] = axes_json(s.position, in.machine);
+    o["time"] = clean(s.time_s);
+    o["position"] = axes_json(s.position, in.machine, increment);
     o["machine_position"] = axes_json(s.machine_position, in.machine);
     o["end_position"] = axes_json(s.end_position, in.machine);
+    o["ended_by"] = ended_by(s);
+    if (s.ended_by_alarm) {
+      // The skip in progress when the alarm stopped the run: the latch when
+      // the input came, where the alarm was raised, and how far past the
+      // latch that was.
+      o["crash_machine_position"] =
+          s.crash_machine ? axes_json(*s.crash_machine, in.machine) : ordered_json(nullptr);
+      if (s.triggered && s.crash_machine && in.machine != nullptr) {
+        double d2 = 0.0;
+        for (int i = 0; i < in.machine->axis_count(); ++i) {
+          const double d = (*s.crash_machine)[i] - s.machine_position[i];
+          d2 += d * d;
+        }
+        o["overtravel_mm"] = clean(std::sqrt(d2));
+      } else {
+        o["overtravel_mm"] = nullptr;
+      }
+    }
     skips.push_back(o);
   }
   j["skips"] = skips;
   ordered_json vars = ordered_json::object();
-  for (const auto& [k, v] : in.variables) vars[k] = v ? ordered_json(*v) : ordered_json(nullptr);
+  for (const auto& [k, v] : in.variables)
+    vars[k] = v ? ordered_json(clean(*v)) : ordered_json(nullptr);
   j["variables"] = vars;
   ordered_json fin;
   fin["position"] = axes_json(r.final_work, in.machine);
   fin["machine_position"] = axes_json(r.final_machine, in.machine);
-  fin["time"] = r.time_s;
+  fin["time"] = clean(r.time_s);
   j["final"] = fin;
   j["messages"] = r.messages;
   if (in.machine != nullptr) j["machine"] = in.machine->name;
+  // Units of the numbers above: work positions and stored variables in the
+  // program's units (G20/G21 at the end), machine positions in mm, times in s.
+  ordered_json units;
+  units["program"] = r.program_inch ? "inch" : "mm";
+  units["machine"] = "mm";
+  units["time"] = "s";
+  j["units"] = units;
   return j.dump(2) + "\n";
 }
 
@@ -151,7 +252,7 @@ Result<void> CsvTrace::open() {
 }
 
 void CsvTrace::header(const machine::TraceRow& r) {
-  buf_ += "time_s,line,feed_mm_min";
+  buf_ += "time_s,line,file,feed_mm_min";
   for (const char* kind : {"cmd", "act", "ferr", "torque"}) {
     for (const auto& a : m_.axes) {
       buf_ += ',';
@@ -201,13 +302,25 @@ void CsvTrace::row(const machine::TraceRow& r) {
   if (!header_done_) header(r);
   const int n = m_.axis_count();
   const std::size_t signals = r.plant != nullptr ? r.plant->signal_count() : 0;
-  const std::size_t room =
-      (3 + 4 * static_cast<std::size_t>(n)) * (kNumberRoom + 1) + 2 * (signals + 4) + 1;
+  const std::size_t room = (3 + 4 * static_cast<std::size_t>(n)) * (kNumberRoom + 1) +
+                           2 * (signals + 4) + 1 + 2 * r.file.size() + 3;
   if (row_.size() < room) row_.resize(room);
   char* p = row_.data();
   p = trace_number(p, r.time_s);
   *p++ = ',';
   p = decimal::write_int(p, r.line);
+  *p++ = ',';
+  // The block's file (CSV-quoted when it holds a comma or a quote).
+  if (r.file.find_first_of(",\"") == std::string_view::npos) {
+    for (char c : r.file) *p++ = c;
+  } else {
+    *p++ = '"';
+    for (char c : r.file) {
+      if (c == '"') *p++ = '"';
+      *p++ = c;
+    }
+    *p++ = '"';
+  }
   *p++ = ',';
   p = trace_number(p, r.feed_mm_per_min);
   const AxisVec ferr = *r.commanded - *r.actual;  // following error

@@ -8,6 +8,7 @@
 //                       the run's temporary folder);
 //   <case>.scene.toml   the scene for the run (optional);
 //   <case>.machine.toml the machine for the run and for canon (optional).
+// Programs in a folder named "macros" are called by the cases (-I), not cases.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -27,7 +28,10 @@ std::vector<fs::path> golden_cases() {
   std::vector<fs::path> cases;
   const fs::path root = fs::path(SKIPNC_SOURCE_DIR) / "tests" / "golden";
   for (const auto& e : fs::recursive_directory_iterator(root)) {
-    if (e.is_regular_file() && e.path().extension() == ".nc") cases.push_back(e.path());
+    if (e.is_regular_file() && e.path().extension() == ".nc" &&
+        e.path().parent_path().filename() != "macros") {
+      cases.push_back(e.path());
+    }
   }
   std::sort(cases.begin(), cases.end());
   return cases;

@@ -1,0 +1,44 @@
+// --expect: assertions on the outcome of a run, for CI.
+//   #140=-0.05+-0.001   variable #140 within 0.001 of -0.05
+//   #140=-0.05          within 1e-9 (float noise) of -0.05
+//   #<name>=1.5+-0.01   a named variable
+//   #140=vacant         the variable is vacant
+//   status=completed    completed, alarm or interrupted
+//   alarm=9061          the run ended in alarm number 9061 (the dialect's number)
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/diag.hpp"
+
+namespace skipnc::cli {
+
+struct Expectation {
+  enum class Kind : std::uint8_t { kVariable, kStatus, kAlarm };
+  std::string text;  // as given
+  Kind kind = Kind::kVariable;
+  std::string var;  // "140" or "<name>" (as --var takes it)
+  bool vacant = false;
+  double value = 0.0;
+  double tolerance = 1e-9;
+  std::string status;  // kStatus
+  int alarm = 0;       // kAlarm
+};
+
+// kUsage with what the text should look like when it cannot be read.
+[[nodiscard]] Result<Expectation> parse_expectation(const std::string& text);
+
+// What the run gave, for the checks.
+struct ObservedRun {
+  std::string status;  // "completed", "alarm", "interrupted"
+  int alarm = 0;       // alarm number, 0 when none
+  std::vector<std::pair<std::string, std::optional<double>>>
+      variables;  // keyed as Expectation::var
+};
+
+// Empty when the expectation holds; else the line that says why not.
+std::string check_expectation(const Expectation& e, const ObservedRun& o);
+
+}  // namespace skipnc::cli

@@ -1,0 +1,79 @@
+// One run of a loaded session with changes of its own: parameters, macro
+// variables, work and tool offsets, the parts moved, the probe's scatter
+// seed. Shared by `skipnc sweep` (cli/sweep.hpp) and the Python module
+// (python/): the session is read only, so runs in several threads may share
+// one (each run copies what it changes; nothing is written to files).
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "cli/session.hpp"
+#include "machine/simulator.hpp"
+#include "report/report.hpp"
+
+namespace skipnc::cli {
+
+// A tool offset a run sets: offset number and which value.
+enum class ToolValue : std::uint8_t { kLengthGeometry, kLengthWear, kRadiusGeometry, kRadiusWear };
+
+struct Variation {
+  std::vector<config::ParamSetting> params;       // applied over the session's
+  std::vector<std::pair<int, double>> variables;  // #1-#33, #100-#199, #500-#999 at the start
+  // Work offsets: (set, axis) = value in mm; set 0 is EXT, 1-6 G54-G59.
+  struct WorkOffset {
+    int set = 1;
+    int axis = 0;
+    double value = 0.0;
+  };
+  std::vector<WorkOffset> work_offsets;
+  struct ToolOffset {
+    int number = 1;
+    ToolValue which = ToolValue::kLengthGeometry;
+    double value = 0.0;
+  };
+  std::vector<ToolOffset> tool_offsets;
+  // Moves every part of the scene, and every trigger and stop along its
+  // axis, by this vector (machine X, Y, Z; mm).
+  double part_shift[3] = {0.0, 0.0, 0.0};
+  std::optional<std::uint64_t> probe_seed;    // the scene probe's scatter seed
+  std::optional<double> probe_repeatability;  // its 1-sigma scatter, mm
+};
+
+struct RunRequest {
+  std::string program_path;  // the program file; empty: program_text
+  std::string program_text;
+  std::string program_name;  // in errors and the report
+  std::vector<std::string> include_dirs;
+  std::vector<VarRef> vars;  // reported after the run
+};
+
+// The run, made while its simulator exists: an alarm's location points into
+// the simulator's program store, so everything that shows it is written here.
+struct RunOutcome {
+  std::string report_json;  // report::to_json, as `skipnc run --report`
+  machine::RunStatus status = machine::RunStatus::kCompleted;
+  int alarm = 0;           // the dialect's number, 0 without an alarm
+  std::string alarm_text;  // describe(): "file:line:column: alarm CODE (N): message"
+  double time_s = 0.0;     // simulated
+  std::vector<std::pair<std::string, std::optional<double>>> variables;  // rq.vars, in order
+  int exit_code = 0;  // as `skipnc run`: 0 completed, 1 alarm or interrupted
+};
+
+// Runs once. A returned error is a run that could not start (a bad change,
+// an unreadable program): exit status 2 for the CLI. Never writes files
+// (no persistent variables, no DPRNT file).
+[[nodiscard]] Result<RunOutcome> run_variation(const Session& s, const RunRequest& rq,
+                                               const Variation& v,
+                                               machine::TraceSink* trace = nullptr,
+                                               const std::atomic<bool>* interrupt = nullptr);
+
+// Reads a variable file: one "#<n> = <value>" per line, ';' comments (the
+// persistent-variable file's format, any settable variable).
+[[nodiscard]] Result<std::vector<std::pair<int, double>>> load_variable_file(
+    const std::string& path);
+
+}  // namespace skipnc::cli

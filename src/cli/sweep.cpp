@@ -1,0 +1,671 @@
+#include "cli/sweep.hpp"
+
+#include <fmt/format.h>
+#include <toml++/toml.h>
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <filesystem>
+#include <limits>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <numbers>
+#include <thread>
+
+#include "interpreter/variables.hpp"
+
+namespace skipnc::cli {
+namespace {
+
+namespace fs = std::filesystem;
+
+// The targets a [[vary]] can name, by prefix of its `what`.
+struct WorkSetName {
+  std::string_view name;
+  int set;
+};
+constexpr WorkSetName kWorkSets[] = {{"EXT", 0}, {"G54", 1}, {"G55", 2}, {"G56", 3},
+                                     {"G57", 4}, {"G58", 5}, {"G59", 6}};
+constexpr std::string_view kPartAxes = "XYZ";
+
+// splitmix64 finaliser (Steele, Lea, Flood 2014): a scenario's draws are a
+// function of (seed, index, rule) only, never of the order of the runs.
+constexpr std::uint64_t mix(std::uint64_t z) noexcept {
+  z += 0x9E3779B97F4A7C15ULL;
+  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
+  z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
+  return z ^ (z >> 31);
+}
+std::uint64_t draw_bits(std::uint64_t seed, std::int64_t index, std::uint64_t stream) noexcept {
+  return mix(seed ^ mix(static_cast<std::uint64_t>(index) * 0x100000001B3ULL + stream));
+}
+// (0, 1]
+double unit(std::uint64_t bits) noexcept {
+  return static_cast<double>((bits >> 11) + 1) * 0x1.0p-53;
+}
+
+Error spec_error(const std::string& path, const toml::source_region& where, std::string detail) {
+  return Error{AlarmId::kConfig, std::move(detail),
+               SourceLoc{path, where.begin.line, where.begin.column}, -1};
+}
+
+// "part.Z", "#101", "param.6200#7", "G54.X", "H1", "H1.wear", "D2", "D2.wear",
+// "probe.repeatability".
+Result<VaryRule> parse_target(std::string_view what, const config::MachineConfig& m) {
+  VaryRule r;
+  r.name = std::string(what);
+  auto bad = [&](std::string why) {
+    return fail(AlarmId::kConfig, "[[vary]] what = \"" + std::string(what) + "\": " + why);
+  };
+  auto to_int = [](std::string_view t, int& out) {
+    auto res = std::from_chars(t.data(), t.data() + t.size(), out);
+    return res.ec == std::errc{} && res.ptr == t.data() + t.size();
+  };
+  if (what.starts_with("part.") && what.size() == 6) {
+    const auto at = kPartAxes.find(what[5]);
+    if (at == std::string_view::npos) return bad("the part moves along X, Y or Z");
+    r.target = VaryRule::Target::kPart;
+    r.axis = static_cast<int>(at);
+    return r;
+  }
+  if (what == "probe.repeatability") {
+    r.target = VaryRule::Target::kProbeRepeatability;
+    return r;
+  }
+  if (what.starts_with("#")) {
+    if (!to_int(what.substr(1), r.number) ||
+        !(interp::VariableStore::is_local(r.number) || interp::VariableStore::is_common(r.number) ||
+          interp::VariableStore::is_persistent(r.number))) {
+      return bad("a macro variable #1-#33, #100-#199 or #500-#999");
+    }
+    r.target = VaryRule::Target::kVariable;
+    return r;
+  }
+  if (what.starts_with("param.")) {
+    auto s = config::Parameters::parse_setting(std::string(what.substr(6)) + "=0");
+    if (!s) return bad("param.N or param.N#B");
+    r.target = VaryRule::Target::kParam;
+    r.number = s->number;
+    r.bit = s->bit;
+    return r;
+  }
+  for (const auto& ws : kWorkSets) {
+    if (what.size() == ws.name.size() + 2 && what.starts_with(ws.name) &&
+        what[ws.name.size()] == '.') {
+      r.axis = m.axis_index(what.back());
+      if (r.axis < 0) return bad("the machine has no axis " + std::string(1, what.back()));
+      r.target = VaryRule::Target::kWorkOffset;
+      r.number = ws.set;
+      return r;
+    }
+  }
+  if (what.starts_with("H") || what.starts_with("D")) {
+    const bool wear = what.ends_with(".wear");
+    const auto digits = what.substr(1, what.size() - 1 - (wear ? 5 : 0));
+    if (!to_int(digits, r.number) || r.number < 1 || r.number > m.tool_offset_count) {
+      return bad(
+          fmt::format("a tool offset H1-H{0}, D1-D{0}, optionally .wear", m.tool_offset_count));
+    }
+    r.target = VaryRule::Target::kToolOffset;
+    r.tool_value = what[0] == 'H' ? (wear ? ToolValue::kLengthWear : ToolValue::kLengthGeometry)
+                                  : (wear ? ToolValue::kRadiusWear : ToolValue::kRadiusGeometry);
+    return r;
+  }
+  return bad(
+      "expected part.X|Y|Z, #N, param.N[#B], EXT|G54..G59.<axis>, H<n>[.wear], "
+      "D<n>[.wear] or probe.repeatability");
+}
+
+// The draw of a [[vary]]: exactly one of values, uniform, normal, steps.
+Result<void> parse_draw(const toml::table& t, const std::string& path, VaryRule& r) {
+  struct DrawKey {
+    std::string_view key;
+    VaryRule::Draw draw;
+  };
+  constexpr DrawKey kDraws[] = {{"values", VaryRule::Draw::kValues},
+                                {"uniform", VaryRule::Draw::kUniform},
+                                {"normal", VaryRule::Draw::kNormal},
+                                {"steps", VaryRule::Draw::kSteps}};
+  int found = 0;
+  for (const auto& d : kDraws) {
+    const toml::node* n = t.get(d.key);
+    if (n == nullptr) continue;
+    ++found;
+    const toml::array* arr = n->as_array();
+    if (arr == nullptr)
+      return std::unexpected(
+          spec_error(path, n->source(), std::string(d.key) + ": expected an array of numbers"));
+    r.values.clear();
+    for (const auto& e : *arr) {
+      auto v = e.value<double>();
+      if (!v || !std::isfinite(*v)) {
+        return std::unexpected(
+            spec_error(path, e.source(), std::string(d.key) + ": expected a number"));
+      }
+      r.values.push_back(*v);
+    }
+    r.draw = d.draw;
+    const bool pair = d.draw != VaryRule::Draw::kValues;
+    if (pair ? r.values.size() != 2 : r.values.empty()) {
+      return std::unexpected(spec_error(
+          path, n->source(),
+          std::string(d.key) + (pair ? ": expected [a, b]" : ": expected at least one value")));
+    }
+    if (d.draw == VaryRule::Draw::kNormal && r.values[1] < 0.0) {
+      return std::unexpected(spec_error(path, n->source(), "normal = [mean, sd]: sd must be >= 0"));
+    }
+  }
+  if (found != 1) {
+    return std::unexpected(spec_error(
+        path, t.source(), "[[vary]] needs exactly one of values, uniform, normal, steps"));
+  }
+  return {};
+}
+
+Result<std::vector<std::string>> string_array(const toml::table& root, std::string_view key,
+                                              const std::string& path) {
+  std::vector<std::string> out;
+  const toml::node* n = root.get(key);
+  if (n == nullptr) return out;
+  const toml::array* arr = n->as_array();
+  if (arr == nullptr)
+    return std::unexpected(
+        spec_error(path, n->source(), std::string(key) + ": expected an array of strings"));
+  for (const auto& e : *arr) {
+    auto s = e.value<std::string>();
+    if (!s)
+      return std::unexpected(
+          spec_error(path, e.source(), std::string(key) + ": expected a string"));
+    out.push_back(*s);
+  }
+  return out;
+}
+
+std::string relative_to(const fs::path& dir, const std::string& p) {
+  if (p.empty() || fs::path(p).is_absolute()) return p;
+  return (dir / p).lexically_normal().string();
+}
+
+std::string status_name(machine::RunStatus s) {
+  switch (s) {
+    case machine::RunStatus::kCompleted:
+      return "completed";
+    case machine::RunStatus::kAlarm:
+      return "alarm";
+    case machine::RunStatus::kInterrupted:
+      return "interrupted";
+  }
+  return "alarm";
+}
+
+double draw_value(const VaryRule& r, std::uint64_t seed, std::int64_t index, std::size_t k,
+                  std::int64_t count) {
+  const auto& v = r.values;
+  switch (r.draw) {
+    case VaryRule::Draw::kValues:
+      return v[static_cast<std::size_t>(index % static_cast<std::int64_t>(v.size()))];
+    case VaryRule::Draw::kSteps:
+      return count <= 1 ? v[0]
+                        : v[0] + (v[1] - v[0]) * static_cast<double>(index) /
+                                     static_cast<double>(count - 1);
+    case VaryRule::Draw::kUniform:
+      return v[0] + (v[1] - v[0]) * (1.0 - unit(draw_bits(seed, index, 2 * k + 1)));
+    case VaryRule::Draw::kNormal: {
+      // Box-Muller: two uniform draws give one normal deviate.
+      const double u1 = unit(draw_bits(seed, index, 2 * k + 1));
+      const double u2 = unit(draw_bits(seed, index, 2 * k + 2));
+      return v[0] + v[1] * std::sqrt(-2.0 * std::log(u1)) * std::cos(2.0 * std::numbers::pi * u2);
+    }
+  }
+  return v[0];
+}
+
+}  // namespace
+
+Result<Check> parse_check(const std::string& text, std::vector<VarRef>& vars) {
+  Check c;
+  c.text = text;
+  const auto eq = text.find('=');
+  if (eq == std::string::npos || eq == 0) {
+    return fail(AlarmId::kUsage, "expect '" + text +
+                                     "': expected #N=VALUE[+-TOL], status=completed|alarm or "
+                                     "alarm=NUMBER");
+  }
+  const std::string key = text.substr(0, eq);
+  const std::string rhs = text.substr(eq + 1);
+  if (key == "status") {
+    if (rhs != "completed" && rhs != "alarm" && rhs != "interrupted") {
+      return fail(AlarmId::kUsage,
+                  "expect '" + text + "': status is completed, alarm or interrupted");
+    }
+    c.kind = Check::Kind::kStatus;
+    c.status = rhs;
+    return c;
+  }
+  auto number = [](std::string_view t, double& out) {
+    auto r = std::from_chars(t.data(), t.data() + t.size(), out);
+    return r.ec == std::errc{} && r.ptr == t.data() + t.size() && std::isfinite(out);
+  };
+  if (key == "alarm") {
+    double n = 0.0;
+    if (!number(rhs, n)) return fail(AlarmId::kUsage, "expect '" + text + "': alarm=NUMBER");
+    c.kind = Check::Kind::kAlarm;
+    c.value = n;
+    return c;
+  }
+  auto ref = parse_var_ref(key);
+  if (!ref) return fail(AlarmId::kUsage, "expect '" + text + "': " + ref.error().detail);
+  const auto pm = rhs.find("+-");
+  if (!number(std::string_view(rhs).substr(0, pm), c.value) ||
+      (pm != std::string::npos &&
+       (!number(std::string_view(rhs).substr(pm + 2), c.tolerance) || c.tolerance < 0.0))) {
+    return fail(AlarmId::kUsage, "expect '" + text + "': expected #N=VALUE or #N=VALUE+-TOL");
+  }
+  const auto it =
+      std::find_if(vars.begin(), vars.end(), [&](const VarRef& v) { return v.key == ref->key; });
+  c.var = static_cast<std::size_t>(it - vars.begin());
+  if (it == vars.end()) vars.push_back(*ref);
+  return c;
+}
+
+Result<void> load_sweep(const std::string& spec_path, const SweepOverrides& o, SweepPlan& plan) {
+  plan.spec_path = spec_path;
+  const std::string& path = plan.spec_path;
+  toml::parse_result parsed = toml::parse_file(path);
+  if (!parsed) {
+    const auto& err = parsed.error();
+    if (err.source().begin.line == 0)
+      return fail(AlarmId::kConfig, "cannot read sweep spec '" + path + "'");
+    return std::unexpected(spec_error(path, err.source(), std::string(err.description())));
+  }
+  const toml::table& root = parsed.table();
+  static constexpr std::string_view kKeys[] = {"program", "machine", "scene",     "dialect",
+                                               "include", "params",  "scenarios", "seed",
+                                               "workers", "vars",    "expect",    "vary"};
+  for (const auto& [k, node] : root) {
+    if (std::find(std::begin(kKeys), std::end(kKeys), k.str()) == std::end(kKeys)) {
+      return std::unexpected(
+          spec_error(path, k.source(), "unknown key '" + std::string(k.str()) + "'"));
+    }
+  }
+  const fs::path dir = fs::path(path).parent_path();
+  auto text = [&](std::string_view key) -> Result<std::string> {
+    const toml::node* n = root.get(key);
+    if (n == nullptr) return std::string();
+    auto s = n->value<std::string>();
+    if (!s)
+      return std::unexpected(
+          spec_error(path, n->source(), std::string(key) + ": expected a string"));
+    return *s;
+  };
+  auto program = text("program");
+  if (!program) return std::unexpected(program.error());
+  if (program->empty())
+    return std::unexpected(spec_error(path, root.source(), "program: required"));
+  auto machine = text("machine");
+  auto scene = text("scene");
+  auto dialect = text("dialect");
+  for (auto* r : {&machine, &scene, &dialect}) {
+    if (!*r) return std::unexpected(r->error());
+  }
+  auto include = string_array(root, "include", path);
+  auto params = string_array(root, "params", path);
+  auto vars = string_array(root, "vars", path);
+  auto expect = string_array(root, "expect", path);
+  for (auto* r : {&include, &params, &vars, &expect}) {
+    if (!*r) return std::unexpected(r->error());
+  }
+  auto integer = [&](std::string_view key, std::int64_t lo, std::int64_t hi,
+                     std::int64_t def) -> Result<std::int64_t> {
+    const toml::node* n = root.get(key);
+    if (n == nullptr) return def;
+    auto v = n->value<std::int64_t>();
+    if (!v || *v < lo || *v > hi) {
+      return std::unexpected(
+          spec_error(path, n->source(), fmt::format("{}: expected an integer {}-{}", key, lo, hi)));
+    }
+    return *v;
+  };
+  auto scenarios = integer("scenarios", 1, 100'000'000, 1);
+  auto seed = integer("seed", 0, std::numeric_limits<std::int64_t>::max(), 1);
+  auto workers = integer("workers", 0, 4096, 0);
+  for (auto* r : {&scenarios, &seed, &workers}) {
+    if (!*r) return std::unexpected(r->error());
+  }
+  plan.scenarios = o.scenarios.value_or(*scenarios);
+  plan.seed = o.seed.value_or(static_cast<std::uint64_t>(*seed));
+  plan.workers = static_cast<int>(*workers);
+
+  std::string mname = machine->empty() ? "mill3" : *machine;
+  if (mname.find('/') != std::string::npos || mname.ends_with(".toml"))
+    mname = relative_to(dir, mname);
+  auto opened = open_session(SessionOptions{mname, *dialect, relative_to(dir, *scene), *params},
+                             plan.session);
+  if (!opened) return opened;
+
+  RunRequest& rq = plan.request;
+  rq.program_path = relative_to(dir, *program);
+  rq.program_name = rq.program_path;
+  for (const auto& inc : *include) rq.include_dirs.push_back(relative_to(dir, inc));
+  for (const auto& v : *vars) {
+    auto ref = parse_var_ref(v);
+    if (!ref) return std::unexpected(ref.error());
+    rq.vars.push_back(*ref);
+  }
+  for (const auto& e : *expect) {
+    auto c = parse_check(e, rq.vars);
+    if (!c) return std::unexpected(c.error());
+    plan.checks.push_back(*c);
+  }
+  if (const toml::node* n = root.get("vary")) {
+    const toml::array* arr = n->as_array();
+    if (arr == nullptr || !arr->is_array_of_tables()) {
+      return std::unexpected(spec_error(path, n->source(), "vary: expected [[vary]] tables"));
+    }
+    for (const auto& e : *arr) {
+      const toml::table& t = *e.as_table();
+      for (const auto& [k, node] : t) {
+        static constexpr std::string_view kVaryKeys[] = {"what", "values", "uniform", "normal",
+                                                         "steps"};
+        if (std::find(std::begin(kVaryKeys), std::end(kVaryKeys), k.str()) == std::end(kVaryKeys)) {
+          return std::unexpected(
+              spec_error(path, k.source(), "[[vary]]: unknown key '" + std::string(k.str()) + "'"));
+        }
+      }
+      auto what = t["what"].value<std::string>();
+      if (!what)
+        return std::unexpected(spec_error(path, t.source(), "[[vary]]: what = \"...\" required"));
+      auto rule = parse_target(*what, plan.session.machine);
+      if (!rule) {
+        return std::unexpected(spec_error(path, t.get("what")->source(), rule.error().detail));
+      }
+      if (auto d = parse_draw(t, path, *rule); !d) return std::unexpected(d.error());
+      plan.vary.push_back(std::move(*rule));
+    }
+  }
+  return {};
+}
+
+Variation scenario_variation(const SweepPlan& plan, std::int64_t index, std::vector<double>& chosen,
+                             std::uint64_t& probe_seed) {
+  Variation v;
+  chosen.clear();
+  // The probe's scatter: a seed of its own per scenario (53 bits: exact in JSON).
+  probe_seed = draw_bits(plan.seed, index, 0) >> 11;
+  v.probe_seed = probe_seed;
+  for (std::size_t k = 0; k < plan.vary.size(); ++k) {
+    const VaryRule& r = plan.vary[k];
+    const double x = draw_value(r, plan.seed, index, k, plan.scenarios);
+    chosen.push_back(x);
+    switch (r.target) {
+      case VaryRule::Target::kPart:
+        v.part_shift[r.axis] += x;
+        break;
+      case VaryRule::Target::kVariable:
+        v.variables.emplace_back(r.number, x);
+        break;
+      case VaryRule::Target::kParam:
+        v.params.push_back(config::ParamSetting{r.number, r.bit, x, {}});
+        break;
+      case VaryRule::Target::kWorkOffset:
+        v.work_offsets.push_back({r.number, r.axis, x});
+        break;
+      case VaryRule::Target::kToolOffset:
+        v.tool_offsets.push_back({r.number, r.tool_value, x});
+        break;
+      case VaryRule::Target::kProbeRepeatability:
+        v.probe_repeatability = std::max(0.0, x);
+        break;
+    }
+  }
+  return v;
+}
+
+ScenarioRow run_scenario(const SweepPlan& plan, std::int64_t index,
+                         const std::atomic<bool>* interrupt) {
+  ScenarioRow row;
+  row.index = index;
+  const Variation v = scenario_variation(plan, index, row.chosen, row.probe_seed);
+  row.values.assign(plan.request.vars.size(), std::nullopt);
+  auto res = run_variation(plan.session, plan.request, v, nullptr, interrupt);
+  if (!res) {
+    row.status = "error";
+    row.alarm = report::view_alarm(res.error(), &plan.session.dialect).number;
+    row.alarm_text = describe(res.error(), &plan.session.dialect);
+  } else {
+    row.status = status_name(res->status);
+    row.time_s = res->time_s;
+    row.alarm = res->alarm;
+    row.alarm_text = res->alarm_text;
+    for (std::size_t i = 0; i < row.values.size(); ++i) row.values[i] = res->variables[i].second;
+  }
+  row.pass = true;
+  for (const Check& c : plan.checks) {
+    bool ok = false;
+    switch (c.kind) {
+      case Check::Kind::kStatus:
+        ok = row.status == c.status;
+        break;
+      case Check::Kind::kAlarm:
+        ok = row.alarm == static_cast<int>(c.value);
+        break;
+      case Check::Kind::kVariable:
+        ok = row.values[c.var] && std::fabs(*row.values[c.var] - c.value) <= c.tolerance;
+        break;
+    }
+    row.checks.push_back(ok);
+    row.pass = row.pass && ok;
+  }
+  return row;
+}
+
+std::vector<ScenarioRow> run_scenarios(const SweepPlan& plan, std::int64_t begin, std::int64_t end,
+                                       int workers, const std::atomic<bool>* interrupt) {
+  const std::int64_t n = std::max<std::int64_t>(0, end - begin);
+  std::vector<ScenarioRow> rows(static_cast<std::size_t>(n));
+  if (workers <= 0) workers = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  workers = static_cast<int>(std::min<std::int64_t>(workers, std::max<std::int64_t>(n, 1)));
+  // Each worker takes the next index; a row goes to its own slot, so the
+  // table's order is the index order whatever finished first.
+  std::atomic<std::int64_t> next{0};
+  auto work = [&] {
+    for (std::int64_t i = next.fetch_add(1); i < n; i = next.fetch_add(1)) {
+      rows[static_cast<std::size_t>(i)] = run_scenario(plan, begin + i, interrupt);
+    }
+  };
+  std::vector<std::jthread> pool;
+  for (int w = 1; w < workers; ++w) pool.emplace_back(work);
+  work();
+  pool.clear();
+  return rows;
+}
+
+namespace {
+
+std::string csv_field(const std::string& s) {
+  if (s.find_first_of(",\"\n\r") == std::string::npos) return s;
+  std::string out = "\"";
+  for (char c : s) {
+    if (c == '"') out += '"';
+    out += c;
+  }
+  return out + "\"";
+}
+
+std::string number(double v) {
+  return std::isfinite(v) ? fmt::format("{}", v) : std::string();
+}
+
+struct VarSummary {
+  std::size_t count = 0;
+  double min = 0.0, max = 0.0, sum = 0.0;
+  std::optional<std::size_t> check;  // the first check on this variable
+  double worst = -1.0;               // largest |value - reference|
+  std::size_t worst_row = 0;
+};
+
+// Per reported variable: count, min, max, mean, and the worst case: the
+// largest deviation from the expected value when a check names the variable,
+// else from the mean.
+std::vector<VarSummary> summarise(const SweepPlan& plan, const std::vector<ScenarioRow>& rows) {
+  std::vector<VarSummary> out(plan.request.vars.size());
+  for (std::size_t c = 0; c < plan.checks.size(); ++c) {
+    const Check& ch = plan.checks[c];
+    if (ch.kind == Check::Kind::kVariable && !out[ch.var].check) out[ch.var].check = c;
+  }
+  for (std::size_t v = 0; v < out.size(); ++v) {
+    VarSummary& s = out[v];
+    for (const auto& r : rows) {
+      if (!r.values[v]) continue;
+      const double x = *r.values[v];
+      s.min = s.count == 0 ? x : std::min(s.min, x);
+      s.max = s.count == 0 ? x : std::max(s.max, x);
+      s.sum += x;
+      ++s.count;
+    }
+    if (s.count == 0) continue;
+    const double ref = s.check ? plan.checks[*s.check].value : s.sum / static_cast<double>(s.count);
+    for (std::size_t i = 0; i < rows.size(); ++i) {
+      if (!rows[i].values[v]) continue;
+      const double d = std::fabs(*rows[i].values[v] - ref);
+      if (d > s.worst) {
+        s.worst = d;
+        s.worst_row = i;
+      }
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+std::string sweep_csv(const SweepPlan& plan, const std::vector<ScenarioRow>& rows) {
+  std::string out = "scenario,probe_seed,status,alarm";
+  for (const auto& r : plan.vary) out += "," + csv_field(r.name);
+  for (const auto& v : plan.request.vars) out += ",#" + csv_field(v.key);
+  for (const auto& c : plan.checks) out += "," + csv_field(c.text);
+  out += ",pass,time_s\n";
+  for (const auto& r : rows) {
+    out += fmt::format("{},{},{},{}", r.index, r.probe_seed, r.status,
+                       r.alarm != 0 ? std::to_string(r.alarm) : std::string());
+    for (double x : r.chosen) out += "," + number(x);
+    for (const auto& x : r.values) out += "," + (x ? number(*x) : std::string());
+    for (bool ok : r.checks) out += ok ? ",pass" : ",fail";
+    out += r.pass ? ",pass," : ",fail,";
+    out += number(r.time_s) + "\n";
+  }
+  return out;
+}
+
+std::string sweep_json(const SweepPlan& plan, const std::vector<ScenarioRow>& rows) {
+  using nlohmann::ordered_json;
+  ordered_json j;
+  j["format"] = "skipnc-sweep/1";
+  j["spec"] = plan.spec_path;
+  j["program"] = plan.request.program_name;
+  j["machine"] = plan.session.machine.name;
+  j["dialect"] = plan.session.dialect.name;
+  j["seed"] = plan.seed;
+  j["scenarios"] = rows.size();
+  ordered_json vary = ordered_json::array();
+  for (const auto& r : plan.vary) vary.push_back(r.name);
+  j["vary"] = vary;
+  ordered_json vars = ordered_json::array();
+  for (const auto& v : plan.request.vars) vars.push_back(v.key);
+  j["variables"] = vars;
+  ordered_json checks = ordered_json::array();
+  for (const auto& c : plan.checks) checks.push_back(c.text);
+  j["expect"] = checks;
+  ordered_json jrows = ordered_json::array();
+  std::size_t passed = 0;
+  std::map<std::string, std::size_t> statuses;
+  for (const auto& r : rows) {
+    ordered_json o;
+    o["scenario"] = r.index;
+    o["probe_seed"] = r.probe_seed;
+    o["status"] = r.status;
+    o["alarm"] = r.alarm != 0 ? ordered_json(r.alarm) : ordered_json(nullptr);
+    if (!r.alarm_text.empty()) o["alarm_text"] = r.alarm_text;
+    ordered_json chosen = ordered_json::object();
+    for (std::size_t k = 0; k < plan.vary.size(); ++k) chosen[plan.vary[k].name] = r.chosen[k];
+    o["chosen"] = chosen;
+    ordered_json values = ordered_json::object();
+    for (std::size_t k = 0; k < plan.request.vars.size(); ++k) {
+      values[plan.request.vars[k].key] =
+          r.values[k] ? ordered_json(*r.values[k]) : ordered_json(nullptr);
+    }
+    o["variables"] = values;
+    ordered_json ch = ordered_json::object();
+    for (std::size_t k = 0; k < plan.checks.size(); ++k)
+      ch[plan.checks[k].text] = bool(r.checks[k]);
+    o["checks"] = ch;
+    o["pass"] = r.pass;
+    o["time"] = r.time_s;
+    jrows.push_back(std::move(o));
+    passed += r.pass ? 1 : 0;
+    ++statuses[r.status];
+  }
+  j["rows"] = std::move(jrows);
+  ordered_json sum;
+  sum["passed"] = passed;
+  sum["failed"] = rows.size() - passed;
+  ordered_json st = ordered_json::object();
+  for (const auto& [k, n] : statuses) st[k] = n;
+  sum["statuses"] = st;
+  ordered_json vs = ordered_json::object();
+  const auto summary = summarise(plan, rows);
+  for (std::size_t v = 0; v < summary.size(); ++v) {
+    const VarSummary& s = summary[v];
+    ordered_json o;
+    o["count"] = s.count;
+    if (s.count > 0) {
+      o["min"] = s.min;
+      o["max"] = s.max;
+      o["mean"] = s.sum / static_cast<double>(s.count);
+      o["reference"] = s.check ? "expect" : "mean";
+      o["worst"] = {{"scenario", rows[s.worst_row].index},
+                    {"value", *rows[s.worst_row].values[v]},
+                    {"deviation", s.worst}};
+    }
+    vs[plan.request.vars[v].key] = std::move(o);
+  }
+  sum["variables"] = std::move(vs);
+  j["summary"] = std::move(sum);
+  return j.dump(2) + "\n";
+}
+
+std::string sweep_summary_text(const SweepPlan& plan, const std::vector<ScenarioRow>& rows) {
+  std::size_t passed = 0;
+  for (const auto& r : rows) passed += r.pass ? 1 : 0;
+  std::string out =
+      fmt::format("{}: {} scenarios (seed {}): {} passed, {} failed\n", plan.spec_path, rows.size(),
+                  plan.seed, passed, rows.size() - passed);
+  const auto summary = summarise(plan, rows);
+  if (!summary.empty()) {
+    out += fmt::format("  {:<24} {:>7} {:>14} {:>14} {:>14} {:>12} {:>9}\n", "variable", "count",
+                       "min", "max", "mean", "worst", "scenario");
+  }
+  for (std::size_t v = 0; v < summary.size(); ++v) {
+    const VarSummary& s = summary[v];
+    if (s.count == 0) {
+      out += fmt::format("  {:<24} {:>7}\n", "#" + plan.request.vars[v].key, 0);
+      continue;
+    }
+    out += fmt::format("  {:<24} {:>7} {:>14.6f} {:>14.6f} {:>14.6f} {:>12.6f} {:>9}\n",
+                       "#" + plan.request.vars[v].key, s.count, s.min, s.max,
+                       s.sum / static_cast<double>(s.count), s.worst, rows[s.worst_row].index);
+  }
+  if (!summary.empty())
+    out += "  worst: the largest |value - expected| (|value - mean| without an expect)\n";
+  for (const auto& r : rows) {
+    if (!r.pass) {
+      out += fmt::format("  first failure: scenario {} ({}{}{})\n", r.index, r.status,
+                         r.alarm_text.empty() ? "" : ": ", r.alarm_text);
+      break;
+    }
+  }
+  return out;
+}
+
+}  // namespace skipnc::cli
