@@ -75,6 +75,14 @@ Result<Step> Interpreter::Impl::motion(const Words& words, CommandSink& out, boo
   AxisMask moved;
   auto t = axis_targets(words, g53, target, moved);
   if (!t) return std::unexpected(t.error());
+  if (g53 && !skip) {
+    // G53 positions at rapid traverse whatever the modal motion (B-63944EN
+    // "Machine coordinate system"); in G91 it is an incremental rapid.
+    emit(out, canon::Rapid{target, params.bit(1401, 1)});
+    pos = target;
+    motion_since_sync = true;
+    return Step::kContinue;
+  }
   if (skip || modal.motion != Motion::kRapid) {
     auto s = need_spindle_for_feed(loc(cur_col));
     if (!s) return std::unexpected(s.error());
@@ -138,11 +146,17 @@ Result<void> Interpreter::Impl::arc(const Words& words, const AxisVec& target, C
   if (feed_mm_per_min() <= 0.0) return fail(AlarmId::kNoFeed, "G02/G03 without a feed (F)", at);
   const double sx = pos[pl.a0], sy = pos[pl.a1];
   const double ex = target[pl.a0], ey = target[pl.a1];
-  const bool ccw = modal.motion == Motion::kCcwArc;
+  // Under G51 / G51.1 / G68 (XY plane) the centre offset turns and scales with
+  // the frame, and an odd number of mirrored axes reverses the direction.
+  const bool framed = !mc.lathe() && frame.active() && modal.plane == PlaneSel::kXY;
+  const bool flipped = framed && ((frame.mirror[0] != (frame.scale[0] < 0.0)) !=
+                                  (frame.mirror[1] != (frame.scale[1] < 0.0)));
+  const bool ccw = (modal.motion == Motion::kCcwArc) != flipped;
   const double tol = params.get(3410) > 0 ? params.get(3410) : 0.02;
   double cx = 0, cy = 0;
   if (words.has('R')) {
-    const double r = word_length(words.at('R'), false) * unit_mm();
+    const double r =
+        word_length(words.at('R'), false) * unit_mm() * (framed ? std::fabs(frame.scale[0]) : 1.0);
     const double dx = ex - sx, dy = ey - sy;
     const double d = std::hypot(dx, dy);
     if (d < 1e-9) {
@@ -164,8 +178,15 @@ Result<void> Interpreter::Impl::arc(const Words& words, const AxisVec& target, C
     cx = sx + dx / 2.0 - side * h * dy / d;
     cy = sy + dy / 2.0 + side * h * dx / d;
   } else if (words.has(ci) || words.has(cj)) {
-    cx = sx + (words.has(ci) ? word_length(words.at(ci), false) * unit_mm() : 0.0);
-    cy = sy + (words.has(cj) ? word_length(words.at(cj), false) * unit_mm() : 0.0);
+    double oi = words.has(ci) ? word_length(words.at(ci), false) * unit_mm() : 0.0;
+    double oj = words.has(cj) ? word_length(words.at(cj), false) * unit_mm() : 0.0;
+    if (framed) {
+      const xform::Point v = xform::vector_to_work(frame, {oi, oj, 0.0});
+      oi = v[0];
+      oj = v[1];
+    }
+    cx = sx + oi;
+    cy = sy + oj;
     const double r0 = std::hypot(sx - cx, sy - cy);
     const double r1 = std::hypot(ex - cx, ey - cy);
     if (r0 < 1e-9) return fail(AlarmId::kArcBadCenter, "the arc's centre is its start point", at);

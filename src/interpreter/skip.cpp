@@ -107,6 +107,21 @@ Result<Step> Interpreter::Impl::skip_block(const Words& words, const AxisVec& ta
     spec.torque_delay_s =
         sw.torque_delay_param != 0 ? params.get(sw.torque_delay_param) / 1000.0 : 0.0;
     if (p == 99) add_input(0);  // P99: the SKIP signal ends it too; P98: only the torque
+  } else if (skip_step != 0) {
+    // G31.n (Mitsubishi multi-step skip function 1, M700V/M70V manual
+    // 15.3): the logical sum of the skip signals set in the parameter.
+    const int cond_param = kSkipStepParam + 2 * (skip_step - 1);
+    const int cond = static_cast<int>(params.get(cond_param));
+    if (cond <= 0) {
+      return fail(AlarmId::kSkipBadP,
+                  "G31." + std::to_string(skip_step) + ": no skip signal set in parameter " +
+                      std::to_string(cond_param),
+                  at);
+    }
+    for (int i = 0; i < sw.skip_p_count && i < 8; ++i) {
+      if (((cond >> i) & 1) != 0) add_input(i);
+    }
+    spec.kind = canon::SkipKind::kMultiStep;
   } else if (p >= 0) {
     const SourceLoc p_at = word_loc('P');
     if (sw.skip_p_mode == config::SkipPMode::kBitmask) {
@@ -150,9 +165,11 @@ Result<Step> Interpreter::Impl::skip_block(const Words& words, const AxisVec& ta
       feed = feed_mm_per_min();  // the block's F is already modal (ncblock.cpp)
       break;
     case config::SkipFeedRule::kBlockOrParam:
-      // The block's F is not made modal (ncblock.cpp).
-      feed =
-          words.has('F') ? feed_to_mm_per_min(words.at('F').value) : param_feed(sw.skip_feed_param);
+      // The block's F is not made modal (ncblock.cpp). G31.n: its own
+      // feed parameter (the one after its condition).
+      feed = words.has('F') ? feed_to_mm_per_min(words.at('F').value)
+                            : param_feed(skip_step != 0 ? kSkipStepParam + 2 * skip_step - 1
+                                                        : sw.skip_feed_param);
       break;
     case config::SkipFeedRule::kParamSwitch:
       feed = params.get(sw.skip_feed_switch_param) != 0.0 ? param_feed(sw.skip_feed_param)
@@ -298,6 +315,7 @@ Result<void> Interpreter::Impl::finish_skip(const SyncState& s) {
     return fail(AlarmId::kSkipMiss, "the block reached its end point without a skip signal",
                 ps.loc);
   }
+  if (ps.g37_axis >= 0) return finish_g37(s);  // mill_codes.cpp
   return {};
 }
 
