@@ -7,12 +7,13 @@ O9811 (SINGLE SURFACE IN Z)
 IF[#26EQ#0]THEN#3000=92(Z MISSING)
 #10=#5003 (start)
 G90 G31 Z[#26-10.] F1000. (fast, down to 10 mm below the nominal surface)
-IF[ABS[#5063-[#26-10.]]LT0.001]GOTO93
+#12=#5083 (the length offset: #5063 has it in it)
+IF[ABS[#5063-#12-[#26-10.]]LT0.001]GOTO93
 G91 G0 Z2.
 #11=#5003
 G31 Z-4. F50. (slow: the measurement)
-IF[ABS[#5063-[#11-4.]]LT0.001]GOTO93
-#137=#5063
+IF[ABS[#5063-#12-[#11-4.]]LT0.001]GOTO93
+#137=#5063-#12
 #141=#137-#26
 G90 G0 Z#10
 IF[#19EQ#0]GOTO10

@@ -9,7 +9,7 @@ G21 G90 G17 G40 G54
 G43 H20 G0 Z-200.
 G0 X30. Y0
 G31 Z-240. F200. (towards the top face)
-#100 = #5063 - #120 (the surface: the ball centre less its radius)
+#100 = #5063 - #5083 - #120 (#5063 has H20 in it: less #5083, the ball centre; less its radius, the surface)
 G0 Z-200.
 G49 G53 G0 Z0
 M30

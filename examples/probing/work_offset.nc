@@ -8,7 +8,7 @@ G21 G90 G17 G40 G54
 G43 H20 G0 Z-200.
 G0 X30. Y0
 G31 Z-240. F200.
-#100 = #5063 - #120 (the top face)
+#100 = #5063 - #5083 - #120 (the top face: #5063 has the H20 length in it)
 G0 Z-200.
 G0 X-80. Y30.5
 G0 Z-239.87

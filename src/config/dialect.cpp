@@ -79,6 +79,8 @@ Result<void> load_switches(const toml::table& t, std::string_view origin, Switch
       {"dry_run_feed_param", &sw.dry_run_feed_param, 0, 99999},
       {"block_delete_param", &sw.block_delete_param, 0, 99999},
       {"macro_bracket_depth", &sw.macro_bracket_depth, 1, 64},
+      {"rapid_no_in_position_param", &sw.rapid_no_in_position_param, 0, 99999},
+      {"rapid_no_in_position_bit", &sw.rapid_no_in_position_bit, 0, 7},
   };
   const BoolKey bools[] = {
       {"skip_k_word", &sw.skip_k_word},
@@ -91,6 +93,9 @@ Result<void> load_switches(const toml::table& t, std::string_view origin, Switch
       {"tool_position_offset", &sw.tool_position_offset},
       {"g_same_group_last_wins", &sw.g_same_group_last_wins},
       {"calculator_decimal_default", &sw.calculator_decimal_default},
+      {"block_end_tool_offsets", &sw.block_end_tool_offsets},
+      {"current_tool_offsets", &sw.current_tool_offsets},
+      {"skip_tool_offsets", &sw.skip_tool_offsets},
   };
   static constexpr Choice<SkipPMode> kPModes[] = {{"multi_step", SkipPMode::kMultiStep},
                                                   {"select", SkipPMode::kSelect},

@@ -108,10 +108,22 @@ struct Switches {
   int dry_run_feed_param = 0;             // dry-run feed, mm/min
   int block_delete_param = 0;             // skipnc: block delete switches /1../9 (bit n-1)
   bool tool_position_offset = false;      // G45-G48 exist (NCT)
+  // The bit that turns the in-position check at the end of a rapid off
+  // (Fanuc 1601#5 NCI); 0: always on.
+  int rapid_no_in_position_param = 0;
+  int rapid_no_in_position_bit = 0;
   // Two G codes of one modal group in a block: the last one is used (true)
   // or the block is refused with g_code_conflict (false).
   bool g_same_group_last_wins = false;
   bool calculator_decimal_default = false;
+  // Position variables with the tool offsets (length, G45-G48, lathe tool
+  // offset) in them, i.e. the tool reference point rather than the programmed
+  // tip (docs/position-variables.md): #5001.. block end point, #5041..
+  // current work position, #5061.. skip position. #5021.. (machine) always
+  // has them: it is where the machine is.
+  bool block_end_tool_offsets = false;
+  bool current_tool_offsets = true;
+  bool skip_tool_offsets = true;
 };
 
 struct Dialect {

@@ -271,11 +271,12 @@ Result<MachineConfig> parse_machine_at(std::string_view text, std::string_view o
   auto parsed = parse_toml(text, origin);
   if (!parsed) return std::unexpected(parsed.error());
   const toml::table& t = *parsed;
-  auto keys = check_keys(t,
-                         {"extends", "name", "type", "dialect", "servo_period_ms", "inch",
-                          "in_position_mm", "spindle_max_rpm", "persistent_variables", "latch",
-                          "axis", "parameters", "work_offsets", "tool_offsets", "limits"},
-                         origin, "a machine file");
+  auto keys = check_keys(
+      t,
+      {"extends", "name", "type", "dialect", "servo_period_ms", "inch", "in_position_mm",
+       "in_position_timeout_s", "spindle_max_rpm", "persistent_variables", "latch", "axis",
+       "parameters", "work_offsets", "tool_offsets", "limits", "reference_points"},
+      origin, "a machine file");
   if (!keys) return std::unexpected(keys.error());
   MachineConfig m;
   if (const auto* n = t.get("extends")) {
@@ -327,6 +328,11 @@ Result<MachineConfig> parse_machine_at(std::string_view text, std::string_view o
     auto v = get_number(*n, origin, "in_position_mm", 1e-9, 10.0);
     if (!v) return std::unexpected(v.error());
     m.in_position_mm = *v;
+  }
+  if (const auto* n = t.get("in_position_timeout_s")) {
+    auto v = get_number(*n, origin, "in_position_timeout_s", 0.001, 3600.0);
+    if (!v) return std::unexpected(v.error());
+    m.in_position_timeout_s = *v;
   }
   if (const auto* n = t.get("persistent_variables")) {
     auto s = get_string(*n, origin, "persistent_variables");
@@ -444,6 +450,24 @@ Result<MachineConfig> parse_machine_at(std::string_view text, std::string_view o
     if (!wt) return config_error(*n, origin, "[work_offsets] must be a table");
     auto r = load_offsets(*wt, m, origin);
     if (!r) return std::unexpected(r.error());
+  }
+  if (const auto* n = t.get("reference_points")) {
+    // G30 P2-P4: the 2nd-4th reference points, machine coordinates (Fanuc
+    // parameters 1241-1243).
+    const auto* rt = n->as_table();
+    if (!rt) return config_error(*n, origin, "[reference_points] must be a table");
+    for (const auto& [key, node] : *rt) {
+      const auto k = key.str();
+      const int idx = k == "P2" ? 0 : k == "P3" ? 1 : k == "P4" ? 2 : -1;
+      if (idx < 0) {
+        return config_error(node, origin,
+                            "unknown reference point '" + std::string(k) + "' (known: P2, P3, P4)");
+      }
+      auto v =
+          load_axis_values(node, m, origin, k, m.reference_points[static_cast<std::size_t>(idx)]);
+      if (!v) return std::unexpected(v.error());
+      m.reference_points[static_cast<std::size_t>(idx)] = *v;
+    }
   }
   if (const auto* n = t.get("tool_offsets")) {
     const auto* tt = n->as_table();

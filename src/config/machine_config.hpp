@@ -83,6 +83,8 @@ struct MachineConfig {
   std::vector<ParamSetting> params;  // overrides of the dialect's defaults, in order
   // Work offsets: [0] external (EXT / G54 common shift), [1..6] G54..G59, mm.
   std::array<AxisVec, 7> work_offsets{};
+  // G30 P2, P3, P4: the 2nd-4th reference points, machine mm (Fanuc 1241-1243).
+  std::array<AxisVec, 3> reference_points{};
   std::map<int, ToolOffset> tool_offsets;  // by offset number
   int tool_offset_count = 200;
   bool inch_machine = false;
@@ -90,7 +92,10 @@ struct MachineConfig {
   double latch_delay_s = 0.0;      // sampled latch: detection delay after the sample
   bool servo_delay_comp = true;    // latch the actual position (else the commanded)
   double in_position_mm = 0.0005;  // in-position width for exact stop
-  std::string persistent_vars;     // file for #500-#999; empty: not kept
+  // An axis at rest (its command still) that stays out of the width this
+  // long is an alarm (in_position_timeout): held by a stop, it never arrives.
+  double in_position_timeout_s = 1.0;
+  std::string persistent_vars;  // file for #500-#999; empty: not kept
   Limits limits;
 
   int axis_count() const noexcept { return static_cast<int>(axes.size()); }

@@ -19,7 +19,7 @@ Interpolator::Interpolator(planner::Planner& queue) noexcept
     : queue_(queue), pos_(queue.tail_position()) {}
 
 bool Interpolator::idle() const noexcept {
-  return seg_ == nullptr && !ramp_ && queue_.empty();
+  return seg_ == nullptr && !ramp_ && queue_.empty() && !hold_;
 }
 
 const AxisVec& Interpolator::tick() noexcept {
@@ -46,9 +46,22 @@ const AxisVec& Interpolator::tick() noexcept {
     return pos_;
   }
 
+  if (hold_) {
+    vel_ = AxisVec{};
+    speed_ = 0.0;
+    return pos_;
+  }
   if (seg_ != nullptr && !still_front(queue_, seg_)) seg_ = nullptr;
   if (seg_ == nullptr) {
-    seg_ = queue_.front();
+    planner::Segment* f = queue_.front();
+    if (f != nullptr && f->wait_in_position && !f->started && !released_) {
+      hold_ = true;  // a dwell or skip starts only with the axes in position
+      vel_ = AxisVec{};
+      speed_ = 0.0;
+      return pos_;
+    }
+    if (f != nullptr) released_ = false;
+    seg_ = f;
     seg_time_ = 0.0;
     if (seg_ != nullptr) seg_->started = true;
   }
@@ -67,9 +80,18 @@ const AxisVec& Interpolator::tick() noexcept {
     line_ = seg_->line;
     source_ = seg_->source;
     tag_ = seg_->tag;
+    const bool check = seg_->in_position;
     queue_.pop_front();
-    seg_ = queue_.front();
+    seg_ = nullptr;
     seg_time_ = 0.0;
+    const planner::Segment* next = queue_.front();
+    if (check || (next != nullptr && next->wait_in_position)) {
+      // The in-position check: the next segment waits for release.
+      hold_ = true;
+      released_ = false;
+      break;
+    }
+    seg_ = queue_.front();
     if (seg_ != nullptr) seg_->started = true;
   }
 
@@ -90,6 +112,8 @@ const AxisVec& Interpolator::tick() noexcept {
 }
 
 void Interpolator::stop_now() noexcept {
+  hold_ = false;
+  released_ = false;
   seg_ = nullptr;
   seg_time_ = 0.0;
   ramp_ = false;
@@ -104,6 +128,7 @@ void Interpolator::decelerate(double decel_mm_s2) noexcept {
     stop_now();
     return;
   }
+  hold_ = false;
   ramp_ = true;
   ramp_start_ = pos_;
   ramp_dir_ = vel_ * (1.0 / v0);

@@ -23,8 +23,27 @@ class Interpolator {
   // Commanded velocity at the end of the last tick, mm/s per axis.
   const AxisVec& velocity() const noexcept { return vel_; }
   double path_speed() const noexcept { return speed_; }
-  // True when no segment is active and the queue is empty.
+  // True when no segment is active, the queue is empty and no in-position
+  // check is pending.
   bool idle() const noexcept;
+  // In-position check: a segment that asks for it has ended (or the next
+  // one waits for it), and the command stays at that point, at rest, until
+  // release_in_position(). The rest of the period is not carried over: the
+  // next segment starts at a period boundary, as on a real control.
+  bool holding() const noexcept { return hold_; }
+  // Whether the next tick() needs to know if the axes are in position: it
+  // holds, or the segment it is about to start waits for the check.
+  bool needs_in_position() const noexcept {
+    if (hold_) return true;
+    const planner::Segment* f = seg_ == nullptr && !ramp_ ? queue_.front() : nullptr;
+    return f != nullptr && f->wait_in_position && !f->started;
+  }
+  // The axes are within the in-position width: the hold ends and the next
+  // segment starts in this tick.
+  void release_in_position() noexcept {
+    hold_ = false;
+    released_ = true;
+  }
   // Source line and tag of the active segment (of the last one when idle).
   std::uint32_t line() const noexcept { return line_; }
   std::uint32_t tag() const noexcept { return tag_; }
@@ -57,6 +76,8 @@ class Interpolator {
   std::uint32_t line_ = 0;
   std::uint32_t source_ = 0;
   std::uint32_t tag_ = 0;
+  bool hold_ = false;      // waiting for the in-position check (holding())
+  bool released_ = false;  // the check passed: the next segment may start
   // Deceleration ramp after a skip (replaces the segment).
   bool ramp_ = false;
   AxisVec ramp_start_;

@@ -6,7 +6,9 @@
 
 #include <cstdint>
 #include <span>
+#include <string>
 
+#include "core/diag.hpp"
 #include "interpreter/modal.hpp"
 
 namespace skipnc::interp {
@@ -104,5 +106,26 @@ struct MCodeDef {
 
 std::span<const MCodeDef> m_codes() noexcept;
 MAction m_action(int code) noexcept;
+
+// docs/codes.md: every G and M code per dialect and machine type, with what
+// skipnc does with it, found by running each code through the interpreter
+// (codes_doc part of codes.cpp); a test compares the page with the file.
+enum class CodeStatus : std::uint8_t {
+  kSimulated,     // runs and has its effect
+  kNoEffect,      // accepted, changes nothing in the simulation
+  kNotSimulated,  // alarm not_simulated: a real code skipnc does not model
+  kImproper,      // alarm unknown_g_code: not a code of this machine or control
+};
+
+// The status of one G code (x10: G54.1 = 541) on a built-in machine
+// ("mill3", "lathe2") under a dialect, found by running it.
+[[nodiscard]] Result<CodeStatus> g_code_status(int code, const std::string& machine,
+                                               const std::string& dialect);
+
+// True for the G codes that are accepted without effect (mill_codes.cpp).
+bool g_code_without_effect(int code) noexcept;
+
+// The whole page (Markdown).
+[[nodiscard]] Result<std::string> codes_markdown();
 
 }  // namespace skipnc::interp

@@ -7,6 +7,9 @@
 //   ncblock.cpp      address words, modal groups, offsets, data setting
 //   motion.cpp       rapid, feed, arc, dwell commands
 //   skip.cpp         the skip family (G31): dialect rules in, results out
+//   mill_codes.cpp   the mill's codes beside the core table: canned cycles,
+//                    G68/G16/G51/G51.1 frames, codes without effect, codes
+//                    not simulated (pure parts in cycles.cpp, transform.cpp)
 #pragma once
 
 #include <array>
@@ -22,7 +25,9 @@
 #include "gcode/parser.hpp"
 #include "gcode/source.hpp"
 #include "interpreter/codes.hpp"
+#include "interpreter/cycles.hpp"
 #include "interpreter/interpreter.hpp"
+#include "interpreter/transform.hpp"
 
 namespace skipnc::interp {
 
@@ -54,13 +59,13 @@ inline constexpr int kWorkSystems = 7 + kExtraWorkSystems;
 // One level of the call stack.
 struct Frame {
   ProgramFile* file = nullptr;
-  gcode::SourcePos start;    // first block of the program
-  gcode::SourcePos resume;   // next block to read when this frame runs again
-  std::int64_t program = 0;  // O number (0: main program without one)
+  gcode::SourcePos start;     // first block of the program
+  gcode::SourcePos resume;    // next block to read when this frame runs again
+  std::int64_t program = 0;   // O number (0: main program without one)
   std::uint32_t context = 0;  // CallContext index
-  int repeats_left = 0;      // M98 L / G65 L
-  bool macro = false;        // G65/G66 call: owns a local-variable level
-  bool modal_call = false;   // a G66 call (no re-entry of the modal macro inside)
+  int repeats_left = 0;       // M98 L / G65 L
+  bool macro = false;         // G65/G66 call: owns a local-variable level
+  bool modal_call = false;    // a G66 call (no re-entry of the modal macro inside)
   std::vector<Loop> loops;
 };
 
@@ -104,6 +109,16 @@ struct Words {
 // What the interpreter is waiting for at a synchronisation point.
 enum class Pending : std::uint8_t { kNone, kRerun, kSkip };
 
+// The codes of mill_codes.cpp seen in one block (planned, applied at commit).
+struct MillRequest {
+  int frame_code = 0;  // 680 690 500 510 501 511 (x10), 0: none
+  SourceLoc frame_at;
+  std::optional<Cycle> cycle;
+  std::optional<bool> polar;  // G16 (true) / G15 (false)
+  int skip_step = 0;          // G31.1-G31.3 (Mitsubishi multi-step skip function 1)
+  bool g37 = false;           // automatic tool length measurement
+};
+
 // The plan of one NC block (ncblock.cpp plan_block): its codes by group,
 // its one-shot action and the modal state it leaves. Built without changing
 // the interpreter.
@@ -119,6 +134,7 @@ struct BlockPlan {
   std::int64_t call_program = 0;
   int call_repeats = 1;
   bool spindle_changed = false;
+  MillRequest mill;  // cycles, frames, G16, G31.n, G37 (mill_codes.cpp)
   ModalState next;
 };
 
@@ -133,6 +149,11 @@ struct BlockUndo {
   std::size_t messages = 0;
   Pending pending = Pending::kNone;
   std::int64_t parts_count = 0;
+  cycles::Data cycle_data;
+  xform::Transform frame;
+  bool polar = false;
+  double polar_angle = 0.0, rotation_angle = 0.0;
+  int skip_step = 0;
 };
 
 // The commands of the block being executed, passed on when it succeeds.
@@ -147,6 +168,9 @@ struct PendingSkip {
   bool alarm_on_miss = false;
   SourceLoc loc;
   std::array<std::string, canon::SkipSpec::kMaxInputs> input_names;
+  int g37_axis = -1;         // G37: the measured axis (-1: a G31)
+  double g37_target = 0.0;   // G37: the measuring position, machine mm
+  double g37_epsilon = 0.0;  // G37: the allowed range, mm
 };
 
 struct Interpreter::Impl {
@@ -227,6 +251,14 @@ struct Interpreter::Impl {
   bool dprnt_open = false;
   bool dprnt_used = false;
 
+  // mill_codes.cpp: canned cycle data (modal until G80 or group 01) and the
+  // program -> work frame (G68 rotation, G51 scaling, G51.1 mirror, G16).
+  cycles::Data cycle_data;
+  xform::Transform frame;
+  bool polar = false;           // G16
+  double polar_angle = 0.0;     // last polar angle (G91 adds to it)
+  double rotation_angle = 0.0;  // last G68 R (5400#0 RIN: G91 adds to it)
+
   Impl(const Setup& s);
   ~Impl();
 
@@ -287,6 +319,8 @@ struct Interpreter::Impl {
   Result<void> plan_one_shot(const CodeDef& def, std::uint32_t col, BlockPlan& plan);
   Result<void> plan_call(const Words& words, BlockPlan& plan);
   Result<void> plan_addresses(const Words& words) const;
+  Result<void> plan_mill(BlockPlan& plan) const;
+  void plan_cycle(BlockPlan& plan) const;
   Result<void> plan_modal(const Words& words, BlockPlan& plan);
   Result<int> offset_number(const Words& words, char letter) const;
   Result<Step> commit_block(const Words& words, const BlockPlan& plan, CommandSink& out);
@@ -298,6 +332,9 @@ struct Interpreter::Impl {
   void commit_spindle(const Words& words, bool changed, CommandSink& out);
   void commit_shift(const Words& words, bool local);
   void commit_tool_pos_offset(const Words& words, int g);
+  void commit_cycle_start(const ModalState& before);
+  Result<std::optional<Step>> commit_mill(const Words& words, const BlockPlan& plan,
+                                          CommandSink& out, bool& moved);
   Result<Step> commit_action(const Words& words, const BlockPlan& plan, CommandSink& out,
                              bool& moved);
   Result<std::optional<Step>> commit_m_codes(const Words& words, CommandSink& out);
@@ -309,9 +346,29 @@ struct Interpreter::Impl {
   double word_length(const WordVal& w, bool rotary) const noexcept;  // program units
   double offset_total(int axis) const noexcept;                      // mm
   double work_of(int axis, double machine_mm) const noexcept;        // program units
-  double machine_of(int axis, double work_units) const noexcept;     // mm
+  // The tool offsets on an axis (length, G45-G48, lathe tool offset), mm.
+  double tool_offset_total(int axis) const noexcept;
+  // A position variable's value: work_of, or with the tool offsets left in
+  // (the tool reference point) when the dialect says so for that variable.
+  double position_var(int axis, double machine_mm, bool tool_offsets) const noexcept;
+  double machine_of(int axis, double work_units) const noexcept;  // mm
   Result<void> set_tool_length(const Words& words, LengthComp mode);
   Result<void> data_setting(const Words& words, SourceLoc where);
+
+  // mill_codes.cpp
+  // The G31.n of the block being executed (0: G31 or no skip), for skip_block.
+  int skip_step = 0;
+  // Parameters of G31.n: the skip condition; the feed is the next number.
+  static constexpr int kSkipStepParam = 1175;
+  // G37: a dialect has it when it defines epsilon (mill_codes.cpp).
+  static constexpr int kG37EpsilonParam = 6254;
+  Result<bool> mill_code(int code, SourceLoc at, MillRequest& req) const;
+  Result<bool> apply_frame_code(const Words& words, const MillRequest& req);
+  bool frame_active() const noexcept { return polar || frame.active(); }
+  Result<void> frame_targets(const Words& words, AxisVec& target, AxisMask& moved);
+  Result<void> check_cutter_comp(SourceLoc where) const;
+  Result<Step> g37_block(const Words& words, CommandSink& out);
+  Result<void> finish_g37(const SyncState& s);
 
   // motion.cpp
   Result<Step> motion(const Words& words, CommandSink& out, bool skip, bool g53);

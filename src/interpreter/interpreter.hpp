@@ -30,7 +30,7 @@ struct Setup {
   std::string program_text;               // used instead of the file when program_path is empty
   std::string program_name = "program";   // shown in errors and reports
   std::vector<std::string> include_dirs;  // subprogram lookup; the program's folder when empty
-  std::string dprnt_path;                 // DPRNT output file; empty: DPRNT lines go to messages only
+  std::string dprnt_path;  // DPRNT output file; empty: DPRNT lines go to messages only
   // Macro variables set before the first block (#1-#33 of the main program,
   // #100-#199, #500-#999; a #500-#999 value replaces the persistent file's
   // and is written back only if the program changes a variable). Python
@@ -46,15 +46,15 @@ class CommandSink {
 
 // What the motion side reports at a synchronisation point.
 struct SyncState {
-  AxisVec machine_position;   // where the command rests now (machine coordinates)
-  AxisVec actual_position;    // where the axes are (servo feedback)
+  AxisVec machine_position;  // where the command rests now (machine coordinates)
+  AxisVec actual_position;   // where the axes are (servo feedback)
   double time_s = 0.0;
   // After a skip block:
   bool skip_done = false;
   bool triggered = false;
   bool torque_reached = false;
-  AxisVec latch_machine;      // machine coordinates stored by the skip
-  int input_index = -1;       // which selected input ended the block (-1: none/torque)
+  AxisVec latch_machine;  // machine coordinates stored by the skip
+  int input_index = -1;   // which selected input ended the block (-1: none/torque)
 };
 
 // Where a block runs: its file and program, and the call that led there.
@@ -63,8 +63,8 @@ struct SyncState {
 // main program.
 struct CallContext {
   static constexpr std::uint32_t kNone = 0xffffffffu;
-  std::string file;          // as shown (the file name as given or as found)
-  std::int64_t program = 0;  // O number (0: a main program without one)
+  std::string file;              // as shown (the file name as given or as found)
+  std::int64_t program = 0;      // O number (0: a main program without one)
   std::uint32_t parent = kNone;  // the calling context
   std::uint32_t call_line = 0;   // line of the calling block in the parent
   std::string call;              // "G65 P9023", "M98 P1000", "G66 P9023"
@@ -76,15 +76,16 @@ struct SkipRecord {
   std::uint32_t line = 0;
   std::uint32_t context = 0;  // CallContext of the block
   std::int32_t n = -1;        // N number of the block, -1 when none
-  std::string block;            // the block's text
+  std::string block;          // the block's text
   canon::SkipKind kind = canon::SkipKind::kSkip;
   int p = -1;
-  std::string signal;           // input that ended the block, "" when none
+  std::string signal;  // input that ended the block, "" when none
   bool triggered = false;
   double time_s = 0.0;
-  AxisVec position;             // stored (work coordinates, program units)
-  AxisVec machine_position;     // the same instant, machine coordinates
-  AxisVec end_position;         // where the axes came to rest, work coordinates
+  AxisVec position;                        // stored (work coordinates, program units)
+  bool position_has_tool_offsets = false;  // the tool reference point (dialect skip_tool_offsets)
+  AxisVec machine_position;                // the same instant, machine coordinates
+  AxisVec end_position;                    // where the axes came to rest, work coordinates
   // The run stopped by an alarm (probe crash, stroke limit, ...) while the
   // block ran: filled by the machine, which knows where.
   bool ended_by_alarm = false;
@@ -124,7 +125,7 @@ class Interpreter {
   // The skip block the machine is running (between step() returning kSync
   // for it and sync()): its record without the result.
   const SkipRecord* pending_skip() const noexcept;
-  const AxisVec& position() const noexcept; // commanded machine position
+  const AxisVec& position() const noexcept;  // commanded machine position
   // Writes #500-#999 when they changed, and the DPRNT file when --dprnt
   // named one and the program opened it (POPEN); each file atomically.
   // Called once at the end of a run.

@@ -37,8 +37,15 @@ bool Interpreter::Impl::has_axis_word(const Words& words) const noexcept {
 Result<void> Interpreter::Impl::axis_targets(const Words& words, bool g53, AxisVec& target,
                                              AxisMask& moved) {
   target = pos;
+  // G16, G68, G51, G51.1 (mill_codes.cpp) place X, Y and Z.
+  const bool framed = !g53 && !mc.lathe() && frame_active();
+  if (framed) {
+    auto f = frame_targets(words, target, moved);
+    if (!f) return f;
+  }
   for (int i = 0; i < axis_count; ++i) {
     const char c = axis_letter[static_cast<std::size_t>(i)];
+    if (framed && (c == 'X' || c == 'Y' || c == 'Z')) continue;
     const char inc = incremental_letter(i);
     const bool has_abs = words.has(c);
     const bool has_inc = inc != 0 && words.has(inc);

@@ -36,9 +36,23 @@ Result<void> Interpreter::Impl::dwell(const Words& words, CommandSink& out) {
 }
 
 Result<void> Interpreter::Impl::reference_return(const Words& words, int g, CommandSink& out) {
-  (void)g;
-  // Through the intermediate point (X/Z absolute, U/W incremental) to the
-  // reference position, machine zero.
+  // G30: P2-P4 choose the 2nd-4th reference point (P omitted: the 2nd), from
+  // the machine file's [reference_points]; G28: the reference position,
+  // machine zero.
+  const AxisVec* point = nullptr;
+  if (g == 30) {
+    int p = 2;
+    if (words.has('P')) {
+      const double v = words.at('P').value;
+      if (v != 2.0 && v != 3.0 && v != 4.0) {
+        return fail(AlarmId::kBadValue, "G30 P must be 2, 3 or 4 (2nd-4th reference point)",
+                    loc(words.at('P').column));
+      }
+      p = static_cast<int>(v);
+    }
+    point = &mc.reference_points[static_cast<std::size_t>(p - 2)];
+  }
+  // Through the intermediate point (X/Z absolute, U/W incremental).
   AxisVec mid;
   AxisMask moved;
   auto t = axis_targets(words, false, mid, moved);
@@ -46,7 +60,7 @@ Result<void> Interpreter::Impl::reference_return(const Words& words, int g, Comm
   if (moved.empty()) return {};
   AxisVec ref = pos;
   for (int i = 0; i < axis_count; ++i) {
-    if (moved.has(i)) ref[i] = 0.0;
+    if (moved.has(i)) ref[i] = point != nullptr ? (*point)[i] : 0.0;
   }
   const bool linear = params.bit(1401, 1);
   emit(out, canon::Rapid{mid, linear});
@@ -61,6 +75,14 @@ Result<Step> Interpreter::Impl::motion(const Words& words, CommandSink& out, boo
   AxisMask moved;
   auto t = axis_targets(words, g53, target, moved);
   if (!t) return std::unexpected(t.error());
+  if (g53 && !skip) {
+    // G53 positions at rapid traverse whatever the modal motion (B-63944EN
+    // "Machine coordinate system"); in G91 it is an incremental rapid.
+    emit(out, canon::Rapid{target, params.bit(1401, 1)});
+    pos = target;
+    motion_since_sync = true;
+    return Step::kContinue;
+  }
   if (skip || modal.motion != Motion::kRapid) {
     auto s = need_spindle_for_feed(loc(cur_col));
     if (!s) return std::unexpected(s.error());
@@ -124,11 +146,17 @@ Result<void> Interpreter::Impl::arc(const Words& words, const AxisVec& target, C
   if (feed_mm_per_min() <= 0.0) return fail(AlarmId::kNoFeed, "G02/G03 without a feed (F)", at);
   const double sx = pos[pl.a0], sy = pos[pl.a1];
   const double ex = target[pl.a0], ey = target[pl.a1];
-  const bool ccw = modal.motion == Motion::kCcwArc;
+  // Under G51 / G51.1 / G68 (XY plane) the centre offset turns and scales with
+  // the frame, and an odd number of mirrored axes reverses the direction.
+  const bool framed = !mc.lathe() && frame.active() && modal.plane == PlaneSel::kXY;
+  const bool flipped = framed && ((frame.mirror[0] != (frame.scale[0] < 0.0)) !=
+                                  (frame.mirror[1] != (frame.scale[1] < 0.0)));
+  const bool ccw = (modal.motion == Motion::kCcwArc) != flipped;
   const double tol = params.get(3410) > 0 ? params.get(3410) : 0.02;
   double cx = 0, cy = 0;
   if (words.has('R')) {
-    const double r = word_length(words.at('R'), false) * unit_mm();
+    const double r =
+        word_length(words.at('R'), false) * unit_mm() * (framed ? std::fabs(frame.scale[0]) : 1.0);
     const double dx = ex - sx, dy = ey - sy;
     const double d = std::hypot(dx, dy);
     if (d < 1e-9) {
@@ -150,8 +178,15 @@ Result<void> Interpreter::Impl::arc(const Words& words, const AxisVec& target, C
     cx = sx + dx / 2.0 - side * h * dy / d;
     cy = sy + dy / 2.0 + side * h * dx / d;
   } else if (words.has(ci) || words.has(cj)) {
-    cx = sx + (words.has(ci) ? word_length(words.at(ci), false) * unit_mm() : 0.0);
-    cy = sy + (words.has(cj) ? word_length(words.at(cj), false) * unit_mm() : 0.0);
+    double oi = words.has(ci) ? word_length(words.at(ci), false) * unit_mm() : 0.0;
+    double oj = words.has(cj) ? word_length(words.at(cj), false) * unit_mm() : 0.0;
+    if (framed) {
+      const xform::Point v = xform::vector_to_work(frame, {oi, oj, 0.0});
+      oi = v[0];
+      oj = v[1];
+    }
+    cx = sx + oi;
+    cy = sy + oj;
     const double r0 = std::hypot(sx - cx, sy - cy);
     const double r1 = std::hypot(ex - cx, ey - cy);
     if (r0 < 1e-9) return fail(AlarmId::kArcBadCenter, "the arc's centre is its start point", at);

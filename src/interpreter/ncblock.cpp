@@ -82,6 +82,18 @@ double Interpreter::Impl::work_of(int axis, double machine_mm) const noexcept {
   return (machine_mm * axis_scale[static_cast<std::size_t>(axis)] - offset_total(axis)) / unit_mm();
 }
 
+double Interpreter::Impl::tool_offset_total(int axis) const noexcept {
+  double o = tool_pos_offset[axis] + lathe_tool_offset[axis];
+  if (axis == length_axis) o += length_offset;
+  return o;
+}
+
+double Interpreter::Impl::position_var(int axis, double machine_mm,
+                                       bool tool_offsets) const noexcept {
+  const double w = work_of(axis, machine_mm);
+  return tool_offsets ? w + tool_offset_total(axis) / unit_mm() : w;
+}
+
 double Interpreter::Impl::machine_of(int axis, double work_units) const noexcept {
   return (work_units * unit_mm() + offset_total(axis)) / axis_scale[static_cast<std::size_t>(axis)];
 }
@@ -257,6 +269,9 @@ Result<void> Interpreter::Impl::plan_g_codes(const Words& words, BlockPlan& plan
     const SourceLoc at = loc(col);
     const CodeDef* def = find_g(code, lathe);
     if (def == nullptr) {
+      auto mill = mill_code(code, at, plan.mill);  // mill_codes.cpp
+      if (!mill) return std::unexpected(mill.error());
+      if (*mill) continue;
       if (lathe) {
         if (const char* why = lathe_refusal(code))
           return fail(AlarmId::kUnknownGCode, g_name(code) + why, at);
@@ -375,6 +390,28 @@ Result<int> Interpreter::Impl::offset_number(const Words& words, char letter) co
   return static_cast<int>(v);
 }
 
+// G31.n (mill_codes.cpp) is the block's skip.
+Result<void> Interpreter::Impl::plan_mill(BlockPlan& plan) const {
+  if (plan.mill.skip_step != 0) {
+    if (plan.action != Action::kNone && plan.action != Action::kSkip) {
+      return fail(AlarmId::kGCodeConflict,
+                  g_name(plan.action_code) + " and G31." + std::to_string(plan.mill.skip_step) +
+                      " are both one-shot (group 00) commands",
+                  loc(cur_col));
+    }
+    plan.action = Action::kSkip;
+    plan.action_code = 310;
+  }
+  return {};
+}
+
+void Interpreter::Impl::plan_cycle(BlockPlan& plan) const {
+  if (plan.group[static_cast<std::size_t>(Group::k01)] != nullptr && !mc.lathe()) {
+    plan.next.cycle = Cycle::kNone;
+  }
+  if (plan.mill.cycle) plan.next.cycle = *plan.mill.cycle;
+}
+
 // The block's modal state: the group codes, then F S T D.
 Result<void> Interpreter::Impl::plan_modal(const Words& words, BlockPlan& plan) {
   ModalState& next = plan.next;
@@ -431,12 +468,17 @@ Result<void> Interpreter::Impl::plan_block(const Words& words, BlockPlan& plan) 
   plan.next = modal;
   auto g = plan_g_codes(words, plan);
   if (!g) return g;
+  auto m = plan_mill(plan);
+  if (!m) return m;
   const CodeDef* g12 = plan.group[static_cast<std::size_t>(Group::k12)];
   plan.call = plan.action == Action::kMacroCall || (g12 != nullptr && g12->code == 660);
   if (plan.call) return plan_call(words, plan);
   auto a = plan_addresses(words);
   if (!a) return a;
-  return plan_modal(words, plan);
+  auto md = plan_modal(words, plan);
+  if (!md) return md;
+  plan_cycle(plan);
+  return {};
 }
 
 // ---------------------------------------------------------------------------
@@ -579,6 +621,10 @@ Result<Step> Interpreter::Impl::commit_action(const Words& words, const BlockPla
     return Step::kContinue;
   }
   if (plan.tool_pos_offset != 0) commit_tool_pos_offset(words, plan.tool_pos_offset);
+  if (!skip) {
+    auto c = check_cutter_comp(at);
+    if (!c) return std::unexpected(c.error());
+  }
   auto m = motion(words, out, skip, plan.machine_coord);
   if (!m) return m;
   moved = true;
@@ -658,6 +704,40 @@ Result<std::optional<Step>> Interpreter::Impl::commit_m_codes(const Words& words
   return std::optional<Step>{};
 }
 
+// A new cycle mode: the initial level is the present Z (B-63944EN 5.1).
+void Interpreter::Impl::commit_cycle_start(const ModalState& before) {
+  if (modal.cycle == Cycle::kNone || before.cycle != Cycle::kNone) return;
+  cycle_data = cycles::Data{};
+  const int z = axis_of_letter['Z' - 'A'];
+  if (z < 0) return;
+  const int x = axis_of_letter['X' - 'A'], y = axis_of_letter['Y' - 'A'];
+  cycle_data.initial =
+      xform::to_program(frame, {x >= 0 ? work_of(x, pos[x]) : 0.0,
+                                y >= 0 ? work_of(y, pos[y]) : 0.0, work_of(z, pos[z])})[2];
+}
+
+// The mill codes' action, in place of the group-00 action or motion: G68
+// G51 G51.1 take the axis words as their data (no move), a cycle mode
+// drills at the block's position. nullopt: the block goes on to
+// commit_action.
+Result<std::optional<Step>> Interpreter::Impl::commit_mill(const Words& words,
+                                                           const BlockPlan& plan, CommandSink& out,
+                                                           bool& moved) {
+  if (plan.mill.frame_code != 0) {
+    auto r = apply_frame_code(words, plan.mill);
+    if (!r) return std::unexpected(r.error());
+    if (*r) return Step::kContinue;
+  }
+  if (plan.action != Action::kNone) return std::optional<Step>{};
+  if (modal.cycle != Cycle::kNone && (has_axis_word(words) || words.has('R'))) {
+    auto m = canned_cycle(words, out);
+    if (!m) return std::unexpected(m.error());
+    moved = true;
+    return std::optional<Step>{Step::kContinue};
+  }
+  return std::optional<Step>{};
+}
+
 Result<Step> Interpreter::Impl::commit_block(const Words& words, const BlockPlan& plan,
                                              CommandSink& out) {
   commit_messages();
@@ -666,8 +746,14 @@ Result<Step> Interpreter::Impl::commit_block(const Words& words, const BlockPlan
   commit_modal(words, plan, out);
   if (auto t = commit_tool(words, plan, before, out); !t) return std::unexpected(t.error());
   commit_spindle(words, plan.spindle_changed, out);
+  if (plan.mill.polar) polar = *plan.mill.polar;
+  skip_step = plan.mill.skip_step;
+  commit_cycle_start(before);
   bool moved = false;
-  auto a = commit_action(words, plan, out, moved);
+  auto mill = commit_mill(words, plan, out, moved);
+  if (!mill) return std::unexpected(mill.error());
+  if (plan.mill.g37) return g37_block(words, out);  // the block's last step
+  auto a = *mill ? Result<Step>{**mill} : commit_action(words, plan, out, moved);
   if (!a || *a == Step::kSync) return a;
   auto m = commit_m_codes(words, out);
   if (!m) return std::unexpected(m.error());
@@ -705,6 +791,12 @@ BlockUndo Interpreter::Impl::save_block_state() const {
   u.pending = pending;
   u.parts_count = parts_count;
   u.ended = ended;
+  u.cycle_data = cycle_data;
+  u.frame = frame;
+  u.polar = polar;
+  u.polar_angle = polar_angle;
+  u.rotation_angle = rotation_angle;
+  u.skip_step = skip_step;
   return u;
 }
 
@@ -728,6 +820,12 @@ void Interpreter::Impl::restore_block_state(const BlockUndo& u) {
   pending = u.pending;
   parts_count = u.parts_count;
   ended = u.ended;
+  cycle_data = u.cycle_data;
+  frame = u.frame;
+  polar = u.polar;
+  polar_angle = u.polar_angle;
+  rotation_angle = u.rotation_angle;
+  skip_step = u.skip_step;
 }
 
 // Plan, then commit into the block's buffer; the buffer reaches `out` only

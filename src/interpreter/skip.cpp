@@ -107,6 +107,21 @@ Result<Step> Interpreter::Impl::skip_block(const Words& words, const AxisVec& ta
     spec.torque_delay_s =
         sw.torque_delay_param != 0 ? params.get(sw.torque_delay_param) / 1000.0 : 0.0;
     if (p == 99) add_input(0);  // P99: the SKIP signal ends it too; P98: only the torque
+  } else if (skip_step != 0) {
+    // G31.n (Mitsubishi multi-step skip function 1, M700V/M70V manual
+    // 15.3): the logical sum of the skip signals set in the parameter.
+    const int cond_param = kSkipStepParam + 2 * (skip_step - 1);
+    const int cond = static_cast<int>(params.get(cond_param));
+    if (cond <= 0) {
+      return fail(AlarmId::kSkipBadP,
+                  "G31." + std::to_string(skip_step) + ": no skip signal set in parameter " +
+                      std::to_string(cond_param),
+                  at);
+    }
+    for (int i = 0; i < sw.skip_p_count && i < 8; ++i) {
+      if (((cond >> i) & 1) != 0) add_input(i);
+    }
+    spec.kind = canon::SkipKind::kMultiStep;
   } else if (p >= 0) {
     const SourceLoc p_at = word_loc('P');
     if (sw.skip_p_mode == config::SkipPMode::kBitmask) {
@@ -150,9 +165,11 @@ Result<Step> Interpreter::Impl::skip_block(const Words& words, const AxisVec& ta
       feed = feed_mm_per_min();  // the block's F is already modal (ncblock.cpp)
       break;
     case config::SkipFeedRule::kBlockOrParam:
-      // The block's F is not made modal (ncblock.cpp).
-      feed =
-          words.has('F') ? feed_to_mm_per_min(words.at('F').value) : param_feed(sw.skip_feed_param);
+      // The block's F is not made modal (ncblock.cpp). G31.n: its own
+      // feed parameter (the one after its condition).
+      feed = words.has('F') ? feed_to_mm_per_min(words.at('F').value)
+                            : param_feed(skip_step != 0 ? kSkipStepParam + 2 * skip_step - 1
+                                                        : sw.skip_feed_param);
       break;
     case config::SkipFeedRule::kParamSwitch:
       feed = params.get(sw.skip_feed_switch_param) != 0.0 ? param_feed(sw.skip_feed_param)
@@ -247,21 +264,25 @@ Result<Step> Interpreter::Impl::skip_block(const Words& words, const AxisVec& ta
 }
 
 // The machine's answer to a skip block. The latched position is stored in
-// the dialect's variables, in work coordinates of the offsets active now
-// (tool length and G45-G48 included); without a signal the programmed end
+// the dialect's variables, in work coordinates of the offsets active now,
+// with the tool offsets in them or not as the dialect says (skip_tool_offsets:
+// the tool reference point, Fanuc-class); without a signal the programmed end
 // point is stored. The next block starts where the axes came to rest
 // (#5001..), which differs from the latch by the stopping distance.
 Result<void> Interpreter::Impl::finish_skip(const SyncState& s) {
   PendingSkip& ps = pending_skip;
   const AxisVec latch = s.triggered ? s.latch_machine : ps.target;
   skip_machine = latch;
-  for (int i = 0; i < axis_count; ++i) skip_work[i] = work_of(i, latch[i]);
+  for (int i = 0; i < axis_count; ++i) {
+    skip_work[i] = position_var(i, latch[i], dialect.sw.skip_tool_offsets);
+  }
   have_skip = true;
   pos = s.machine_position;
   SkipRecord rec = ps.record;
   rec.triggered = s.triggered;
   rec.time_s = s.time_s;
   rec.position = skip_work;
+  rec.position_has_tool_offsets = dialect.sw.skip_tool_offsets;
   rec.machine_position = latch;
   for (int i = 0; i < axis_count; ++i) rec.end_position[i] = work_of(i, pos[i]);
   if (s.triggered && s.input_index >= 0 && s.input_index < canon::SkipSpec::kMaxInputs) {
@@ -294,6 +315,7 @@ Result<void> Interpreter::Impl::finish_skip(const SyncState& s) {
     return fail(AlarmId::kSkipMiss, "the block reached its end point without a skip signal",
                 ps.loc);
   }
+  if (ps.g37_axis >= 0) return finish_g37(s);  // mill_codes.cpp
   return {};
 }
 

@@ -133,13 +133,31 @@ Result<Value> Interpreter::Impl::read_var(int n, SourceLoc where) {
     if (i >= axis_count) return Value::null();
     return Value::of(f(i) + 0.0);
   };
-  if (n >= 5001 && n <= 5008) return axis_value(5001, [&](int i) { return work_of(i, pos[i]); });
+  // Tool offsets in or out of each, per dialect (docs/position-variables.md).
+  const auto& sw = dialect.sw;
+  if (n >= 5001 && n <= 5008) {
+    return axis_value(5001,
+                      [&](int i) { return position_var(i, pos[i], sw.block_end_tool_offsets); });
+  }
   // Lengths in program values: an X axis in diameter reads in diameter.
   const auto scale = [&](int i) { return axis_scale[static_cast<std::size_t>(i)]; };
   if (n >= 5021 && n <= 5028) {
-    return axis_value(5021, [&](int i) { return pos[i] * scale(i) / unit_mm(); });
+    // Machine lock and Z-axis cancel: the machine does not move, and its
+    // machine coordinates stay where it is (the work position follows the
+    // program).
+    const bool lock =
+        dialect.sw.machine_lock_param != 0 && params.get(dialect.sw.machine_lock_param) != 0.0;
+    const bool z_cancel =
+        dialect.sw.z_cancel_param != 0 && params.get(dialect.sw.z_cancel_param) != 0.0;
+    return axis_value(5021, [&](int i) {
+      const bool held = lock || (z_cancel && axis_letter[static_cast<std::size_t>(i)] == 'Z');
+      return (held ? last_sync.actual_position[i] : pos[i]) * scale(i) / unit_mm();
+    });
   }
-  if (n >= 5041 && n <= 5048) return axis_value(5041, [&](int i) { return work_of(i, pos[i]); });
+  if (n >= 5041 && n <= 5048) {
+    return axis_value(5041,
+                      [&](int i) { return position_var(i, pos[i], sw.current_tool_offsets); });
+  }
   if (n >= 5061 && n <= 5068) {
     return axis_value(5061, [&](int i) { return have_skip ? skip_work[i] : 0.0; });
   }

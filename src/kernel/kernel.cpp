@@ -36,11 +36,13 @@ void Kernel::push(const canon::Stamped& stamped) {
           m.kind = c.linear ? planner::Move::Kind::kRapid : planner::Move::Kind::kRapidNonLinear;
           m.target = c.target;
           m.exact_stop = true;
+          m.in_position = cfg_.rapid_in_position;
         } else if constexpr (std::is_same_v<T, canon::Feed>) {
           m.kind = planner::Move::Kind::kLine;
           m.target = c.target;
           m.feed_mm_s = c.feed_mm_per_min / 60.0;
           m.exact_stop = c.exact_stop;
+          m.in_position = c.exact_stop;
         } else if constexpr (std::is_same_v<T, canon::Arc>) {
           m.kind = planner::Move::Kind::kArc;
           m.target = c.target;
@@ -51,15 +53,18 @@ void Kernel::push(const canon::Stamped& stamped) {
           m.ccw = c.ccw;
           m.extra_turns = c.extra_turns;
           m.exact_stop = c.exact_stop;
+          m.in_position = c.exact_stop;
         } else if constexpr (std::is_same_v<T, canon::Dwell>) {
           m.kind = planner::Move::Kind::kDwell;
           m.target = planner_.tail_position();
           m.dwell_s = c.seconds;
+          m.wait_in_position = true;
         } else if constexpr (std::is_same_v<T, canon::Skip>) {
           m.kind = planner::Move::Kind::kLine;
           m.target = c.target;
           m.feed_mm_s = c.feed_mm_per_min / 60.0;
           m.exact_stop = true;
+          m.wait_in_position = true;
           m.no_accel = !c.spec.accel;
           skip_ = SkipResult{};
           skip_.active = true;
@@ -81,6 +86,15 @@ void Kernel::push(const canon::Stamped& stamped) {
       },
       stamped.cmd);
   planner_.push(m);
+}
+
+bool Kernel::axes_in_position(const AxisVec& actual) const noexcept {
+  // One bit per axis, no branch per axis.
+  unsigned inpos = locked_.bits;
+  for (int i = 0; i < cfg_.limits.axis_count; ++i) {
+    inpos |= static_cast<unsigned>(std::fabs(cmd_[i] - actual[i]) <= cfg_.in_position_mm) << i;
+  }
+  return (inpos & all_axes_) == all_axes_;
 }
 
 bool Kernel::input_active(int index, bool level) const noexcept {
@@ -282,6 +296,10 @@ void Kernel::tick(const TickInput& in, TickOutput& out) noexcept {
     time_scale_ = scale;
     interp_.set_time_scale(time_scale_);
   }
+  // The in-position check between blocks (G00, G09, G61, before a dwell or
+  // a skip): the next segment starts in the first period that finds every
+  // axis within the width of the command.
+  if (interp_.needs_in_position() && axes_in_position(in.actual)) interp_.release_in_position();
   cmd_prev_ = cmd_;
   cmd_ = interp_.tick();
   if (skip_.active && !skip_.done && !skip_started_ && interp_.tag() == skip_tag_) {
@@ -291,14 +309,10 @@ void Kernel::tick(const TickInput& in, TickOutput& out) noexcept {
   // In position: every axis within the width, or locked (one bit per axis,
   // no branch per axis). It matters only once the motion has ended (idle(),
   // the end of a skip block), so it is not looked at before.
-  in_position_ = false;
-  if (interp_.idle()) {
-    unsigned inpos = locked_.bits;
-    for (int i = 0; i < cfg_.limits.axis_count; ++i) {
-      inpos |= static_cast<unsigned>(std::fabs(cmd_[i] - in.actual[i]) <= cfg_.in_position_mm) << i;
-    }
-    in_position_ = (inpos & all_axes_) == all_axes_;
-  }
+  const bool at_rest = interp_.idle() || interp_.holding();
+  const bool inpos = at_rest && axes_in_position(in.actual);
+  in_position_ = inpos && interp_.idle();
+  inpos_wait_ = at_rest && !inpos ? inpos_wait_ + 1 : 0;
   if (skip_.active && !skip_.done && skip_started_ && !skip_latch_pending_ && in_position_) {
     skip_.done = true;
     skip_.stop_position = cmd_;

@@ -53,7 +53,7 @@ struct TickOutput {
   AxisVec commanded;  // position for the next period
   AxisVec velocity;   // commanded velocity, mm/s
   double path_speed = 0.0;
-  std::uint32_t line = 0;  // source line of the active motion
+  std::uint32_t line = 0;    // source line of the active motion
   std::uint32_t source = 0;  // and its call context (canon::Stamped::source)
   bool skip_active = false;
   SkipHandshake handshake;
@@ -96,6 +96,10 @@ struct KernelConfig {
   ServoClock clock;
   std::size_t queue_capacity = 256;
   double in_position_mm = 0.0005;
+  // In-position check at the end of a rapid (Fanuc 1601#5 NCI = 0). G09,
+  // G61 and skip blocks always check; a dwell and a skip block start only
+  // with the axes in position.
+  bool rapid_in_position = true;
 };
 
 class Kernel {
@@ -133,6 +137,9 @@ class Kernel {
   const ServoClock& clock() const noexcept { return cfg_.clock; }
   // No motion queued or running and every axis within the in-position width.
   bool idle() const noexcept { return motion_idle() && in_position_; }
+  // Periods the command has been at rest (idle or at an in-position hold)
+  // with some axis outside the width: an axis held away from its command.
+  std::int64_t in_position_wait() const noexcept { return inpos_wait_; }
   bool motion_idle() const noexcept { return interp_.idle(); }
   const SkipResult& skip() const noexcept { return skip_; }
   void clear_skip() noexcept { skip_ = SkipResult{}; }
@@ -144,6 +151,8 @@ class Kernel {
 
  private:
   bool input_active(int index, bool level) const noexcept;
+  // Every axis within the in-position width of the command, or locked.
+  bool axes_in_position(const AxisVec& actual) const noexcept;
   void monitor_skip(const TickInput& in) noexcept;
   void start_skip_block(const TickInput& in) noexcept;
   void trigger(double frac, const TickInput& in, int input, bool torque) noexcept;
@@ -164,7 +173,8 @@ class Kernel {
   AxisVec cmd_;       // command for t_k (output at tick k-1)
   AxisVec cmd_prev_;  // command for t_{k-1}
   AxisVec actual_prev_;
-  bool in_position_ = true;  // motion idle and every axis in position (tick)
+  bool in_position_ = true;      // motion idle and every axis in position (tick)
+  std::int64_t inpos_wait_ = 0;  // see in_position_wait()
   std::uint32_t next_tag_ = 1;
   std::uint32_t skip_tag_ = 0;
   SkipResult skip_;

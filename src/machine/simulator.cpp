@@ -1,5 +1,7 @@
 #include "machine/simulator.hpp"
 
+#include <fmt/format.h>
+
 #include <array>
 #include <cmath>
 #include <type_traits>
@@ -104,7 +106,12 @@ Result<RunResult> Simulator::run(const interp::Setup& setup, const RunOptions& o
   interp_ = std::move(*created);
   interp::Interpreter& in = *interp_;
 
-  kernel::Kernel k(kernel_config(m_));
+  kernel::KernelConfig kc = kernel_config(m_);
+  // The in-position check at the end of a rapid, unless the dialect's bit
+  // turns it off (Fanuc 1601#5 NCI).
+  kc.rapid_in_position = d_.sw.rapid_no_in_position_param == 0 ||
+                         !p_.bit(d_.sw.rapid_no_in_position_param, d_.sw.rapid_no_in_position_bit);
+  kernel::Kernel k(kc);
   Plant plant(m_, scene_, k.clock());
   k.set_position(home);
   plant.reset(home);
@@ -143,6 +150,7 @@ Result<RunResult> Simulator::run(const interp::Setup& setup, const RunOptions& o
   AxisVec cmd_prev = home;
   bool waiting = false;  // the interpreter waits for a sync
   bool ending = false;   // the program ended; the machine finishes its motion
+  bool held = false;     // an axis held away from its command ended the run
   double next_progress = 1.0;
   // The file of a call context (interpreter storage; the table only grows
   // while blocks are read, and a motion alarm ends the reading).
@@ -242,6 +250,31 @@ Result<RunResult> Simulator::run(const interp::Setup& setup, const RunOptions& o
           break;
         }
       }
+      held = true;
+      break;
+    }
+    // An axis that never reaches its command at rest (held by a stop short
+    // of it): the control would wait for the in-position check for ever.
+    if (static_cast<double>(k.in_position_wait()) * k.clock().period_s() >
+        m_.in_position_timeout_s) {
+      int worst = 0;
+      double worst_fe = 0.0;
+      for (int i = 0; i < n; ++i) {
+        const double fe = cmd_prev[i] - plant.actual()[i];
+        if (std::fabs(fe) > std::fabs(worst_fe)) {
+          worst = i;
+          worst_fe = fe;
+        }
+      }
+      alarm(
+          Error{AlarmId::kInPositionTimeout,
+                fmt::format("axis {}: {:.4f} mm from its command after {:g} s at rest (in-position "
+                            "width {:g} mm); a stop holds it",
+                            m_.axes[static_cast<std::size_t>(worst)].name, worst_fe,
+                            m_.in_position_timeout_s, m_.in_position_mm),
+                SourceLoc{file_of(tout.source), tout.line, 1}, -1},
+          tout.source);
+      held = true;
       break;
     }
     // The stroke limits, on the command for the next period (checked over
@@ -314,7 +347,8 @@ Result<RunResult> Simulator::run(const interp::Setup& setup, const RunOptions& o
   }
   res.ticks = k.now();
   res.time_s = k.clock().seconds(k.now());
-  res.final_machine = k.command();
+  // Where the axes are: the command, unless an axis was held away from it.
+  res.final_machine = held ? plant.actual() : k.command();
   res.final_work = in.work_from_machine(res.final_machine);
   res.skips = in.skips();
   if (const interp::SkipRecord* p = in.pending_skip(); p != nullptr && res.alarm) {

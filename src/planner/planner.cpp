@@ -299,7 +299,9 @@ bool build_arc(Segment& s, const Move& m, const Limits& lim) noexcept {
 
 // The highest speed at which `in` may hand over to `out`.
 double junction_speed(const Segment& in, const Segment& out, const Limits& lim) noexcept {
-  if (in.exact_stop || in.no_accel || out.no_accel) return 0.0;
+  if (in.exact_stop || in.no_accel || out.no_accel || in.in_position || out.wait_in_position) {
+    return 0.0;
+  }
   if (in.kind == Kind::kRapid || in.kind == Kind::kRapidNonLinear || in.kind == Kind::kDwell) {
     return 0.0;
   }
@@ -489,6 +491,8 @@ void Planner::push(const Move& move) {
   s.tag = move.tag;
   s.exact_stop = move.exact_stop;
   s.no_accel = move.no_accel && (move.kind == Kind::kLine || move.kind == Kind::kArc);
+  s.in_position = move.in_position;
+  s.wait_in_position = move.wait_in_position;
 
   switch (move.kind) {
     case Kind::kDwell:

@@ -47,9 +47,14 @@ struct Move {
   bool exact_stop = false;  // velocity is zero at the end of this move
   bool no_accel = false;    // no automatic acc/dec: the path speed steps to the feed
                             // at the start and stays there (G31 with SKF = 0)
+  // In-position check (the interpolator holds at the segment boundary until
+  // the caller releases it): at the end of this move (G00, G09, G61), or
+  // before this move starts (dwell, skip). Either makes the junction a stop.
+  bool in_position = false;
+  bool wait_in_position = false;
   std::uint32_t line = 0;
   std::uint32_t source = 0;  // canon::Stamped::source, carried to the segment
-  std::uint32_t tag = 0;  // caller's identifier, carried to the segment
+  std::uint32_t tag = 0;     // caller's identifier, carried to the segment
 };
 
 // A planned segment. Geometry is fixed at push time; the profile (entry and
@@ -75,6 +80,8 @@ struct Segment {
   double v_entry_max = 0.0;
   bool exact_stop = false;
   bool no_accel = false;
+  bool in_position = false;       // Move::in_position
+  bool wait_in_position = false;  // Move::wait_in_position
   bool started = false;
   // kRapidNonLinear: one trapezoid per axis, all starting together.
   std::array<double, kMaxAxes> axis_t_acc{}, axis_t_total{}, axis_v{}, axis_a{};

@@ -183,6 +183,9 @@ std::string to_json(const ReportInput& in) {
     o["triggered"] = s.triggered;
     o["time"] = clean(s.time_s);
     o["position"] = axes_json(s.position, in.machine, increment);
+    // What `position` (#5061..) is: the tool reference point (tool offsets
+    // in it) or the programmed tip (docs/position-variables.md).
+    o["position_point"] = s.position_has_tool_offsets ? "tool_reference" : "tip";
     o["machine_position"] = axes_json(s.machine_position, in.machine);
     o["end_position"] = axes_json(s.end_position, in.machine);
     o["ended_by"] = ended_by(s);

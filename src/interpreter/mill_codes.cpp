@@ -1,0 +1,537 @@
+// The mill's codes beside the core G-code table of ncblock.cpp: canned
+// cycles (group 09), coordinate rotation G68/G69, scaling G50/G51,
+// programmable mirror G50.1/G51.1, polar coordinates G15/G16, the codes that
+// change nothing in a simulation, and the codes skipnc does not simulate
+// (an alarm that says so, distinct from an improper G code).
+//
+// Sources: Fanuc Series 30i/31i/32i-MODEL A operator's manual (machining
+// centre), B-63944EN: 5.1 canned cycles, 6.x scaling, coordinate system
+// rotation and mirror image; Fanuc 0i-A connection manual B-63503EN-1
+// (parameters 5400#0 RIN, 5410).
+#include <cctype>
+#include <cmath>
+#include <string>
+
+#include "config/skip_inputs.hpp"
+#include "interpreter/codes.hpp"
+#include "interpreter/impl.hpp"
+
+namespace skipnc::interp {
+namespace {
+
+enum class Kind : std::uint8_t { kCycle, kFrame, kNoEffect, kNotSimulated };
+
+struct MillCode {
+  int code;  // x10
+  Kind kind;
+  Cycle cycle;       // kCycle
+  const char* what;  // the function, in words
+};
+
+// The table. Codes of the lathe (G-code system A) are not here: a lathe
+// reads none of them (the core table refuses them with their own words).
+constexpr MillCode kMillCodes[] = {
+    {730, Kind::kCycle, Cycle::kG73, "high-speed peck drilling cycle"},
+    {740, Kind::kCycle, Cycle::kG74, "left-hand tapping cycle"},
+    {760, Kind::kCycle, Cycle::kG76, "fine boring cycle"},
+    {810, Kind::kCycle, Cycle::kG81, "drilling cycle, spot drilling"},
+    {820, Kind::kCycle, Cycle::kG82, "drilling cycle, counter boring (dwell)"},
+    {830, Kind::kCycle, Cycle::kG83, "peck drilling cycle"},
+    {840, Kind::kCycle, Cycle::kG84, "tapping cycle"},
+    {850, Kind::kCycle, Cycle::kG85, "boring cycle (feed out)"},
+    {860, Kind::kCycle, Cycle::kG86, "boring cycle (spindle stop, rapid out)"},
+    {870, Kind::kCycle, Cycle::kG87, "back boring cycle"},
+    {880, Kind::kCycle, Cycle::kG88, "boring cycle (dwell, spindle stop)"},
+    {890, Kind::kCycle, Cycle::kG89, "boring cycle (dwell, feed out)"},
+    {680, Kind::kFrame, Cycle::kNone, "coordinate system rotation"},
+    {690, Kind::kFrame, Cycle::kNone, "coordinate system rotation cancel"},
+    {500, Kind::kFrame, Cycle::kNone, "scaling cancel"},
+    {510, Kind::kFrame, Cycle::kNone, "scaling"},
+    {501, Kind::kFrame, Cycle::kNone, "programmable mirror image cancel"},
+    {511, Kind::kFrame, Cycle::kNone, "programmable mirror image"},
+    {150, Kind::kFrame, Cycle::kNone, "polar coordinate command cancel"},
+    {160, Kind::kFrame, Cycle::kNone, "polar coordinate command"},
+    {51, Kind::kNoEffect, Cycle::kNone, "AI contour control / high-speed machining mode"},
+    {80, Kind::kNoEffect, Cycle::kNone, "advanced preview control"},
+    {131, Kind::kNoEffect, Cycle::kNone, "polar coordinate interpolation cancel"},
+    {401, Kind::kNoEffect, Cycle::kNone, "normal direction control cancel"},
+    {121, Kind::kNotSimulated, Cycle::kNone, "polar coordinate interpolation"},
+    {71, Kind::kNotSimulated, Cycle::kNone, "cylindrical interpolation"},
+    {411, Kind::kNotSimulated, Cycle::kNone, "normal direction control left"},
+    {421, Kind::kNotSimulated, Cycle::kNone, "normal direction control right"},
+    // G37: simulated where the dialect has its parameters (fanuc.toml).
+    {370, Kind::kNotSimulated, Cycle::kNone, "automatic tool length measurement on this control"},
+    // G31.1-G31.3: simulated where the dialect has their parameters.
+    {311, Kind::kNotSimulated, Cycle::kNone, "multi-step skip on this control"},
+    {312, Kind::kNotSimulated, Cycle::kNone, "multi-step skip on this control"},
+    {313, Kind::kNotSimulated, Cycle::kNone, "multi-step skip on this control"},
+    {682, Kind::kNotSimulated, Cycle::kNone, "tilted working plane command"},
+    {434, Kind::kNotSimulated, Cycle::kNone, "tool centre point control"},
+    {120, Kind::kNotSimulated, Cycle::kNone, "circle cutting (CW)"},
+    {130, Kind::kNotSimulated, Cycle::kNone, "circle cutting (CCW)"},
+    {600, Kind::kNotSimulated, Cycle::kNone, "single direction positioning"},
+};
+
+const MillCode* find(int code) {
+  for (const auto& c : kMillCodes) {
+    if (c.code == code) return &c;
+  }
+  return nullptr;
+}
+
+// G37 (B-63944EN "Automatic tool length measurement"): parameters 6241 the
+// measurement feed, 6251 gamma (the rapid approach ends gamma before the
+// measuring position), 6254 epsilon (the signal must come within epsilon of
+// it); the measuring position reached signals XAE, YAE, ZAE of the machining
+// centre are X4.0, X4.1, X4.2 (Fanuc connection manual, signal list).
+constexpr int kG37FeedParam = 6241;
+constexpr int kG37GammaParam = 6251;
+struct MeasureSignal {
+  char axis;
+  canon::SignalAddr addr;
+};
+constexpr MeasureSignal kMeasureSignals[] = {
+    {'X', {'X', 4, 0}}, {'Y', {'X', 4, 1}}, {'Z', {'X', 4, 2}}};
+
+// Most pecks of one G73/G83 hole (see canned_cycle).
+constexpr double kMaxPecks = 10000;
+
+std::string name(int code) {
+  return "G" + std::to_string(code / 10) + (code % 10 ? "." + std::to_string(code % 10) : "");
+}
+
+// A value without decimal point in an address that is not a length: in
+// `increment` units (G68 R: 0.001 degree; G51 P: 0.001 or 0.00001).
+double scaled_word(const WordVal& w, double increment, bool calculator) {
+  return w.is_expr || w.has_point || calculator ? w.value : w.value * increment;
+}
+
+}  // namespace
+
+// A G code that the core table does not hold. Returns false when the code
+// is not a code of the mill here either (the caller raises the improper G
+// code alarm).
+Result<bool> Interpreter::Impl::mill_code(int code, SourceLoc at, MillRequest& req) const {
+  const MillCode* c = find(code);
+  if (c == nullptr || mc.lathe()) return false;
+  if (code >= 311 && code <= 313 && dialect.param(kSkipStepParam) != nullptr) {
+    // Multi-step skip function 1: the dialect has its parameters
+    // (mitsubishi.toml); a G31 whose signals and feed come from them.
+    req.skip_step = code - 310;
+    return true;
+  }
+  if (code == 370 && dialect.param(kG37EpsilonParam) != nullptr) {
+    req.g37 = true;  // the dialect has G37's parameters (fanuc.toml)
+    return true;
+  }
+  switch (c->kind) {
+    case Kind::kCycle:
+      req.cycle = c->cycle;
+      return true;
+    case Kind::kFrame:
+      if (code == 150 || code == 160) {
+        // Group 17: changes only how X and Y are read, from this block on.
+        req.polar = code == 160;
+        return true;
+      }
+      if (req.frame_code != 0) {
+        return fail(AlarmId::kGCodeConflict, name(req.frame_code) + " and " + name(code), at);
+      }
+      req.frame_code = code;
+      req.frame_at = at;
+      return true;
+    case Kind::kNoEffect:
+      return true;
+    case Kind::kNotSimulated:
+      return fail(AlarmId::kNotSimulated,
+                  name(code) + " " + c->what + " is not simulated by skipnc", at);
+  }
+  return false;
+}
+
+// G68 G69 G50 G51 G50.1 G51.1, after the block's modes are committed.
+// Returns true when the block's axis words were the mode's data (no move).
+Result<bool> Interpreter::Impl::apply_frame_code(const Words& words, const MillRequest& req) {
+  const int x = axis_of_letter['X' - 'A'], y = axis_of_letter['Y' - 'A'],
+            z = axis_of_letter['Z' - 'A'];
+  const std::array<int, 3> xyz{x, y, z};
+  const xform::Point here_work{x >= 0 ? work_of(x, pos[x]) : 0.0, y >= 0 ? work_of(y, pos[y]) : 0.0,
+                               z >= 0 ? work_of(z, pos[z]) : 0.0};
+  const xform::Point here = xform::to_program(frame, here_work);
+  auto word = [&](int i, double fallback) {
+    if (xyz[static_cast<std::size_t>(i)] < 0) return fallback;
+    const char c = "XYZ"[i];
+    return words.has(c) ? word_length(words.at(c), false) : fallback;
+  };
+  xform::Transform next = frame;
+  bool consumed = false;
+  switch (req.frame_code) {
+    case 690:
+      next.rotating = false;
+      break;
+    case 680: {
+      if (modal.plane != PlaneSel::kXY) {
+        return fail(AlarmId::kNotSimulated,
+                    "G68 in the G18/G19 plane is not simulated by skipnc (G17 only)", req.frame_at);
+      }
+      // The centre: X Y (always absolute), else the present position; in
+      // G51 mode it is scaled too (B-63944EN "Scaling and coordinate system
+      // rotation").
+      xform::Transform before_rotation = frame;
+      before_rotation.rotating = false;
+      const xform::Point c =
+          words.has('X') || words.has('Y')
+              ? xform::to_work(before_rotation, {word(0, here[0]), word(1, here[1]), 0})
+              : here_work;
+      double angle = params.get(5410) * 0.001;
+      if (words.has('R')) {
+        angle = scaled_word(words.at('R'), 0.001, params.bit(3401, 0));
+        if (params.bit(5400, 0) && modal.distance == Distance::kIncremental) {
+          angle += frame.rotating ? rotation_angle : 0.0;
+        }
+      }
+      next.rotating = true;
+      next.angle_deg = angle;
+      next.rotation_center = {c[0], c[1]};
+      rotation_angle = angle;
+      consumed = true;
+      break;
+    }
+    case 500:
+      next.scale = {1.0, 1.0, 1.0};
+      break;
+    case 510: {
+      const double inc = params.bit(5400, 7) ? 0.00001 : 0.001;
+      const bool calc = params.bit(3401, 0);
+      double all = params.get(5411) * inc;
+      if (words.has('P')) all = scaled_word(words.at('P'), inc, calc);
+      std::array<double, 3> f{all, all, all};
+      for (int i = 0; i < 3; ++i) {
+        const char c = "IJK"[i];
+        if (words.has(c)) f[static_cast<std::size_t>(i)] = scaled_word(words.at(c), inc, calc);
+      }
+      for (double v : f) {
+        if (v == 0.0 || !std::isfinite(v)) {
+          return fail(AlarmId::kBadValue, "G51 magnification 0", req.frame_at);
+        }
+      }
+      next.scale = f;
+      next.scale_center = {word(0, here[0]), word(1, here[1]), word(2, here[2])};
+      consumed = true;
+      break;
+    }
+    case 511:
+    case 501:
+      for (int i = 0; i < 3; ++i) {
+        if (xyz[static_cast<std::size_t>(i)] < 0 || !words.has("XYZ"[i])) continue;
+        next.mirror[static_cast<std::size_t>(i)] = req.frame_code == 511;
+        next.mirror_center[static_cast<std::size_t>(i)] = word(i, 0.0);
+      }
+      consumed = true;
+      break;
+    default:
+      return false;
+  }
+  frame = next;
+  return consumed;
+}
+
+// Targets of X Y Z through polar coordinates and the frame (the other axes
+// are left to axis_targets). Under rotation a move of X alone moves Y too.
+Result<void> Interpreter::Impl::frame_targets(const Words& words, AxisVec& target,
+                                              AxisMask& moved) {
+  const std::array<int, 3> xyz{axis_of_letter['X' - 'A'], axis_of_letter['Y' - 'A'],
+                               axis_of_letter['Z' - 'A']};
+  xform::Point here_work{};
+  for (std::size_t i = 0; i < 3; ++i) {
+    if (xyz[i] >= 0) here_work[i] = work_of(xyz[i], pos[xyz[i]]);
+  }
+  const xform::Point here = xform::to_program(frame, here_work);
+  xform::Point p = here;
+  const bool inc = modal.distance == Distance::kIncremental;
+  std::array<bool, 3> named{};
+  for (std::size_t i = 0; i < 3; ++i) {
+    named[i] = xyz[i] >= 0 && words.has("XYZ"[i]);
+  }
+  if (polar && modal.plane == PlaneSel::kXY && (named[0] || named[1])) {
+    // G16 (B-63944EN "Polar coordinate command"): X is the radius, Y the
+    // angle. In G90 the centre is the work origin; in G91 the present
+    // position, with the angle added to the last one.
+    const std::array<double, 2> centre =
+        inc ? std::array<double, 2>{here[0], here[1]} : std::array<double, 2>{0.0, 0.0};
+    const double r0 = inc ? 0.0 : std::hypot(here[0], here[1]);
+    const double radius = named[0] ? word_length(words.at('X'), false) : r0;
+    const double a = named[1] ? word_length(words.at('Y'), true) : (inc ? 0.0 : polar_angle);
+    polar_angle = inc ? polar_angle + a : a;
+    const auto xy = xform::polar_to_xy(centre, radius, polar_angle);
+    p[0] = xy[0];
+    p[1] = xy[1];
+    named[0] = named[1] = true;
+  } else {
+    for (std::size_t i = 0; i < 2; ++i) {
+      if (named[i]) {
+        const double v = word_length(words.at("XYZ"[i]), false);
+        p[i] = inc ? p[i] + v : v;
+      }
+    }
+  }
+  if (named[2]) {
+    const double v = word_length(words.at('Z'), false);
+    p[2] = inc ? p[2] + v : v;
+  }
+  if (frame.rotating && (named[0] || named[1])) named[0] = named[1] = true;
+  const xform::Point w = xform::to_work(frame, p);
+  for (std::size_t i = 0; i < 3; ++i) {
+    if (!named[i] || xyz[i] < 0) continue;
+    target[xyz[i]] = machine_of(xyz[i], w[i]);
+    moved.set(xyz[i]);
+  }
+  return {};
+}
+
+// Cutter radius compensation is not simulated: a move in G41/G42 with a
+// non-zero radius is refused in words (a radius of 0, as a D0 or an empty
+// offset, moves on the programmed path, which is what the control does).
+Result<void> Interpreter::Impl::check_cutter_comp(SourceLoc where) const {
+  if (mc.lathe() || modal.cutter == CutterComp::kOff || modal.d == 0) return {};
+  const auto& t = tools[static_cast<std::size_t>(modal.d)];
+  const double r = t.radius_geometry + t.radius_wear;
+  if (r == 0.0) return {};
+  return fail(AlarmId::kNotSimulated,
+              std::string(modal.cutter == CutterComp::kLeft ? "G41" : "G42") +
+                  " cutter radius compensation with D" + std::to_string(modal.d) + " = " +
+                  std::to_string(r) + " mm is not simulated by skipnc",
+              where);
+}
+
+// G37 X_ / Y_ / Z_: rapid to gamma before the measuring position, then at the
+// measurement feed until the measuring position reached signal of the axis,
+// at most epsilon past it. finish_g37 checks the range and corrects the
+// active H.
+Result<Step> Interpreter::Impl::g37_block(const Words& words, CommandSink& out) {
+  const SourceLoc at = loc(cur_col);
+  if (words.has('H')) {
+    return fail(AlarmId::kG37HCode, "H in a G37 block", loc(words.at('H').column));
+  }
+  int axis = -1;
+  canon::SignalAddr signal{};
+  for (const MeasureSignal& m : kMeasureSignals) {
+    if (!words.has(m.axis) || axis_of_letter[static_cast<std::size_t>(m.axis - 'A')] < 0) continue;
+    if (axis >= 0) return fail(AlarmId::kG37Axis, "G37 measures one axis only", at);
+    axis = axis_of_letter[static_cast<std::size_t>(m.axis - 'A')];
+    signal = m.addr;
+  }
+  if (axis < 0) {
+    return fail(AlarmId::kG37Axis, "G37 needs one of X, Y, Z (the measuring position)", at);
+  }
+  for (int i = 0; i < axis_count; ++i) {
+    const char c = axis_letter[static_cast<std::size_t>(i)];
+    if (i != axis && words.has(c)) return fail(AlarmId::kG37Axis, "G37 measures one axis only", at);
+  }
+  if (modal.h == 0 || modal.length == LengthComp::kOff) {
+    return fail(AlarmId::kG37NoOffset, "G37 without an active tool length offset (G43 H..)", at);
+  }
+  AxisVec target;
+  AxisMask moved;
+  auto t = axis_targets(words, false, target, moved);
+  if (!t) return std::unexpected(t.error());
+  const double dir = target[axis] > pos[axis] ? 1.0 : -1.0;
+  if (target[axis] == pos[axis]) {
+    return fail(AlarmId::kG37Axis, "G37 from the measuring position itself", at);
+  }
+  const double gamma = params.get(kG37GammaParam);
+  const double epsilon = params.get(kG37EpsilonParam);
+  const double feed = params.get(kG37FeedParam);
+  if (!(feed > 0.0)) return fail(AlarmId::kNoFeed, "G37 feed (parameter 6241) is 0", at);
+  AxisVec approach = pos;
+  approach[axis] = target[axis] - dir * gamma;
+  if (dir * (approach[axis] - pos[axis]) > 0.0) {
+    emit(out, canon::Rapid{approach, params.bit(1401, 1)});
+    pos = approach;
+  }
+  canon::Skip sk;
+  sk.target = pos;
+  sk.target[axis] = target[axis] + dir * epsilon;
+  sk.feed_mm_per_min = feed;
+  canon::SkipSpec& spec = sk.spec;
+  spec.kind = canon::SkipKind::kSkip;
+  spec.inputs[0] = signal;
+  spec.input_count = 1;
+  spec.stop = canon::SkipStop::kImmediate;
+  spec.latch = mc.latch;
+  spec.latch_delay_s = mc.latch_delay_s;
+  spec.servo_delay_comp = mc.servo_delay_comp;
+  pending_skip = PendingSkip{};
+  pending_skip.input_names[0] = config::signal_name(signal);
+  SkipRecord& rec = pending_skip.record;
+  rec.line = cur_line;
+  std::string_view text = raw.text;
+  while (!text.empty() && std::isspace(static_cast<unsigned char>(text.back()))) {
+    text.remove_suffix(1);
+  }
+  while (!text.empty() && std::isspace(static_cast<unsigned char>(text.front()))) {
+    text.remove_prefix(1);
+  }
+  rec.block = std::string(text);
+  rec.kind = spec.kind;
+  pending_skip.target = sk.target;
+  pending_skip.loc = at;
+  pending_skip.g37_axis = axis;
+  pending_skip.g37_target = target[axis];
+  pending_skip.g37_epsilon = epsilon;
+  emit(out, sk);
+  pos = sk.target;
+  motion_since_sync = true;
+  pending = Pending::kSkip;
+  return Step::kSync;
+}
+
+// The signal must have come within epsilon of the measuring position; the
+// difference between where it came and the measuring position is added to
+// the active H (its wear: the geometry stays as set), and the offset is
+// applied again.
+Result<void> Interpreter::Impl::finish_g37(const SyncState& s) {
+  const PendingSkip& ps = pending_skip;
+  if (!s.triggered) {
+    return fail(AlarmId::kG37Signal,
+                "the measuring position reached signal did not come within " +
+                    std::to_string(ps.g37_epsilon) + " mm of the measuring position",
+                ps.loc);
+  }
+  const double diff_mm = s.latch_machine[ps.g37_axis] - ps.g37_target;
+  if (std::fabs(diff_mm) > ps.g37_epsilon + 1e-9) {
+    return fail(AlarmId::kG37Signal,
+                "the measuring position reached signal came " + std::to_string(std::fabs(diff_mm)) +
+                    " mm before the measuring position (allowed: " +
+                    std::to_string(ps.g37_epsilon) + " mm)",
+                ps.loc);
+  }
+  auto& t = tools[static_cast<std::size_t>(modal.h)];
+  t.length_wear += modal.length == LengthComp::kMinus ? -diff_mm : diff_mm;
+  Words none;
+  return set_tool_length(none, modal.length);
+}
+
+// One block in canned cycle mode: the hole data are updated from the block
+// and each hole (K repeats) is drilled. The moves are made in the program
+// frame and go through the frame (G68, G51, G51.1) like any move.
+Result<Step> Interpreter::Impl::canned_cycle(const Words& words, CommandSink& out) {
+  const SourceLoc at = loc(cur_col);
+  const int z = axis_of_letter['Z' - 'A'];
+  if (z < 0) return fail(AlarmId::kIllegalPlaneAxis, "a canned cycle needs a Z axis", at);
+  cycles::Data& d = cycle_data;
+  if (words.has('R')) {
+    d.r = word_length(words.at('R'), false);
+    d.have_r = true;
+  }
+  if (words.has('Z')) {
+    d.z = word_length(words.at('Z'), false);
+    d.have_z = true;
+  }
+  if (words.has('Q')) d.q = std::fabs(word_length(words.at('Q'), false));
+  if (words.has('P')) d.p_ms = words.at('P').value;
+  int repeats = 1;
+  const char kw = words.has('K') ? 'K' : words.has('L') ? 'L' : 0;
+  if (kw != 0) {
+    const double k = words.at(kw).value;
+    if (k != std::trunc(k) || k < 0 || k > 9999) {
+      return fail(AlarmId::kBadValue,
+                  std::string(1, kw) + std::to_string(k) + ": repeats are 0-9999",
+                  loc(words.at(kw).column));
+    }
+    repeats = static_cast<int>(k);
+  }
+  if (cycles::pecks(modal.cycle) && !(d.q > 0.0)) {
+    return fail(AlarmId::kCycleNoQ, "G73/G83 without a peck depth Q", at);
+  }
+  if (!d.have_z) return fail(AlarmId::kBadValue, "a canned cycle needs Z (point Z)", at);
+  if (feed_mm_per_min() <= 0.0)
+    return fail(AlarmId::kNoFeed, "canned cycle without a feed (F)", at);
+  auto c = check_cutter_comp(at);
+  if (!c) return std::unexpected(c.error());
+  // The hole's position: the block's axis words but Z (the hole data).
+  Words position = words;
+  position.slot('Z').reset();
+  position.letters &= ~(1u << ('Z' - 'A'));
+  const int x = axis_of_letter['X' - 'A'], y = axis_of_letter['Y' - 'A'];
+  auto program_point = [&](const AxisVec& m) {
+    xform::Point w{x >= 0 ? work_of(x, m[x]) : 0.0, y >= 0 ? work_of(y, m[y]) : 0.0,
+                   work_of(z, m[z])};
+    return xform::to_program(frame, w);
+  };
+  const bool linear = params.bit(1401, 1);
+  const double feed = feed_mm_per_min();
+  for (int k = 0; k < repeats; ++k) {
+    AxisVec target;
+    AxisMask moved;
+    auto t = axis_targets(position, false, target, moved);
+    if (!t) return std::unexpected(t.error());
+    cycles::Hole h;
+    h.kind = modal.cycle;
+    h.ret = modal.ret;
+    h.from = program_point(pos);
+    const xform::Point hole = program_point(target);
+    h.at = {hole[0], hole[1]};
+    // Other axes of the block (A, B, ...) are positioned with X and Y.
+    AxisVec base = target;
+    const cycles::Levels lv = cycles::resolve_levels(d, modal.distance == Distance::kIncremental);
+    if (cycles::pecks(modal.cycle) && std::fabs(lv.bottom - lv.r) / d.q > kMaxPecks) {
+      // A bound of skipnc's (the control has none): a Q far smaller than the
+      // depth would make millions of moves from one block.
+      return fail(AlarmId::kBadValue,
+                  "Q" + std::to_string(d.q) + " makes more than " +
+                      std::to_string(static_cast<int>(kMaxPecks)) + " pecks in one hole",
+                  words.has('Q') ? loc(words.at('Q').column) : at);
+    }
+    h.initial = d.initial;
+    h.r = lv.r;
+    h.bottom = lv.bottom;
+    h.q = d.q;
+    h.dwell_s = cycles::uses_p(modal.cycle) ? d.p_ms / 1000.0 : 0.0;
+    h.peck_clearance = params.get(modal.cycle == Cycle::kG73 ? 5114 : 5115) / unit_mm();
+    h.shift_dir = cycles::shift_direction(static_cast<int>(params.get(5101)) >> 4);
+    h.spindle_dir = modal.spindle_dir != 0 ? modal.spindle_dir : 1;
+    for (const cycles::Move& m : cycles::hole_moves(h)) {
+      const xform::Point w = xform::to_work(frame, m.to);
+      AxisVec mp = base;
+      if (x >= 0) mp[x] = machine_of(x, w[0]);
+      if (y >= 0) mp[y] = machine_of(y, w[1]);
+      mp[z] = machine_of(z, w[2]);
+      switch (m.kind) {
+        case cycles::MoveKind::kRapid:
+          emit(out, canon::Rapid{mp, linear});
+          pos = mp;
+          break;
+        case cycles::MoveKind::kFeed:
+          emit(out, canon::Feed{mp, feed, false});
+          pos = mp;
+          break;
+        case cycles::MoveKind::kDwell:
+          emit(out, canon::Dwell{m.seconds});
+          break;
+        case cycles::MoveKind::kSpindle:
+          emit(out, canon::Spindle{modal.spindle, m.spindle_dir});
+          break;
+        case cycles::MoveKind::kOrient:
+          emit(out, canon::MCode{19});
+          break;
+      }
+    }
+    motion_since_sync = true;
+  }
+  last_cut_feed = modal.feed;
+  return Step::kContinue;
+}
+
+}  // namespace skipnc::interp
+
+namespace skipnc::interp {
+
+bool g_code_without_effect(int code) noexcept {
+  for (const auto& c : kMillCodes) {
+    if (c.code == code) return c.kind == Kind::kNoEffect;
+  }
+  return false;
+}
+
+}  // namespace skipnc::interp

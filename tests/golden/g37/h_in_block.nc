@@ -1,0 +1,5 @@
+(G37 with H in its block: PS0082)
+G21 G90 G17 G54
+G43 H1 G0 Z50.
+G37 Z0 H1
+M30

@@ -1,0 +1,1 @@
+../../../examples/probing/rotated_holes.nc
