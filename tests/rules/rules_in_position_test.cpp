@@ -122,24 +122,28 @@ TEST(InPosition, ATorqueSkipWithoutATorqueLimitIntoAStopEndsInAnAlarm) {
   EXPECT_LT(o.r.time_s, 5.0);
 }
 
+// G54 Z-200 and H1 = 100 mm: the tip at work Z-3 is at machine Z-103,
+// where X0.4 turns on.
+Rig g54_and_h1(const char* dialect) {
+  return Rig(dialect)
+      .machine([](config::MachineConfig& m) {
+        m.work_offsets[1][2] = -200.0;  // G54 Z
+        m.tool_offsets[1].length_geometry = 100.0;
+      })
+      .trigger("X0.4", 'Z', -103.0);
+}
+
 // Fanuc-class: #5001.. is the programmed point (tool offsets out), #5041..
 // and #5061.. have the tool length in them: #5043 - #5003 is the active H
 // and #5063 - #5083 the tip at the latch. Machine coordinates are where
 // the machine is. The report says which point the skip position is.
 TEST(PositionVariables, FanucHasTheToolLengthInCurrentAndSkipPositions) {
-  const Outcome o = Rig()
-                        .machine([](config::MachineConfig& m) {
-                          m.work_offsets[1][2] = -200.0;  // G54 Z
-                          m.tool_offsets[1].length_geometry = 100.0;
-                        })
-                        // tip at work Z-3: machine Z = -3 - 200 + 100 = -103
-                        .trigger("X0.4", 'Z', -103.0)
-                        .run(
-                            "G21 G90 G54 G43 H1 G0 Z10.\n"
-                            "#100 = #5003\n#101 = #5043\n#102 = #5023\n"
-                            "G31 Z-10. F100.\n"
-                            "#103 = #5063\n#104 = #5083\n#105 = #5063 - #5083\n"
-                            "M30\n");
+  const Outcome o = g54_and_h1("fanuc").run(
+      "G21 G90 G54 G43 H1 G0 Z10.\n"
+      "#100 = #5003\n#101 = #5043\n#102 = #5023\n"
+      "G31 Z-10. F100.\n"
+      "#103 = #5063\n#104 = #5083\n#105 = #5063 - #5083\n"
+      "M30\n");
   ASSERT_TRUE(o.completed()) << o.alarm_code();
   EXPECT_NEAR(o.var(100), 10.0, kUm) << "#5003: programmed point";
   EXPECT_NEAR(o.var(101), 110.0, kInPos) << "#5043: tool reference point";
@@ -156,18 +160,12 @@ TEST(PositionVariables, FanucHasTheToolLengthInCurrentAndSkipPositions) {
 // program reads the tip in #5063 and #5043 (rule 23, rule 26).
 TEST(PositionVariables, NctAndCompassStoreTheProgrammedPoint) {
   for (const char* d : {"nct", "compass"}) {
-    const Outcome o = Rig(d)
-                          .machine([](config::MachineConfig& m) {
-                            m.work_offsets[1][2] = -200.0;
-                            m.tool_offsets[1].length_geometry = 100.0;
-                          })
-                          .trigger("X0.4", 'Z', -103.0)
-                          .run(
-                              "G21 G90 G54 G43 H1 G0 Z10.\n"
-                              "#101 = #5043\n"
-                              "G31 Z-10. F100.\n"
-                              "#103 = #5063\n"
-                              "M30\n");
+    const Outcome o = g54_and_h1(d).run(
+        "G21 G90 G54 G43 H1 G0 Z10.\n"
+        "#101 = #5043\n"
+        "G31 Z-10. F100.\n"
+        "#103 = #5063\n"
+        "M30\n");
     ASSERT_TRUE(o.completed()) << d << " " << o.alarm_code();
     EXPECT_NEAR(o.var(101), 10.0, kInPos) << d;
     EXPECT_NEAR(o.var(103), -3.0, kUm) << d;

@@ -20,6 +20,7 @@
 #include <string>
 #include <thread>
 
+#include "support/endless_programs.hpp"
 #include "support/report_run.hpp"
 
 namespace skipnc::test {
@@ -29,19 +30,6 @@ namespace fs = std::filesystem;
 
 // A short move with a few hundred servo periods: a trace of some rows.
 constexpr const char* kShortMove = "G1 X10. F1000.\nM30\n";
-
-// Motion without end: back and forth until something stops it.
-constexpr const char* kEndlessMotion =
-    "WHILE [1 EQ 1] DO1\n"
-    "G1 X100. F20000\n"
-    "G1 X0\n"
-    "END1\n";
-
-// No motion: the interpreter alone is busy, for ever.
-constexpr const char* kEndlessStatements =
-    "WHILE [1 EQ 1] DO1\n"
-    "#1=#1+1\n"
-    "END1\n";
 
 // A machine file: the built-in mill3 with `limits` as its [limits] table.
 fs::path machine_with_limits(const TempDir& dir, const std::string& limits) {

@@ -8,6 +8,7 @@
 #include <string>
 #include <thread>
 
+#include "support/endless_programs.hpp"
 #include "support/report_run.hpp"
 
 namespace skipnc::test {
@@ -58,19 +59,6 @@ void expect_interrupted(const Interrupted& r) {
   const double t = r.report["final"]["time"].get<double>();
   EXPECT_EQ(rows - 1, static_cast<std::size_t>(std::llround(t * 1000.0)));
 }
-
-// Motion without end: back and forth until the signal.
-constexpr const char* kEndlessMotion =
-    "WHILE [1 EQ 1] DO1\n"
-    "G1 X100. F20000\n"
-    "G1 X0\n"
-    "END1\n";
-
-// No motion at all: the interpreter alone is busy.
-constexpr const char* kEndlessStatements =
-    "WHILE [1 EQ 1] DO1\n"
-    "#1=#1+1\n"
-    "END1\n";
 
 TEST(RobustSignal, SigtermDuringMotionLeavesAnInterruptedReport) {
   TempDir dir;
