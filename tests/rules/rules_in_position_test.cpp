@@ -234,3 +234,20 @@ TEST(MachineLock, MachineCoordinatesStayStillAndTheWorkPositionMoves) {
 
 }  // namespace
 }  // namespace skipnc::rules
+
+namespace skipnc::rules {
+namespace {
+
+// A dwell after a move lasts exactly its time in servo periods: G04 X5. is
+// 5000 periods of 1 ms (was 4999: the dwell began inside the period in which
+// the move ended).
+TEST(InPosition, ADwellIsExactToTheServoPeriod) {
+  const Outcome o = Rig().param("3401#0=1").traced().run("G0 X1.\nG04 X5.\nM30\n");
+  ASSERT_TRUE(o.completed()) << o.alarm_code();
+  int periods = 0;
+  for (const auto& s : o.trace) periods += s.line == 2 ? 1 : 0;
+  EXPECT_EQ(periods, 5000);
+}
+
+}  // namespace
+}  // namespace skipnc::rules
