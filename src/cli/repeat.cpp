@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
@@ -13,6 +14,7 @@
 
 #include "cli/session.hpp"
 #include "core/utf8.hpp"
+#include "interpreter/variables.hpp"
 #include "machine/simulator.hpp"
 #include "report/report.hpp"
 
@@ -113,6 +115,20 @@ int repeat_command(const RunArgs& a) {
     vars.push_back(*r);
   }
   interp::Setup setup;
+  // Every repetition starts from the same #500-#999 (the file's) and none
+  // writes them back: the scatter is the probe's alone, and the file is
+  // not changed N+1 times (was: each run saved, the next one read that).
+  if (!s.machine.persistent_vars.empty()) {
+    std::array<interp::Value, 500> kept{};
+    if (auto r = interp::load_persistent(s.machine.persistent_vars, kept); !r) {
+      std::cerr << "skipnc: " << describe(r.error(), &s.dialect) << "\n";
+      return 2;
+    }
+    for (std::size_t i = 0; i < kept.size(); ++i) {
+      if (!kept[i].vacant) setup.variables.emplace_back(static_cast<int>(i) + 500, kept[i].v);
+    }
+    s.machine.persistent_vars.clear();
+  }
   setup.machine = &s.machine;
   setup.dialect = &s.dialect;
   setup.params = s.params.get();

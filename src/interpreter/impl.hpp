@@ -43,6 +43,9 @@ struct ProgramFile {
   // the offset of the program's first block. Filled by one scan of the
   // program the first time a GOTO or M99 P searches it.
   std::unordered_map<std::uint64_t, std::vector<std::pair<std::int64_t, gcode::SourcePos>>> labels;
+  // A false WHILE: the position after its END, keyed by the WHILE block's
+  // offset, found by the first scan; later passes jump there at once.
+  std::unordered_map<std::uint64_t, gcode::SourcePos> while_exits;
 };
 
 struct Loop {
@@ -258,6 +261,9 @@ struct Interpreter::Impl {
   bool polar = false;           // G16
   double polar_angle = 0.0;     // last polar angle (G91 adds to it)
   double rotation_angle = 0.0;  // last G68 R (5400#0 RIN: G91 adds to it)
+
+  // Held from the read of #500-#999 to their write (variables.hpp).
+  PersistentLock persistent_lock;
 
   Impl(const Setup& s);
   ~Impl();

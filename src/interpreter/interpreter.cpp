@@ -10,6 +10,9 @@ namespace skipnc::interp {
 
 namespace fs = std::filesystem;
 
+// How long a run waits for another that holds the persistent-variable file.
+constexpr double kPersistentLockWaitS = 60.0;
+
 Interpreter::Impl::Impl(const Setup& s)
     : setup(s), mc(*s.machine), dialect(*s.dialect), params(*s.params) {}
 
@@ -43,6 +46,11 @@ Result<void> Interpreter::Impl::init(const AxisVec& start) {
   for (const auto& [n, t] : mc.tool_offsets) tools[static_cast<std::size_t>(n)] = t;
   modal.units = mc.inch_machine ? Units::kInch : Units::kMetric;
   if (!mc.persistent_vars.empty()) {
+    // Locked until the run has written them back (save_persistent), so that
+    // runs sharing the file do not lose each other's updates.
+    auto l = PersistentLock::acquire(mc.persistent_vars, kPersistentLockWaitS);
+    if (!l) return std::unexpected(l.error());
+    persistent_lock = std::move(*l);
     auto r = load_persistent(mc.persistent_vars, vars.persistent());
     if (!r) return r;
   }
@@ -276,12 +284,19 @@ const SkipRecord* Interpreter::pending_skip() const noexcept {
 const AxisVec& Interpreter::position() const noexcept {
   return impl_->pos;
 }
-Result<void> Interpreter::save_persistent() const {
+Result<void> Interpreter::save_persistent() {
   // The DPRNT file (--dprnt) is written here too, whole, once per run.
   auto d = impl_->write_dprnt();
   if (!d) return d;
-  if (impl_->mc.persistent_vars.empty() || !impl_->vars.persistent_dirty()) return {};
-  return interp::save_persistent(impl_->mc.persistent_vars, impl_->vars.persistent());
+  Result<void> r;
+  if (!impl_->mc.persistent_vars.empty() && impl_->vars.persistent_dirty()) {
+    r = interp::save_persistent(impl_->mc.persistent_vars, impl_->vars.persistent());
+  }
+  impl_->persistent_lock.release();
+  return r;
+}
+void Interpreter::release_persistent() noexcept {
+  impl_->persistent_lock.release();
 }
 
 }  // namespace skipnc::interp

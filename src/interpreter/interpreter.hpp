@@ -129,7 +129,11 @@ class Interpreter {
   // Writes #500-#999 when they changed, and the DPRNT file when --dprnt
   // named one and the program opened it (POPEN); each file atomically.
   // Called once at the end of a run.
-  [[nodiscard]] Result<void> save_persistent() const;
+  // Writes #500-#999 (when the run changed them) and the DPRNT file, and
+  // lets other runs have the persistent-variable file.
+  [[nodiscard]] Result<void> save_persistent();
+  // Lets other runs have the file without writing it (an interrupted run).
+  void release_persistent() noexcept;
 
   struct Impl;
 

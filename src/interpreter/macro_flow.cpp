@@ -137,7 +137,16 @@ Result<Step> Interpreter::Impl::execute_statement(CommandSink& out) {
         return Step::kContinue;
       }
       if (again) f.loops.pop_back();
-      // Continue after the matching END.
+      // Continue after the matching END (found once, then remembered: a false
+      // WHILE inside a loop costs one seek per pass, not a re-read).
+      if (auto known = f.file->while_exits.find(block_pos.offset);
+          known != f.file->while_exits.end()) {
+        auto sk = f.file->src->seek(known->second);
+        if (!sk) return std::unexpected(sk.error());
+        f.resume = known->second;
+        return Step::kContinue;
+      }
+      const std::uint64_t while_at = block_pos.offset;
       const int id = s.loop;
       const SourceLoc start = where;
       const std::uint64_t program_start = f.start.offset;
@@ -150,6 +159,7 @@ Result<Step> Interpreter::Impl::execute_statement(CommandSink& out) {
         if (blk.stmt.kind == StmtKind::kEnd && blk.stmt.loop == id) break;
       }
       f.resume = f.file->src->tell();
+      f.file->while_exits.emplace(while_at, f.resume);
       return Step::kContinue;
     }
     case StmtKind::kEnd: {

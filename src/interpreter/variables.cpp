@@ -1,10 +1,17 @@
 #include "interpreter/variables.hpp"
 
+#include <fcntl.h>
+#include <sys/file.h>
+#include <unistd.h>
+
 #include <cerrno>
+#include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <fstream>
 #include <sstream>
+#include <thread>
 
 #include "core/file.hpp"
 
@@ -77,6 +84,13 @@ Result<void> load_persistent(const std::string& path, std::array<Value, 500>& ou
                       " is not '#<500-999> = <number>'",
                   SourceLoc{{}, lineno, 1});
     }
+    if (!std::isfinite(v)) {
+      // NaN or a number beyond the double range: never a value a run wrote.
+      return fail(AlarmId::kConfig,
+                  "persistent variable file '" + path + "': line " + std::to_string(lineno) +
+                      ": #" + std::to_string(n) + " is not a finite number",
+                  SourceLoc{{}, lineno, 1});
+    }
     vals[static_cast<std::size_t>(n - 500)] = Value::of(v);
   }
   out = vals;
@@ -92,6 +106,50 @@ Result<void> save_persistent(const std::string& path, const std::array<Value, 50
     text += buf;
   }
   return write_file_atomic(path, text);
+}
+
+PersistentLock& PersistentLock::operator=(PersistentLock&& o) noexcept {
+  if (this != &o) {
+    release();
+    fd_ = o.fd_;
+    o.fd_ = -1;
+  }
+  return *this;
+}
+
+void PersistentLock::release() noexcept {
+  if (fd_ >= 0) {
+    ::flock(fd_, LOCK_UN);
+    ::close(fd_);
+    fd_ = -1;
+  }
+}
+
+Result<PersistentLock> PersistentLock::acquire(const std::string& path, double wait_s) {
+  PersistentLock lock;
+  const std::string name = path + ".lock";
+  const int fd = ::open(name.c_str(), O_RDWR | O_CREAT | O_CLOEXEC | O_NOFOLLOW, 0644);
+  if (fd < 0) {
+    if (errno == EACCES || errno == EROFS || errno == EPERM) return lock;  // read-only: no lock
+    return fail(AlarmId::kFileAccess,
+                "cannot open the lock '" + name + "': " + std::strerror(errno));
+  }
+  lock.fd_ = fd;
+  // Poll rather than block: a run that holds the file for ever (a bug, a
+  // stopped process) ends in an alarm, not a hang.
+  const auto until = std::chrono::steady_clock::now() + std::chrono::duration<double>(wait_s);
+  while (::flock(fd, LOCK_EX | LOCK_NB) != 0) {
+    if (errno != EWOULDBLOCK && errno != EINTR) {
+      return fail(AlarmId::kFileAccess, "cannot lock '" + name + "': " + std::strerror(errno));
+    }
+    if (std::chrono::steady_clock::now() >= until) {
+      return fail(AlarmId::kFileAccess,
+                  "persistent variables '" + path + "' are in use by another run (lock '" + name +
+                      "' held for more than " + std::to_string(static_cast<int>(wait_s)) + " s)");
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+  return lock;
 }
 
 }  // namespace skipnc::interp

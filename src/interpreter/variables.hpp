@@ -57,8 +57,8 @@ class VariableStore {
 
  private:
   std::vector<std::array<Value, kLocalCount + 1>> locals_;
-  std::array<Value, 100> common_{};       // #100-#199
-  std::array<Value, 500> persistent_{};   // #500-#999
+  std::array<Value, 100> common_{};      // #100-#199
+  std::array<Value, 500> persistent_{};  // #500-#999
   bool persistent_dirty_ = false;
   std::unordered_map<std::string, Value> named_;
 };
@@ -68,5 +68,27 @@ class VariableStore {
 [[nodiscard]] Result<void> load_persistent(const std::string& path, std::array<Value, 500>& out);
 [[nodiscard]] Result<void> save_persistent(const std::string& path,
                                            const std::array<Value, 500>& values);
+
+// The lock of a persistent-variable file: `<path>.lock` beside it, held
+// (flock, exclusive) from the read of one run to its write, so that runs
+// sharing the file wait for each other instead of losing updates. A file
+// whose folder cannot hold the lock (read-only) is used without one.
+class PersistentLock {
+ public:
+  PersistentLock() = default;
+  PersistentLock(const PersistentLock&) = delete;
+  PersistentLock& operator=(const PersistentLock&) = delete;
+  PersistentLock(PersistentLock&& o) noexcept : fd_(o.fd_) { o.fd_ = -1; }
+  PersistentLock& operator=(PersistentLock&& o) noexcept;
+  ~PersistentLock() { release(); }
+
+  // Waits up to `wait_s` for the lock; then file_access "in use".
+  [[nodiscard]] static Result<PersistentLock> acquire(const std::string& path, double wait_s);
+  void release() noexcept;
+  bool held() const noexcept { return fd_ >= 0; }
+
+ private:
+  int fd_ = -1;
+};
 
 }  // namespace skipnc::interp

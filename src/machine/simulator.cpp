@@ -363,7 +363,13 @@ Result<RunResult> Simulator::run(const interp::Setup& setup, const RunOptions& o
   if (res.status == RunStatus::kCompleted || res.status == RunStatus::kAlarm) {
     auto saved = in.save_persistent();
     if (!saved && res.status == RunStatus::kCompleted) alarm(saved.error(), 0);
+    // After an alarm the run's alarm stays the first one; the failed save is
+    // said in the messages (was: not said at all).
+    if (!saved && res.status == RunStatus::kAlarm) {
+      res.messages.push_back("persistent variables not saved: " + saved.error().detail);
+    }
   }
+  in.release_persistent();
   return res;
 }
 
