@@ -80,6 +80,7 @@ Result<void> load_switches(const toml::table& t, std::string_view origin, Switch
       {"block_delete_param", &sw.block_delete_param, 0, 99999},
       {"macro_bracket_depth", &sw.macro_bracket_depth, 1, 64},
       {"rapid_no_in_position_param", &sw.rapid_no_in_position_param, 0, 99999},
+      {"skip_signal_param_inputs", &sw.skip_signal_param_inputs, 0, canon::SkipSpec::kMaxInputs},
       {"rapid_no_in_position_bit", &sw.rapid_no_in_position_bit, 0, 7},
   };
   const BoolKey bools[] = {

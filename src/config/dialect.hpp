@@ -110,6 +110,9 @@ struct Switches {
   bool tool_position_offset = false;      // G45-G48 exist (NCT)
   // The bit that turns the in-position check at the end of a rapid off
   // (Fanuc 1601#5 NCI); 0: always on.
+  // How many skip inputs (SKIP, SKIP2, ...) skip_signal_param's TSG and SK0
+  // bits apply to; 0: all.
+  int skip_signal_param_inputs = 0;
   int rapid_no_in_position_param = 0;
   int rapid_no_in_position_bit = 0;
   // Two G codes of one modal group in a block: the last one is used (true)

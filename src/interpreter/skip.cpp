@@ -7,6 +7,7 @@
 // configuration 13-20, latched values 21-26, miss 33-36, torque limit skip
 // 37-46. Every behaviour that differs between controls is a switch of
 // config::Switches, set in data/dialects/<name>.toml.
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <string>
@@ -67,7 +68,11 @@ Result<Step> Interpreter::Impl::skip_block(const Words& words, const AxisVec& ta
                 "G31 with cutter radius compensation (G41/G42) active", at);
   }
   auto input_addr = [&](int index) { return config::skip_input_address(dialect, params, index); };
-  auto add_input = [&](int index) { spec.inputs[spec.input_count++] = input_addr(index); };
+  int last_input = -1;  // the highest input index of the block (SKIP = 0)
+  auto add_input = [&](int index) {
+    spec.inputs[spec.input_count++] = input_addr(index);
+    last_input = std::max(last_input, index);
+  };
   pending_skip = PendingSkip{};
 
   if (torque) {
@@ -188,8 +193,12 @@ Result<Step> Interpreter::Impl::skip_block(const Words& words, const AxisVec& ta
   // Signal detection, feed override and stopping.
   const int sp = sw.skip_signal_param;
   const bool skf = sp != 0 && params.bit(sp, 7);
-  spec.active_low = sp != 0 && params.bit(sp, 1);
-  spec.edge = (sp != 0 && params.bit(sp, 0)) || sw.skip_edge_rising_only;
+  // TSG and SK0 apply to the inputs the dialect says (Fanuc seed 000: SKIP,
+  // SKIP2-SKIP4); SKIP5-SKIP12 stay level inputs active at 1.
+  const bool bits =
+      sp != 0 && (sw.skip_signal_param_inputs == 0 || last_input < sw.skip_signal_param_inputs);
+  spec.active_low = bits && params.bit(sp, 1);
+  spec.edge = (bits && params.bit(sp, 0)) || sw.skip_edge_rising_only;
   if (sw.skip_edge_rising_only) spec.active_low = false;
   spec.active_at_start_ends = sw.skip_active_at_start_ends;
   switch (sw.skip_accel) {

@@ -360,12 +360,15 @@ Result<RunResult> Simulator::run(const interp::Setup& setup, const RunOptions& o
   res.messages = in.messages();
   for (auto& msg : router.messages) res.messages.push_back(msg);
   for (const auto& msg : safety.messages()) res.messages.push_back(msg);
-  if (res.status == RunStatus::kCompleted || res.status == RunStatus::kAlarm) {
+  // Every run that ended, by itself, by an alarm or by a signal (SIGTERM,
+  // SIGINT: the run stops between periods) writes #500-#999 and the DPRNT
+  // file (was: an interrupted run wrote neither).
+  {
     auto saved = in.save_persistent();
     if (!saved && res.status == RunStatus::kCompleted) alarm(saved.error(), 0);
     // After an alarm the run's alarm stays the first one; the failed save is
     // said in the messages (was: not said at all).
-    if (!saved && res.status == RunStatus::kAlarm) {
+    if (!saved && res.status != RunStatus::kCompleted) {
       res.messages.push_back("persistent variables not saved: " + saved.error().detail);
     }
   }

@@ -250,5 +250,26 @@ TEST(Rules, rule_20_mitsubishi_p_is_a_bit_mask_of_skip_signals) {
   EXPECT_EQ(bad.alarm_code(), "P35");
 }
 
+// Seed 000: 6200#0 TSG and #1 SK0 set "SKIP, SKIP2-SKIP4" only. With SK0 = 1
+// (active at 0) a G31 P1 whose input is 0 at the start ends at once; a G31
+// P5 (SKIP5, X1.0) is still a level input active at 1 and latches where its
+// input turns on.
+TEST(Rules, rule_20_tsg_and_sk0_apply_to_skip1_to_skip4_only) {
+  const Outcome p1 = Rig()
+                         .param("6200#1=1")
+                         .trigger("X0.4", 'Z', -3.0)
+                         .run("G21 G90 G54 G31 P1 Z-10. F100.\nM30\n");
+  ASSERT_TRUE(p1.completed()) << p1.alarm_code();
+  ASSERT_TRUE(p1.skip().triggered);
+  EXPECT_NEAR(p1.var(5063), 0.0, kUm) << "active at 0: already on at the start";
+  const Outcome p5 = Rig()
+                         .param("6200#1=1")
+                         .trigger("X1.0", 'Z', -3.0)
+                         .run("G21 G90 G54 G31 P5 Z-10. F100.\nM30\n");
+  ASSERT_TRUE(p5.completed()) << p5.alarm_code();
+  ASSERT_TRUE(p5.skip().triggered);
+  EXPECT_NEAR(p5.var(5063), -3.0, kUm) << "SKIP5: active at 1 whatever SK0 says";
+}
+
 }  // namespace
 }  // namespace skipnc::rules

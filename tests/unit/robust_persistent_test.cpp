@@ -17,6 +17,7 @@
 #include <string>
 #include <thread>
 
+#include "support/endless_programs.hpp"
 #include "support/report_run.hpp"
 #include "support/run_cli.hpp"
 
@@ -216,6 +217,25 @@ TEST(RobustPersistent, RepeatStartsEachRunFromTheFileAndSavesNothing) {
   EXPECT_EQ(read_file(vars), "#500 = 27\n");
   // Every run stored 28: nominal 28, mean 28, standard deviation 0.
   EXPECT_TRUE(std::regex_search(r.out, std::regex(R"(#100\s+28\.0+\s+28\.0+\s+0\.0+\s)"))) << r.out;
+}
+
+// SIGTERM ends a run as the interrupted alarm, and what it had written to
+// #500-#999 and with DPRNT is saved like after any alarm (was: both lost).
+TEST(RobustPersistent, SigtermSavesThePersistentVariablesAndTheDprntFile) {
+  TempDir dir;
+  const auto vars = dir.path / "vars.dat";
+  const auto m = keeper_machine(dir, vars);
+  const auto dprnt = dir.path / "out.txt";
+  const auto prog =
+      dir.write("p.nc", std::string("#500=#500+1\nPOPEN\nDPRNT[STARTED]\n") + kEndlessMotion);
+  Child c({"run", prog.string(), "-m", m.string(), "--dprnt", dprnt.string(), "-q"});
+  std::this_thread::sleep_for(std::chrono::milliseconds(500));
+  c.signal(SIGTERM);
+  const auto e = c.wait(30.0);
+  ASSERT_TRUE(e.exited);
+  EXPECT_EQ(e.code, 1);
+  EXPECT_EQ(read_file(vars).find("#500 = 1\n") != std::string::npos, true) << read_file(vars);
+  EXPECT_NE(read_file(dprnt).find("STARTED"), std::string::npos);
 }
 
 }  // namespace
