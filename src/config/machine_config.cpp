@@ -124,6 +124,9 @@ constexpr LimitKey kLimitKeys[] = {
     {"max_subprogram_levels", 1, 100, true, set_count<&Limits::max_subprogram_levels>},  // 10, 15
     {"max_cpu_s", 1e-3, 1e6, false, set_count<&Limits::max_cpu_s>},
     {"max_trace_bytes", 1, 1024 * kGiB, true, set_count<&Limits::max_trace_bytes>},
+    {"max_message_bytes", 1024, kGiB, true, set_count<&Limits::max_message_bytes>},
+    {"max_dprnt_bytes", 1, kGiB, true, set_count<&Limits::max_dprnt_bytes>},
+    {"max_named_variables", 1, 1e7, true, set_count<&Limits::max_named_variables>},
 };
 
 Result<void> load_limits(const toml::table& t, MachineConfig& m, std::string_view origin) {

@@ -69,6 +69,12 @@ struct Limits {
   int max_subprogram_levels = 10;
   double max_cpu_s = 3600.0;                 // processor time of one run (cpu_limit)
   std::int64_t max_trace_bytes = 4LL << 30;  // the --trace file (trace_limit)
+  // Kept in memory by one run: the report's messages (past the bound they
+  // are dropped, and one message says so), the text of the --dprnt file
+  // (dprnt_limit) and the #<name> variables (named_variable_limit).
+  std::int64_t max_message_bytes = 16LL << 20;
+  std::int64_t max_dprnt_bytes = 64LL << 20;
+  std::int64_t max_named_variables = 100000;
 };
 
 struct MachineConfig {

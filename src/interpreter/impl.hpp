@@ -230,6 +230,22 @@ struct Interpreter::Impl {
   bool have_skip = false;
   SyncState last_sync;
   std::vector<std::string> messages;
+  std::int64_t message_bytes = 0;  // text kept in `messages` (limits.max_message_bytes)
+  bool messages_dropped = false;
+  // Keeps an operator message for the report; past limits.max_message_bytes
+  // the rest are dropped and one message says so (memory stays bounded, the
+  // run goes on: a message is not the machine's business).
+  void add_message(std::string text) {
+    if (messages_dropped) return;
+    if (message_bytes + static_cast<std::int64_t>(text.size()) > mc.limits.max_message_bytes) {
+      messages_dropped = true;
+      messages.push_back("(further messages dropped: limits.max_message_bytes = " +
+                         std::to_string(mc.limits.max_message_bytes) + ")");
+      return;
+    }
+    message_bytes += static_cast<std::int64_t>(text.size());
+    messages.push_back(std::move(text));
+  }
   std::vector<SkipRecord> skips;
   std::int64_t statements = 0;
   std::int64_t parts_count = 0;

@@ -170,7 +170,7 @@ Result<Step> Interpreter::Impl::step(CommandSink& out) {
       if (blk.empty()) {
         for (const auto& c : blk.comments) {
           const std::string& t = blk.names[static_cast<std::size_t>(c.text)];
-          if (t.size() >= 4 && (t.compare(0, 4, "MSG,") == 0)) messages.push_back(t.substr(4));
+          if (t.size() >= 4 && (t.compare(0, 4, "MSG,") == 0)) add_message(t.substr(4));
         }
         continue;
       }

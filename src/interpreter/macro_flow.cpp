@@ -229,10 +229,17 @@ Result<void> Interpreter::Impl::print_line(SourceLoc where) {
     }
   }
   if (dprnt_open && !setup.dprnt_path.empty()) {
+    if (static_cast<std::int64_t>(dprnt_text.size() + line.size() + 1) >
+        mc.limits.max_dprnt_bytes) {
+      return fail(AlarmId::kDprntLimit,
+                  "the DPRNT file would pass limits.max_dprnt_bytes = " +
+                      std::to_string(mc.limits.max_dprnt_bytes) + " bytes",
+                  where);
+    }
     dprnt_text += line;
     dprnt_text += '\n';
   }
-  messages.push_back(std::move(line));
+  add_message(std::move(line));
   return {};
 }
 

@@ -487,7 +487,7 @@ Result<void> Interpreter::Impl::plan_block(const Words& words, BlockPlan& plan) 
 void Interpreter::Impl::commit_messages() {
   for (const auto& c : blk.comments) {
     const std::string& t = blk.names[static_cast<std::size_t>(c.text)];
-    if (t.size() >= 4 && t.compare(0, 4, "MSG,") == 0) messages.push_back(t.substr(4));
+    if (t.size() >= 4 && t.compare(0, 4, "MSG,") == 0) add_message(t.substr(4));
   }
   if (blk.has_n) modal.seq = static_cast<int>(blk.n % 100000000);
 }

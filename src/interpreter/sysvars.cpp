@@ -292,7 +292,7 @@ Result<void> Interpreter::Impl::write_var(int n, Value v, SourceLoc where) {
       // #3006 = n (MESSAGE): the control stops and shows the message until
       // cycle start; the simulation records the message and goes on.
       const std::string text = comment();
-      messages.push_back(text.empty() ? "#3006 = " + std::to_string(std::lround(v.num())) : text);
+      add_message(text.empty() ? "#3006 = " + std::to_string(std::lround(v.num())) : text);
       return {};
     }
     case 3001:
@@ -357,6 +357,13 @@ Result<void> Interpreter::Impl::write_named_var(const std::string& name, Value v
   if ((!sv.named_machine.empty() && name.starts_with(sv.named_machine)) ||
       (!sv.named_local.empty() && name.starts_with(sv.named_local))) {
     return fail(AlarmId::kWriteProtected, "#<" + name + "> is set by the skip function", where);
+  }
+  if (!vars.has_named(name) &&
+      static_cast<std::int64_t>(vars.named_count()) >= mc.limits.max_named_variables) {
+    return fail(AlarmId::kNamedVariableLimit,
+                "#<" + name + ">: more than limits.max_named_variables = " +
+                    std::to_string(mc.limits.max_named_variables) + " named variables",
+                where);
   }
   vars.set_named(name, v);
   return {};

@@ -48,6 +48,8 @@ class VariableStore {
   // Named variables (#<name>), created on first write.
   Value get_named(const std::string& name) const noexcept;
   void set_named(const std::string& name, Value v);
+  bool has_named(const std::string& name) const noexcept { return named_.contains(name); }
+  std::size_t named_count() const noexcept { return named_.size(); }
 
   // Reset clears #100-#199 (Fanuc: vacant at reset); #500-#999 are kept.
   void clear_common() noexcept;
