@@ -188,6 +188,9 @@ Result<std::string> codes_markdown() {
       "  not simulated by skipnc`).\n"
       "- **—**: not a code of this machine type or control (`unknown_g_code`, PS0010 on\n"
       "  Fanuc).\n\n"
+      "On the lathe G40/G41/G42 are the tool nose radius compensation state: a move in\n"
+      "G41/G42 with a nose radius other than 0 is `not_simulated`; on the mill they are\n"
+      "cutter radius compensation C ([cutter-compensation.md](cutter-compensation.md)).\n\n"
       "Details of the canned cycles, frames and the codes without effect:\n"
       "[mill-programming.md](mill-programming.md); the lathe: [lathe.md](lathe.md).\n";
   for (const Machine& mach : kMachines) {

@@ -9,7 +9,9 @@
 //   skip.cpp         the skip family (G31): dialect rules in, results out
 //   mill_codes.cpp   the mill's codes beside the core table: canned cycles,
 //                    G68/G16/G51/G51.1 frames, codes without effect, codes
-//                    not simulated (pure parts in cycles.cpp, transform.cpp)
+//                    not simulated (pure parts in cycles.cpp, transform.cpp),
+//                    the block's commands through cutter compensation
+//   cutter_comp.cpp  cutter radius compensation C: the tool centre path
 #pragma once
 
 #include <array>
@@ -25,6 +27,7 @@
 #include "gcode/parser.hpp"
 #include "gcode/source.hpp"
 #include "interpreter/codes.hpp"
+#include "interpreter/cutter_comp.hpp"
 #include "interpreter/cycles.hpp"
 #include "interpreter/interpreter.hpp"
 #include "interpreter/transform.hpp"
@@ -287,6 +290,7 @@ struct Interpreter::Impl {
   // interpreter.cpp
   Result<void> init(const AxisVec& start);
   Result<Step> step(CommandSink& out);
+  Result<Step> step_block(CommandSink& out);
   Result<Step> execute(CommandSink& out);
   Result<bool> read_block();
   Result<void> sync(const SyncState& s);
@@ -388,7 +392,17 @@ struct Interpreter::Impl {
   Result<bool> apply_frame_code(const Words& words, const MillRequest& req);
   bool frame_active() const noexcept { return polar || frame.active(); }
   Result<void> frame_targets(const Words& words, AxisVec& target, AxisMask& moved);
-  Result<void> check_cutter_comp(SourceLoc where) const;
+  // Cutter radius compensation (cutter_comp.hpp): the block's commands go
+  // through the compensator when G41/G42 is active or a vector is left.
+  crc::Compensator comp;
+  std::vector<canon::Stamped> comp_out;  // reused
+  Result<crc::BlockMode> comp_mode(const BlockPlan& plan) const;
+  Result<void> pass_block(const BlockPlan& plan, const AxisVec& start, CommandSink& out);
+  void flush_comp(CommandSink& out);
+  // Moves the compensator does not offset: refused under G41/G42 (canned
+  // cycles, G37) and, on a lathe, tool nose radius compensation.
+  Result<void> refuse_under_comp(const char* what, SourceLoc where) const;
+  Result<void> check_nose_radius_comp(SourceLoc where) const;
   Result<Step> g37_block(const Words& words, CommandSink& out);
   Result<void> finish_g37(const SyncState& s);
 

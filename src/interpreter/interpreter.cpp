@@ -112,7 +112,15 @@ Result<bool> Interpreter::Impl::read_block() {
   return true;
 }
 
+// One block; at a point where the machine must catch up (a sync) or at the
+// end, what cutter compensation holds goes out first.
 Result<Step> Interpreter::Impl::step(CommandSink& out) {
+  auto r = step_block(out);
+  if (r && (*r == Step::kSync || *r == Step::kEnd)) flush_comp(out);
+  return r;
+}
+
+Result<Step> Interpreter::Impl::step_block(CommandSink& out) {
   if (ended) return Step::kEnd;
   if (pending != Pending::kNone) {
     return fail(AlarmId::kInternal, "step() called before sync()");
@@ -217,7 +225,9 @@ Result<void> Interpreter::Impl::sync(const SyncState& s) {
   const Pending was = pending;
   pending = Pending::kNone;
   if (was != Pending::kSkip) {
-    pos = s.machine_position;
+    // Under cutter compensation the tool centre is off the programmed point
+    // by the offset vector; `pos` stays the programmed point.
+    pos = s.machine_position - comp.vector();
     return {};
   }
   return finish_skip(s);
@@ -281,8 +291,8 @@ const std::vector<CallContext>& Interpreter::contexts() const noexcept {
 const SkipRecord* Interpreter::pending_skip() const noexcept {
   return impl_->pending == Pending::kSkip ? &impl_->pending_skip.record : nullptr;
 }
-const AxisVec& Interpreter::position() const noexcept {
-  return impl_->pos;
+AxisVec Interpreter::position() const noexcept {
+  return impl_->pos + impl_->comp.vector();
 }
 Result<void> Interpreter::save_persistent() {
   // The DPRNT file (--dprnt) is written here too, whole, once per run.

@@ -125,7 +125,10 @@ class Interpreter {
   // The skip block the machine is running (between step() returning kSync
   // for it and sync()): its record without the result.
   const SkipRecord* pending_skip() const noexcept;
-  const AxisVec& position() const noexcept;  // commanded machine position
+  // Commanded machine position of the tool: where the machine is when it has
+  // done everything emitted so far (under cutter compensation the tool
+  // centre, off the programmed point by the offset vector).
+  AxisVec position() const noexcept;
   // Writes #500-#999 when they changed, and the DPRNT file when --dprnt
   // named one and the program opened it (POPEN); each file atomically.
   // Called once at the end of a run.

@@ -289,18 +289,100 @@ Result<void> Interpreter::Impl::frame_targets(const Words& words, AxisVec& targe
   return {};
 }
 
-// Cutter radius compensation is not simulated: a move in G41/G42 with a
-// non-zero radius is refused in words (a radius of 0, as a D0 or an empty
-// offset, moves on the programmed path, which is what the control does).
-Result<void> Interpreter::Impl::check_cutter_comp(SourceLoc where) const {
-  if (mc.lathe() || modal.cutter == CutterComp::kOff || modal.d == 0) return {};
-  const auto& t = tools[static_cast<std::size_t>(modal.d)];
+// Cutter radius compensation C on a mill (cutter_comp.hpp). The radius is
+// the D offset (geometry + wear); D0 or an empty offset moves on the
+// programmed path, as on the control.
+Result<crc::BlockMode> Interpreter::Impl::comp_mode(const BlockPlan& plan) const {
+  crc::BlockMode m;
+  m.side = modal.cutter == CutterComp::kLeft ? 1 : modal.cutter == CutterComp::kRight ? -1 : 0;
+  if (modal.d > 0) {
+    const auto& t = tools[static_cast<std::size_t>(modal.d)];
+    m.radius = t.radius_geometry + t.radius_wear;
+  }
+  auto idx = [&](char c) { return axis_of_letter[static_cast<std::size_t>(c - 'A')]; };
+  switch (modal.plane) {
+    case PlaneSel::kXY:
+      m.a0 = idx('X');
+      m.a1 = idx('Y');
+      break;
+    case PlaneSel::kZX:
+      m.a0 = idx('Z');
+      m.a1 = idx('X');
+      break;
+    case PlaneSel::kYZ:
+      m.a0 = idx('Y');
+      m.a1 = idx('Z');
+      break;
+  }
+  if (m.a0 < 0 || m.a1 < 0) {
+    return fail(AlarmId::kIllegalPlaneAxis,
+                "cutter compensation in a plane whose axes are not on this machine", loc(cur_col));
+  }
+  // 5003#0 SUP: start-up and cancel of type A (0) or B (1), FANUC parameter
+  // manual (cutter compensation C).
+  m.type_b = params.bit(5003, 0);
+  // G28/G30 and G53 in offset mode: the vector is cancelled for the block's
+  // moves and built again at the next move (FANUC operator's manual, cutter
+  // compensation C, "reference position return / G53 in offset mode").
+  m.suspend =
+      plan.action == Action::kRefReturn || plan.action == Action::kRefReturn2 || plan.machine_coord;
+  return m;
+}
+
+Result<void> Interpreter::Impl::pass_block(const BlockPlan& plan, const AxisVec& start,
+                                           CommandSink& out) {
+  if (mc.lathe() || (modal.cutter == CutterComp::kOff && comp.idle())) {
+    for (const canon::Stamped& c : block_buffer.cmds) out.emit(c);
+    return {};
+  }
+  auto mode = comp_mode(plan);
+  if (!mode) return std::unexpected(mode.error());
+  if (comp.idle()) comp.begin(start);
+  // The block is a transaction: the compensator is changed only when the
+  // whole block has gone through it.
+  crc::Compensator next = comp;
+  comp_out.clear();
+  auto r = next.block(block_buffer.cmds, *mode, comp_out);
+  if (!r) {
+    Error e = r.error();
+    if (e.loc.line == 0) e.loc = loc(cur_col);
+    return std::unexpected(std::move(e));
+  }
+  comp = std::move(next);
+  for (const canon::Stamped& c : comp_out) out.emit(c);
+  return {};
+}
+
+// At a point where the interpreter waits for the machine (or at the end):
+// what the compensator holds goes out, the held move ending perpendicular.
+void Interpreter::Impl::flush_comp(CommandSink& out) {
+  if (comp.idle()) return;
+  comp_out.clear();
+  comp.flush(comp_out);
+  for (const canon::Stamped& c : comp_out) out.emit(c);
+}
+
+Result<void> Interpreter::Impl::refuse_under_comp(const char* what, SourceLoc where) const {
+  if (mc.lathe() || modal.cutter == CutterComp::kOff) return {};
+  return fail(AlarmId::kNotSimulated,
+              std::string(what) + " with cutter radius compensation (" +
+                  (modal.cutter == CutterComp::kLeft ? "G41" : "G42") +
+                  ") active is not simulated by skipnc; cancel it with G40 first",
+              where);
+}
+
+// Tool nose radius compensation (G41/G42 on a lathe, with the imaginary tool
+// nose) is not simulated: a move under it with a nose radius other than 0 is
+// refused in words instead of running on the programmed path.
+Result<void> Interpreter::Impl::check_nose_radius_comp(SourceLoc where) const {
+  if (!mc.lathe() || modal.cutter == CutterComp::kOff) return {};
+  const auto& t = tools[static_cast<std::size_t>(wear_offset)];
   const double r = t.radius_geometry + t.radius_wear;
   if (r == 0.0) return {};
   return fail(AlarmId::kNotSimulated,
               std::string(modal.cutter == CutterComp::kLeft ? "G41" : "G42") +
-                  " cutter radius compensation with D" + std::to_string(modal.d) + " = " +
-                  std::to_string(r) + " mm is not simulated by skipnc",
+                  " tool nose radius compensation with a nose radius of " + std::to_string(r) +
+                  " mm (offset " + std::to_string(wear_offset) + ") is not simulated by skipnc",
               where);
 }
 
@@ -310,6 +392,9 @@ Result<void> Interpreter::Impl::check_cutter_comp(SourceLoc where) const {
 // active H.
 Result<Step> Interpreter::Impl::g37_block(const Words& words, CommandSink& out) {
   const SourceLoc at = loc(cur_col);
+  if (auto c = refuse_under_comp("G37 automatic tool length measurement", at); !c) {
+    return std::unexpected(c.error());
+  }
   if (words.has('H')) {
     return fail(AlarmId::kG37HCode, "H in a G37 block", loc(words.at('H').column));
   }
@@ -447,7 +532,7 @@ Result<Step> Interpreter::Impl::canned_cycle(const Words& words, CommandSink& ou
   if (!d.have_z) return fail(AlarmId::kBadValue, "a canned cycle needs Z (point Z)", at);
   if (feed_mm_per_min() <= 0.0)
     return fail(AlarmId::kNoFeed, "canned cycle without a feed (F)", at);
-  auto c = check_cutter_comp(at);
+  auto c = refuse_under_comp("a canned cycle", at);
   if (!c) return std::unexpected(c.error());
   // The hole's position: the block's axis words but Z (the hole data).
   Words position = words;

@@ -622,7 +622,7 @@ Result<Step> Interpreter::Impl::commit_action(const Words& words, const BlockPla
   }
   if (plan.tool_pos_offset != 0) commit_tool_pos_offset(words, plan.tool_pos_offset);
   if (!skip) {
-    auto c = check_cutter_comp(at);
+    auto c = check_nose_radius_comp(at);
     if (!c) return std::unexpected(c.error());
   }
   auto m = motion(words, out, skip, plan.machine_coord);
@@ -844,8 +844,12 @@ Result<Step> Interpreter::Impl::execute_nc(const Words& words, CommandSink& out)
     block_buffer.cmds.clear();
     return r;
   }
-  for (const canon::Stamped& c : block_buffer.cmds) out.emit(c);
+  auto passed = pass_block(plan, undo.pos, out);
   block_buffer.cmds.clear();
+  if (!passed) {
+    restore_block_state(undo);
+    return std::unexpected(passed.error());
+  }
   return r;
 }
 

@@ -1,0 +1,427 @@
+// Cutter radius compensation C: see cutter_comp.hpp for the rules.
+#include "interpreter/cutter_comp.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <type_traits>
+#include <utility>
+#include <variant>
+
+namespace skipnc::interp::crc {
+
+namespace {
+
+constexpr double kSamePoint = 1e-9;  // mm: points closer are one point
+constexpr double kParallel = 1e-9;   // |sin| of the angle between two directions
+
+V2 operator+(V2 a, V2 b) noexcept {
+  return {a.x + b.x, a.y + b.y};
+}
+V2 operator-(V2 a, V2 b) noexcept {
+  return {a.x - b.x, a.y - b.y};
+}
+V2 operator*(V2 a, double k) noexcept {
+  return {a.x * k, a.y * k};
+}
+double dot(V2 a, V2 b) noexcept {
+  return a.x * b.x + a.y * b.y;
+}
+double cross(V2 a, V2 b) noexcept {
+  return a.x * b.y - a.y * b.x;
+}
+double length(V2 a) noexcept {
+  return std::hypot(a.x, a.y);
+}
+V2 unit(V2 a) noexcept {
+  const double l = length(a);
+  return l > 0.0 ? a * (1.0 / l) : V2{};
+}
+V2 left(V2 t) noexcept {
+  return {-t.y, t.x};
+}  // +90 degrees, seen from the plane's normal
+
+const AxisVec* target_of(const canon::Command& c) noexcept {
+  if (const auto* r = std::get_if<canon::Rapid>(&c)) return &r->target;
+  if (const auto* f = std::get_if<canon::Feed>(&c)) return &f->target;
+  if (const auto* a = std::get_if<canon::Arc>(&c)) return &a->target;
+  if (const auto* s = std::get_if<canon::Skip>(&c)) return &s->target;
+  return nullptr;
+}
+AxisVec* target_of(canon::Command& c) noexcept {
+  return const_cast<AxisVec*>(target_of(std::as_const(c)));
+}
+bool is_path_move(const canon::Command& c) noexcept {
+  return std::holds_alternative<canon::Rapid>(c) || std::holds_alternative<canon::Feed>(c) ||
+         std::holds_alternative<canon::Arc>(c);
+}
+
+std::string mm(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.4f", v);
+  return buf;
+}
+
+}  // namespace
+
+void Compensator::begin(const AxisVec& pos) noexcept {
+  prog_ = pos;
+  tool_ = pos;
+  has_vector_ = false;
+  held_.reset();
+  deferred_.clear();
+  quiet_ = 0;
+}
+
+AxisVec Compensator::vector() const noexcept {
+  AxisVec v;
+  if (!has_vector_ || held_ || !deferred_.empty()) return v;  // only between flushes
+  v[a0_] = tool_[a0_] - prog_[a0_];
+  v[a1_] = tool_[a1_] - prog_[a1_];
+  return v;
+}
+
+Compensator::Entity Compensator::make(const canon::Stamped& cmd, const BlockMode& mode) const {
+  Entity e;
+  e.cmd = cmd;
+  e.p0 = plane(prog_);
+  e.p1 = plane(*target_of(cmd.cmd));
+  e.s = mode.side * mode.radius;
+  if (const auto* a = std::get_if<canon::Arc>(&cmd.cmd)) {
+    e.arc = true;
+    e.c = {a->center0, a->center1};
+    e.ccw = a->ccw;
+  }
+  return e;
+}
+
+namespace {
+
+// Direction of travel at the start or the end of a move.
+V2 tangent(bool arc, V2 p0, V2 p1, V2 c, bool ccw, bool at_end) noexcept {
+  if (!arc) return unit(p1 - p0);
+  const V2 u = unit((at_end ? p1 : p0) - c);
+  return ccw ? V2{-u.y, u.x} : V2{u.y, -u.x};
+}
+
+// The offset path of a move: a line (point q, unit direction d) or a circle
+// (centre c, radius rho).
+struct Path {
+  bool arc = false;
+  V2 q, d;
+  V2 c;
+  double rho = 0.0;
+};
+
+// The intersection of two offset paths nearest `ref`, if any.
+std::optional<V2> meet(const Path& a, const Path& b, V2 ref) {
+  auto nearest = [&](V2 p, V2 q) { return length(p - ref) <= length(q - ref) ? p : q; };
+  if (!a.arc && !b.arc) {
+    const double den = cross(a.d, b.d);
+    if (std::fabs(den) < kParallel) return std::nullopt;
+    const double t = cross(b.q - a.q, b.d) / den;
+    return a.q + a.d * t;
+  }
+  if (a.arc != b.arc) {
+    const Path& l = a.arc ? b : a;
+    const Path& k = a.arc ? a : b;
+    const V2 f = l.q - k.c;
+    const double bb = dot(f, l.d);
+    double disc = bb * bb - (dot(f, f) - k.rho * k.rho);
+    if (disc < 0.0) {
+      if (disc < -1e-9 * (1.0 + k.rho * k.rho)) return std::nullopt;
+      disc = 0.0;
+    }
+    const double r = std::sqrt(disc);
+    return nearest(l.q + l.d * (-bb + r), l.q + l.d * (-bb - r));
+  }
+  const V2 dc = b.c - a.c;
+  const double d = length(dc);
+  if (d < kSamePoint) return std::nullopt;
+  const double x = (a.rho * a.rho - b.rho * b.rho + d * d) / (2.0 * d);
+  double h2 = a.rho * a.rho - x * x;
+  if (h2 < 0.0) {
+    if (h2 < -1e-9 * (1.0 + a.rho * a.rho)) return std::nullopt;
+    h2 = 0.0;
+  }
+  const V2 e = dc * (1.0 / d);
+  const V2 mid = a.c + e * x;
+  const V2 n = left(e) * std::sqrt(h2);
+  return nearest(mid + n, mid - n);
+}
+
+}  // namespace
+
+Result<Compensator::Corner> Compensator::corner(const Entity& e1, const Entity& e2, Join join,
+                                                bool type_b) const {
+  const V2 c = e1.p1;
+  const V2 t1 = tangent(e1.arc, e1.p0, e1.p1, e1.c, e1.ccw, true);
+  const V2 t2 = tangent(e2.arc, e2.p0, e2.p1, e2.c, e2.ccw, false);
+  // At a cancel the second move's offset (type B) is taken with the first's.
+  const double s1 = e1.s;
+  const double s2 = join == Join::kCancel ? e1.s : e2.s;
+  const V2 o1 = left(t1) * s1;
+  const V2 o2 = left(t2) * s2;
+  const double sref = join == Join::kCancel ? s1 : s2;
+  const double cr = cross(t1, t2);
+  const double dt = dot(t1, t2);
+  const int sign = sref > 0.0 ? 1 : sref < 0.0 ? -1 : 0;
+  const bool straight = std::fabs(cr) < kParallel && dt > 0.0;
+  const bool flip = join == Join::kNormal && s1 * s2 < 0.0;
+  const bool inner = !straight && sign * cr > 0.0;
+  auto path = [](const Entity& e, double s) {
+    Path p;
+    p.arc = e.arc;
+    if (e.arc) {
+      p.c = e.c;
+      p.rho = length(e.p0 - e.c) + (e.ccw ? -s : s);
+    } else {
+      p.d = unit(e.p1 - e.p0);
+      p.q = e.p0 + left(p.d) * s;
+    }
+    return p;
+  };
+  Corner k;
+  // Round an outer corner under 90 degrees: the two vectors extended by the
+  // radius along each move, joined by a line (Fanuc's L, r, r, L).
+  auto acute = [&] {
+    const V2 p1 = c + o1 + t1 * std::fabs(s1);
+    const V2 p2 = c + o2 - t2 * std::fabs(s2);
+    if (e1.arc) {
+      k.end1 = c + o1;
+      k.inserts.push_back(p1);
+    } else {
+      k.end1 = p1;
+    }
+    if (join == Join::kCancel || !e2.arc) {
+      k.inserts.push_back(p2);
+      k.start2 = p2;
+    } else {
+      k.inserts.push_back(p2);
+      k.start2 = c + o2;
+    }
+  };
+  const V2 ref = (c + o1 + c + o2) * 0.5;
+  switch (join) {
+    case Join::kStartup:
+      if (!type_b || inner || straight || sign == 0) {
+        k.end1 = k.start2 = c + o2;  // perpendicular to the next move's start
+      } else if (dt >= 0.0) {
+        auto p = meet(path(e1, s1), path(e2, s2), ref);
+        k.end1 = k.start2 = p ? *p : c + o2;
+      } else {
+        acute();
+      }
+      break;
+    case Join::kCancel:
+      if (!type_b || inner || straight || sign == 0) {
+        k.end1 = c + o1;  // perpendicular to the last move's end
+      } else if (dt >= 0.0) {
+        auto p = meet(path(e1, s1), path(e2, s2), ref);
+        k.end1 = p ? *p : c + o1;
+      } else {
+        acute();
+      }
+      k.start2 = k.inserts.empty() ? k.end1 : k.inserts.back();
+      break;
+    case Join::kNormal:
+      if (straight || flip || sign == 0) {
+        k.end1 = c + o1;
+        k.start2 = c + o2;
+      } else if (inner) {
+        auto p = meet(path(e1, s1), path(e2, s2), ref);
+        if (!p) {
+          return fail(AlarmId::kCompNoSolution,
+                      "cutter compensation: the offset paths of the two moves do not meet at "
+                      "the inner corner (" +
+                          mm(c.x) + ", " + mm(c.y) + ")");
+        }
+        k.end1 = k.start2 = *p;
+      } else if (dt >= 0.0) {
+        auto p = meet(path(e1, s1), path(e2, s2), ref);
+        if (p) {
+          k.end1 = k.start2 = *p;
+        } else {
+          acute();
+        }
+      } else {
+        acute();
+      }
+      break;
+  }
+  return k;
+}
+
+void Compensator::send(canon::Stamped c, std::vector<canon::Stamped>& out) {
+  if (const AxisVec* t = target_of(c.cmd)) tool_ = *t;
+  out.push_back(std::move(c));
+}
+
+void Compensator::send_line(const canon::Stamped& like, V2 to, std::vector<canon::Stamped>& out) {
+  if (length(to - plane(tool_)) < kSamePoint) return;
+  AxisVec target = tool_;
+  set_plane(target, to);
+  canon::Stamped s{canon::Feed{}, like.line, like.source, like.n};
+  if (const auto* r = std::get_if<canon::Rapid>(&like.cmd)) {
+    s.cmd = canon::Rapid{target, r->linear};
+  } else if (const auto* f = std::get_if<canon::Feed>(&like.cmd)) {
+    s.cmd = canon::Feed{target, f->feed_mm_per_min, false};
+  } else if (const auto* a = std::get_if<canon::Arc>(&like.cmd)) {
+    s.cmd = canon::Feed{target, a->feed_mm_per_min, false};
+  }
+  send(std::move(s), out);
+}
+
+Result<void> Compensator::send_entity(const Entity& e, V2 end, std::vector<canon::Stamped>& out) {
+  // Into the move's own start (an arc starts on its offset circle).
+  send_line(e.cmd, e.start, out);
+  if (!e.arc && !e.startup) {
+    // A compensated line that runs against its programmed direction cuts
+    // into the part (FANUC PS0041 interference check).
+    const V2 d = e.p1 - e.p0;
+    const V2 m = end - plane(tool_);
+    if (length(m) >= kSamePoint && dot(m, d) < 0.0) {
+      return fail(AlarmId::kCompInterference,
+                  "cutter compensation: the tool centre path of the move to (" + mm(e.p1.x) + ", " +
+                      mm(e.p1.y) + ") runs against its programmed direction (the radius " +
+                      mm(std::fabs(e.s)) + " is too large for it)");
+    }
+  }
+  canon::Stamped c = e.cmd;
+  set_plane(*target_of(c.cmd), end);
+  send(std::move(c), out);
+  return {};
+}
+
+Result<void> Compensator::send_held(const Corner& k, const canon::Stamped* next,
+                                    std::vector<canon::Stamped>& out) {
+  const Entity e = *held_;
+  held_.reset();
+  auto r = send_entity(e, k.end1, out);
+  if (!r) return r;
+  for (canon::Stamped& d : deferred_) {
+    if (AxisVec* t = target_of(d.cmd)) set_plane(*t, plane(tool_));
+    send(std::move(d), out);
+  }
+  deferred_.clear();
+  const canon::Stamped& like = next != nullptr ? *next : e.cmd;
+  for (V2 p : k.inserts) send_line(like, p, out);
+  quiet_ = 0;
+  return {};
+}
+
+void Compensator::flush(std::vector<canon::Stamped>& out) {
+  if (held_) {
+    const Entity& e = *held_;
+    const V2 t1 = tangent(e.arc, e.p0, e.p1, e.c, e.ccw, true);
+    Corner k;
+    k.end1 = e.p1 + left(t1) * e.s;
+    (void)send_held(k, nullptr, out);  // a perpendicular end does not interfere
+  }
+  for (canon::Stamped& d : deferred_) send(std::move(d), out);
+  deferred_.clear();
+  quiet_ = 0;
+  has_vector_ = length(plane(tool_) - plane(prog_)) >= kSamePoint;
+}
+
+Result<void> Compensator::block(const std::vector<canon::Stamped>& cmds, const BlockMode& mode,
+                                std::vector<canon::Stamped>& out) {
+  a0_ = mode.a0;
+  a1_ = mode.a1;
+  bool plane_move = false;
+  for (const canon::Stamped& c : cmds) {
+    const bool path_move = is_path_move(c.cmd);
+    const bool ends_lookahead =
+        std::holds_alternative<canon::Skip>(c.cmd) || std::holds_alternative<canon::Stop>(c.cmd);
+    if (ends_lookahead || (path_move && mode.suspend)) {
+      // G31, M00/M01/M02/M30, G28/G30/G53: what is held ends perpendicular;
+      // the move itself goes to its programmed point and the vector is gone
+      // (G28 in offset mode: cancelled at the intermediate point, restored by
+      // a start-up at the next move).
+      flush(out);
+      send(c, out);
+      if (const AxisVec* t = target_of(c.cmd)) prog_ = *t;
+      has_vector_ = false;
+      continue;
+    }
+    if (!path_move) {
+      if (held_) {
+        deferred_.push_back(c);
+      } else {
+        send(c, out);
+      }
+      continue;
+    }
+    const AxisVec& target = *target_of(c.cmd);
+    const bool is_arc = std::holds_alternative<canon::Arc>(c.cmd);
+    if (!is_arc && length(plane(target) - plane(prog_)) < kSamePoint) {
+      // No move in the offset plane (a Z move): the tool stays offset.
+      canon::Stamped m = c;
+      if (held_) {
+        deferred_.push_back(m);
+      } else {
+        set_plane(*target_of(m.cmd), plane(tool_));
+        send(std::move(m), out);
+      }
+      prog_ = target;
+      continue;
+    }
+    plane_move = true;
+    Entity e = make(c, mode);
+    if (mode.side != 0) {
+      if (e.arc) {
+        const double rho = length(e.p0 - e.c) + (e.ccw ? -e.s : e.s);
+        if (rho <= kSamePoint) {
+          return fail(AlarmId::kCompInterference,
+                      "cutter compensation: the arc of radius " + mm(length(e.p0 - e.c)) +
+                          " is inside the tool (offset " + mm(std::fabs(e.s)) + ")");
+        }
+      }
+      if (held_) {
+        auto k = corner(*held_, e, held_->startup ? Join::kStartup : Join::kNormal, mode.type_b);
+        if (!k) return std::unexpected(k.error());
+        auto s = send_held(*k, &c, out);
+        if (!s) return s;
+        e.start = k->start2;
+      } else if (!has_vector_) {
+        if (e.arc) {
+          return fail(AlarmId::kCompArcStartup,
+                      "cutter compensation start-up (G41/G42) in a G02/G03 block: start it with "
+                      "G00 or G01");
+        }
+        e.startup = true;
+        e.start = plane(tool_);
+      } else {
+        e.start = plane(tool_);  // the lookahead was broken: from where the tool is
+      }
+      held_ = e;
+      quiet_ = 0;
+    } else {
+      if (e.arc && (held_ || has_vector_)) {
+        return fail(AlarmId::kCompArcStartup,
+                    "cutter compensation cancel (G40) in a G02/G03 block: cancel it with G00 or "
+                    "G01");
+      }
+      if (held_) {
+        auto k = corner(*held_, e, Join::kCancel, mode.type_b);
+        if (!k) return std::unexpected(k.error());
+        auto s = send_held(*k, &c, out);
+        if (!s) return s;
+      }
+      send(c, out);  // from where the tool is to the programmed point
+      has_vector_ = false;
+    }
+    prog_ = target;
+  }
+  if (held_ && !plane_move) {
+    // Blocks without a plane move: one is looked past, more end the held
+    // move perpendicular (as does G40 in a block without a plane move).
+    if (++quiet_ > mode.max_quiet_blocks || mode.side == 0) flush(out);
+  }
+  if (!held_) {
+    has_vector_ = length(plane(tool_) - plane(prog_)) >= kSamePoint;
+  }
+  return {};
+}
+
+}  // namespace skipnc::interp::crc
