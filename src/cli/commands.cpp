@@ -22,7 +22,9 @@
 namespace skipnc::cli {
 namespace {
 
-std::string program_name_of(const std::string& path) { return path; }
+std::string program_name_of(const std::string& path) {
+  return path;
+}
 
 // Outputs that go to standard output move the summary to standard error.
 bool is_stdout(const std::string& name) {
@@ -32,7 +34,8 @@ bool is_stdout(const std::string& name) {
 std::string fmt_axes(const AxisVec& v, const config::MachineConfig& m) {
   std::string out;
   for (int i = 0; i < m.axis_count(); ++i) {
-    out += fmt::format("{}{}{:.4f}", out.empty() ? "" : " ", m.axes[static_cast<std::size_t>(i)].name, v[i] + 0.0);
+    out += fmt::format("{}{}{:.4f}", out.empty() ? "" : " ",
+                       m.axes[static_cast<std::size_t>(i)].name, v[i] + 0.0);
   }
   return out;
 }
@@ -48,11 +51,23 @@ void print_summary(std::FILE* f, const machine::RunResult& r, const Session& s,
   const auto& m = s.machine;
   fmt::print(f, "{} on {} ({}): ", program, m.name, s.dialect.name);
   switch (r.status) {
-    case machine::RunStatus::kCompleted: fmt::print(f, "completed"); break;
-    case machine::RunStatus::kAlarm: fmt::print(f, "ALARM"); break;
-    case machine::RunStatus::kInterrupted: fmt::print(f, "interrupted"); break;
+    case machine::RunStatus::kCompleted:
+      fmt::print(f, "completed");
+      break;
+    case machine::RunStatus::kAlarm:
+      fmt::print(f, "ALARM");
+      break;
+    case machine::RunStatus::kInterrupted:
+      fmt::print(f, "interrupted");
+      break;
   }
   fmt::print(f, " after {:.3f} s of machine time\n", r.time_s);
+  // Warnings before the alarm: one of them may be why it came.
+  for (const auto& w : r.warnings) {
+    fmt::print(f, "  warning ({}): {}: {}{}\n", w.code,
+               report::where(r.contexts, w.context, w.line), w.text,
+               w.count > 1 ? fmt::format(" ({} times)", w.count) : std::string());
+  }
   if (r.alarm) {
     fmt::print(f, "  {}\n", describe(*r.alarm, &s.dialect));
     if (r.alarm_context != 0 && !r.contexts.empty())
@@ -63,11 +78,14 @@ void print_summary(std::FILE* f, const machine::RunResult& r, const Session& s,
                shorten(sk.block, 28));
     if (sk.ended_by_alarm) {
       fmt::print(f, "cut short by the alarm{}\n",
-                 sk.triggered ? fmt::format(" after {} at {:.4f} s, stored {}", sk.signal.empty() ? "signal" : sk.signal, sk.time_s, fmt_axes(sk.position, m))
+                 sk.triggered ? fmt::format(" after {} at {:.4f} s, stored {}",
+                                            sk.signal.empty() ? "signal" : sk.signal, sk.time_s,
+                                            fmt_axes(sk.position, m))
                               : std::string(" before any signal"));
     } else if (sk.triggered) {
-      fmt::print(f, "{} at {:.4f} s  stored {}  stopped {}\n", sk.signal.empty() ? "signal" : sk.signal,
-                 sk.time_s, fmt_axes(sk.position, m), fmt_axes(sk.end_position, m));
+      fmt::print(f, "{} at {:.4f} s  stored {}  stopped {}\n",
+                 sk.signal.empty() ? "signal" : sk.signal, sk.time_s, fmt_axes(sk.position, m),
+                 fmt_axes(sk.end_position, m));
     } else {
       fmt::print(f, "no signal: ran to its end point {}\n", fmt_axes(sk.position, m));
     }
@@ -165,7 +183,7 @@ int execute(const RunArgs& a, Session& s, interp::Setup setup, bool explain) {
   std::vector<std::string> failed;
   if (!expects.empty()) {
     ObservedRun got;
-    got.status = in.result.status == machine::RunStatus::kCompleted   ? "completed"
+    got.status = in.result.status == machine::RunStatus::kCompleted     ? "completed"
                  : in.result.status == machine::RunStatus::kInterrupted ? "interrupted"
                                                                         : "alarm";
     if (in.result.alarm) got.alarm = report::view_alarm(*in.result.alarm, &s.dialect).number;
@@ -207,6 +225,7 @@ interp::Setup make_setup(const RunArgs& a, Session& s) {
   setup.program_name = program_name_of(a.program);
   setup.include_dirs = a.include;
   setup.dprnt_path = a.dprnt;
+  setup.strict = a.strict;
   return setup;
 }
 
@@ -314,6 +333,11 @@ int canon_command(const RunArgs& a) {
     }
   }
   sink.flush();
+  // Warnings go to standard error: standard output is the command stream.
+  for (const auto& w : (*in)->warnings()) {
+    std::cerr << fmt::format("skipnc: warning ({}): {}: {}\n", w.code,
+                             report::where((*in)->contexts(), w.context, w.line), w.text);
+  }
   return sink.failed() ? 1 : 0;
 }
 
@@ -344,15 +368,16 @@ int dialects_command() {
     }
     const int last = sw.skip_p_first + sw.skip_p_count - 1;
     fmt::print("{:<11} {}\n", d->name, d->title);
-    fmt::print("  P word      {}\n",
-               sw.skip_p_mode == SkipPMode::kMultiStep
-                   ? fmt::format("multi-step skip P{}-P{}", sw.skip_p_first, last)
-               : sw.skip_p_mode == SkipPMode::kSelect
-                   ? fmt::format("selects skip input P{}-P{} (no P: input 1)", sw.skip_p_first, last)
-               : sw.skip_p_mode == SkipPMode::kBitmask
-                   ? fmt::format("bit mask of inputs 1-{}: P1-P{}", sw.skip_p_count,
-                                 (1 << sw.skip_p_count) - 1)
-                   : std::string("none"));
+    fmt::print(
+        "  P word      {}\n",
+        sw.skip_p_mode == SkipPMode::kMultiStep
+            ? fmt::format("multi-step skip P{}-P{}", sw.skip_p_first, last)
+        : sw.skip_p_mode == SkipPMode::kSelect
+            ? fmt::format("selects skip input P{}-P{} (no P: input 1)", sw.skip_p_first, last)
+        : sw.skip_p_mode == SkipPMode::kBitmask
+            ? fmt::format("bit mask of inputs 1-{}: P1-P{}", sw.skip_p_count,
+                          (1 << sw.skip_p_count) - 1)
+            : std::string("none"));
     fmt::print("  inputs      {}{}\n", inputs,
                d->param(3008) != nullptr ? " (fixed; 3008#2 = 1: parameters 3012, 3020-3025)" : "");
     fmt::print("  detection   {}\n",
@@ -360,17 +385,17 @@ int dialects_command() {
                : sw.skip_signal_param != 0
                    ? fmt::format("parameter {} (#0 level/edge, #1 polarity)", sw.skip_signal_param)
                    : std::string("level, active high"));
-    fmt::print("  at start    {}\n",
-               sw.skip_edge_rising_only         ? "waits for a new edge"
-               : sw.skip_active_at_start_ends   ? "ends the block at once (level detection)"
-                                                : "waits for a new edge");
+    fmt::print("  at start    {}\n", sw.skip_edge_rising_only ? "waits for a new edge"
+                                     : sw.skip_active_at_start_ends
+                                         ? "ends the block at once (level detection)"
+                                         : "waits for a new edge");
     fmt::print("  feed        {}\n",
                sw.skip_feed == SkipFeedRule::kModal ? std::string("F, else modal F")
                : sw.skip_feed == SkipFeedRule::kBlockOrParam
                    ? "F, else " + param(sw.skip_feed_param) + "; modal F not updated"
                : sw.skip_feed == SkipFeedRule::kParamSwitch
-                   ? param(sw.skip_feed_switch_param) + " = 0: F or modal F; 1: " +
-                         param(sw.skip_feed_param)
+                   ? param(sw.skip_feed_switch_param) +
+                         " = 0: F or modal F; 1: " + param(sw.skip_feed_param)
                    : std::string("F, else the last non-rapid feed"));
     fmt::print("  override    {}; acc/dec {}\n",
                sw.skip_override == SkipOverride::kSkfParam ? "SKF (6200#7)"
@@ -379,16 +404,14 @@ int dialects_command() {
                sw.skip_accel == SkipAccel::kSkfParam ? "SKF (6200#7)"
                : sw.skip_accel == SkipAccel::kNever  ? "none"
                                                      : "as G01");
-    fmt::print("  stop        {}\n", sw.skip_stop == canon::SkipStop::kImmediate
-                                         ? "immediate"
-                                         : "linear deceleration");
+    fmt::print("  stop        {}\n",
+               sw.skip_stop == canon::SkipStop::kImmediate ? "immediate" : "linear deceleration");
     fmt::print("  miss        {}\n",
                sw.skip_k_word ? "K1 alarm, K0 none; K omitted: " + param(sw.skip_miss_param)
                               : std::string("completes normally"));
-    fmt::print("  torque skip {}\n",
-               sw.torque_skip ? "P98/P99, Q or " + param(sw.torque_q_param) + ", delay " +
-                                    param(sw.torque_delay_param)
-                              : std::string("no"));
+    fmt::print("  torque skip {}\n", sw.torque_skip ? "P98/P99, Q or " + param(sw.torque_q_param) +
+                                                          ", delay " + param(sw.torque_delay_param)
+                                                    : std::string("no"));
     std::string other;
     for (const auto& [on, text] :
          {std::pair{sw.skip_g53_allowed, "G31 G53: target in machine coordinates"},
@@ -421,7 +444,8 @@ int demo_command(const RunArgs& args) {
   const EmbeddedFile* prog = embedded_entry("demo/probe_demo.nc");
   const EmbeddedFile* scene = embedded_entry("demo/probe_demo.toml");
   if (prog == nullptr || scene == nullptr) {
-    return start_failure(a, Error{AlarmId::kInternal, "demo files missing from the build", {}, -1}, &s);
+    return start_failure(a, Error{AlarmId::kInternal, "demo files missing from the build", {}, -1},
+                         &s);
   }
   auto sc = machine::parse_scene(scene->content, scene->path, s.machine, s.dialect, *s.params);
   if (!sc) return start_failure(a, sc.error(), &s);
@@ -431,12 +455,14 @@ int demo_command(const RunArgs& args) {
   setup.program_text = std::string(prog->content);
   a.vars = {"100", "101", "102", "5223"};
   machine::Simulator sim(s.machine, s.dialect, *s.params, s.scene);
-  std::cout << "skipnc demo: a touch probe finds the top of a part on the built-in mill3 (fanuc).\n"
-            << "The scene puts the part's top face at Z-23.8 (machine); the probe is wired to X0.4.\n\n"
-            << "Program:\n";
+  std::cout
+      << "skipnc demo: a touch probe finds the top of a part on the built-in mill3 (fanuc).\n"
+      << "The scene puts the part's top face at Z-23.8 (machine); the probe is wired to X0.4.\n\n"
+      << "Program:\n";
   for (std::size_t i = 0, line = 1; i < prog->content.size(); ++line) {
     const auto nl = prog->content.find('\n', i);
-    const auto text = prog->content.substr(i, nl == std::string_view::npos ? std::string_view::npos : nl - i);
+    const auto text =
+        prog->content.substr(i, nl == std::string_view::npos ? std::string_view::npos : nl - i);
     fmt::print("  {:>3}  {}\n", line, text);
     if (nl == std::string_view::npos) break;
     i = nl + 1;
@@ -469,22 +495,28 @@ int demo_command(const RunArgs& args) {
   std::cout << "\nWhat happened:\n";
   for (const auto& sk : r.skips) {
     const double over = sk.position[2] - sk.end_position[2];
-    fmt::print("  line {:>2}  {:<22}  {} at t = {:.4f} s: Z stored in #5063 = {:.4f}; "
-               "the axis stopped at Z{:.4f} ({:.4f} mm past the touch)\n",
-               sk.line, sk.block, sk.triggered ? "probe signal " + sk.signal : std::string("no signal"),
-               sk.time_s, sk.position[2], sk.end_position[2], over);
+    fmt::print(
+        "  line {:>2}  {:<22}  {} at t = {:.4f} s: Z stored in #5063 = {:.4f}; "
+        "the axis stopped at Z{:.4f} ({:.4f} mm past the touch)\n",
+        sk.line, sk.block, sk.triggered ? "probe signal " + sk.signal : std::string("no signal"),
+        sk.time_s, sk.position[2], sk.end_position[2], over);
   }
   auto var = [&](int n) {
     auto v = sim.interpreter()->read_variable(n);
     return v && !v->vacant ? v->v : 0.0;
   };
-  fmt::print("\n  first touch  #100 = {:.4f}\n  second touch #101 = {:.4f}  (slower, so it stops closer)\n"
-             "  G54 Z offset #5223 = {:.4f}  (written by G10 L2 P1)\n",
-             var(100), var(101), var(5223));
+  fmt::print(
+      "\n  first touch  #100 = {:.4f}\n  second touch #101 = {:.4f}  (slower, so it stops closer)\n"
+      "  G54 Z offset #5223 = {:.4f}  (written by G10 L2 P1)\n",
+      var(100), var(101), var(5223));
+  for (const auto& w : r.warnings) {
+    fmt::print("  warning ({}): {}: {}\n", w.code, report::where(r.contexts, w.context, w.line),
+               w.text);
+  }
   for (const auto& m : r.messages) fmt::print("  message: {}\n", m);
   fmt::print("\n{} after {:.3f} s of machine time; final position {}\n",
-             r.status == machine::RunStatus::kCompleted ? "Completed" : "Stopped by an alarm", r.time_s,
-             fmt_axes(r.final_work, s.machine));
+             r.status == machine::RunStatus::kCompleted ? "Completed" : "Stopped by an alarm",
+             r.time_s, fmt_axes(r.final_work, s.machine));
   if (r.alarm) std::cout << "  " << describe(*r.alarm, &s.dialect) << "\n";
   if (!a.report.empty()) {
     report::ReportInput in;
@@ -505,7 +537,8 @@ int demo_command(const RunArgs& args) {
       output_failed = true;
     }
   }
-  std::cout << "\nTry it yourself: skipnc run PROGRAM --scene SCENE --report report.json --var 5063\n";
+  std::cout
+      << "\nTry it yourself: skipnc run PROGRAM --scene SCENE --report report.json --var 5063\n";
   return r.status == machine::RunStatus::kCompleted && !output_failed ? 0 : 1;
 }
 

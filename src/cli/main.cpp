@@ -40,6 +40,8 @@ int run_main(int argc, char** argv) {
   run->add_flag("-q,--quiet", run_args.quiet, "no summary on standard output");
   run->add_flag("--progress", run_args.progress,
                 "a progress line on standard error every 2 s (also without a terminal)");
+  run->add_flag("--strict", run_args.strict,
+                "a warning is an alarm (SN9076 strict_warning) at the block that raised it");
   run->add_option("--expect", run_args.expect,
                   "CI check: #140=-0.05+-0.001, #140=vacant, status=completed, alarm=9061 "
                   "(repeatable; exit status 3 when one fails)");
@@ -56,6 +58,7 @@ int run_main(int argc, char** argv) {
   canon->add_option("-d,--dialect", canon_args.dialect, "dialect");
   canon->add_option("-p,--param", canon_args.params, "parameter N=V or N#B=V (repeatable)");
   canon->add_option("-I,--include", canon_args.include, "subprogram folder (repeatable)");
+  canon->add_flag("--strict", canon_args.strict, "a warning is an alarm (SN9076 strict_warning)");
 
   RunArgs demo_args;
   auto* demo = app.add_subcommand("demo", "run the built-in probing demo and explain it");
@@ -64,10 +67,12 @@ int run_main(int argc, char** argv) {
   demo->add_option("--plot", demo_args.plot, "also write pictures: FILE.svg and/or FILE.html");
 
   RunArgs plot_args;
-  auto* plot = app.add_subcommand("plot", "run a program and draw it: SVG and an offline HTML page");
+  auto* plot =
+      app.add_subcommand("plot", "run a program and draw it: SVG and an offline HTML page");
   plot->add_option("program", plot_args.program, "part program file")->required();
-  plot->add_option("-o,--output", plot_args.plot,
-                   "FILE.svg or FILE.html, repeatable (default: PROGRAM.html and PROGRAM.svg here)");
+  plot->add_option(
+      "-o,--output", plot_args.plot,
+      "FILE.svg or FILE.html, repeatable (default: PROGRAM.html and PROGRAM.svg here)");
   plot->add_option("-m,--machine", plot_args.machine, "machine file or built-in machine (mill3)");
   plot->add_option("-s,--scene", plot_args.scene, "scene file (TOML)");
   plot->add_option("-d,--dialect", plot_args.dialect, "fanuc, nct, mitsubishi, compass");
@@ -78,6 +83,7 @@ int run_main(int argc, char** argv) {
   plot->add_flag("-q,--quiet", plot_args.quiet, "no summary on standard output");
   plot->add_flag("--progress", plot_args.progress,
                  "a progress line on standard error every 2 s (also without a terminal)");
+  plot->add_flag("--strict", plot_args.strict, "a warning is an alarm (SN9076 strict_warning)");
 
   auto* dialects = app.add_subcommand("dialects", "list the dialects and what differs");
 

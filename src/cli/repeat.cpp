@@ -136,6 +136,7 @@ int repeat_command(const RunArgs& a) {
   setup.program_name = a.program;
   setup.include_dirs = a.include;
   setup.dprnt_path = a.dprnt;
+  setup.strict = a.strict;
 
   // Offsets as the machine starts, to tell which ones the program wrote.
   const auto offsets = offset_variables(s.machine);

@@ -310,7 +310,8 @@ Result<void> Compensator::send_held(const Corner& k, const canon::Stamped* next,
   return {};
 }
 
-void Compensator::flush(std::vector<canon::Stamped>& out) {
+std::uint32_t Compensator::flush(std::vector<canon::Stamped>& out) {
+  const std::uint32_t line = held_ ? held_->cmd.line : 0;
   if (held_) {
     const Entity& e = *held_;
     const V2 t1 = tangent(e.arc, e.p0, e.p1, e.c, e.ccw, true);
@@ -322,12 +323,14 @@ void Compensator::flush(std::vector<canon::Stamped>& out) {
   deferred_.clear();
   quiet_ = 0;
   has_vector_ = length(plane(tool_) - plane(prog_)) >= kSamePoint;
+  return line;
 }
 
 Result<void> Compensator::block(const std::vector<canon::Stamped>& cmds, const BlockMode& mode,
                                 std::vector<canon::Stamped>& out) {
   a0_ = mode.a0;
   a1_ = mode.a1;
+  broke_ = 0;
   bool plane_move = false;
   for (const canon::Stamped& c : cmds) {
     const bool path_move = is_path_move(c.cmd);
@@ -416,7 +419,11 @@ Result<void> Compensator::block(const std::vector<canon::Stamped>& cmds, const B
   if (held_ && !plane_move) {
     // Blocks without a plane move: one is looked past, more end the held
     // move perpendicular (as does G40 in a block without a plane move).
-    if (++quiet_ > mode.max_quiet_blocks || mode.side == 0) flush(out);
+    if (mode.side == 0) {
+      flush(out);
+    } else if (++quiet_ > mode.max_quiet_blocks) {
+      broke_ = flush(out);
+    }
   }
   if (!held_) {
     has_vector_ = length(plane(tool_) - plane(prog_)) >= kSamePoint;

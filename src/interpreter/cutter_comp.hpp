@@ -67,7 +67,11 @@ class Compensator {
   Result<void> block(const std::vector<canon::Stamped>& cmds, const BlockMode& mode,
                      std::vector<canon::Stamped>& out);
   // Sends what is held, the held move ending perpendicular to its end point.
-  void flush(std::vector<canon::Stamped>& out);
+  // Returns the line of that move (0: nothing was held).
+  std::uint32_t flush(std::vector<canon::Stamped>& out);
+  // The line of the move the last block() ended perpendicular because too
+  // many blocks without a plane move followed it (0: none).
+  std::uint32_t broke_lookahead() const noexcept { return broke_; }
   // Tool centre minus programmed point (plane axes; zero elsewhere), when
   // nothing is held (after flush()).
   AxisVec vector() const noexcept;
@@ -110,6 +114,7 @@ class Compensator {
   std::optional<Entity> held_;
   std::vector<canon::Stamped> deferred_;  // commands after the held move
   int quiet_ = 0;                         // blocks without a plane move since it
+  std::uint32_t broke_ = 0;
 };
 
 }  // namespace skipnc::interp::crc

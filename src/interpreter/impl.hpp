@@ -117,7 +117,8 @@ enum class Pending : std::uint8_t { kNone, kRerun, kSkip };
 
 // The codes of mill_codes.cpp seen in one block (planned, applied at commit).
 struct MillRequest {
-  int frame_code = 0;  // 680 690 500 510 501 511 (x10), 0: none
+  int frame_code = 0;     // 680 690 500 510 501 511 (x10), 0: none
+  std::string no_effect;  // a code accepted without effect: what it is (warning)
   SourceLoc frame_at;
   std::optional<Cycle> cycle;
   std::optional<bool> polar;  // G16 (true) / G15 (false)
@@ -153,6 +154,7 @@ struct BlockUndo {
   bool have_turning_cycle_z = false, motion_since_sync = false, ended = false;
   int wear_offset = 0;
   std::size_t messages = 0;
+  std::size_t warnings = 0;
   Pending pending = Pending::kNone;
   std::int64_t parts_count = 0;
   cycles::Data cycle_data;
@@ -160,6 +162,7 @@ struct BlockUndo {
   bool polar = false;
   double polar_angle = 0.0, rotation_angle = 0.0;
   int skip_step = 0;
+  bool skip_missed_unread = false;
 };
 
 // The commands of the block being executed, passed on when it succeeds.
@@ -250,6 +253,14 @@ struct Interpreter::Impl {
     messages.push_back(std::move(text));
   }
   std::vector<SkipRecord> skips;
+  // Structured warnings (interpreter.hpp Warning); under --strict warn()
+  // fails instead, so the block that raised it ends the run.
+  std::vector<Warning> warnings;
+  Result<void> warn(const char* code, std::string text, SourceLoc where);
+  // The last skip ran to its end point without a signal and #5061.. has not
+  // been read since (warning skip_missed_read).
+  bool skip_missed_unread = false;
+  std::uint32_t skip_missed_line = 0;
   std::int64_t statements = 0;
   std::int64_t parts_count = 0;
   std::int64_t parts_required = 0;
@@ -397,8 +408,10 @@ struct Interpreter::Impl {
   crc::Compensator comp;
   std::vector<canon::Stamped> comp_out;  // reused
   Result<crc::BlockMode> comp_mode(const BlockPlan& plan) const;
+  Result<void> check_feeds(const AxisVec& start);  // warning feed_clamped
   Result<void> pass_block(const BlockPlan& plan, const AxisVec& start, CommandSink& out);
-  void flush_comp(CommandSink& out);
+  // Returns the line of the move it ended perpendicular (0: nothing held).
+  std::uint32_t flush_comp(CommandSink& out);
   // Moves the compensator does not offset: refused under G41/G42 (canned
   // cycles, G37) and, on a lathe, tool nose radius compensation.
   Result<void> refuse_under_comp(const char* what, SourceLoc where) const;

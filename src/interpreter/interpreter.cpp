@@ -85,6 +85,30 @@ Result<void> Interpreter::Impl::init(const AxisVec& start) {
   return {};
 }
 
+// One entry per (code, context, line): a warning raised again by the same
+// block (a loop) counts up. At most kMaxWarnings places are kept.
+Result<void> Interpreter::Impl::warn(const char* code, std::string text, SourceLoc where) {
+  if (setup.strict) {
+    return fail(AlarmId::kStrictWarning, std::string(code) + ": " + text, where);
+  }
+  constexpr std::size_t kMaxWarnings = 1000;
+  const std::uint32_t ctx = frames.empty() ? 0 : frames.back().context;
+  for (Warning& w : warnings) {
+    if (w.line == where.line && w.context == ctx && w.code == code) {
+      ++w.count;
+      return {};
+    }
+  }
+  if (warnings.size() == kMaxWarnings) {
+    warnings.push_back(Warning{"warnings_dropped", ctx, where.line,
+                               "more than " + std::to_string(kMaxWarnings) +
+                                   " places raised warnings; later ones are not listed"});
+  }
+  if (warnings.size() > kMaxWarnings) return {};
+  warnings.push_back(Warning{code, ctx, where.line, std::move(text)});
+  return {};
+}
+
 Result<void> Interpreter::Impl::count_statement(SourceLoc where) {
   if (++statements > mc.limits.max_macro_statements) {
     return fail(AlarmId::kLoopLimit,
@@ -116,7 +140,19 @@ Result<bool> Interpreter::Impl::read_block() {
 // end, what cutter compensation holds goes out first.
 Result<Step> Interpreter::Impl::step(CommandSink& out) {
   auto r = step_block(out);
-  if (r && (*r == Step::kSync || *r == Step::kEnd)) flush_comp(out);
+  if (r && (*r == Step::kSync || *r == Step::kEnd)) {
+    if (const std::uint32_t held = flush_comp(out); held != 0) {
+      auto w = warn("comp_lookahead",
+                    "cutter compensation: the move of line " + std::to_string(held) +
+                        " ends perpendicular to its end point because " +
+                        (*r == Step::kEnd ? std::string("the program ends in G41/G42")
+                                          : std::string("the interpreter waits for the machine "
+                                                        "here (a live read, M00/M01, G31)")) +
+                        "; the control does the same and the next move may overcut",
+                    loc(cur_col));
+      if (!w) return std::unexpected(w.error());
+    }
+  }
   return r;
 }
 
@@ -137,6 +173,9 @@ Result<Step> Interpreter::Impl::step_block(CommandSink& out) {
           if (!r) return r;
           continue;
         }
+        auto w = warn("no_program_end",
+                      "the program ends at the end of its file without M02 or M30", loc(1));
+        if (!w) return std::unexpected(w.error());
         ended = true;
         return Step::kEnd;
       }
@@ -155,6 +194,10 @@ Result<Step> Interpreter::Impl::step_block(CommandSink& out) {
           if (!r) return r;
           continue;
         }
+        // FANUC: % before M02/M30 is an alarm (PS5010 END OF RECORD); skipnc
+        // ends the run there and says so (an alarm with --strict).
+        auto w = warn("no_program_end", "the program reaches % without M02 or M30", loc(1));
+        if (!w) return std::unexpected(w.error());
         ended = true;
         return Step::kEnd;
       }
@@ -275,6 +318,9 @@ AxisVec Interpreter::work_from_machine(const AxisVec& machine) const noexcept {
 }
 const std::vector<std::string>& Interpreter::messages() const noexcept {
   return impl_->messages;
+}
+const std::vector<Warning>& Interpreter::warnings() const noexcept {
+  return impl_->warnings;
 }
 const std::vector<SkipRecord>& Interpreter::skips() const noexcept {
   return impl_->skips;

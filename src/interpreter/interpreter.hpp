@@ -36,6 +36,21 @@ struct Setup {
   // and is written back only if the program changes a variable). Python
   // module and sweeps.
   std::vector<std::pair<int, double>> variables;
+  // --strict: a warning is an alarm (strict_warning) at the block that
+  // raised it, instead of a line in the report.
+  bool strict = false;
+};
+
+// Something the run did that a user should know and that is not an alarm:
+// a code accepted without effect, a move that may overcut, a skip value read
+// after a miss, a program without an end. `code` is stable (docs/cli.md).
+struct Warning {
+  std::string code;
+  std::uint32_t context = 0;  // CallContext of the block
+  std::uint32_t line = 0;
+  std::string text;
+  int count = 1;  // times the same block raised it (a loop): one entry per place
+  friend bool operator==(const Warning&, const Warning&) = default;
 };
 
 class CommandSink {
@@ -117,6 +132,7 @@ class Interpreter {
   // offsets active now.
   AxisVec work_from_machine(const AxisVec& machine) const noexcept;
   const std::vector<std::string>& messages() const noexcept;
+  const std::vector<Warning>& warnings() const noexcept;
   const std::vector<SkipRecord>& skips() const noexcept;
   std::uint32_t line() const noexcept;     // line of the block being executed
   std::uint32_t context() const noexcept;  // its call context

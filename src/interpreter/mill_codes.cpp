@@ -10,7 +10,9 @@
 // (parameters 5400#0 RIN, 5410).
 #include <cctype>
 #include <cmath>
+#include <cstdio>
 #include <string>
+#include <variant>
 
 #include "config/skip_inputs.hpp"
 #include "interpreter/codes.hpp"
@@ -97,7 +99,9 @@ constexpr MeasureSignal kMeasureSignals[] = {
 constexpr double kMaxPecks = 10000;
 
 std::string name(int code) {
-  return "G" + std::to_string(code / 10) + (code % 10 ? "." + std::to_string(code % 10) : "");
+  // As the manuals write them: G05.1, G08, G12.1.
+  return std::string(code < 100 ? "G0" : "G") + std::to_string(code / 10) +
+         (code % 10 ? "." + std::to_string(code % 10) : "");
 }
 
 // A value without decimal point in an address that is not a length: in
@@ -141,6 +145,7 @@ Result<bool> Interpreter::Impl::mill_code(int code, SourceLoc at, MillRequest& r
       req.frame_at = at;
       return true;
     case Kind::kNoEffect:
+      req.no_effect = name(code) + " " + c->what;
       return true;
     case Kind::kNotSimulated:
       return fail(AlarmId::kNotSimulated,
@@ -329,8 +334,60 @@ Result<crc::BlockMode> Interpreter::Impl::comp_mode(const BlockPlan& plan) const
   return m;
 }
 
+// A programmed feed the machine cannot give along a straight move (more than
+// an axis's max_feed for its share of the move): the planner runs the move
+// at the machine's limit, as a control clamps to its feed upper limit; the
+// warning says to what. Arcs are not checked (their limit changes along them).
+Result<void> Interpreter::Impl::check_feeds(const AxisVec& start) {
+  AxisVec from = start;
+  for (const canon::Stamped& c : block_buffer.cmds) {
+    const AxisVec* to = nullptr;
+    double f = 0.0;
+    if (const auto* fd = std::get_if<canon::Feed>(&c.cmd)) {
+      to = &fd->target;
+      f = fd->feed_mm_per_min;
+    } else if (const auto* sk = std::get_if<canon::Skip>(&c.cmd)) {
+      to = &sk->target;
+      f = sk->feed_mm_per_min;
+    } else if (const auto* r = std::get_if<canon::Rapid>(&c.cmd)) {
+      from = r->target;
+      continue;
+    } else if (const auto* a = std::get_if<canon::Arc>(&c.cmd)) {
+      from = a->target;
+      continue;
+    } else {
+      continue;
+    }
+    const AxisVec d = *to - from;
+    from = *to;
+    const double len = norm(d, axis_count);
+    if (!(len > 0.0) || !(f > 0.0)) continue;
+    double limit = f;
+    char axis = 0;
+    for (int i = 0; i < axis_count; ++i) {
+      const double u = std::fabs(d[i]) / len;
+      if (u == 0.0) continue;
+      const double l = mc.axes[static_cast<std::size_t>(i)].max_feed_mm_min / u;
+      if (l < limit) {
+        limit = l;
+        axis = axis_letter[static_cast<std::size_t>(i)];
+      }
+    }
+    if (axis == 0 || limit >= f * (1.0 - 1e-9)) continue;
+    char buf[200];
+    std::snprintf(buf, sizeof buf,
+                  "F%g mm/min on this move is more than the %c axis's max_feed allows along it: "
+                  "it runs at %.1f mm/min",
+                  f, axis, limit);
+    auto w = warn("feed_clamped", buf, loc(cur_col));
+    if (!w) return w;
+  }
+  return {};
+}
+
 Result<void> Interpreter::Impl::pass_block(const BlockPlan& plan, const AxisVec& start,
                                            CommandSink& out) {
+  if (auto f = check_feeds(start); !f) return f;
   if (mc.lathe() || (modal.cutter == CutterComp::kOff && comp.idle())) {
     for (const canon::Stamped& c : block_buffer.cmds) out.emit(c);
     return {};
@@ -348,6 +405,16 @@ Result<void> Interpreter::Impl::pass_block(const BlockPlan& plan, const AxisVec&
     if (e.loc.line == 0) e.loc = loc(cur_col);
     return std::unexpected(std::move(e));
   }
+  if (const std::uint32_t broken = next.broke_lookahead(); broken != 0) {
+    auto w = warn("comp_lookahead",
+                  "cutter compensation: two or more blocks without a move in the offset plane "
+                  "after line " +
+                      std::to_string(broken) +
+                      ": that move ends perpendicular to its end point, as on the control, and "
+                      "the next move may overcut",
+                  loc(cur_col));
+    if (!w) return w;
+  }
   comp = std::move(next);
   for (const canon::Stamped& c : comp_out) out.emit(c);
   return {};
@@ -355,11 +422,12 @@ Result<void> Interpreter::Impl::pass_block(const BlockPlan& plan, const AxisVec&
 
 // At a point where the interpreter waits for the machine (or at the end):
 // what the compensator holds goes out, the held move ending perpendicular.
-void Interpreter::Impl::flush_comp(CommandSink& out) {
-  if (comp.idle()) return;
+std::uint32_t Interpreter::Impl::flush_comp(CommandSink& out) {
+  if (comp.idle()) return 0;
   comp_out.clear();
-  comp.flush(comp_out);
+  const std::uint32_t held = comp.flush(comp_out);
   for (const canon::Stamped& c : comp_out) out.emit(c);
+  return held;
 }
 
 Result<void> Interpreter::Impl::refuse_under_comp(const char* what, SourceLoc where) const {

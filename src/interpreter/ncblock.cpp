@@ -723,6 +723,12 @@ void Interpreter::Impl::commit_cycle_start(const ModalState& before) {
 Result<std::optional<Step>> Interpreter::Impl::commit_mill(const Words& words,
                                                            const BlockPlan& plan, CommandSink& out,
                                                            bool& moved) {
+  if (!plan.mill.no_effect.empty()) {
+    auto w = warn("no_effect",
+                  plan.mill.no_effect + " is accepted and changes nothing in the simulation",
+                  loc(cur_col));
+    if (!w) return std::unexpected(w.error());
+  }
   if (plan.mill.frame_code != 0) {
     auto r = apply_frame_code(words, plan.mill);
     if (!r) return std::unexpected(r.error());
@@ -788,6 +794,7 @@ BlockUndo Interpreter::Impl::save_block_state() const {
   u.wear_offset = wear_offset;
   u.motion_since_sync = motion_since_sync;
   u.messages = messages.size();
+  u.warnings = warnings.size();
   u.pending = pending;
   u.parts_count = parts_count;
   u.ended = ended;
@@ -797,6 +804,7 @@ BlockUndo Interpreter::Impl::save_block_state() const {
   u.polar_angle = polar_angle;
   u.rotation_angle = rotation_angle;
   u.skip_step = skip_step;
+  u.skip_missed_unread = skip_missed_unread;
   return u;
 }
 
@@ -817,6 +825,7 @@ void Interpreter::Impl::restore_block_state(const BlockUndo& u) {
   wear_offset = u.wear_offset;
   motion_since_sync = u.motion_since_sync;
   messages.resize(u.messages);
+  warnings.resize(u.warnings);
   pending = u.pending;
   parts_count = u.parts_count;
   ended = u.ended;
@@ -826,6 +835,7 @@ void Interpreter::Impl::restore_block_state(const BlockUndo& u) {
   polar_angle = u.polar_angle;
   rotation_angle = u.rotation_angle;
   skip_step = u.skip_step;
+  skip_missed_unread = u.skip_missed_unread;
 }
 
 // Plan, then commit into the block's buffer; the buffer reaches `out` only

@@ -300,6 +300,9 @@ Result<void> Interpreter::Impl::finish_skip(const SyncState& s) {
     rec.signal = "TORQUE";
   }
   skips.push_back(rec);
+  // A miss stores the end point: reading it as a touch is worth a warning.
+  skip_missed_unread = !s.triggered && ps.g37_axis < 0;
+  skip_missed_line = rec.line;
   const auto& sv = dialect.skip_vars;
   if (sv.success_flag > 0) vars.set(sv.success_flag, Value::of(s.triggered ? 1.0 : 0.0));
   if (!sv.named_machine.empty() || !sv.named_local.empty()) {

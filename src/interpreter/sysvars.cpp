@@ -162,6 +162,16 @@ Result<Value> Interpreter::Impl::read_var(int n, SourceLoc where) {
                       [&](int i) { return position_var(i, tool[i], sw.current_tool_offsets); });
   }
   if (n >= 5061 && n <= 5068) {
+    if (skip_missed_unread && where.line != 0) {
+      skip_missed_unread = false;
+      auto w = warn("skip_missed_read",
+                    "#" + std::to_string(n) + " read after the skip of line " +
+                        std::to_string(skip_missed_line) +
+                        " ran to its end point without a signal: it holds that end point, not "
+                        "a touch",
+                    where);
+      if (!w) return std::unexpected(w.error());
+    }
     return axis_value(5061, [&](int i) { return have_skip ? skip_work[i] : 0.0; });
   }
   if (n >= 5081 && n <= 5088) {

@@ -26,7 +26,7 @@ void ProbeSafety::emit(const canon::Stamped& c) {
       [&](const auto& cmd) {
         using T = std::decay_t<decltype(cmd)>;
         if constexpr (std::is_same_v<T, canon::Skip>) {
-          warn_braking(cmd, c.line);
+          warn_braking(cmd, c);
           last_target_ = cmd.target;
         } else if constexpr (std::is_same_v<T, canon::Rapid> || std::is_same_v<T, canon::Feed> ||
                              std::is_same_v<T, canon::Arc>) {
@@ -68,7 +68,7 @@ double ProbeSafety::braking_distance(const canon::Skip& s, const AxisVec& from) 
   return v * v / (2.0 * accel) + fe;
 }
 
-void ProbeSafety::warn_braking(const canon::Skip& s, std::uint32_t line) {
+void ProbeSafety::warn_braking(const canon::Skip& s, const canon::Stamped& at) {
   const ProbeScene& ps = plant_.probing();
   const Probing& spec = ps.spec();
   double limit = -1.0;
@@ -87,13 +87,22 @@ void ProbeSafety::warn_braking(const canon::Skip& s, std::uint32_t line) {
   const double dist = braking_distance(s, last_target_);
   if (dist <= limit) return;
   const bool immediate = s.spec.stop == canon::SkipStop::kImmediate;
-  messages_.push_back(fmt::format(
-      "warning: line {}: the skip move at F{:g} needs {:.4f} mm to stop after the switch ({}), "
-      "more than the {:.4f} mm over-travel of {}",
-      line, s.feed_mm_per_min, dist,
+  std::string text = fmt::format(
+      "the skip move at F{:g} needs {:.4f} mm to stop after the switch ({}), more than the "
+      "{:.4f} mm over-travel of {}",
+      s.feed_mm_per_min, dist,
       immediate ? "immediate stop: following error + one servo period"
                 : "deceleration: v^2/2a + following error",
-      limit, what));
+      limit, what);
+  for (interp::Warning& w : warnings_) {
+    if (w.line == at.line && w.context == at.source && w.code == "skip_braking") {
+      ++w.count;
+      return;
+    }
+  }
+  if (warnings_.size() < 1000) {
+    warnings_.push_back(interp::Warning{"skip_braking", at.source, at.line, std::move(text)});
+  }
 }
 
 std::optional<SafetyAlarm> ProbeSafety::check_period(Plant& plant, const kernel::Kernel& k,

@@ -52,6 +52,8 @@ class ProbeSafety final : public interp::CommandSink {
     return check_period(plant, k, line, file);
   }
   const std::vector<std::string>& messages() const noexcept { return messages_; }
+  // Structured warnings (skip_braking), interp::Warning.
+  const std::vector<interp::Warning>& warnings() const noexcept { return warnings_; }
 
   // Distance the axes travel after a switch at this feed before they stop:
   // following error plus one period (immediate stop) or v^2/2a plus the
@@ -62,7 +64,7 @@ class ProbeSafety final : public interp::CommandSink {
   std::optional<SafetyAlarm> check_period(Plant& plant, const kernel::Kernel& k, std::uint32_t line,
                                           std::string_view file);
   std::string where(const AxisVec& machine) const;
-  void warn_braking(const canon::Skip& s, std::uint32_t line);
+  void warn_braking(const canon::Skip& s, const canon::Stamped& at);
 
   const config::MachineConfig& m_;
   const Plant& plant_;
@@ -73,6 +75,7 @@ class ProbeSafety final : public interp::CommandSink {
   std::optional<int> tool_change_;
   std::uint32_t period_line_ = 0;
   std::vector<std::string> messages_;
+  std::vector<interp::Warning> warnings_;
 };
 
 }  // namespace skipnc::machine

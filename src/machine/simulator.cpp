@@ -185,6 +185,17 @@ Result<RunResult> Simulator::run(const interp::Setup& setup, const RunOptions& o
       }
       if (*st == interp::Step::kSync) waiting = true;
       if (*st == interp::Step::kEnd) ending = true;
+      if (setup.strict && !safety.warnings().empty()) {
+        // --strict: the machine's warning (a skip move that cannot stop in
+        // the over-travel) is an alarm at its block; as for any program
+        // alarm, what is already queued (the skip move too) runs first.
+        const interp::Warning& w = safety.warnings().front();
+        program_alarm = Error{AlarmId::kStrictWarning, w.code + ": " + w.text,
+                              SourceLoc{file_of(w.context), w.line, 1}, -1};
+        program_alarm_context = w.context;
+        ending = true;
+        break;
+      }
     }
     if (res.status != RunStatus::kCompleted) break;
 
@@ -360,6 +371,8 @@ Result<RunResult> Simulator::run(const interp::Setup& setup, const RunOptions& o
   res.messages = in.messages();
   for (auto& msg : router.messages) res.messages.push_back(msg);
   for (const auto& msg : safety.messages()) res.messages.push_back(msg);
+  res.warnings = in.warnings();
+  for (const auto& w : safety.warnings()) res.warnings.push_back(w);
   // Every run that ended, by itself, by an alarm or by a signal (SIGTERM,
   // SIGINT: the run stops between periods) writes #500-#999 and the DPRNT
   // file (was: an interrupted run wrote neither).

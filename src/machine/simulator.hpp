@@ -27,8 +27,8 @@ struct TraceRow {
   const AxisVec* torque = nullptr;
   double feed_mm_per_min = 0.0;
   std::uint32_t line = 0;
-  std::string_view file;  // file of the active block (valid during the call)
-  const Plant* plant = nullptr;  // signal levels
+  std::string_view file;            // file of the active block (valid during the call)
+  const Plant* plant = nullptr;     // signal levels
   kernel::SkipHandshake handshake;  // the skip block's handshake
   const config::SkipHandshakeNames* handshake_names = nullptr;  // null: not shown
 };
@@ -44,7 +44,8 @@ enum class RunStatus : std::uint8_t { kCompleted, kAlarm, kInterrupted };
 struct RunResult {
   RunStatus status = RunStatus::kCompleted;
   std::optional<Error> alarm;
-  std::optional<AxisVec> alarm_position;  // machine position of a probe crash, collision, protection alarm
+  std::optional<AxisVec>
+      alarm_position;  // machine position of a probe crash, collision, protection alarm
   AxisVec final_machine;
   AxisVec final_work;
   double time_s = 0.0;
@@ -55,6 +56,7 @@ struct RunResult {
   std::vector<interp::CallContext> contexts;
   bool program_inch = false;  // G20 in effect at the end of the run
   std::vector<std::string> messages;
+  std::vector<interp::Warning> warnings;  // the interpreter's, then the machine's
   std::vector<std::pair<std::string, std::optional<double>>> variables;  // filled by the caller
 };
 
@@ -69,8 +71,8 @@ struct RunOptions {
 
 class Simulator {
  public:
-  Simulator(const config::MachineConfig& m, const config::Dialect& d,
-            const config::Parameters& p, const Scene& scene);
+  Simulator(const config::MachineConfig& m, const config::Dialect& d, const config::Parameters& p,
+            const Scene& scene);
 
   // Runs the program. Errors that stop the run are in the result (alarm);
   // the returned error is for a run that could not start.

@@ -219,6 +219,22 @@ std::string to_json(const ReportInput& in) {
   fin["time"] = clean(r.time_s);
   j["final"] = fin;
   j["messages"] = r.messages;
+  // Structured warnings (docs/cli.md): what the run did that is not an
+  // alarm but may not be what the program meant.
+  ordered_json warnings = ordered_json::array();
+  for (const auto& w : r.warnings) {
+    ordered_json o;
+    o["code"] = w.code;
+    const bool known = w.context < r.contexts.size();
+    o["file"] = known ? ordered_json(r.contexts[w.context].file) : ordered_json(in.program);
+    o["program"] = program_json(r.contexts, w.context);
+    o["line"] = w.line;
+    o["where"] = known ? where(r.contexts, w.context, w.line) : std::string();
+    o["text"] = w.text;
+    o["count"] = w.count;
+    warnings.push_back(o);
+  }
+  j["warnings"] = warnings;
   if (in.machine != nullptr) j["machine"] = in.machine->name;
   // Units of the numbers above: work positions and stored variables in the
   // program's units (G20/G21 at the end), machine positions in mm, times in s.

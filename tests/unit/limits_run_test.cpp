@@ -151,7 +151,11 @@ TEST(LimitsRun, LargeProgramStreamsInBoundedMemory) {
   // 100 times the text, the same memory within 8 MB, and far below the file.
   EXPECT_LT(rb.exit.max_rss_kb, rs.exit.max_rss_kb + 8 * 1024);
 #if defined(__SANITIZE_ADDRESS__)
-  constexpr long kFlatKb = 160 * 1024;  // ASan's shadow memory and allocator come on top
+  // ASan's shadow memory and allocator come on top, and the Debug ASan
+  // binary (~120 MB) counts with the pages of it that run: its baseline was
+  // 159 MB with a 2 MB program, 1 MB under the old bound of 160 MB, and
+  // grows with the code. The flat check above is the one that matters.
+  constexpr long kFlatKb = 200 * 1024;
 #else
   constexpr long kFlatKb = 100 * 1024;
 #endif

@@ -70,7 +70,12 @@ TEST(ProbeSafety, WarnsBeforeASkipMoveThatCannotStopInTheOverTravel) {
   auto res = r.run("G21 G90 G54\nG0 Z-30.\nG31 Z-45. F100.\nG0 Z-30.\nG31 Z-38. F3000.\nM30\n");
   ASSERT_TRUE(res);
   EXPECT_EQ(res->status, RunStatus::kCompleted);
-  EXPECT_EQ(res->messages.size(), 1U);
+  ASSERT_EQ(res->warnings.size(), 1U);
+  EXPECT_EQ(res->warnings[0].code, "skip_braking");
+  EXPECT_EQ(res->warnings[0].line, 5U);
+  EXPECT_NE(res->warnings[0].text.find("needs 1.7167 mm to stop"), std::string::npos)
+      << res->warnings[0].text;
+  EXPECT_TRUE(res->messages.empty());
 }
 
 TEST(ProbeSafety, ACrashReportsHowFarPastTheLimitTheStylusWent) {

@@ -1,0 +1,1 @@
+no_effect_and_no_end.nc
