@@ -1,0 +1,1 @@
+../../../examples/probing/boss_contour.nc
