@@ -110,6 +110,19 @@ ordered_json program_json(const std::vector<interp::CallContext>& cs, std::uint3
   return "O" + std::to_string(cs[ctx].program);
 }
 
+// Where a block is, as skips and warnings give it: line, file, program
+// (O number), N number (skips), where ("file:line (O..) called from ...").
+void place_json(ordered_json& o, const std::vector<interp::CallContext>& cs,
+                const std::string& program, std::uint32_t ctx, std::uint32_t line, int n,
+                bool with_n) {
+  const bool known = ctx < cs.size();
+  o["line"] = line;
+  o["file"] = known ? ordered_json(cs[ctx].file) : ordered_json(program);
+  o["program"] = program_json(cs, ctx);
+  if (with_n) o["n"] = n >= 0 ? ordered_json(n) : ordered_json(nullptr);
+  o["where"] = known ? where(cs, ctx, line, n) : std::string();
+}
+
 const char* ended_by(const interp::SkipRecord& s) {
   if (s.ended_by_alarm) return "alarm";
   if (!s.triggered) return "end_point";
@@ -169,12 +182,7 @@ std::string to_json(const ReportInput& in) {
   const double increment = r.program_inch ? 0.0001 : 0.001;
   for (const auto& s : r.skips) {
     ordered_json o;
-    o["line"] = s.line;
-    const bool known = s.context < r.contexts.size();
-    o["file"] = known ? ordered_json(r.contexts[s.context].file) : ordered_json(in.program);
-    o["program"] = program_json(r.contexts, s.context);
-    o["n"] = s.n >= 0 ? ordered_json(s.n) : ordered_json(nullptr);
-    o["where"] = known ? where(r.contexts, s.context, s.line, s.n) : std::string();
+    place_json(o, r.contexts, in.program, s.context, s.line, s.n, true);
     o["call_stack"] = stack_json(r.contexts, s.context, s.line);
     o["block"] = s.block;
     o["kind"] = kind_name(s.kind);
@@ -225,11 +233,7 @@ std::string to_json(const ReportInput& in) {
   for (const auto& w : r.warnings) {
     ordered_json o;
     o["code"] = w.code;
-    const bool known = w.context < r.contexts.size();
-    o["file"] = known ? ordered_json(r.contexts[w.context].file) : ordered_json(in.program);
-    o["program"] = program_json(r.contexts, w.context);
-    o["line"] = w.line;
-    o["where"] = known ? where(r.contexts, w.context, w.line) : std::string();
+    place_json(o, r.contexts, in.program, w.context, w.line, -1, false);
     o["text"] = w.text;
     o["count"] = w.count;
     warnings.push_back(o);
