@@ -3,6 +3,7 @@
 
 #include <toml++/toml.h>
 
+#include <cstdio>
 #include <initializer_list>
 #include <string>
 #include <string_view>
@@ -51,9 +52,15 @@ inline std::unexpected<Error> config_error(const toml::node& n, std::string_view
     return config_error(n, origin, std::string(what) + " must be a number");
   }
   if (!(*v >= min && *v <= max)) {
+    // %g: 1e+12 rather than 1000000000000.000000, 0.001 rather than 0.001000.
+    auto num = [](double x) {
+      char buf[32];
+      std::snprintf(buf, sizeof buf, "%.10g", x);
+      return std::string(buf);
+    };
     return config_error(n, origin,
-                        std::string(what) + " = " + std::to_string(*v) + " is out of range [" +
-                            std::to_string(min) + ", " + std::to_string(max) + "]");
+                        std::string(what) + " = " + num(*v) + " is out of range [" + num(min) +
+                            ", " + num(max) + "]");
   }
   return *v;
 }
