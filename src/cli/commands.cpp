@@ -124,6 +124,7 @@ int execute(const RunArgs& a, Session& s, interp::Setup setup, bool explain) {
   std::unique_ptr<report::CsvTrace> trace;
   if (!a.trace.empty()) {
     trace = std::make_unique<report::CsvTrace>(a.trace, s.machine, nullptr);
+    trace->every(a.trace_every);
     auto o = trace->open();
     if (!o) return start_failure(a, o.error(), &s);
     // A trace that cannot go on (a full disk, a closed pipe, its size
@@ -472,6 +473,7 @@ int demo_command(const RunArgs& args) {
   std::unique_ptr<report::CsvTrace> trace;
   if (!a.trace.empty()) {
     trace = std::make_unique<report::CsvTrace>(a.trace, s.machine, nullptr);
+    trace->every(a.trace_every);
     auto t = trace->open();
     if (!t) return start_failure(a, t.error(), &s);
     trace->on_stop([] { run_stop().request(StopReason::kOutput); });

@@ -34,6 +34,9 @@ int run_main(int argc, char** argv) {
   run->add_option("--var", run_args.vars, "report variable V (5061, #5061, #<name>)");
   run->add_option("--report", run_args.report, "write the JSON report here (- for stdout)");
   run->add_option("--trace", run_args.trace, "write the per-cycle CSV trace here");
+  run->add_option("--trace-every", run_args.trace_every,
+                  "one trace row every N servo periods (default 1: every period)")
+      ->check(CLI::Range(1LL, 1000000000LL));
   run->add_option("--plot", run_args.plot, "write pictures of the run: FILE.svg and/or FILE.html");
   run->add_option("-I,--include", run_args.include, "subprogram folder (repeatable)");
   run->add_option("--dprnt", run_args.dprnt, "file for DPRNT output (POPEN/PCLOS)");

@@ -3,6 +3,8 @@
 // segment (or ramp), never an absolute time.
 #include "interpolator/interpolator.hpp"
 
+#include <algorithm>
+
 #include <cmath>
 
 namespace skipnc::interp {
@@ -67,15 +69,19 @@ const AxisVec& Interpolator::tick() noexcept {
   }
 
   double remaining = scale_ > 0.0 ? period * scale_ : 0.0;
+  // Time inside a segment is a sum of periods, so it drifts by rounding (a
+  // 1.05 s dwell was 1050 periods plus 2e-13 s, and took 1051): a segment
+  // that ends within a millionth of a period after this one ends here.
+  const double slack = period * 1e-6;
   while (seg_ != nullptr) {
     const double left = seg_->duration - seg_time_;
-    if (remaining < left) {
+    if (remaining < left - slack) {
       seg_time_ += remaining;
       break;
     }
     // The segment ends inside this period: land exactly on its end point and
     // carry the rest of the period into the next one.
-    remaining -= left;
+    remaining = std::max(0.0, remaining - left);
     pos_ = seg_->end;
     line_ = seg_->line;
     source_ = seg_->source;

@@ -5,6 +5,7 @@
 #include <array>
 #include <cmath>
 #include <type_traits>
+#include <unordered_map>
 
 #include "config/skip_inputs.hpp"
 #include "machine/probe_safety.hpp"
@@ -31,6 +32,49 @@ kernel::KernelConfig kernel_config(const config::MachineConfig& m) {
 }
 
 namespace {
+
+// Per-block timing (RunResult::block_times): one comparison per period; a
+// place's entry is touched only when the running block changes. The period
+// ending at tick `now` belongs to the block the kernel ran in it.
+class BlockClock {
+ public:
+  void period(std::uint32_t context, std::uint32_t line, Tick now) {
+    if (open_ && context == context_ && line == line_) {
+      end_ = now;
+      return;
+    }
+    close();
+    if (line == 0) return;  // no block yet
+    context_ = context;
+    line_ = line;
+    start_ = now - 1;
+    end_ = now;
+    open_ = true;
+  }
+  std::vector<BlockTime> finish() {
+    close();
+    return std::move(places_);
+  }
+
+ private:
+  void close() {
+    if (!open_) return;
+    open_ = false;
+    const std::uint64_t key = (static_cast<std::uint64_t>(context_) << 32) | line_;
+    auto [it, added] = index_.try_emplace(key, places_.size());
+    if (added) places_.push_back(BlockTime{context_, line_, 0, start_, 0, 0});
+    BlockTime& b = places_[it->second];
+    ++b.runs;
+    b.last = end_;
+    b.ticks += end_ - start_;
+  }
+
+  std::uint32_t context_ = 0, line_ = 0;
+  Tick start_ = 0, end_ = 0;
+  bool open_ = false;
+  std::unordered_map<std::uint64_t, std::size_t> index_;
+  std::vector<BlockTime> places_;
+};
 
 // Routes the interpreter's commands: motion to the kernel, the rest recorded.
 class Router final : public interp::CommandSink {
@@ -168,6 +212,7 @@ Result<RunResult> Simulator::run(const interp::Setup& setup, const RunOptions& o
   // is finished first, as if the blocks ran one by one, so the stopping
   // point does not depend on how far the planner had read ahead.
   std::optional<Error> program_alarm;
+  BlockClock times;
   std::uint32_t program_alarm_context = 0;
 
   for (;;) {
@@ -223,6 +268,7 @@ Result<RunResult> Simulator::run(const interp::Setup& setup, const RunOptions& o
     plant.advance(k.now() + 1, cmd_prev, cmd, tin);
     cmd_prev = cmd;
     k.tick(tin, tout);
+    times.period(tout.source, tout.line, k.now());
     if (opts.trace != nullptr) {
       TraceRow r;
       r.tick = k.now();
@@ -358,6 +404,8 @@ Result<RunResult> Simulator::run(const interp::Setup& setup, const RunOptions& o
   }
   res.ticks = k.now();
   res.time_s = k.clock().seconds(k.now());
+  res.block_times = times.finish();
+  res.period_s = k.clock().period_s();
   // Where the axes are: the command, unless an axis was held away from it.
   res.final_machine = held ? plant.actual() : k.command();
   res.final_work = in.work_from_machine(res.final_machine);

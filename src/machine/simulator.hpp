@@ -41,6 +41,18 @@ class TraceSink {
 
 enum class RunStatus : std::uint8_t { kCompleted, kAlarm, kInterrupted };
 
+// The machine's time in one block (one place: call context and line), from
+// the block the kernel runs in each servo period. A block that runs again (a
+// loop, a subprogram called twice) adds to its place.
+struct BlockTime {
+  std::uint32_t context = 0;
+  std::uint32_t line = 0;
+  std::int64_t runs = 0;   // times the place became the running block
+  Tick first = 0;          // first period in it (the period ending at first + 1)
+  Tick last = 0;           // end of the last period in it
+  std::int64_t ticks = 0;  // periods in it, in all
+};
+
 struct RunResult {
   RunStatus status = RunStatus::kCompleted;
   std::optional<Error> alarm;
@@ -57,6 +69,8 @@ struct RunResult {
   bool program_inch = false;  // G20 in effect at the end of the run
   std::vector<std::string> messages;
   std::vector<interp::Warning> warnings;  // the interpreter's, then the machine's
+  std::vector<BlockTime> block_times;     // in the order the places first ran
+  double period_s = 0.0;                  // servo period: ticks to seconds
   std::vector<std::pair<std::string, std::optional<double>>> variables;  // filled by the caller
 };
 

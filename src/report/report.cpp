@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <charconv>
 #include <cmath>
@@ -239,6 +240,29 @@ std::string to_json(const ReportInput& in) {
     warnings.push_back(o);
   }
   j["warnings"] = warnings;
+  // Per-block timing: the machine's time in each place (file, line), in the
+  // order the places first ran; a loop's block adds its runs. At most
+  // kMaxBlockTimes places are listed (a CAM program of 100 000 lines still
+  // has its cycle time and its first places).
+  constexpr std::size_t kMaxBlockTimes = 10000;
+  ordered_json times;
+  times["cycle_time"] = clean(r.time_s);
+  times["places"] = r.block_times.size();
+  const std::size_t listed = std::min(r.block_times.size(), kMaxBlockTimes);
+  times["listed"] = listed;
+  ordered_json blocks = ordered_json::array();
+  for (std::size_t i = 0; i < listed; ++i) {
+    const machine::BlockTime& b = r.block_times[i];
+    ordered_json o;
+    place_json(o, r.contexts, in.program, b.context, b.line, -1, false);
+    o["runs"] = b.runs;
+    o["start"] = clean(static_cast<double>(b.first) * r.period_s);
+    o["end"] = clean(static_cast<double>(b.last) * r.period_s);
+    o["time"] = clean(static_cast<double>(b.ticks) * r.period_s);
+    blocks.push_back(o);
+  }
+  times["blocks"] = blocks;
+  j["block_times"] = times;
   if (in.machine != nullptr) j["machine"] = in.machine->name;
   // Units of the numbers above: work positions and stored variables in the
   // program's units (G20/G21 at the end), machine positions in mm, times in s.
@@ -344,6 +368,7 @@ char* trace_number(char* p, double v) noexcept {
 
 void CsvTrace::row(const machine::TraceRow& r) {
   if (!opened_ || error_) return;
+  if (every_ > 1 && r.tick % every_ != 0) return;
   if (!header_done_) {
     header(r);
     bytes_ += buf_.size();

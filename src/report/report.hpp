@@ -64,6 +64,9 @@ class CsvTrace final : public machine::TraceSink {
   void row(const machine::TraceRow& r) override;
   [[nodiscard]] Result<void> finish();
   void on_stop(std::function<void()> stop) { stop_ = std::move(stop); }
+  // --trace-every N: one row for every N servo periods (the periods whose
+  // tick is a multiple of N), 1: every period.
+  void every(std::int64_t n) noexcept { every_ = n < 1 ? 1 : n; }
   // The error that ended the trace early, if any.
   const std::optional<Error>& error() const noexcept { return error_; }
 
@@ -77,6 +80,7 @@ class CsvTrace final : public machine::TraceSink {
   bool opened_ = false;
   std::uint64_t max_bytes_ = 0;
   std::uint64_t bytes_ = 0;  // rows accepted (written or buffered)
+  std::int64_t every_ = 1;
   bool header_done_ = false;
   std::optional<Error> error_;
   std::function<void()> stop_;

@@ -43,7 +43,7 @@ Csv parse_csv(const std::string& text) {
         c.header.push_back(cell);
       else
         row.push_back(k < c.header.size() && c.header[k] == "file" ? std::nan("")
-                                                                    : std::stod(cell));
+                                                                   : std::stod(cell));
     }
     if (!first) c.rows.push_back(std::move(row));
     first = false;
@@ -157,6 +157,38 @@ TEST(Trace, numbers_are_written_to_six_decimals) {
   const Csv c = parse_csv(text);
   EXPECT_DOUBLE_EQ(c.rows.back()[static_cast<std::size_t>(c.col("X_cmd"))], 1.234568);
   EXPECT_DOUBLE_EQ(c.rows.back()[static_cast<std::size_t>(c.col("Z_cmd"))], -0.5);
+}
+
+// --trace-every N keeps the rows of the periods whose number is a multiple
+// of N: every 100th row of the full trace of a 1.05 s dwell (1050 periods of
+// 1 ms, exactly: the time inside a segment no longer drifts into an extra
+// period), the same columns and values; an N of 0 is refused before the run.
+TEST(TraceCli, TraceEveryKeepsOneRowInN) {
+  TempDir tmp;
+  const auto nc = tmp.write("t.nc", "G21 G90 G54\nG04 X1.05\nM30\n");
+  const auto all = tmp.path / "all.csv";
+  const auto some = tmp.path / "some.csv";
+  ASSERT_EQ(run_cli({"run", nc.string(), "--trace", all.string(), "-q"}).exit_code, 0);
+  ASSERT_EQ(run_cli({"run", nc.string(), "--trace", some.string(), "--trace-every", "100", "-q"})
+                .exit_code,
+            0);
+  const Csv a = parse_csv(read_file(all));
+  const Csv c = parse_csv(read_file(some));
+  ASSERT_EQ(a.rows.size(), 1050U);
+  ASSERT_EQ(c.rows.size(), 10U);
+  EXPECT_EQ(c.header, a.header);
+  for (std::size_t i = 0; i < c.rows.size(); ++i) {
+    EXPECT_NEAR(c.rows[i][0], 0.1 * static_cast<double>(i + 1), 1e-9);
+    const auto& full = a.rows[100 * (i + 1) - 1];
+    ASSERT_EQ(c.rows[i].size(), full.size());
+    for (std::size_t k = 0; k < full.size(); ++k) {
+      if (!std::isnan(full[k])) {
+        EXPECT_EQ(c.rows[i][k], full[k]) << "row " << i << " column " << k;
+      }
+    }
+  }
+  const auto bad = run_cli({"run", nc.string(), "--trace", some.string(), "--trace-every", "0"});
+  EXPECT_NE(bad.exit_code, 0);
 }
 
 }  // namespace
