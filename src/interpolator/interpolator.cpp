@@ -4,7 +4,6 @@
 #include "interpolator/interpolator.hpp"
 
 #include <algorithm>
-
 #include <cmath>
 
 namespace skipnc::interp {
