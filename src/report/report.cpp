@@ -343,6 +343,10 @@ void CsvTrace::header(const machine::TraceRow& r) {
       buf_ += *name;
     }
   }
+  // The touch probe of the scene: its stylus's deflection (mm) and whether
+  // the ball touches a surface (docs/scene.md).
+  probe_ = r.plant != nullptr ? r.plant->probing().probe() : nullptr;
+  if (probe_ != nullptr) buf_ += ",probe_deflection,probe_contact";
   buf_ += '\n';
   header_done_ = true;
 }
@@ -375,7 +379,7 @@ void CsvTrace::row(const machine::TraceRow& r) {
   }
   const int n = m_.axis_count();
   const std::size_t signals = r.plant != nullptr ? r.plant->signal_count() : 0;
-  const std::size_t room = (3 + 4 * static_cast<std::size_t>(n)) * (kNumberRoom + 1) +
+  const std::size_t room = (4 + 4 * static_cast<std::size_t>(n)) * (kNumberRoom + 1) +
                            2 * (signals + 4) + 1 + 2 * r.file.size() + 3;
   if (row_.size() < room) row_.resize(room);
   char* p = row_.data();
@@ -412,6 +416,12 @@ void CsvTrace::row(const machine::TraceRow& r) {
       *p++ = ',';
       *p++ = b ? '1' : '0';
     }
+  }
+  if (probe_ != nullptr) {
+    *p++ = ',';
+    p = trace_number(p, probe_->deflection());
+    *p++ = ',';
+    *p++ = probe_->touching() ? '1' : '0';
   }
   *p++ = '\n';
   const auto len = static_cast<std::uint64_t>(p - row_.data());

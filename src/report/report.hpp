@@ -81,6 +81,7 @@ class CsvTrace final : public machine::TraceSink {
   std::uint64_t max_bytes_ = 0;
   std::uint64_t bytes_ = 0;  // rows accepted (written or buffered)
   std::int64_t every_ = 1;
+  const machine::TouchProbe* probe_ = nullptr;  // the scene's probe (trace columns), if any
   bool header_done_ = false;
   std::optional<Error> error_;
   std::function<void()> stop_;

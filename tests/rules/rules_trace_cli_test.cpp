@@ -191,5 +191,43 @@ TEST(TraceCli, TraceEveryKeepsOneRowInN) {
   EXPECT_NE(bad.exit_code, 0);
 }
 
+// With a touch probe in the scene the trace has probe_deflection (mm) and
+// probe_contact: zero and 0 while the ball is free; in contact while the
+// axis goes straight down, Z_act + deflection stays the height where the
+// ball met the plate (the stylus takes up exactly the travel), and the ideal
+// probe (no pre-travel) switches SKIP (X0.4) in the first contact period.
+TEST(TraceCli, ProbeDeflectionAndContactColumns) {
+  TempDir tmp;
+  const std::string ex = std::string(SKIPNC_SOURCE_DIR) + "/examples/probing/";
+  const auto trace = tmp.path / "t.csv";
+  const auto r = run_cli({"run", ex + "surface.nc", "-s", ex + "fixture.scene.toml", "-m",
+                          ex + "mill3_probe.machine.toml", "--trace", trace.string(), "-q"});
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  const Csv c = parse_csv(read_file(trace));
+  const int defl = c.col("probe_deflection"), contact = c.col("probe_contact"), z = c.col("Z_act"),
+            skip = c.col("X0.4");
+  ASSERT_GE(defl, 0);
+  ASSERT_GE(contact, 0);
+  ASSERT_GE(skip, 0);
+  std::size_t first = 0;
+  for (std::size_t i = 0; i < c.rows.size(); ++i) {
+    const auto& row = c.rows[i];
+    if (row[contact] == 0.0) {
+      EXPECT_EQ(row[defl], 0.0) << "row " << i;
+    } else if (first == 0) {
+      first = i;
+    }
+  }
+  ASSERT_GT(first, 0U);
+  EXPECT_EQ(c.rows[first][skip], 1.0);
+  EXPECT_EQ(c.rows[first - 1][skip], 0.0);
+  EXPECT_GT(c.rows[first][defl], 0.0);
+  const double touch = c.rows[first][z] + c.rows[first][defl];
+  for (std::size_t i = first; i < c.rows.size() && c.rows[i][contact] == 1.0; ++i) {
+    if (i > first && c.rows[i][z] > c.rows[i - 1][z]) break;  // going back up
+    EXPECT_NEAR(c.rows[i][z] + c.rows[i][defl], touch, 2e-6) << "row " << i;
+  }
+}
+
 }  // namespace
 }  // namespace skipnc::rules
