@@ -127,6 +127,7 @@ constexpr LimitKey kLimitKeys[] = {
     {"max_message_bytes", 1024, kGiB, true, set_count<&Limits::max_message_bytes>},
     {"max_dprnt_bytes", 1, kGiB, true, set_count<&Limits::max_dprnt_bytes>},
     {"max_named_variables", 1, 1e7, true, set_count<&Limits::max_named_variables>},
+    {"max_label_index", 0, 1e8, true, set_count<&Limits::max_label_index>},
 };
 
 Result<void> load_limits(const toml::table& t, MachineConfig& m, std::string_view origin) {

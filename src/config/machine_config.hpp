@@ -75,6 +75,10 @@ struct Limits {
   std::int64_t max_message_bytes = 16LL << 20;
   std::int64_t max_dprnt_bytes = 64LL << 20;
   std::int64_t max_named_variables = 100000;
+  // N labels a program's jump index (GOTO, M99 P) keeps: 24 bytes each. A
+  // program with more is searched by a scan per number asked for instead,
+  // so memory does not grow with the file.
+  std::int64_t max_label_index = 1000000;
 };
 
 struct MachineConfig {

@@ -42,10 +42,19 @@ struct ProgramFile {
   // O numbers found so far and the position of the block after them.
   std::unordered_map<std::int64_t, gcode::SourcePos> programs;
   bool scanned = false;  // every O number of the file is in `programs`
-  // Sequence numbers of each program of the file, in file order, keyed by
-  // the offset of the program's first block. Filled by one scan of the
-  // program the first time a GOTO or M99 P searches it.
-  std::unordered_map<std::uint64_t, std::vector<std::pair<std::int64_t, gcode::SourcePos>>> labels;
+  // The GOTO / M99 P targets of each program of the file, keyed by the
+  // offset of the program's first block (macro_flow.cpp jump_to_label).
+  struct LabelIndex {
+    // Every N of the program sorted by (number, offset), found by one scan,
+    // when there are at most limits.max_label_index of them.
+    bool complete = false;
+    std::vector<std::pair<std::int64_t, gcode::SourcePos>> all;
+    // Otherwise the positions of each number asked for, one scan per number
+    // (a cache of at most kLabelCache numbers).
+    std::unordered_map<std::int64_t, std::vector<gcode::SourcePos>> asked;
+  };
+  static constexpr std::size_t kLabelCache = 4096;
+  std::unordered_map<std::uint64_t, LabelIndex> labels;
   // A false WHILE: the position after its END, keyed by the WHILE block's
   // offset, found by the first scan; later passes jump there at once.
   std::unordered_map<std::uint64_t, gcode::SourcePos> while_exits;

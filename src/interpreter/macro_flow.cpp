@@ -11,10 +11,13 @@
 // (the loop is dropped from the frame's loop stack when the target is
 // outside its WHILE..END range); jumping into a loop is refused by the END
 // that finds no matching DO.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <limits>
+#include <span>
+#include <vector>
 
 #include "core/file.hpp"
 #include "interpreter/impl.hpp"
@@ -304,48 +307,95 @@ Result<void> Interpreter::Impl::leave_loops_for(std::uint64_t target) {
   return {};
 }
 
+// One pass over the running program: `each(number, position)` for every
+// block with an N, in file order, until it returns false.
+template <class Each>
+Result<void> scan_program_labels(const Frame& f, const gcode::ParseLimits& limits, Each each) {
+  gcode::Source& src = *f.file->src;
+  auto s = src.seek(f.start);
+  if (!s) return s;
+  gcode::RawBlock rb;
+  gcode::Block b;
+  for (;;) {
+    const gcode::SourcePos at = src.tell();
+    auto more = src.next(rb);
+    if (!more) return std::unexpected(more.error());
+    if (!*more) break;
+    // Cheap test before parsing: only blocks with an N, or an O or '%'
+    // that ends the program, matter.
+    if (rb.text.find_first_of("NnOo:%") == std::string_view::npos) continue;
+    auto p = gcode::parse_block(rb.text, SourceLoc{f.file->display, rb.line, rb.column}, rb.offset,
+                                b, limits);
+    if (!p) continue;  // reported if the block is ever executed
+    if (b.percent || (b.has_o && at.offset != f.start.offset)) break;
+    if (b.has_n && !each(b.n, at)) break;
+  }
+  return {};
+}
+
+// GOTO n / M99 Pn: the first N n after the block at `from`, else the first
+// in the program (Fanuc searches forward, then from the top). The index
+// holds every label of a program up to limits.max_label_index (one scan,
+// then a binary search per jump); a larger program keeps only the numbers
+// asked for, each found by its own scan, so memory stays bounded whatever
+// the file's size (issue 21: a 1 GB program with a GOTO held every label).
 Result<void> Interpreter::Impl::jump_to_label(std::int64_t n, std::uint64_t from, SourceLoc where) {
   Frame& f = frames.back();
   gcode::Source& src = *f.file->src;
   auto [it, fresh] = f.file->labels.try_emplace(f.start.offset);
-  auto& table = it->second;
+  ProgramFile::LabelIndex& idx = it->second;
   if (fresh) {
-    // One pass over the running program: every N, in file order.
-    auto s = src.seek(f.start);
+    const auto cap = static_cast<std::size_t>(mc.limits.max_label_index);
+    bool over = false;
+    auto s = scan_program_labels(f, parse_limits, [&](std::int64_t num, gcode::SourcePos at) {
+      if (idx.all.size() == cap) {
+        over = true;
+        return false;
+      }
+      idx.all.emplace_back(num, at);
+      return true;
+    });
     if (!s) return s;
-    gcode::RawBlock rb;
-    gcode::Block b;
-    for (;;) {
-      const gcode::SourcePos at = src.tell();
-      auto more = src.next(rb);
-      if (!more) return std::unexpected(more.error());
-      if (!*more) break;
-      // Cheap test before parsing: only blocks with an N, or an O or '%'
-      // that ends the program, matter.
-      if (rb.text.find_first_of("NnOo:%") == std::string_view::npos) continue;
-      auto p = gcode::parse_block(rb.text, SourceLoc{f.file->display, rb.line, rb.column},
-                                  rb.offset, b, parse_limits);
-      if (!p) continue;  // reported if the block is ever executed
-      if (b.percent || (b.has_o && at.offset != f.start.offset)) break;
-      if (b.has_n) table.emplace_back(b.n, at);
+    if (over) {
+      idx.all.clear();
+      idx.all.shrink_to_fit();
+    } else {
+      // By number, then file order (the scan's order is the offsets').
+      std::stable_sort(idx.all.begin(), idx.all.end(),
+                       [](const auto& x, const auto& y) { return x.first < y.first; });
+      idx.complete = true;
     }
   }
-  // Forward from the block after `from`, then from the top.
+  // The positions of n, in file order.
+  std::span<const gcode::SourcePos> at_n;
+  std::vector<gcode::SourcePos> scratch;
+  if (idx.complete) {
+    auto lo = std::lower_bound(idx.all.begin(), idx.all.end(), n,
+                               [](const auto& e, std::int64_t v) { return e.first < v; });
+    for (auto e = lo; e != idx.all.end() && e->first == n; ++e) scratch.push_back(e->second);
+    at_n = scratch;
+  } else {
+    auto a = idx.asked.find(n);
+    if (a == idx.asked.end()) {
+      if (idx.asked.size() >= ProgramFile::kLabelCache) idx.asked.clear();
+      std::vector<gcode::SourcePos> found;
+      auto s = scan_program_labels(f, parse_limits, [&](std::int64_t num, gcode::SourcePos p) {
+        if (num == n) found.push_back(p);
+        return true;
+      });
+      if (!s) return s;
+      a = idx.asked.emplace(n, std::move(found)).first;
+    }
+    at_n = a->second;
+  }
   const gcode::SourcePos* found = nullptr;
-  for (const auto& [num, at] : table) {
-    if (num == n && at.offset > from) {
-      found = &at;
+  for (const gcode::SourcePos& p : at_n) {
+    if (p.offset > from) {
+      found = &p;
       break;
     }
   }
-  if (found == nullptr) {
-    for (const auto& [num, at] : table) {
-      if (num == n) {
-        found = &at;
-        break;
-      }
-    }
-  }
+  if (found == nullptr && !at_n.empty()) found = &at_n.front();
   if (found == nullptr) {
     return fail(AlarmId::kSequenceNotFound,
                 "sequence number N" + std::to_string(n) + " not found in this program", where);

@@ -1,19 +1,11 @@
-(GOTO searches forward from the next block first, then from the top of the)
-(program: with two N50, the one after the GOTO wins, else the first one)
-#1=0
-#2=0
-N50#1=#1+1
-IF[#1GE3]GOTO70
-GOTO50
-N50#2=#2+1
-GOTO50
-N70M98P2000
-M30
-O2000
-(N50 of the main program is not this program's)
-#3=1
-GOTO 80
-#3=2
-N80 #4=#3
-M99
-N50 #3=3
+(GOTO searches forward from the jump, then from the top: N10 is here twice. The first GOTO 10 goes forward to the second N10, the GOTO 10 after it finds none further on and goes to the first; three passes end at N30 with #100 = 3, #101 = 2; N20 never runs)
+G21 G90 G54
+#100 = 0
+#101 = 0
+N10 #100 = #100 + 1
+IF [#100 GE 3] GOTO 30
+GOTO 10
+N20 #101 = #101 + 100
+N10 #101 = #101 + 1
+IF [#101 LT 5] GOTO 10
+N30 M30
