@@ -91,6 +91,14 @@ void print_summary(std::FILE* f, const machine::RunResult& r, const Session& s,
     }
   }
   for (const auto& msg : r.messages) fmt::print(f, "  message: {}\n", msg);
+  // The --var values, as the report has them (vacant: no value).
+  for (const auto& [key, v] : r.variables) {
+    if (v) {
+      fmt::print(f, "  #{} = {:.4f}\n", key, *v);
+    } else {
+      fmt::print(f, "  #{} = vacant\n", key);
+    }
+  }
   fmt::print(f, "  final position {}\n", fmt_axes(r.final_work, m));
 }
 
@@ -209,6 +217,7 @@ int execute(const RunArgs& a, Session& s, interp::Setup setup, bool explain) {
   if (explain) return rc;
   std::FILE* out = is_stdout(a.report) || is_stdout(a.trace) ? stderr : stdout;
   if (in.result.alarm) std::cerr << "skipnc: " << describe(*in.result.alarm, &s.dialect) << "\n";
+  in.result.variables = in.variables;  // the summary prints them too
   if (!a.quiet) print_summary(out, in.result, s, a.program);
   for (const auto& why : failed) std::cerr << "skipnc: " << why << "\n";
   if (!expects.empty() && failed.empty() && !a.quiet) {

@@ -102,4 +102,16 @@ TEST(Where, CanonPrintsAFileLineWhereTheCommandsChangeFile) {
   EXPECT_EQ(lines[6], "6 STOP M30");
 }
 
+// The summary prints each --var as the report has it: a value to 0.1 um,
+// or vacant; a named variable with its #<name>.
+TEST(Where, SummaryPrintsTheVariablesAskedFor) {
+  const std::string nc = std::string(SKIPNC_SOURCE_DIR) + "/tests/golden/macro/goto_search.nc";
+  const auto r =
+      run_cli({"run", nc, "--var", "100", "--var", "#101", "--var", "102", "--var", "#<abc>"});
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  EXPECT_NE(r.out.find("\n  #100 = 3.0000\n  #101 = 2.0000\n  #102 = vacant\n  #<abc> = vacant\n"),
+            std::string::npos)
+      << r.out;
+}
+
 }  // namespace
