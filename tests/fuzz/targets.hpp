@@ -16,6 +16,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <memory>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -28,6 +29,7 @@
 #include "interpreter/interpreter.hpp"
 #include "machine/scene.hpp"
 #include "machine/simulator.hpp"
+#include "report/report.hpp"
 
 namespace skipnc::fuzz {
 
@@ -407,6 +409,22 @@ inline std::string check_run(const config::MachineConfig& m, const config::Diale
   auto r = sim.run(setup, {});
   if (!r) return {};  // could not start: an error value, nothing ran
   const machine::RunResult& res = *r;
+  // The report, as `skipnc run --report` writes it (issue 21: the JSON path
+  // is fuzzed too): whatever the program held, valid JSON.
+  {
+    report::ReportInput in;
+    in.program = setup.program_name;
+    in.dialect = d.name;
+    in.machine = &m;
+    in.dialect_table = &d;
+    in.result = res;
+    for (int n : {100, 5061, 5063}) {
+      auto v = sim.interpreter()->read_variable(n);
+      in.variables.emplace_back(std::to_string(n),
+                                v && !v->vacant ? std::optional<double>(v->v) : std::nullopt);
+    }
+    if (!nlohmann::json::accept(report::to_json(in))) return "the report is not valid JSON";
+  }
   if (res.ticks > m.limits.max_ticks + 1) return "the run passed its tick budget";
   if (res.status == machine::RunStatus::kAlarm) {
     if (!res.alarm) return "alarm status without an alarm";
