@@ -12,6 +12,8 @@
 #include <string>
 #include <vector>
 
+#include "cli/guard.hpp"
+#include "cli/outputs.hpp"
 #include "cli/session.hpp"
 #include "core/utf8.hpp"
 #include "interpreter/variables.hpp"
@@ -101,17 +103,13 @@ std::optional<double> read(const interp::Interpreter& in, int number) {
 int repeat_command(const RunArgs& a) {
   Session s;
   auto o = open_session(SessionOptions{a.machine, a.dialect, a.scene, a.params}, s);
-  if (!o) {
-    std::cerr << "skipnc: " << describe(o.error(), &s.dialect) << "\n";
-    return 2;
-  }
+  // A run that cannot start writes the report with its alarm too (was:
+  // none), as `run` without --repeat does.
+  if (!o) return start_failure(a, o.error(), &s);
   std::vector<VarRef> vars;
   for (const auto& v : a.vars) {
     auto r = parse_var_ref(v);
-    if (!r) {
-      std::cerr << "skipnc: " << describe(r.error(), &s.dialect) << "\n";
-      return 2;
-    }
+    if (!r) return start_failure(a, r.error(), &s);
     vars.push_back(*r);
   }
   interp::Setup setup;
@@ -121,8 +119,7 @@ int repeat_command(const RunArgs& a) {
   if (!s.machine.persistent_vars.empty()) {
     std::array<interp::Value, 500> kept{};
     if (auto r = interp::load_persistent(s.machine.persistent_vars, kept); !r) {
-      std::cerr << "skipnc: " << describe(r.error(), &s.dialect) << "\n";
-      return 2;
+      return start_failure(a, r.error(), &s);
     }
     for (std::size_t i = 0; i < kept.size(); ++i) {
       if (!kept[i].vacant) setup.variables.emplace_back(static_cast<int>(i) + 500, kept[i].v);
@@ -143,10 +140,7 @@ int repeat_command(const RunArgs& a) {
   std::vector<std::optional<double>> initial;
   {
     auto fresh = interp::Interpreter::create(setup, AxisVec{});
-    if (!fresh) {
-      std::cerr << "skipnc: " << describe(fresh.error(), &s.dialect) << "\n";
-      return 2;
-    }
+    if (!fresh) return start_failure(a, fresh.error(), &s);
     for (const auto& [number, label] : offsets) initial.push_back(read(**fresh, number));
   }
 
@@ -173,8 +167,19 @@ int repeat_command(const RunArgs& a) {
   std::vector<std::vector<std::optional<double>>> offset_values(offsets.size());
   int alarms = 0;
   std::string first_alarm;
-  const int runs = a.repeat;
+  int runs = a.repeat;
+  // SIGTERM / SIGINT end the repetitions: the report keeps the runs that
+  // finished, says "interrupted", and the exit status is 1 (was: the signal
+  // was not heard until every run had ended).
+  bool interrupted = false;
+  machine::RunOptions opts;
+  opts.interrupt = &run_stop().flag;
   for (int run = 0; run <= runs; ++run) {
+    if (run_stop().flag.load(std::memory_order_relaxed)) {
+      interrupted = true;
+      runs = run > 0 ? run - 1 : 0;  // the scattered runs that finished
+      break;
+    }
     const bool nominal = run == 0;
     machine::Scene scene = s.scene;
     if (scene.probing.probe) {
@@ -185,10 +190,12 @@ int repeat_command(const RunArgs& a) {
       }
     }
     machine::Simulator sim(s.machine, s.dialect, *s.params, scene);
-    auto res = sim.run(setup, machine::RunOptions{});
-    if (!res) {
-      std::cerr << "skipnc: " << describe(res.error(), &s.dialect) << "\n";
-      return 2;
+    auto res = sim.run(setup, opts);
+    if (!res) return start_failure(a, res.error(), &s);
+    if (res->status == machine::RunStatus::kInterrupted) {
+      interrupted = true;
+      runs = run > 0 ? run - 1 : 0;  // this run is cut short: not counted
+      break;
     }
     if (res->status != machine::RunStatus::kCompleted) {
       if (!nominal) ++alarms;
@@ -248,6 +255,7 @@ int repeat_command(const RunArgs& a) {
     std::string j = "{\n  \"format\": \"skipnc-repeat/1\",\n";
     j += "  \"program\": " + json_string(a.program) + ",\n";
     j += fmt::format("  \"runs\": {},\n  \"seed\": {},\n  \"alarms\": {},\n", runs, seed0, alarms);
+    j += fmt::format("  \"interrupted\": {},\n", interrupted ? "true" : "false");
     j += "  \"values\": [";
     for (std::size_t i = 0; i < series.size(); ++i) {
       const Series& se = series[i];
@@ -268,7 +276,7 @@ int repeat_command(const RunArgs& a) {
       return 1;
     }
   }
-  return alarms > 0 ? 1 : 0;
+  return alarms > 0 || interrupted ? 1 : 0;
 }
 
 }  // namespace skipnc::cli

@@ -81,5 +81,41 @@ TEST(RobustSignal, SigtermDuringAMacroLoopIsHeardAtOnce) {
   EXPECT_EQ(r.report.value("status", ""), "interrupted");
 }
 
+// --repeat: SIGTERM ends the repetitions (the run in progress stops at once)
+// and the report keeps what finished, with "interrupted": true and exit 1
+// (was: the signal waited for every run to end).
+TEST(RobustSignal, SigtermDuringRepeatLeavesAnInterruptedRepeatReport) {
+  TempDir dir;
+  const auto prog = dir.write("long.nc", kEndlessMotion);
+  const auto report = dir.path / "report.json";
+  Child c({"run", prog.string(), "--repeat", "1000", "--report", report.string(), "-q"},
+          "/dev/null", (dir.path / "stderr.txt").string());
+  std::this_thread::sleep_for(std::chrono::duration<double>(0.5));
+  c.signal(SIGTERM);
+  const ChildExit e = c.wait(10.0);
+  ASSERT_TRUE(e.exited) << "ended by signal " << e.signal;
+  EXPECT_FALSE(e.timed_out) << "the signal did not stop the repetitions";
+  EXPECT_EQ(e.code, 1);
+  const auto j = nlohmann::json::parse(read_file(report), nullptr, false);
+  ASSERT_TRUE(j.is_object());
+  EXPECT_EQ(j.value("format", ""), "skipnc-repeat/1");
+  EXPECT_EQ(j.value("interrupted", false), true);
+  EXPECT_EQ(j.value("runs", -1), 0);  // the nominal run was cut short: no scattered run
+}
+
+// --repeat with a program that cannot be opened writes the report with the
+// start alarm (SN9057), as a plain run does (was: no report).
+TEST(RobustSignal, RepeatThatCannotStartWritesItsReport) {
+  TempDir dir;
+  const auto report = dir.path / "report.json";
+  const auto r = run_cli(
+      {"run", (dir.path / "missing.nc").string(), "--repeat", "3", "--report", report.string()});
+  EXPECT_EQ(r.exit_code, 2);
+  const auto j = nlohmann::json::parse(read_file(report), nullptr, false);
+  ASSERT_TRUE(j.is_object());
+  EXPECT_EQ(j.value("status", ""), "alarm");
+  EXPECT_EQ(j["alarm"].value("code", ""), "SN9057");
+}
+
 }  // namespace
 }  // namespace skipnc::test
