@@ -395,7 +395,10 @@ Result<void> Compensator::block(const std::vector<canon::Stamped>& cmds, const B
         e.startup = true;
         e.start = plane(tool_);
       } else {
-        e.start = plane(tool_);  // the lookahead was broken: from where the tool is
+        // The lookahead was broken: a line goes from where the tool is; an
+        // arc starts on its offset circle, joined by a line.
+        e.start =
+            e.arc ? e.p0 + left(tangent(true, e.p0, e.p1, e.c, e.ccw, false)) * e.s : plane(tool_);
       }
       held_ = e;
       quiet_ = 0;
