@@ -46,6 +46,15 @@ std::string shorten(const std::string& text, std::size_t width) {
   return text.substr(0, width - 3) + "...";
 }
 
+// One line per warning: `warning (code): file:line: text`.
+void print_warnings(std::FILE* f, const machine::RunResult& r) {
+  for (const auto& w : r.warnings) {
+    fmt::print(f, "  warning ({}): {}: {}{}\n", w.code,
+               report::where(r.contexts, w.context, w.line), w.text,
+               w.count > 1 ? fmt::format(" ({} times)", w.count) : std::string());
+  }
+}
+
 void print_summary(std::FILE* f, const machine::RunResult& r, const Session& s,
                    const std::string& program) {
   const auto& m = s.machine;
@@ -62,12 +71,7 @@ void print_summary(std::FILE* f, const machine::RunResult& r, const Session& s,
       break;
   }
   fmt::print(f, " after {:.3f} s of machine time\n", r.time_s);
-  // Warnings before the alarm: one of them may be why it came.
-  for (const auto& w : r.warnings) {
-    fmt::print(f, "  warning ({}): {}: {}{}\n", w.code,
-               report::where(r.contexts, w.context, w.line), w.text,
-               w.count > 1 ? fmt::format(" ({} times)", w.count) : std::string());
-  }
+  print_warnings(f, r);  // before the alarm: one of them may be why it came
   if (r.alarm) {
     fmt::print(f, "  {}\n", describe(*r.alarm, &s.dialect));
     if (r.alarm_context != 0 && !r.contexts.empty())
@@ -520,10 +524,7 @@ int demo_command(const RunArgs& args) {
       "\n  first touch  #100 = {:.4f}\n  second touch #101 = {:.4f}  (slower, so it stops closer)\n"
       "  G54 Z offset #5223 = {:.4f}  (written by G10 L2 P1)\n",
       var(100), var(101), var(5223));
-  for (const auto& w : r.warnings) {
-    fmt::print("  warning ({}): {}: {}\n", w.code, report::where(r.contexts, w.context, w.line),
-               w.text);
-  }
+  print_warnings(stdout, r);
   for (const auto& m : r.messages) fmt::print("  message: {}\n", m);
   fmt::print("\n{} after {:.3f} s of machine time; final position {}\n",
              r.status == machine::RunStatus::kCompleted ? "Completed" : "Stopped by an alarm",

@@ -85,27 +85,29 @@ Result<void> Interpreter::Impl::init(const AxisVec& start) {
   return {};
 }
 
-// One entry per (code, context, line): a warning raised again by the same
-// block (a loop) counts up. At most kMaxWarnings places are kept.
+void add_warning(std::vector<Warning>& list, Warning w) {
+  for (Warning& have : list) {
+    if (have.line == w.line && have.context == w.context && have.code == w.code) {
+      ++have.count;
+      return;
+    }
+  }
+  if (list.size() == kMaxWarnings) {
+    list.push_back(Warning{"warnings_dropped", w.context, w.line,
+                           "more than " + std::to_string(kMaxWarnings) +
+                               " places raised warnings; later ones are not listed"});
+  }
+  if (list.size() > kMaxWarnings) return;
+  list.push_back(std::move(w));
+}
+
+// Under --strict the warning is the block's alarm.
 Result<void> Interpreter::Impl::warn(const char* code, std::string text, SourceLoc where) {
   if (setup.strict) {
     return fail(AlarmId::kStrictWarning, std::string(code) + ": " + text, where);
   }
-  constexpr std::size_t kMaxWarnings = 1000;
-  const std::uint32_t ctx = frames.empty() ? 0 : frames.back().context;
-  for (Warning& w : warnings) {
-    if (w.line == where.line && w.context == ctx && w.code == code) {
-      ++w.count;
-      return {};
-    }
-  }
-  if (warnings.size() == kMaxWarnings) {
-    warnings.push_back(Warning{"warnings_dropped", ctx, where.line,
-                               "more than " + std::to_string(kMaxWarnings) +
-                                   " places raised warnings; later ones are not listed"});
-  }
-  if (warnings.size() > kMaxWarnings) return {};
-  warnings.push_back(Warning{code, ctx, where.line, std::move(text)});
+  add_warning(warnings, Warning{code, frames.empty() ? 0 : frames.back().context, where.line,
+                                std::move(text)});
   return {};
 }
 

@@ -53,6 +53,12 @@ struct Warning {
   friend bool operator==(const Warning&, const Warning&) = default;
 };
 
+// Adds `w` to `list`, one entry per (code, context, line): raised again by
+// the same block it counts up. At most kMaxWarnings places are kept, then one
+// `warnings_dropped` says so. Used by the interpreter and the machine side.
+inline constexpr std::size_t kMaxWarnings = 1000;
+void add_warning(std::vector<Warning>& list, Warning w);
+
 class CommandSink {
  public:
   virtual ~CommandSink() = default;

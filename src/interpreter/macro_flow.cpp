@@ -16,7 +16,7 @@
 #include <cstdio>
 #include <cstring>
 #include <limits>
-#include <span>
+#include <utility>
 #include <vector>
 
 #include "core/file.hpp"
@@ -333,6 +333,19 @@ Result<void> scan_program_labels(const Frame& f, const gcode::ParseLimits& limit
   return {};
 }
 
+// Of positions in file order (`pos` of each element): the first after the
+// offset `from`, else the first; null when there is none.
+template <class It, class Pos>
+const gcode::SourcePos* first_after(It first, It last, std::uint64_t from, Pos pos) {
+  const gcode::SourcePos* any = nullptr;
+  for (; first != last; ++first) {
+    const gcode::SourcePos& p = pos(*first);
+    if (p.offset > from) return &p;
+    if (any == nullptr) any = &p;
+  }
+  return any;
+}
+
 // GOTO n / M99 Pn: the first N n after the block at `from`, else the first
 // in the program (Fanuc searches forward, then from the top). The index
 // holds every label of a program up to limits.max_label_index (one scan,
@@ -366,36 +379,29 @@ Result<void> Interpreter::Impl::jump_to_label(std::int64_t n, std::uint64_t from
       idx.complete = true;
     }
   }
-  // The positions of n, in file order.
-  std::span<const gcode::SourcePos> at_n;
-  std::vector<gcode::SourcePos> scratch;
+  const gcode::SourcePos* found = nullptr;
   if (idx.complete) {
-    auto lo = std::lower_bound(idx.all.begin(), idx.all.end(), n,
-                               [](const auto& e, std::int64_t v) { return e.first < v; });
-    for (auto e = lo; e != idx.all.end() && e->first == n; ++e) scratch.push_back(e->second);
-    at_n = scratch;
+    auto [lo, hi] = std::equal_range(
+        idx.all.begin(), idx.all.end(), std::pair<std::int64_t, gcode::SourcePos>{n, {}},
+        [](const auto& x, const auto& y) { return x.first < y.first; });
+    found = first_after(
+        lo, hi, from, [](const auto& e) -> const auto& { return e.second; });
   } else {
     auto a = idx.asked.find(n);
     if (a == idx.asked.end()) {
       if (idx.asked.size() >= ProgramFile::kLabelCache) idx.asked.clear();
-      std::vector<gcode::SourcePos> found;
+      std::vector<gcode::SourcePos> at_n;
       auto s = scan_program_labels(f, parse_limits, [&](std::int64_t num, gcode::SourcePos p) {
-        if (num == n) found.push_back(p);
+        if (num == n) at_n.push_back(p);
         return true;
       });
       if (!s) return s;
-      a = idx.asked.emplace(n, std::move(found)).first;
+      a = idx.asked.emplace(n, std::move(at_n)).first;
     }
-    at_n = a->second;
+    found = first_after(
+        a->second.begin(), a->second.end(), from,
+        [](const gcode::SourcePos& p) -> const auto& { return p; });
   }
-  const gcode::SourcePos* found = nullptr;
-  for (const gcode::SourcePos& p : at_n) {
-    if (p.offset > from) {
-      found = &p;
-      break;
-    }
-  }
-  if (found == nullptr && !at_n.empty()) found = &at_n.front();
   if (found == nullptr) {
     return fail(AlarmId::kSequenceNotFound,
                 "sequence number N" + std::to_string(n) + " not found in this program", where);

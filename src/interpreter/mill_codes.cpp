@@ -8,6 +8,7 @@
 // centre), B-63944EN: 5.1 canned cycles, 6.x scaling, coordinate system
 // rotation and mirror image; Fanuc 0i-A connection manual B-63503EN-1
 // (parameters 5400#0 RIN, 5410).
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <cstdio>
@@ -339,6 +340,12 @@ Result<crc::BlockMode> Interpreter::Impl::comp_mode(const BlockPlan& plan) const
 // at the machine's limit, as a control clamps to its feed upper limit; the
 // warning says to what. Arcs are not checked (their limit changes along them).
 Result<void> Interpreter::Impl::check_feeds(const AxisVec& start) {
+  // A feed no axis's max_feed is below cannot be clamped: most blocks stop
+  // here (this runs for every block).
+  double slowest = mc.axes[0].max_feed_mm_min;
+  for (int i = 1; i < axis_count; ++i) {
+    slowest = std::min(slowest, mc.axes[static_cast<std::size_t>(i)].max_feed_mm_min);
+  }
   AxisVec from = start;
   for (const canon::Stamped& c : block_buffer.cmds) {
     const AxisVec* to = nullptr;
@@ -360,6 +367,7 @@ Result<void> Interpreter::Impl::check_feeds(const AxisVec& start) {
     }
     const AxisVec d = *to - from;
     from = *to;
+    if (f <= slowest) continue;
     const double len = norm(d, axis_count);
     if (!(len > 0.0) || !(f > 0.0)) continue;
     double limit = f;

@@ -139,11 +139,11 @@ Result<Value> Interpreter::Impl::read_var(int n, SourceLoc where) {
     return axis_value(5001,
                       [&](int i) { return position_var(i, pos[i], sw.block_end_tool_offsets); });
   }
-  // #5021.. and #5041.. are where the tool is: under cutter compensation
-  // the programmed point plus the offset vector (docs/cutter-compensation.md).
-  const AxisVec tool = pos + comp.vector();
   // Lengths in program values: an X axis in diameter reads in diameter.
   const auto scale = [&](int i) { return axis_scale[static_cast<std::size_t>(i)]; };
+  // #5021.. and #5041.. are where the tool is: under cutter compensation
+  // the programmed point plus the offset vector (docs/cutter-compensation.md).
+  const auto tool = [&](int i) { return pos[i] + comp.vector()[i]; };
   if (n >= 5021 && n <= 5028) {
     // Machine lock and Z-axis cancel: the machine does not move, and its
     // machine coordinates stay where it is (the work position follows the
@@ -154,12 +154,12 @@ Result<Value> Interpreter::Impl::read_var(int n, SourceLoc where) {
         dialect.sw.z_cancel_param != 0 && params.get(dialect.sw.z_cancel_param) != 0.0;
     return axis_value(5021, [&](int i) {
       const bool held = lock || (z_cancel && axis_letter[static_cast<std::size_t>(i)] == 'Z');
-      return (held ? last_sync.actual_position[i] : tool[i]) * scale(i) / unit_mm();
+      return (held ? last_sync.actual_position[i] : tool(i)) * scale(i) / unit_mm();
     });
   }
   if (n >= 5041 && n <= 5048) {
     return axis_value(5041,
-                      [&](int i) { return position_var(i, tool[i], sw.current_tool_offsets); });
+                      [&](int i) { return position_var(i, tool(i), sw.current_tool_offsets); });
   }
   if (n >= 5061 && n <= 5068) {
     if (skip_missed_unread && where.line != 0) {

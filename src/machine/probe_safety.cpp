@@ -94,15 +94,8 @@ void ProbeSafety::warn_braking(const canon::Skip& s, const canon::Stamped& at) {
       immediate ? "immediate stop: following error + one servo period"
                 : "deceleration: v^2/2a + following error",
       limit, what);
-  for (interp::Warning& w : warnings_) {
-    if (w.line == at.line && w.context == at.source && w.code == "skip_braking") {
-      ++w.count;
-      return;
-    }
-  }
-  if (warnings_.size() < 1000) {
-    warnings_.push_back(interp::Warning{"skip_braking", at.source, at.line, std::move(text)});
-  }
+  interp::add_warning(warnings_,
+                      interp::Warning{"skip_braking", at.source, at.line, std::move(text)});
 }
 
 std::optional<SafetyAlarm> ProbeSafety::check_period(Plant& plant, const kernel::Kernel& k,

@@ -124,6 +124,47 @@ void place_json(ordered_json& o, const std::vector<interp::CallContext>& cs,
   o["where"] = known ? where(cs, ctx, line, n) : std::string();
 }
 
+// Structured warnings (docs/cli.md): what the run did that is not an alarm
+// but may not be what the program meant.
+ordered_json warnings_json(const machine::RunResult& r, const std::string& program) {
+  ordered_json out = ordered_json::array();
+  for (const auto& w : r.warnings) {
+    ordered_json o;
+    o["code"] = w.code;
+    place_json(o, r.contexts, program, w.context, w.line, -1, false);
+    o["text"] = w.text;
+    o["count"] = w.count;
+    out.push_back(o);
+  }
+  return out;
+}
+
+// Per-block timing: the machine's time in each place (file, line), in the
+// order the places first ran; a loop's block adds its runs. At most
+// kMaxBlockTimes places are listed (a CAM program of 100 000 lines still has
+// its cycle time and its first places).
+ordered_json block_times_json(const machine::RunResult& r, const std::string& program) {
+  constexpr std::size_t kMaxBlockTimes = 10000;
+  ordered_json times;
+  times["cycle_time"] = clean(r.time_s);
+  times["places"] = r.block_times.size();
+  const std::size_t listed = std::min(r.block_times.size(), kMaxBlockTimes);
+  times["listed"] = listed;
+  ordered_json blocks = ordered_json::array();
+  for (std::size_t i = 0; i < listed; ++i) {
+    const machine::BlockTime& b = r.block_times[i];
+    ordered_json o;
+    place_json(o, r.contexts, program, b.context, b.line, -1, false);
+    o["runs"] = b.runs;
+    o["start"] = clean(static_cast<double>(b.first) * r.period_s);
+    o["end"] = clean(static_cast<double>(b.last) * r.period_s);
+    o["time"] = clean(static_cast<double>(b.ticks) * r.period_s);
+    blocks.push_back(o);
+  }
+  times["blocks"] = blocks;
+  return times;
+}
+
 const char* ended_by(const interp::SkipRecord& s) {
   if (s.ended_by_alarm) return "alarm";
   if (!s.triggered) return "end_point";
@@ -228,41 +269,8 @@ std::string to_json(const ReportInput& in) {
   fin["time"] = clean(r.time_s);
   j["final"] = fin;
   j["messages"] = r.messages;
-  // Structured warnings (docs/cli.md): what the run did that is not an
-  // alarm but may not be what the program meant.
-  ordered_json warnings = ordered_json::array();
-  for (const auto& w : r.warnings) {
-    ordered_json o;
-    o["code"] = w.code;
-    place_json(o, r.contexts, in.program, w.context, w.line, -1, false);
-    o["text"] = w.text;
-    o["count"] = w.count;
-    warnings.push_back(o);
-  }
-  j["warnings"] = warnings;
-  // Per-block timing: the machine's time in each place (file, line), in the
-  // order the places first ran; a loop's block adds its runs. At most
-  // kMaxBlockTimes places are listed (a CAM program of 100 000 lines still
-  // has its cycle time and its first places).
-  constexpr std::size_t kMaxBlockTimes = 10000;
-  ordered_json times;
-  times["cycle_time"] = clean(r.time_s);
-  times["places"] = r.block_times.size();
-  const std::size_t listed = std::min(r.block_times.size(), kMaxBlockTimes);
-  times["listed"] = listed;
-  ordered_json blocks = ordered_json::array();
-  for (std::size_t i = 0; i < listed; ++i) {
-    const machine::BlockTime& b = r.block_times[i];
-    ordered_json o;
-    place_json(o, r.contexts, in.program, b.context, b.line, -1, false);
-    o["runs"] = b.runs;
-    o["start"] = clean(static_cast<double>(b.first) * r.period_s);
-    o["end"] = clean(static_cast<double>(b.last) * r.period_s);
-    o["time"] = clean(static_cast<double>(b.ticks) * r.period_s);
-    blocks.push_back(o);
-  }
-  times["blocks"] = blocks;
-  j["block_times"] = times;
+  j["warnings"] = warnings_json(r, in.program);
+  j["block_times"] = block_times_json(r, in.program);
   if (in.machine != nullptr) j["machine"] = in.machine->name;
   // Units of the numbers above: work positions and stored variables in the
   // program's units (G20/G21 at the end), machine positions in mm, times in s.
