@@ -272,10 +272,11 @@ void Compensator::send_line(const canon::Stamped& like, V2 to, std::vector<canon
   send(std::move(s), out);
 }
 
-Result<void> Compensator::send_entity(const Entity& e, V2 end, std::vector<canon::Stamped>& out) {
+Result<void> Compensator::send_entity(const Entity& e, V2 end, std::vector<canon::Stamped>& out,
+                                      bool check) {
   // Into the move's own start (an arc starts on its offset circle).
   send_line(e.cmd, e.start, out);
-  if (!e.arc && !e.startup) {
+  if (check && !e.arc && !e.startup) {
     // A compensated line that runs against its programmed direction cuts
     // into the part (FANUC PS0041 interference check).
     const V2 d = e.p1 - e.p0;
@@ -294,10 +295,10 @@ Result<void> Compensator::send_entity(const Entity& e, V2 end, std::vector<canon
 }
 
 Result<void> Compensator::send_held(const Corner& k, const canon::Stamped* next,
-                                    std::vector<canon::Stamped>& out) {
+                                    std::vector<canon::Stamped>& out, bool check) {
   const Entity e = *held_;
   held_.reset();
-  auto r = send_entity(e, k.end1, out);
+  auto r = send_entity(e, k.end1, out, check);
   if (!r) return r;
   for (canon::Stamped& d : deferred_) {
     if (AxisVec* t = target_of(d.cmd)) set_plane(*t, plane(tool_));
@@ -317,7 +318,9 @@ std::uint32_t Compensator::flush(std::vector<canon::Stamped>& out) {
     const V2 t1 = tangent(e.arc, e.p0, e.p1, e.c, e.ccw, true);
     Corner k;
     k.end1 = e.p1 + left(t1) * e.s;
-    (void)send_held(k, nullptr, out);  // a perpendicular end does not interfere
+    // Without the check it cannot fail: the held move and what follows it
+    // go out (before, a failed check here dropped them without a word).
+    (void)send_held(k, nullptr, out, false);
   }
   for (canon::Stamped& d : deferred_) send(std::move(d), out);
   deferred_.clear();

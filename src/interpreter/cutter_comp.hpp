@@ -96,9 +96,11 @@ class Compensator {
 
   Entity make(const canon::Stamped& cmd, const BlockMode& mode) const;
   Result<Corner> corner(const Entity& e1, const Entity& e2, Join join, bool type_b) const;
+  // `check`: the interference check of a line (not for a flush, which
+  // cannot refuse: what it holds must go out).
   Result<void> send_held(const Corner& k, const canon::Stamped* next_stamp,
-                         std::vector<canon::Stamped>& out);
-  Result<void> send_entity(const Entity& e, V2 end, std::vector<canon::Stamped>& out);
+                         std::vector<canon::Stamped>& out, bool check = true);
+  Result<void> send_entity(const Entity& e, V2 end, std::vector<canon::Stamped>& out, bool check);
   void send_line(const canon::Stamped& like, V2 to, std::vector<canon::Stamped>& out);
   void send(canon::Stamped c, std::vector<canon::Stamped>& out);
   V2 plane(const AxisVec& v) const noexcept { return {v[a0_], v[a1_]}; }
