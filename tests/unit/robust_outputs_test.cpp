@@ -197,6 +197,31 @@ TEST(RobustOutputs, TraceToAFullDeviceIsAnAlarm) {
   EXPECT_TRUE(fs::is_character_file("/dev/full"));
 }
 
+// `--trace - | head`: the reader goes away after three rows. The write that
+// fails (EPIPE) is the alarm file_access and the run stops; the report is
+// written whole (was: killed by SIGPIPE, exit 141, no report).
+TEST(RobustOutputs, TraceToAPipeClosedEarlyIsAnAlarmWithAReport) {
+  TempDir dir;
+  const auto prog = dir.write("long.nc", "G1 X100. F1000.\nM30\n");  // 6 s: 6000 rows
+  const auto report = dir.path / "r.json";
+  const auto status = dir.path / "status.txt";
+  const std::string cmd =
+      "bash -c " + shell_quote(shell_quote(SKIPNC_BINARY) + " run " + shell_quote(prog.string()) +
+                               " --trace - --report " + shell_quote(report.string()) +
+                               " 2>/dev/null | head -n 3 >/dev/null; echo "
+                               "${PIPESTATUS[0]} >" +
+                               shell_quote(status.string()));
+  ASSERT_EQ(std::system(cmd.c_str()), 0);
+  EXPECT_EQ(read_file(status), "1\n");
+  const auto j = parse(report);
+  ASSERT_FALSE(j.is_discarded()) << read_file(report);
+  EXPECT_EQ(j.value("status", ""), "alarm");
+  EXPECT_EQ(j["alarm"].value("code", ""), alarm_code(AlarmId::kFileAccess));
+  EXPECT_NE(j["alarm"].value("message", "").find("trace"), std::string::npos);
+  // Stopped early: the 100 mm move did not end.
+  EXPECT_LT(j["final"]["position"].value("X", 100.0), 99.0);
+}
+
 TEST(RobustOutputs, StandardOutputToAFullDeviceIsAnError) {
   TempDir dir;
   const auto prog = dir.write("m.nc", kShortMove);

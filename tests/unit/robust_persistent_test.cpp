@@ -238,5 +238,35 @@ TEST(RobustPersistent, SigtermSavesThePersistentVariablesAndTheDprntFile) {
   EXPECT_NE(read_file(dprnt).find("STARTED"), std::string::npos);
 }
 
+// A run that ends in an alarm (here the interrupted alarm of SIGTERM) and
+// then cannot write #500-#999 back (its folder was moved away while it ran): the run's alarm stays
+// the one it had, the report's messages say the variables were not saved, and the old file is left
+// as it was (was: the failed save was not said at all).
+TEST(RobustPersistent, AFailedSaveAfterAnAlarmIsSaidInTheReport) {
+  TempDir dir;
+  std::filesystem::create_directory(dir.path / "keep");
+  const auto vars = dir.write("keep/vars.dat", "#500 = 4\n");
+  const auto m = keeper_machine(dir, vars);
+  const auto prog = dir.write("p.nc", std::string("#500=#500+1\n") + kEndlessMotion);
+  const auto report = dir.path / "r.json";
+  Child c({"run", prog.string(), "-m", m.string(), "--report", report.string(), "-q"});
+  std::this_thread::sleep_for(std::chrono::milliseconds(500));
+  std::filesystem::rename(dir.path / "keep", dir.path / "moved");
+  c.signal(SIGTERM);
+  const auto e = c.wait(30.0);
+  ASSERT_TRUE(e.exited);
+  EXPECT_EQ(e.code, 1);
+  const auto j = nlohmann::json::parse(read_file(report), nullptr, false);
+  ASSERT_FALSE(j.is_discarded()) << read_file(report);
+  EXPECT_EQ(j.value("status", ""), "interrupted");
+  EXPECT_EQ(j["alarm"].value("key", ""), "interrupted") << j["alarm"].dump();
+  bool said = false;
+  for (const auto& msg : j["messages"]) {
+    said = said || msg.get<std::string>().find("persistent variables not saved") == 0;
+  }
+  EXPECT_TRUE(said) << j["messages"].dump();
+  EXPECT_EQ(read_file(dir.path / "moved" / "vars.dat"), "#500 = 4\n");
+}
+
 }  // namespace
 }  // namespace skipnc::test
