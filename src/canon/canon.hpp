@@ -82,9 +82,10 @@ struct SkipSpec {
   bool feed_fixed = true;            // feed override and dry run do not act (SKF = 0, Mitsubishi)
   bool override_zero_stops = false;  // with feed_fixed: override 0 % still stops (Mitsubishi)
   SkipLatch latch = SkipLatch::kExact;
-  double latch_delay_s = 0.0;    // kSampled only
-  bool servo_delay_comp = true;  // latch the actual (not the commanded) position
-  bool alarm_on_miss = false;    // K1
+  double latch_delay_s = 0.0;         // kSampled only
+  bool servo_delay_comp = true;       // latch the actual (not the commanded) position
+  bool locked_stores_command = true;  // a locked axis (machine lock) stores its command
+  bool alarm_on_miss = false;         // K1
 };
 
 struct Skip {

@@ -430,6 +430,8 @@ int dialects_command() {
     for (const auto& [on, text] :
          {std::pair{sw.skip_g53_allowed, "G31 G53: target in machine coordinates"},
           std::pair{sw.skip_ignored_when_locked, "skip ignored in machine lock / Z-axis cancel"},
+          std::pair{!sw.skip_ignored_when_locked && !sw.skip_locked_stores_command,
+                    "a skip in machine lock stores where the machine stands"},
           std::pair{sw.tool_position_offset, "G45-G48 tool offsets enter #5061.."},
           std::pair{sw.skip_requires_axis, "G31 without an axis word is a format error"},
           std::pair{!d->handshake.empty(), "PLC handshake in the trace"}}) {

@@ -90,6 +90,7 @@ Result<void> load_switches(const toml::table& t, std::string_view origin, Switch
       {"skip_requires_axis", &sw.skip_requires_axis},
       {"skip_g53_allowed", &sw.skip_g53_allowed},
       {"skip_ignored_when_locked", &sw.skip_ignored_when_locked},
+      {"skip_locked_stores_command", &sw.skip_locked_stores_command},
       {"torque_skip", &sw.torque_skip},
       {"tool_position_offset", &sw.tool_position_offset},
       {"g_same_group_last_wins", &sw.g_same_group_last_wins},

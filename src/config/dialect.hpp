@@ -99,15 +99,18 @@ struct Switches {
   bool skip_requires_axis = false;        // G31 without an axis word is a format error (NCT)
   bool skip_g53_allowed = false;          // CompassNC: G31 G53 targets machine coordinates
   bool skip_ignored_when_locked = false;  // Mitsubishi: machine lock / Z-axis cancel
-  bool torque_skip = true;                // P98/P99 available
-  int torque_q_param = 0;                 // 6280: Q when omitted
-  int torque_delay_param = 0;             // 6281: detection delay, ms
-  int sync_axes_param = 0;                // axes under synchronous control (bit per axis)
-  int machine_lock_param = 0;             // skipnc: machine lock switch
-  int z_cancel_param = 0;                 // skipnc: Z-axis cancel switch
-  int dry_run_feed_param = 0;             // dry-run feed, mm/min
-  int block_delete_param = 0;             // skipnc: block delete switches /1../9 (bit n-1)
-  bool tool_position_offset = false;      // G45-G48 exist (NCT)
+  // An axis held by machine lock / Z-axis cancel stores its command position
+  // at the signal (true) or the machine's, which does not move (false).
+  bool skip_locked_stores_command = true;
+  bool torque_skip = true;            // P98/P99 available
+  int torque_q_param = 0;             // 6280: Q when omitted
+  int torque_delay_param = 0;         // 6281: detection delay, ms
+  int sync_axes_param = 0;            // axes under synchronous control (bit per axis)
+  int machine_lock_param = 0;         // skipnc: machine lock switch
+  int z_cancel_param = 0;             // skipnc: Z-axis cancel switch
+  int dry_run_feed_param = 0;         // dry-run feed, mm/min
+  int block_delete_param = 0;         // skipnc: block delete switches /1../9 (bit n-1)
+  bool tool_position_offset = false;  // G45-G48 exist (NCT)
   // The bit that turns the in-position check at the end of a rapid off
   // (Fanuc 1601#5 NCI); 0: always on.
   // How many skip inputs (SKIP, SKIP2, ...) skip_signal_param's TSG and SK0

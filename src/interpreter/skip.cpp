@@ -229,6 +229,7 @@ Result<Step> Interpreter::Impl::skip_block(const Words& words, const AxisVec& ta
   spec.latch = mc.latch;
   spec.latch_delay_s = mc.latch_delay_s;
   spec.servo_delay_comp = mc.servo_delay_comp;
+  spec.locked_stores_command = sw.skip_locked_stores_command;
   if (sw.skip_ignored_when_locked) {
     // Mitsubishi (8): machine lock, or a Z-only G31 with the Z-axis cancel
     // switch on: the skip signal is ignored and the block runs to its end.

@@ -120,7 +120,7 @@ void Kernel::trigger(double frac, const TickInput& in, int input, bool torque) n
     handshake_.recorded = true;
     return;
   }
-  skip_.latch_machine = skip_.spec.servo_delay_comp ? skip_.latch_actual : skip_.latch_command;
+  skip_.latch_machine = stored_latch();
   // Torque limit skip ended by the SKIP signal (P99): the variables hold the
   // coordinates where the machine stopped, not those at the signal (Fanuc 30i).
   latch_at_stop_ = skip_.spec.kind == canon::SkipKind::kTorque;
@@ -135,6 +135,22 @@ void Kernel::trigger(double frac, const TickInput& in, int input, bool torque) n
   }
   if (!latch_at_stop_) handshake_.recorded = true;
   begin_stop();
+}
+
+// The point the control stores for a signal: the actual position (servo
+// delay compensated) or the command. An axis that does not move (machine
+// lock, Z-axis cancel) stores its command when the dialect says so: the
+// position the control counts, as its work position does
+// (docs/skip-dialects.md, `skip_locked_stores_command`).
+AxisVec Kernel::stored_latch() const noexcept {
+  const canon::SkipSpec& spec = skip_.spec;
+  AxisVec p = spec.servo_delay_comp ? skip_.latch_actual : skip_.latch_command;
+  if (spec.locked_stores_command && !locked_.empty()) {
+    for (int i = 0; i < kMaxAxes; ++i) {
+      if (locked_.has(i)) p[i] = skip_.latch_command[i];
+    }
+  }
+  return p;
 }
 
 void Kernel::begin_stop() noexcept {
@@ -237,7 +253,7 @@ void Kernel::monitor_skip(const TickInput& in) noexcept {
       const double frac = std::fmin(1.0, std::fmax(0.0, (skip_latch_due_s_ - t0) / (t1 - t0)));
       skip_.latch_actual = lerp(actual_prev_, in.actual, frac);
       skip_.latch_command = lerp(cmd_prev_, cmd_, frac);
-      skip_.latch_machine = spec.servo_delay_comp ? skip_.latch_actual : skip_.latch_command;
+      skip_.latch_machine = stored_latch();
       skip_.time_s = skip_latch_due_s_;
       skip_latch_pending_ = false;
       handshake_.recorded = true;

@@ -156,6 +156,7 @@ class Kernel {
   void monitor_skip(const TickInput& in) noexcept;
   void start_skip_block(const TickInput& in) noexcept;
   void trigger(double frac, const TickInput& in, int input, bool torque) noexcept;
+  AxisVec stored_latch() const noexcept;
   void begin_stop() noexcept;  // the skip's stop, once the control has seen the signal
   double advance_time_scale() noexcept;
   // Most periods: no hold, no dry run, override 100 % and both ramp factors

@@ -46,6 +46,7 @@ Outcome Rig::run(const std::string& program) const {
   o.machine = std::make_unique<config::MachineConfig>(std::move(*m));
   o.machine->dialect = dialect_;
   for (const auto& f : edits_) f(*o.machine);
+  for (const auto& f : switch_edits_) f(o.dialect->sw);
   o.params = std::make_unique<config::Parameters>(o.dialect.get());
   for (const auto& p : o.machine->params) {
     auto r = o.params->apply(p);

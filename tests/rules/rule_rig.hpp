@@ -96,6 +96,12 @@ class Rig {
     edits_.push_back(std::move(f));
     return *this;
   }
+  // Changes to the dialect's switches (what a dialect file inheriting the
+  // built-in one would say).
+  Rig& switches(std::function<void(config::Switches&)> f) {
+    switch_edits_.push_back(std::move(f));
+    return *this;
+  }
   Rig& traced() {
     trace_ = true;
     return *this;
@@ -108,6 +114,7 @@ class Rig {
   std::vector<std::string> params_;
   std::string scene_;
   std::vector<std::function<void(config::MachineConfig&)>> edits_;
+  std::vector<std::function<void(config::Switches&)>> switch_edits_;
   bool trace_ = false;
 };
 

@@ -73,10 +73,13 @@ Rig pulse_during(const char* dialect) {
 }
 
 TEST(Rules, rule_35_mitsubishi_machine_lock_ignores_the_skip_signal) {
-  const Outcome o =
-      pulse_during("mitsubishi").param("90010=1").run("G21 G90 G54 G31 Z-10. F600.\nM30\n");
+  const Outcome o = pulse_during("mitsubishi")
+                        .param("90010=1")
+                        .run("G21 G90 G54 G31 Z-10. F600.\n#100=#5063\n#101=#5023\nM30\n");
   ASSERT_TRUE(o.completed()) << o.alarm_code();
   EXPECT_FALSE(o.skip().triggered);
+  EXPECT_NEAR(o.var(100), -10.0, kUm) << "#5063: the block's end point, as after any miss";
+  EXPECT_NEAR(o.var(101), 0.0, kUm) << "#5023: the machine stands still";
   EXPECT_NEAR(o.skip().end_position[2], -10.0, kUm) << "runs to the end of the block";
   EXPECT_NEAR(o.r.final_machine[2], -10.0, kUm) << "the command moves; the axes do not";
 }
@@ -105,6 +108,47 @@ TEST(Rules, rule_35_fanuc_machine_lock_still_monitors_the_skip_signal) {
   ASSERT_TRUE(o.completed()) << o.alarm_code();
   EXPECT_TRUE(o.skip().triggered) << "the manual does not say otherwise";
   EXPECT_NEAR(o.skip().time_s, 0.2, 1e-9);
+}
+
+// Machine lock on a control that still monitors the skip: the machine does
+// not move, the command does. The skip stores the command at the signal --
+// the work position the control counts, as #5043 shows -- while the machine
+// coordinates stay where the machine stands (skipnc's decision where no
+// manual says: base.toml skip_locked_stores_command). Was: #5063 = 0, the
+// machine's position, beside #5043 = -1.99.
+TEST(Rules, rule_35_fanuc_machine_lock_stores_the_command_at_the_signal) {
+  const char* program = "G21 G90 G54 G31 Z-10. F600.\n#100=#5063\n#101=#5023\n#102=#5043\nM30\n";
+  const Outcome o = pulse_during("fanuc").param("90010=1").run(program);
+  ASSERT_TRUE(o.completed()) << o.alarm_code();
+  ASSERT_TRUE(o.skip().triggered);
+  // 10 mm/s without acceleration (SKF = 0) for 0.2 s, less the period in
+  // which the block starts.
+  EXPECT_NEAR(o.var(100), -1.99, kUm);
+  EXPECT_NEAR(o.var(101), 0.0, kUm) << "the machine stands still";
+  EXPECT_NEAR(o.var(102), -1.99, kUm) << "the work position follows the command";
+  const Outcome machine =
+      pulse_during("fanuc")
+          .param("90010=1")
+          .switches([](config::Switches& sw) { sw.skip_locked_stores_command = false; })
+          .run(program);
+  ASSERT_TRUE(machine.completed()) << machine.alarm_code();
+  EXPECT_NEAR(machine.var(100), 0.0, kUm) << "the switch off: where the machine stands";
+}
+
+// Z-axis cancel holds Z only: X stores its actual position at the signal
+// (servo delay compensated), Z its command.
+TEST(Rules, rule_35_fanuc_z_cancel_stores_the_command_of_the_held_axis_only) {
+  const Outcome o = pulse_during("fanuc").param("90011=1").run(
+      "G21 G90 G54 G31 X10. Z-10. F600.\n#100=#5061\n#101=#5063\n#102=#5021\n#103=#5023\nM30\n");
+  ASSERT_TRUE(o.completed()) << o.alarm_code();
+  ASSERT_TRUE(o.skip().triggered);
+  // Along X10 Z-10 at 10 mm/s: each axis at 10/sqrt(2) mm/s.
+  const double along = 1.99 / std::sqrt(2.0);
+  EXPECT_NEAR(o.var(101), -along, kUm) << "Z: the command";
+  EXPECT_NEAR(o.var(103), 0.0, kUm) << "Z does not move";
+  EXPECT_NEAR(o.var(100), o.skip().machine_position[0], kUm);
+  EXPECT_LT(o.var(100), along) << "X: the actual position, behind the command";
+  EXPECT_GT(o.var(100), 0.0);
 }
 
 void g54_x100(config::MachineConfig& m) {

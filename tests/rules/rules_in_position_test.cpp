@@ -32,6 +32,26 @@ TEST(InPosition, G31AfterARapidStartsFromWhereTheRapidSettled) {
   }
 }
 
+// The third case of the issue: a fast touch, a 1 mm G00 back-off, a slow
+// touch. The slow G31 starts once the back-off has settled above the
+// surface, so it stores the surface itself (was -228.97: the slow G31
+// started while the axis still lagged below it, with the input on).
+TEST(InPosition, SlowTouchAfterAOneMillimetreBackOffStoresTheSurface) {
+  const Outcome o = Rig()
+                        .trigger("X0.4", 'Z', -228.87)
+                        .run(
+                            "G21 G90 G54 G0 Z-200.\nG31 Z-240. F500.\n#100=#5063\nG91 G0 Z1.\n"
+                            "G90 G31 Z-240. F20.\n#101=#5063\nM30\n");
+  ASSERT_TRUE(o.completed()) << o.alarm_code();
+  ASSERT_EQ(o.skip_count(), 2U);
+  EXPECT_TRUE(o.skip(0).triggered);
+  EXPECT_TRUE(o.skip(1).triggered);
+  EXPECT_NEAR(o.var(100), -228.87, kUm) << "fast touch";
+  EXPECT_NEAR(o.var(101), -228.87, kUm) << "slow touch";
+  // The slow touch moved: it started 1 mm above where the fast one stopped.
+  EXPECT_GT(o.skip(1).time_s - o.skip(0).time_s, 0.5);
+}
+
 // With the check turned off for rapids (Fanuc 1601#5 NCI = 1) the next
 // block starts as soon as the command reaches the G00's end, with the axis
 // still lagging by millimetres; with it on (the default) the axis is within
