@@ -211,7 +211,7 @@ std::optional<Fault> function_value(gcode::Func fn, double x, const double* y,
 
 }  // namespace
 
-Result<int> Interpreter::Impl::var_number(gcode::ExprId lhs) {
+Flow<int> Interpreter::Impl::var_number(gcode::ExprId lhs) {
   const gcode::ExprNode& n = blk.nodes[static_cast<std::size_t>(lhs)];
   auto v = eval(n.a);
   if (!v) return std::unexpected(v.error());
@@ -223,7 +223,7 @@ Result<int> Interpreter::Impl::var_number(gcode::ExprId lhs) {
   return static_cast<int>(x);
 }
 
-Result<void> Interpreter::Impl::assign(gcode::ExprId lhs, Value v) {
+Flow<void> Interpreter::Impl::assign(gcode::ExprId lhs, Value v) {
   const gcode::ExprNode& n = blk.nodes[static_cast<std::size_t>(lhs)];
   if (!v.vacant && !std::isfinite(v.v)) {
     return fail(AlarmId::kOverflow, "the value to store is not a finite number", loc(n.column));
@@ -299,14 +299,14 @@ bool Interpreter::Impl::eval_plain(gcode::ExprId id, Value& out) const noexcept 
   return true;
 }
 
-Result<Value> Interpreter::Impl::eval(gcode::ExprId id) {
+Flow<Value> Interpreter::Impl::eval(gcode::ExprId id) {
   Value v;
   if (eval_plain(id, v)) return v;
   return eval_general(id);
 }
 
 // Every rule, with its alarms (eval_plain is the fast path of the same rules).
-Result<Value> Interpreter::Impl::eval_general(gcode::ExprId id) {
+Flow<Value> Interpreter::Impl::eval_general(gcode::ExprId id) {
   if (id < 0 || static_cast<std::size_t>(id) >= blk.nodes.size()) {
     return fail(AlarmId::kMacroFormat, "missing expression", loc(cur_col));
   }

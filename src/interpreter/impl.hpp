@@ -20,7 +20,9 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <type_traits>
 #include <unordered_map>
+#include <variant>
 #include <vector>
 
 #include "gcode/ast.hpp"
@@ -191,6 +193,35 @@ struct PendingSkip {
   double g37_epsilon = 0.0;  // G37: the allowed range, mm
 };
 
+// The block executor's outcome: a value, an alarm, or NeedSync. NeedSync is
+// not an alarm: the block read a live value (#5021.., #5041.., a skip
+// result) while motion it had queued was still to run. Nothing of the block
+// is committed; step() answers Step::kSync, and after sync() the same block
+// runs again with the machine's values.
+struct NeedSync {};
+using Halt = std::variant<Error, NeedSync>;
+template <class T>
+using Flow = std::expected<T, Halt>;
+
+inline std::unexpected<Halt> need_sync() {
+  return std::unexpected<Halt>(NeedSync{});
+}
+
+// The interpreter's public face returns alarms only: a NeedSync reaching it
+// means a live value was read outside a block, a bug, said as one.
+template <class T>
+Result<T> settled(Flow<T> f) {
+  if (f) {
+    if constexpr (std::is_void_v<T>) {
+      return {};
+    } else {
+      return std::move(*f);
+    }
+  }
+  if (auto* e = std::get_if<Error>(&f.error())) return std::unexpected(std::move(*e));
+  return fail(AlarmId::kInternal, "a live value was read outside a block");
+}
+
 struct Interpreter::Impl {
   Setup setup;
   const config::MachineConfig& mc;
@@ -211,8 +242,7 @@ struct Interpreter::Impl {
   gcode::SourcePos block_pos;  // position of the current block
   Pending pending = Pending::kNone;
   PendingSkip pending_skip;
-  bool rerun = false;      // re-executing the block after a sync
-  bool need_sync = false;  // set by a read of a live value
+  bool rerun = false;  // re-executing the block after a sync
   bool motion_since_sync = false;
   bool ended = false;
   std::uint32_t cur_line = 0;
@@ -265,7 +295,7 @@ struct Interpreter::Impl {
   // Structured warnings (interpreter.hpp Warning); under --strict warn()
   // fails instead, so the block that raised it ends the run.
   std::vector<Warning> warnings;
-  Result<void> warn(const char* code, std::string text, SourceLoc where);
+  Flow<void> warn(const char* code, std::string text, SourceLoc where);
   // The last skip ran to its end point without a signal and #5061.. has not
   // been read since (warning skip_missed_read).
   bool skip_missed_unread = false;
@@ -308,84 +338,83 @@ struct Interpreter::Impl {
   ~Impl();
 
   // interpreter.cpp
-  Result<void> init(const AxisVec& start);
-  Result<Step> step(CommandSink& out);
-  Result<Step> step_block(CommandSink& out);
-  Result<Step> execute(CommandSink& out);
-  Result<bool> read_block();
-  Result<void> sync(const SyncState& s);
+  Flow<void> init(const AxisVec& start);
+  Flow<Step> step(CommandSink& out);
+  Flow<Step> step_block(CommandSink& out);
+  Flow<Step> execute(CommandSink& out);
+  Flow<bool> read_block();
+  Flow<void> sync(const SyncState& s);
   SourceLoc loc(std::uint32_t column) const noexcept {
     return SourceLoc{frames.empty() ? std::string_view(setup.program_name)
                                     : std::string_view(frames.back().file->display),
                      cur_line, column};
   }
-  Result<void> count_statement(SourceLoc where);
+  Flow<void> count_statement(SourceLoc where);
 
   // macro_flow.cpp
-  Result<Step> execute_statement(CommandSink& out);
-  Result<bool> condition(gcode::ExprId cond, SourceLoc where);
+  Flow<Step> execute_statement(CommandSink& out);
+  Flow<bool> condition(gcode::ExprId cond, SourceLoc where);
   // GOTO / M99 P: the first N n after the block at offset `from`, else the first one.
-  Result<void> jump_to_label(std::int64_t n, std::uint64_t from, SourceLoc where);
-  Result<void> find_loop_end(Loop& l);
-  Result<void> leave_loops_for(std::uint64_t target);
-  Result<void> print_line(SourceLoc where);
+  Flow<void> jump_to_label(std::int64_t n, std::uint64_t from, SourceLoc where);
+  Flow<void> find_loop_end(Loop& l);
+  Flow<void> leave_loops_for(std::uint64_t target);
+  Flow<void> print_line(SourceLoc where);
   Result<void> write_dprnt() const;
 
   // macro_call.cpp
-  Result<void> find_program(std::int64_t number, ProgramFile*& file, gcode::SourcePos& pos,
-                            SourceLoc where);
-  Result<void> call(std::int64_t program, int repeats, bool macro, SourceLoc where,
-                    bool modal_call = false);
+  Flow<void> find_program(std::int64_t number, ProgramFile*& file, gcode::SourcePos& pos,
+                          SourceLoc where);
+  Flow<void> call(std::int64_t program, int repeats, bool macro, SourceLoc where,
+                  bool modal_call = false);
   std::uint32_t context_of(CallContext c);  // index of c, added when new
-  Result<Step> return_from_sub(std::optional<std::int64_t> label, SourceLoc where);
-  Result<void> macro_call(std::int64_t program, int repeats, bool modal_call, SourceLoc where);
-  Result<void> collect_argument(const gcode::Word& w, const WordVal& v, int& ijk_set,
-                                int& ijk_last);
+  Flow<Step> return_from_sub(std::optional<std::int64_t> label, SourceLoc where);
+  Flow<void> macro_call(std::int64_t program, int repeats, bool modal_call, SourceLoc where);
+  Flow<void> collect_argument(const gcode::Word& w, const WordVal& v, int& ijk_set, int& ijk_last);
   bool in_modal_call() const noexcept;
 
   // expr.cpp
-  Result<Value> eval(gcode::ExprId id);
-  Result<Value> eval_general(gcode::ExprId id);
+  Flow<Value> eval(gcode::ExprId id);
+  Flow<Value> eval_general(gcode::ExprId id);
   bool eval_plain(gcode::ExprId id, Value& out) const noexcept;
-  Result<int> var_number(gcode::ExprId lhs);
-  Result<void> assign(gcode::ExprId lhs, Value v);
+  Flow<int> var_number(gcode::ExprId lhs);
+  Flow<void> assign(gcode::ExprId lhs, Value v);
 
   // sysvars.cpp
-  Result<Value> read_var(int n, SourceLoc where);
-  Result<void> write_var(int n, Value v, SourceLoc where);
+  Flow<Value> read_var(int n, SourceLoc where);
+  Flow<void> write_var(int n, Value v, SourceLoc where);
   double* tool_field(int n) noexcept;
-  Result<Value> read_named_var(const std::string& name, SourceLoc where);
-  Result<void> write_named_var(const std::string& name, Value v, SourceLoc where);
+  Flow<Value> read_named_var(const std::string& name, SourceLoc where);
+  Flow<void> write_named_var(const std::string& name, Value v, SourceLoc where);
 
   // ncblock.cpp
-  Result<void> collect_words(Words& words);
-  Result<Step> execute_nc(const Words& words, CommandSink& out);
-  Result<void> plan_block(const Words& words, BlockPlan& plan);
-  Result<void> plan_g_codes(const Words& words, BlockPlan& plan);
-  Result<void> plan_one_shot(const CodeDef& def, std::uint32_t col, BlockPlan& plan);
-  Result<void> plan_call(const Words& words, BlockPlan& plan);
-  Result<void> plan_addresses(const Words& words) const;
-  Result<void> plan_mill(BlockPlan& plan) const;
+  Flow<void> collect_words(Words& words);
+  Flow<Step> execute_nc(const Words& words, CommandSink& out);
+  Flow<void> plan_block(const Words& words, BlockPlan& plan);
+  Flow<void> plan_g_codes(const Words& words, BlockPlan& plan);
+  Flow<void> plan_one_shot(const CodeDef& def, std::uint32_t col, BlockPlan& plan);
+  Flow<void> plan_call(const Words& words, BlockPlan& plan);
+  Flow<void> plan_addresses(const Words& words) const;
+  Flow<void> plan_mill(BlockPlan& plan) const;
   void plan_cycle(BlockPlan& plan) const;
-  Result<void> plan_modal(const Words& words, BlockPlan& plan);
-  Result<int> offset_number(const Words& words, char letter) const;
-  Result<Step> commit_block(const Words& words, const BlockPlan& plan, CommandSink& out);
+  Flow<void> plan_modal(const Words& words, BlockPlan& plan);
+  Flow<int> offset_number(const Words& words, char letter) const;
+  Flow<Step> commit_block(const Words& words, const BlockPlan& plan, CommandSink& out);
   void commit_messages();
-  Result<Step> commit_call(const BlockPlan& plan);
+  Flow<Step> commit_call(const BlockPlan& plan);
   void commit_modal(const Words& words, const BlockPlan& plan, CommandSink& out);
-  Result<void> commit_tool(const Words& words, const BlockPlan& plan, const ModalState& before,
-                           CommandSink& out);
+  Flow<void> commit_tool(const Words& words, const BlockPlan& plan, const ModalState& before,
+                         CommandSink& out);
   void commit_spindle(const Words& words, bool changed, CommandSink& out);
   void commit_shift(const Words& words, bool local);
   void commit_tool_pos_offset(const Words& words, int g);
   void commit_cycle_start(const ModalState& before);
-  Result<std::optional<Step>> commit_mill(const Words& words, const BlockPlan& plan,
-                                          CommandSink& out, bool& moved);
-  Result<Step> commit_action(const Words& words, const BlockPlan& plan, CommandSink& out,
-                             bool& moved);
-  Result<std::optional<Step>> commit_m_codes(const Words& words, CommandSink& out);
-  Result<Step> commit_sub_call(const Words& words);
-  Result<Step> commit_sub_return(const Words& words);
+  Flow<std::optional<Step>> commit_mill(const Words& words, const BlockPlan& plan, CommandSink& out,
+                                        bool& moved);
+  Flow<Step> commit_action(const Words& words, const BlockPlan& plan, CommandSink& out,
+                           bool& moved);
+  Flow<std::optional<Step>> commit_m_codes(const Words& words, CommandSink& out);
+  Flow<Step> commit_sub_call(const Words& words);
+  Flow<Step> commit_sub_return(const Words& words);
   BlockUndo save_block_state() const;
   void restore_block_state(const BlockUndo& u);
   double unit_mm() const noexcept { return modal.units == Units::kInch ? 25.4 : 1.0; }
@@ -398,8 +427,8 @@ struct Interpreter::Impl {
   // (the tool reference point) when the dialect says so for that variable.
   double position_var(int axis, double machine_mm, bool tool_offsets) const noexcept;
   double machine_of(int axis, double work_units) const noexcept;  // mm
-  Result<void> set_tool_length(const Words& words, LengthComp mode);
-  Result<void> data_setting(const Words& words, SourceLoc where);
+  Flow<void> set_tool_length(const Words& words, LengthComp mode);
+  Flow<void> data_setting(const Words& words, SourceLoc where);
 
   // mill_codes.cpp
   // The G31.n of the block being executed (0: G31 or no skip), for skip_block.
@@ -408,36 +437,36 @@ struct Interpreter::Impl {
   static constexpr int kSkipStepParam = 1175;
   // G37: a dialect has it when it defines epsilon (mill_codes.cpp).
   static constexpr int kG37EpsilonParam = 6254;
-  Result<bool> mill_code(int code, SourceLoc at, MillRequest& req) const;
-  Result<bool> apply_frame_code(const Words& words, const MillRequest& req);
+  Flow<bool> mill_code(int code, SourceLoc at, MillRequest& req) const;
+  Flow<bool> apply_frame_code(const Words& words, const MillRequest& req);
   bool frame_active() const noexcept { return polar || frame.active(); }
-  Result<void> frame_targets(const Words& words, AxisVec& target, AxisMask& moved);
+  Flow<void> frame_targets(const Words& words, AxisVec& target, AxisMask& moved);
   // Cutter radius compensation (cutter_comp.hpp): the block's commands go
   // through the compensator when G41/G42 is active or a vector is left.
   crc::Compensator comp;
   std::vector<canon::Stamped> comp_out;  // reused
-  Result<crc::BlockMode> comp_mode(const BlockPlan& plan) const;
-  Result<void> check_feeds(const AxisVec& start);  // warning feed_clamped
-  Result<void> pass_block(const BlockPlan& plan, const AxisVec& start, CommandSink& out);
+  Flow<crc::BlockMode> comp_mode(const BlockPlan& plan) const;
+  Flow<void> check_feeds(const AxisVec& start);  // warning feed_clamped
+  Flow<void> pass_block(const BlockPlan& plan, const AxisVec& start, CommandSink& out);
   // Returns the line of the move it ended perpendicular (0: nothing held).
   std::uint32_t flush_comp(CommandSink& out);
   // Moves the compensator does not offset: refused under G41/G42 (canned
   // cycles, G37) and, on a lathe, tool nose radius compensation.
-  Result<void> refuse_under_comp(const char* what, SourceLoc where) const;
-  Result<void> check_nose_radius_comp(SourceLoc where) const;
-  Result<Step> g37_block(const Words& words, CommandSink& out);
-  Result<void> finish_g37(const SyncState& s);
+  Flow<void> refuse_under_comp(const char* what, SourceLoc where) const;
+  Flow<void> check_nose_radius_comp(SourceLoc where) const;
+  Flow<Step> g37_block(const Words& words, CommandSink& out);
+  Flow<void> finish_g37(const SyncState& s);
 
   // motion.cpp
-  Result<Step> motion(const Words& words, CommandSink& out, bool skip, bool g53);
+  Flow<Step> motion(const Words& words, CommandSink& out, bool skip, bool g53);
   // skip.cpp
-  Result<Step> skip_block(const Words& words, const AxisVec& target, AxisMask moved,
-                          CommandSink& out);
-  Result<void> finish_skip(const SyncState& s);
-  Result<void> arc(const Words& words, const AxisVec& target, CommandSink& out);
-  Result<void> dwell(const Words& words, CommandSink& out);
-  Result<void> reference_return(const Words& words, int g, CommandSink& out);
-  Result<Step> canned_cycle(const Words& words, CommandSink& out);
+  Flow<Step> skip_block(const Words& words, const AxisVec& target, AxisMask moved,
+                        CommandSink& out);
+  Flow<void> finish_skip(const SyncState& s);
+  Flow<void> arc(const Words& words, const AxisVec& target, CommandSink& out);
+  Flow<void> dwell(const Words& words, CommandSink& out);
+  Flow<void> reference_return(const Words& words, int g, CommandSink& out);
+  Flow<Step> canned_cycle(const Words& words, CommandSink& out);
   // The modal F as a path feed: in feed per revolution, times the spindle
   // speed at the present position (0 with the spindle stopped).
   double feed_mm_per_min() const noexcept { return feed_to_mm_per_min(modal.feed); }
@@ -445,16 +474,16 @@ struct Interpreter::Impl {
   // lathe.cpp
   // Target of the axis words of a block (X/U, Z/W, C/H on a lathe) in
   // machine coordinates; `moved` gets the axes that have a word.
-  Result<void> axis_targets(const Words& words, bool g53, AxisVec& target, AxisMask& moved);
+  Flow<void> axis_targets(const Words& words, bool g53, AxisVec& target, AxisMask& moved);
   bool has_axis_word(const Words& words) const noexcept;
   char incremental_letter(int axis) const noexcept;  // U W H on a lathe, 0 otherwise
   double spindle_rpm_at(const AxisVec& machine) const noexcept;
-  Result<void> need_spindle_for_feed(SourceLoc where) const;
-  Result<void> lathe_tool(const Words& words, ModalState& next);
-  Result<void> lathe_coordinate_setting(const Words& words);
-  Result<void> lathe_offset_setting(const Words& words, SourceLoc where);
+  Flow<void> need_spindle_for_feed(SourceLoc where) const;
+  Flow<void> lathe_tool(const Words& words, ModalState& next);
+  Flow<void> lathe_coordinate_setting(const Words& words);
+  Flow<void> lathe_offset_setting(const Words& words, SourceLoc where);
   void emit_spindle(CommandSink& out);
-  Result<void> turning_cycle(const Words& words, AxisVec& target, AxisMask moved, CommandSink& out);
+  Flow<void> turning_cycle(const Words& words, AxisVec& target, AxisMask moved, CommandSink& out);
   void emit(CommandSink& out, canon::Command cmd);
 };
 

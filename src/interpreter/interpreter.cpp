@@ -18,7 +18,7 @@ Interpreter::Impl::Impl(const Setup& s)
 
 Interpreter::Impl::~Impl() = default;
 
-Result<void> Interpreter::Impl::init(const AxisVec& start) {
+Flow<void> Interpreter::Impl::init(const AxisVec& start) {
   axis_count = mc.axis_count();
   axis_of_letter.fill(-1);
   for (int i = 0; i < axis_count; ++i) {
@@ -102,7 +102,7 @@ void add_warning(std::vector<Warning>& list, Warning w) {
 }
 
 // Under --strict the warning is the block's alarm.
-Result<void> Interpreter::Impl::warn(const char* code, std::string text, SourceLoc where) {
+Flow<void> Interpreter::Impl::warn(const char* code, std::string text, SourceLoc where) {
   if (setup.strict) {
     return fail(AlarmId::kStrictWarning, std::string(code) + ": " + text, where);
   }
@@ -111,7 +111,7 @@ Result<void> Interpreter::Impl::warn(const char* code, std::string text, SourceL
   return {};
 }
 
-Result<void> Interpreter::Impl::count_statement(SourceLoc where) {
+Flow<void> Interpreter::Impl::count_statement(SourceLoc where) {
   if (++statements > mc.limits.max_macro_statements) {
     return fail(AlarmId::kLoopLimit,
                 "more than " + std::to_string(mc.limits.max_macro_statements) +
@@ -123,7 +123,7 @@ Result<void> Interpreter::Impl::count_statement(SourceLoc where) {
 
 // Reads the next block of the running frame into `blk`. False at the end of
 // the file.
-Result<bool> Interpreter::Impl::read_block() {
+Flow<bool> Interpreter::Impl::read_block() {
   Frame& f = frames.back();
   gcode::Source& src = *f.file->src;
   block_pos = src.tell();
@@ -140,7 +140,7 @@ Result<bool> Interpreter::Impl::read_block() {
 
 // One block; at a point where the machine must catch up (a sync) or at the
 // end, what cutter compensation holds goes out first.
-Result<Step> Interpreter::Impl::step(CommandSink& out) {
+Flow<Step> Interpreter::Impl::step(CommandSink& out) {
   auto r = step_block(out);
   if (r && (*r == Step::kSync || *r == Step::kEnd)) {
     if (const std::uint32_t held = flush_comp(out); held != 0) {
@@ -158,7 +158,7 @@ Result<Step> Interpreter::Impl::step(CommandSink& out) {
   return r;
 }
 
-Result<Step> Interpreter::Impl::step_block(CommandSink& out) {
+Flow<Step> Interpreter::Impl::step_block(CommandSink& out) {
   if (ended) return Step::kEnd;
   if (pending != Pending::kNone) {
     return fail(AlarmId::kInternal, "step() called before sync()");
@@ -233,12 +233,10 @@ Result<Step> Interpreter::Impl::step_block(CommandSink& out) {
     if (!counted) return std::unexpected(counted.error());
   }
   rerun = false;
-  need_sync = false;
   auto r = execute(out);
-  if (!r && need_sync) {
+  if (!r && std::holds_alternative<NeedSync>(r.error())) {
     // A live value was read while motion was queued: wait for the motion,
     // then run the same block again (nothing of it was committed).
-    need_sync = false;
     rerun = true;
     pending = Pending::kRerun;
     return Step::kSync;
@@ -246,7 +244,7 @@ Result<Step> Interpreter::Impl::step_block(CommandSink& out) {
   return r;
 }
 
-Result<Step> Interpreter::Impl::execute(CommandSink& out) {
+Flow<Step> Interpreter::Impl::execute(CommandSink& out) {
   if (blk.stmt.kind != gcode::StmtKind::kNone) {
     if (!blk.words.empty()) {
       // Fanuc: an NC statement and a macro statement in one block (PS0127).
@@ -264,7 +262,7 @@ Result<Step> Interpreter::Impl::execute(CommandSink& out) {
   return execute_nc(cur_words, out);
 }
 
-Result<void> Interpreter::Impl::sync(const SyncState& s) {
+Flow<void> Interpreter::Impl::sync(const SyncState& s) {
   last_sync = s;
   motion_since_sync = false;
   const Pending was = pending;
@@ -286,20 +284,20 @@ Interpreter::~Interpreter() = default;
 Result<std::unique_ptr<Interpreter>> Interpreter::create(const Setup& setup,
                                                          const AxisVec& start_machine) {
   auto impl = std::make_unique<Impl>(setup);
-  auto r = impl->init(start_machine);
+  auto r = settled(impl->init(start_machine));
   if (!r) return std::unexpected(r.error());
   return std::unique_ptr<Interpreter>(new Interpreter(std::move(impl)));
 }
 
 Result<Step> Interpreter::step(CommandSink& out) {
-  return impl_->step(out);
+  return settled(impl_->step(out));
 }
 Result<void> Interpreter::sync(const SyncState& state) {
-  return impl_->sync(state);
+  return settled(impl_->sync(state));
 }
 
 Result<Value> Interpreter::read_variable(int number) const {
-  return impl_->read_var(number, {});
+  return settled(impl_->read_var(number, {}));
 }
 Result<Value> Interpreter::read_named(std::string_view name) const {
   // As the parser stores #<name>: upper case, without spaces.
@@ -308,7 +306,7 @@ Result<Value> Interpreter::read_named(std::string_view name) const {
     if (c != ' ' && c != '\t')
       key += static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
   }
-  return impl_->read_named_var(key, {});
+  return settled(impl_->read_named_var(key, {}));
 }
 const ModalState& Interpreter::modal() const noexcept {
   return impl_->modal;

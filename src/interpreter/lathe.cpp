@@ -34,8 +34,8 @@ bool Interpreter::Impl::has_axis_word(const Words& words) const noexcept {
   return false;
 }
 
-Result<void> Interpreter::Impl::axis_targets(const Words& words, bool g53, AxisVec& target,
-                                             AxisMask& moved) {
+Flow<void> Interpreter::Impl::axis_targets(const Words& words, bool g53, AxisVec& target,
+                                           AxisMask& moved) {
   target = pos;
   // G16, G68, G51, G51.1 (mill_codes.cpp) place X, Y and Z.
   const bool framed = !g53 && !mc.lathe() && frame_active();
@@ -105,7 +105,7 @@ double Interpreter::Impl::feed_to_mm_per_min(double f) const noexcept {
   return per_unit * spindle_rpm_at(pos);
 }
 
-Result<void> Interpreter::Impl::need_spindle_for_feed(SourceLoc where) const {
+Flow<void> Interpreter::Impl::need_spindle_for_feed(SourceLoc where) const {
   if (modal.feed_mode == FeedMode::kPerRev && spindle_rpm_at(pos) <= 0.0) {
     // A Fanuc control waits for the spindle; a program that would hang is
     // stopped with an alarm instead.
@@ -122,7 +122,7 @@ Result<void> Interpreter::Impl::need_spindle_for_feed(SourceLoc where) const {
 // offset; T0: none). The offsets shift the coordinate system: the next
 // absolute move takes the tool tip to the programmed point, an incremental
 // move carries the change with it.
-Result<void> Interpreter::Impl::lathe_tool(const Words& words, ModalState& next) {
+Flow<void> Interpreter::Impl::lathe_tool(const Words& words, ModalState& next) {
   const WordVal& t = words.at('T');
   if (t.value != std::trunc(t.value) || t.value < 0 || t.value > 99999999) {
     return fail(AlarmId::kIllegalOffsetNumber, "T" + std::to_string(t.value), loc(t.column));
@@ -158,7 +158,7 @@ Result<void> Interpreter::Impl::lathe_tool(const Words& words, ModalState& next)
 // G50 X Z (U W): the present position gets these program values (U W: the
 // present values plus these). The S word of the block is the speed clamp
 // (ncblock.cpp).
-Result<void> Interpreter::Impl::lathe_coordinate_setting(const Words& words) {
+Flow<void> Interpreter::Impl::lathe_coordinate_setting(const Words& words) {
   for (int i = 0; i < axis_count; ++i) {
     const char c = axis_letter[static_cast<std::size_t>(i)];
     const char inc = incremental_letter(i);
@@ -194,8 +194,8 @@ void Interpreter::Impl::emit_spindle(CommandSink& out) {
 // radius for a taper), (2) feed to the end point, (3) feed in X back to the
 // start X, (4) rapid in Z back to the start point. Modal: a later block with
 // only X (U) cuts the next pass to the same Z.
-Result<void> Interpreter::Impl::turning_cycle(const Words& words, AxisVec& target, AxisMask moved,
-                                              CommandSink& out) {
+Flow<void> Interpreter::Impl::turning_cycle(const Words& words, AxisVec& target, AxisMask moved,
+                                            CommandSink& out) {
   const int x = axis_of_letter['X' - 'A'];
   const int z = axis_of_letter['Z' - 'A'];
   const SourceLoc at = loc(cur_col);
@@ -228,7 +228,7 @@ Result<void> Interpreter::Impl::turning_cycle(const Words& words, AxisVec& targe
 // (10000 + n) a geometry offset; X Z R set the value, U W add to it (X and U
 // in diameter with 1006#3), Q is the imaginary tip. The active offset
 // changes at the next T code.
-Result<void> Interpreter::Impl::lathe_offset_setting(const Words& words, SourceLoc where) {
+Flow<void> Interpreter::Impl::lathe_offset_setting(const Words& words, SourceLoc where) {
   if (!words.has('P')) return fail(AlarmId::kBadValue, "G10 needs P (offset number)", where);
   const WordVal& pw = words.at('P');
   const bool geometry = pw.value > 10000;

@@ -79,8 +79,8 @@ std::vector<fs::path> library_files(const fs::path& dir, const std::vector<std::
 
 }  // namespace
 
-Result<void> Interpreter::Impl::find_program(std::int64_t number, ProgramFile*& file,
-                                             gcode::SourcePos& at, SourceLoc where) {
+Flow<void> Interpreter::Impl::find_program(std::int64_t number, ProgramFile*& file,
+                                           gcode::SourcePos& at, SourceLoc where) {
   auto scan = [&](ProgramFile& pf) -> Result<bool> {
     if (auto it = pf.programs.find(number); it != pf.programs.end()) {
       file = &pf;
@@ -234,8 +234,8 @@ std::uint32_t Interpreter::Impl::context_of(CallContext c) {
   return static_cast<std::uint32_t>(contexts.size() - 1);
 }
 
-Result<void> Interpreter::Impl::call(std::int64_t program, int repeats, bool macro, SourceLoc where,
-                                     bool modal_call) {
+Flow<void> Interpreter::Impl::call(std::int64_t program, int repeats, bool macro, SourceLoc where,
+                                   bool modal_call) {
   int subs = 0, macros = 0;
   for (std::size_t i = 1; i < frames.size(); ++i) (frames[i].macro ? macros : subs)++;
   if (macro && macros >= mc.limits.max_macro_levels) {
@@ -272,8 +272,7 @@ Result<void> Interpreter::Impl::call(std::int64_t program, int repeats, bool mac
 // M99 (or the end of a called program): runs the program again while
 // repetitions are left, else returns to the block after the call, or with
 // M99 Pn to sequence number n of the calling program.
-Result<Step> Interpreter::Impl::return_from_sub(std::optional<std::int64_t> label,
-                                                SourceLoc where) {
+Flow<Step> Interpreter::Impl::return_from_sub(std::optional<std::int64_t> label, SourceLoc where) {
   Frame& f = frames.back();
   if (frames.size() == 1) {
     // M99 in the main program: back to its start (or to the label), as the
@@ -330,8 +329,8 @@ bool Interpreter::Impl::in_modal_call() const noexcept {
 // 0.001 mm / 0.0001 inch per unit (unless parameter 3401#0 DPI = 1); the
 // other addresses (D E F H M S T, and A B C when they are not axes) are
 // taken as written. Expressions (X#1, X[...]) are taken as computed.
-Result<void> Interpreter::Impl::collect_argument(const gcode::Word& w, const WordVal& v,
-                                                 int& ijk_set, int& ijk_last) {
+Flow<void> Interpreter::Impl::collect_argument(const gcode::Word& w, const WordVal& v, int& ijk_set,
+                                               int& ijk_last) {
   static constexpr std::array<std::int8_t, 26> kSpecI = {
       1,  2,  3,  7,  8,  9,  -1, 11, 4,  5,  6,  -1, 13,  // A..M
       -1, -1, -1, 17, 18, 19, 20, 21, 22, 23, 24, 25, 26,  // N..Z
@@ -361,8 +360,8 @@ Result<void> Interpreter::Impl::collect_argument(const gcode::Word& w, const Wor
   return {};
 }
 
-Result<void> Interpreter::Impl::macro_call(std::int64_t program, int repeats, bool modal_call,
-                                           SourceLoc where) {
+Flow<void> Interpreter::Impl::macro_call(std::int64_t program, int repeats, bool modal_call,
+                                         SourceLoc where) {
   const std::array<Value, kLocalCount + 1> args = modal_call ? modal_macro_args : call_args;
   auto c = call(program, repeats, true, where, modal_call);
   if (!c) return c;

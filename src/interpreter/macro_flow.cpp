@@ -47,7 +47,7 @@ bool is_condition(const gcode::Block& b, gcode::ExprId id) noexcept {
 
 }  // namespace
 
-Result<bool> Interpreter::Impl::condition(gcode::ExprId cond, SourceLoc where) {
+Flow<bool> Interpreter::Impl::condition(gcode::ExprId cond, SourceLoc where) {
   if (!is_condition(blk, cond)) {
     return fail(AlarmId::kMacroFormat,
                 "the condition must be a comparison (EQ NE GT GE LT LE), e.g. [#1 GT 0]", where);
@@ -57,7 +57,7 @@ Result<bool> Interpreter::Impl::condition(gcode::ExprId cond, SourceLoc where) {
   return c->num() != 0.0;
 }
 
-Result<Step> Interpreter::Impl::execute_statement(CommandSink& out) {
+Flow<Step> Interpreter::Impl::execute_statement(CommandSink& out) {
   (void)out;
   const gcode::Stmt& s = blk.stmt;
   const SourceLoc where = loc(s.column);
@@ -209,7 +209,7 @@ Result<Step> Interpreter::Impl::execute_statement(CommandSink& out) {
 // and a space before a positive one; a vacant variable prints as 0. The
 // line goes to the report's messages, and to the --dprnt file when one was
 // named and POPEN is in effect.
-Result<void> Interpreter::Impl::print_line(SourceLoc where) {
+Flow<void> Interpreter::Impl::print_line(SourceLoc where) {
   (void)where;
   std::string line;
   for (const auto& item : blk.print_items) {
@@ -261,7 +261,7 @@ Result<void> Interpreter::Impl::write_dprnt() const {
 
 // Where the END of loop `l` is: the first END with its number after its DO,
 // within the running program. kNoEnd when there is none.
-Result<void> Interpreter::Impl::find_loop_end(Loop& l) {
+Flow<void> Interpreter::Impl::find_loop_end(Loop& l) {
   if (l.end_known) return {};
   Frame& f = frames.back();
   gcode::Source& src = *f.file->src;
@@ -295,7 +295,7 @@ Result<void> Interpreter::Impl::find_loop_end(Loop& l) {
 }
 
 // A jump to `target` leaves every loop whose WHILE..END range does not hold it.
-Result<void> Interpreter::Impl::leave_loops_for(std::uint64_t target) {
+Flow<void> Interpreter::Impl::leave_loops_for(std::uint64_t target) {
   Frame& f = frames.back();
   while (!f.loops.empty()) {
     Loop& l = f.loops.back();
@@ -352,7 +352,7 @@ const gcode::SourcePos* first_after(It first, It last, std::uint64_t from, Pos p
 // then a binary search per jump); a larger program keeps only the numbers
 // asked for, each found by its own scan, so memory stays bounded whatever
 // the file's size (issue 21: a 1 GB program with a GOTO held every label).
-Result<void> Interpreter::Impl::jump_to_label(std::int64_t n, std::uint64_t from, SourceLoc where) {
+Flow<void> Interpreter::Impl::jump_to_label(std::int64_t n, std::uint64_t from, SourceLoc where) {
   Frame& f = frames.back();
   gcode::Source& src = *f.file->src;
   auto [it, fresh] = f.file->labels.try_emplace(f.start.offset);

@@ -116,7 +116,7 @@ double scaled_word(const WordVal& w, double increment, bool calculator) {
 // A G code that the core table does not hold. Returns false when the code
 // is not a code of the mill here either (the caller raises the improper G
 // code alarm).
-Result<bool> Interpreter::Impl::mill_code(int code, SourceLoc at, MillRequest& req) const {
+Flow<bool> Interpreter::Impl::mill_code(int code, SourceLoc at, MillRequest& req) const {
   const MillCode* c = find(code);
   if (c == nullptr || mc.lathe()) return false;
   if (code >= 311 && code <= 313 && dialect.param(kSkipStepParam) != nullptr) {
@@ -157,7 +157,7 @@ Result<bool> Interpreter::Impl::mill_code(int code, SourceLoc at, MillRequest& r
 
 // G68 G69 G50 G51 G50.1 G51.1, after the block's modes are committed.
 // Returns true when the block's axis words were the mode's data (no move).
-Result<bool> Interpreter::Impl::apply_frame_code(const Words& words, const MillRequest& req) {
+Flow<bool> Interpreter::Impl::apply_frame_code(const Words& words, const MillRequest& req) {
   const int x = axis_of_letter['X' - 'A'], y = axis_of_letter['Y' - 'A'],
             z = axis_of_letter['Z' - 'A'];
   const std::array<int, 3> xyz{x, y, z};
@@ -244,8 +244,7 @@ Result<bool> Interpreter::Impl::apply_frame_code(const Words& words, const MillR
 
 // Targets of X Y Z through polar coordinates and the frame (the other axes
 // are left to axis_targets). Under rotation a move of X alone moves Y too.
-Result<void> Interpreter::Impl::frame_targets(const Words& words, AxisVec& target,
-                                              AxisMask& moved) {
+Flow<void> Interpreter::Impl::frame_targets(const Words& words, AxisVec& target, AxisMask& moved) {
   const std::array<int, 3> xyz{axis_of_letter['X' - 'A'], axis_of_letter['Y' - 'A'],
                                axis_of_letter['Z' - 'A']};
   xform::Point here_work{};
@@ -298,7 +297,7 @@ Result<void> Interpreter::Impl::frame_targets(const Words& words, AxisVec& targe
 // Cutter radius compensation C on a mill (cutter_comp.hpp). The radius is
 // the D offset (geometry + wear); D0 or an empty offset moves on the
 // programmed path, as on the control.
-Result<crc::BlockMode> Interpreter::Impl::comp_mode(const BlockPlan& plan) const {
+Flow<crc::BlockMode> Interpreter::Impl::comp_mode(const BlockPlan& plan) const {
   crc::BlockMode m;
   m.side = modal.cutter == CutterComp::kLeft ? 1 : modal.cutter == CutterComp::kRight ? -1 : 0;
   if (modal.d > 0) {
@@ -339,7 +338,7 @@ Result<crc::BlockMode> Interpreter::Impl::comp_mode(const BlockPlan& plan) const
 // an axis's max_feed for its share of the move): the planner runs the move
 // at the machine's limit, as a control clamps to its feed upper limit; the
 // warning says to what. Arcs are not checked (their limit changes along them).
-Result<void> Interpreter::Impl::check_feeds(const AxisVec& start) {
+Flow<void> Interpreter::Impl::check_feeds(const AxisVec& start) {
   // A feed no axis's max_feed is below cannot be clamped: most blocks stop
   // here (this runs for every block).
   double slowest = mc.axes[0].max_feed_mm_min;
@@ -393,8 +392,8 @@ Result<void> Interpreter::Impl::check_feeds(const AxisVec& start) {
   return {};
 }
 
-Result<void> Interpreter::Impl::pass_block(const BlockPlan& plan, const AxisVec& start,
-                                           CommandSink& out) {
+Flow<void> Interpreter::Impl::pass_block(const BlockPlan& plan, const AxisVec& start,
+                                         CommandSink& out) {
   if (auto f = check_feeds(start); !f) return f;
   if (mc.lathe() || (modal.cutter == CutterComp::kOff && comp.idle())) {
     for (const canon::Stamped& c : block_buffer.cmds) out.emit(c);
@@ -438,7 +437,7 @@ std::uint32_t Interpreter::Impl::flush_comp(CommandSink& out) {
   return held;
 }
 
-Result<void> Interpreter::Impl::refuse_under_comp(const char* what, SourceLoc where) const {
+Flow<void> Interpreter::Impl::refuse_under_comp(const char* what, SourceLoc where) const {
   if (mc.lathe() || modal.cutter == CutterComp::kOff) return {};
   return fail(AlarmId::kNotSimulated,
               std::string(what) + " with cutter radius compensation (" +
@@ -450,7 +449,7 @@ Result<void> Interpreter::Impl::refuse_under_comp(const char* what, SourceLoc wh
 // Tool nose radius compensation (G41/G42 on a lathe, with the imaginary tool
 // nose) is not simulated: a move under it with a nose radius other than 0 is
 // refused in words instead of running on the programmed path.
-Result<void> Interpreter::Impl::check_nose_radius_comp(SourceLoc where) const {
+Flow<void> Interpreter::Impl::check_nose_radius_comp(SourceLoc where) const {
   if (!mc.lathe() || modal.cutter == CutterComp::kOff) return {};
   const auto& t = tools[static_cast<std::size_t>(wear_offset)];
   const double r = t.radius_geometry + t.radius_wear;
@@ -466,7 +465,7 @@ Result<void> Interpreter::Impl::check_nose_radius_comp(SourceLoc where) const {
 // measurement feed until the measuring position reached signal of the axis,
 // at most epsilon past it. finish_g37 checks the range and corrects the
 // active H.
-Result<Step> Interpreter::Impl::g37_block(const Words& words, CommandSink& out) {
+Flow<Step> Interpreter::Impl::g37_block(const Words& words, CommandSink& out) {
   const SourceLoc at = loc(cur_col);
   if (auto c = refuse_under_comp("G37 automatic tool length measurement", at); !c) {
     return std::unexpected(c.error());
@@ -551,7 +550,7 @@ Result<Step> Interpreter::Impl::g37_block(const Words& words, CommandSink& out) 
 // difference between where it came and the measuring position is added to
 // the active H (its wear: the geometry stays as set), and the offset is
 // applied again.
-Result<void> Interpreter::Impl::finish_g37(const SyncState& s) {
+Flow<void> Interpreter::Impl::finish_g37(const SyncState& s) {
   const PendingSkip& ps = pending_skip;
   if (!s.triggered) {
     return fail(AlarmId::kG37Signal,
@@ -576,7 +575,7 @@ Result<void> Interpreter::Impl::finish_g37(const SyncState& s) {
 // One block in canned cycle mode: the hole data are updated from the block
 // and each hole (K repeats) is drilled. The moves are made in the program
 // frame and go through the frame (G68, G51, G51.1) like any move.
-Result<Step> Interpreter::Impl::canned_cycle(const Words& words, CommandSink& out) {
+Flow<Step> Interpreter::Impl::canned_cycle(const Words& words, CommandSink& out) {
   const SourceLoc at = loc(cur_col);
   const int z = axis_of_letter['Z' - 'A'];
   if (z < 0) return fail(AlarmId::kIllegalPlaneAxis, "a canned cycle needs a Z axis", at);

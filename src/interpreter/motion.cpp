@@ -8,7 +8,7 @@
 
 namespace skipnc::interp {
 
-Result<void> Interpreter::Impl::dwell(const Words& words, CommandSink& out) {
+Flow<void> Interpreter::Impl::dwell(const Words& words, CommandSink& out) {
   double seconds = 0.0;
   if (words.has('P')) {
     const WordVal& p = words.at('P');
@@ -35,7 +35,7 @@ Result<void> Interpreter::Impl::dwell(const Words& words, CommandSink& out) {
   return {};
 }
 
-Result<void> Interpreter::Impl::reference_return(const Words& words, int g, CommandSink& out) {
+Flow<void> Interpreter::Impl::reference_return(const Words& words, int g, CommandSink& out) {
   // G30: P2-P4 choose the 2nd-4th reference point (P omitted: the 2nd), from
   // the machine file's [reference_points]; G28: the reference position,
   // machine zero.
@@ -70,7 +70,7 @@ Result<void> Interpreter::Impl::reference_return(const Words& words, int g, Comm
   return {};
 }
 
-Result<Step> Interpreter::Impl::motion(const Words& words, CommandSink& out, bool skip, bool g53) {
+Flow<Step> Interpreter::Impl::motion(const Words& words, CommandSink& out, bool skip, bool g53) {
   AxisVec target;
   AxisMask moved;
   auto t = axis_targets(words, g53, target, moved);
@@ -117,7 +117,7 @@ Result<Step> Interpreter::Impl::motion(const Words& words, CommandSink& out, boo
   return Step::kContinue;
 }
 
-Result<void> Interpreter::Impl::arc(const Words& words, const AxisVec& target, CommandSink& out) {
+Flow<void> Interpreter::Impl::arc(const Words& words, const AxisVec& target, CommandSink& out) {
   canon::Plane pl;
   char ci = 'I', cj = 'J';
   auto idx = [&](char c) { return axis_of_letter[static_cast<std::size_t>(c - 'A')]; };

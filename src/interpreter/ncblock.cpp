@@ -101,7 +101,7 @@ double Interpreter::Impl::machine_of(int axis, double work_units) const noexcept
 // Evaluates the words of an NC block. In a G65/G66 block every address but
 // G, P and L is a macro argument (see collect_argument); elsewhere an
 // address may appear once.
-Result<void> Interpreter::Impl::collect_words(Words& words) {
+Flow<void> Interpreter::Impl::collect_words(Words& words) {
   call_block = false;
   for (const gcode::Word& w : blk.words) {
     if (w.letter == 'G' && !w.is_expr && (w.value == 65.0 || w.value == 66.0)) {
@@ -182,7 +182,7 @@ Result<void> Interpreter::Impl::collect_words(Words& words) {
   return {};
 }
 
-Result<void> Interpreter::Impl::set_tool_length(const Words& words, LengthComp mode) {
+Flow<void> Interpreter::Impl::set_tool_length(const Words& words, LengthComp mode) {
   if (mode == LengthComp::kOff) {
     length_offset = 0.0;
     modal.h = 0;
@@ -207,7 +207,7 @@ Result<void> Interpreter::Impl::set_tool_length(const Words& words, LengthComp m
 // G10: programmable data input. L2 Pn: work offset n (0 = EXT, 1-6 = G54-G59);
 // L20 Pn: G54.1 Pn (1-300); L10/L11: H geometry/wear; L12/L13: D
 // geometry/wear; L1: H wear (memory A). G90 sets, G91 adds.
-Result<void> Interpreter::Impl::data_setting(const Words& words, SourceLoc where) {
+Flow<void> Interpreter::Impl::data_setting(const Words& words, SourceLoc where) {
   if (mc.lathe() && !words.has('L')) return lathe_offset_setting(words, where);
   if (!words.has('L')) return fail(AlarmId::kBadValue, "G10 needs L", where);
   const int l = static_cast<int>(words.at('L').value);
@@ -261,7 +261,7 @@ Result<void> Interpreter::Impl::data_setting(const Words& words, SourceLoc where
 // alarm, or the last one wins where the control says so
 // (g_same_group_last_wins). Two group-00 actions (G04 G31, G31 G28,
 // G31 G92) are always refused: the block could do only one of them.
-Result<void> Interpreter::Impl::plan_g_codes(const Words& words, BlockPlan& plan) {
+Flow<void> Interpreter::Impl::plan_g_codes(const Words& words, BlockPlan& plan) {
   const bool lathe = mc.lathe();
   for (int i = 0; i < words.g_count; ++i) {
     const int code = words.g[static_cast<std::size_t>(i)];
@@ -304,8 +304,8 @@ Result<void> Interpreter::Impl::plan_g_codes(const Words& words, BlockPlan& plan
   return {};
 }
 
-Result<void> Interpreter::Impl::plan_one_shot(const CodeDef& def, std::uint32_t col,
-                                              BlockPlan& plan) {
+Flow<void> Interpreter::Impl::plan_one_shot(const CodeDef& def, std::uint32_t col,
+                                            BlockPlan& plan) {
   switch (def.action) {
     case Action::kExactStop:
       plan.exact_stop = true;
@@ -329,7 +329,7 @@ Result<void> Interpreter::Impl::plan_one_shot(const CodeDef& def, std::uint32_t 
 }
 
 // G65/G66 block: G, P and L are its own words, every other one an argument.
-Result<void> Interpreter::Impl::plan_call(const Words& words, BlockPlan& plan) {
+Flow<void> Interpreter::Impl::plan_call(const Words& words, BlockPlan& plan) {
   const SourceLoc at = loc(cur_col);
   if (!call_block) {
     return fail(AlarmId::kMacroFormat, "G65/G66 must be written as a number (G65, not G#i)", at);
@@ -363,7 +363,7 @@ Result<void> Interpreter::Impl::plan_call(const Words& words, BlockPlan& plan) {
 }
 
 // Addresses that mean nothing here are refused, so a typo is not ignored.
-Result<void> Interpreter::Impl::plan_addresses(const Words& words) const {
+Flow<void> Interpreter::Impl::plan_addresses(const Words& words) const {
   for (std::uint32_t rest = words.letters & ~axis_letters; rest != 0; rest &= rest - 1) {
     const char letter = static_cast<char>('A' + std::countr_zero(rest));
     if (mc.lathe() && (letter == 'U' || letter == 'W')) continue;
@@ -381,7 +381,7 @@ Result<void> Interpreter::Impl::plan_addresses(const Words& words) const {
 }
 
 // An offset number word (D, H): whole, 0 to the machine's offset count.
-Result<int> Interpreter::Impl::offset_number(const Words& words, char letter) const {
+Flow<int> Interpreter::Impl::offset_number(const Words& words, char letter) const {
   const double v = words.at(letter).value;
   if (v != std::trunc(v) || v < 0 || v > mc.tool_offset_count) {
     return fail(AlarmId::kIllegalOffsetNumber, std::string(1, letter) + std::to_string(v),
@@ -391,7 +391,7 @@ Result<int> Interpreter::Impl::offset_number(const Words& words, char letter) co
 }
 
 // G31.n (mill_codes.cpp) is the block's skip.
-Result<void> Interpreter::Impl::plan_mill(BlockPlan& plan) const {
+Flow<void> Interpreter::Impl::plan_mill(BlockPlan& plan) const {
   if (plan.mill.skip_step != 0) {
     if (plan.action != Action::kNone && plan.action != Action::kSkip) {
       return fail(AlarmId::kGCodeConflict,
@@ -413,7 +413,7 @@ void Interpreter::Impl::plan_cycle(BlockPlan& plan) const {
 }
 
 // The block's modal state: the group codes, then F S T D.
-Result<void> Interpreter::Impl::plan_modal(const Words& words, BlockPlan& plan) {
+Flow<void> Interpreter::Impl::plan_modal(const Words& words, BlockPlan& plan) {
   ModalState& next = plan.next;
   for (const CodeDef* def : plan.group) {
     if (def != nullptr && def->set != nullptr) def->set(next);
@@ -464,7 +464,7 @@ Result<void> Interpreter::Impl::plan_modal(const Words& words, BlockPlan& plan) 
   return {};
 }
 
-Result<void> Interpreter::Impl::plan_block(const Words& words, BlockPlan& plan) {
+Flow<void> Interpreter::Impl::plan_block(const Words& words, BlockPlan& plan) {
   plan.next = modal;
   auto g = plan_g_codes(words, plan);
   if (!g) return g;
@@ -493,7 +493,7 @@ void Interpreter::Impl::commit_messages() {
 }
 
 // G65: call now; G66: remember the macro for the blocks that move.
-Result<Step> Interpreter::Impl::commit_call(const BlockPlan& plan) {
+Flow<Step> Interpreter::Impl::commit_call(const BlockPlan& plan) {
   if (plan.action == Action::kMacroCall) {
     if (plan.call_repeats == 0) return Step::kContinue;
     auto c = macro_call(plan.call_program, plan.call_repeats, false, loc(cur_col));
@@ -517,8 +517,8 @@ void Interpreter::Impl::commit_modal(const Words& words, const BlockPlan& plan, 
   modal.seq = seq;
 }
 
-Result<void> Interpreter::Impl::commit_tool(const Words& words, const BlockPlan& plan,
-                                            const ModalState& before, CommandSink& out) {
+Flow<void> Interpreter::Impl::commit_tool(const Words& words, const BlockPlan& plan,
+                                          const ModalState& before, CommandSink& out) {
   (void)plan;
   if (modal.length != before.length || (words.has('H') && modal.length != LengthComp::kOff)) {
     auto r = set_tool_length(words, modal.length);
@@ -587,8 +587,8 @@ void Interpreter::Impl::commit_tool_pos_offset(const Words& words, int g) {
 
 // The one-shot action or the motion of the block. `moved`: the block moved
 // (for G66).
-Result<Step> Interpreter::Impl::commit_action(const Words& words, const BlockPlan& plan,
-                                              CommandSink& out, bool& moved) {
+Flow<Step> Interpreter::Impl::commit_action(const Words& words, const BlockPlan& plan,
+                                            CommandSink& out, bool& moved) {
   const SourceLoc at = loc(cur_col);
   switch (plan.action) {
     case Action::kDataSetting:
@@ -631,7 +631,7 @@ Result<Step> Interpreter::Impl::commit_action(const Words& words, const BlockPla
   return *m;
 }
 
-Result<Step> Interpreter::Impl::commit_sub_call(const Words& words) {
+Flow<Step> Interpreter::Impl::commit_sub_call(const Words& words) {
   const SourceLoc at = loc(cur_col);
   if (!words.has('P')) return fail(AlarmId::kProgramNotFound, "M98 needs P", at);
   const double p = words.at('P').value;
@@ -653,7 +653,7 @@ Result<Step> Interpreter::Impl::commit_sub_call(const Words& words) {
   return Step::kContinue;
 }
 
-Result<Step> Interpreter::Impl::commit_sub_return(const Words& words) {
+Flow<Step> Interpreter::Impl::commit_sub_return(const Words& words) {
   std::optional<std::int64_t> label;
   if (words.has('P')) {
     const double pv = std::round(words.at('P').value);
@@ -669,8 +669,7 @@ Result<Step> Interpreter::Impl::commit_sub_return(const Words& words) {
 }
 
 // M codes after the motion. nullopt: go on with the next step of the block.
-Result<std::optional<Step>> Interpreter::Impl::commit_m_codes(const Words& words,
-                                                              CommandSink& out) {
+Flow<std::optional<Step>> Interpreter::Impl::commit_m_codes(const Words& words, CommandSink& out) {
   for (int i = 0; i < words.m_count; ++i) {
     const int m = words.m[static_cast<std::size_t>(i)];
     modal.last_m = m;
@@ -720,9 +719,8 @@ void Interpreter::Impl::commit_cycle_start(const ModalState& before) {
 // G51 G51.1 take the axis words as their data (no move), a cycle mode
 // drills at the block's position. nullopt: the block goes on to
 // commit_action.
-Result<std::optional<Step>> Interpreter::Impl::commit_mill(const Words& words,
-                                                           const BlockPlan& plan, CommandSink& out,
-                                                           bool& moved) {
+Flow<std::optional<Step>> Interpreter::Impl::commit_mill(const Words& words, const BlockPlan& plan,
+                                                         CommandSink& out, bool& moved) {
   if (!plan.mill.no_effect.empty()) {
     auto w = warn("no_effect",
                   plan.mill.no_effect + " is accepted and changes nothing in the simulation",
@@ -744,8 +742,8 @@ Result<std::optional<Step>> Interpreter::Impl::commit_mill(const Words& words,
   return std::optional<Step>{};
 }
 
-Result<Step> Interpreter::Impl::commit_block(const Words& words, const BlockPlan& plan,
-                                             CommandSink& out) {
+Flow<Step> Interpreter::Impl::commit_block(const Words& words, const BlockPlan& plan,
+                                           CommandSink& out) {
   commit_messages();
   if (plan.call) return commit_call(plan);
   const ModalState before = modal;
@@ -842,7 +840,7 @@ void Interpreter::Impl::restore_block_state(const BlockUndo& u) {
 // when the whole block succeeded. G10 changes the offset tables only after
 // every check of its words has passed, and a call (M98, G65, M99) is the
 // block's last step, so they need no undo.
-Result<Step> Interpreter::Impl::execute_nc(const Words& words, CommandSink& out) {
+Flow<Step> Interpreter::Impl::execute_nc(const Words& words, CommandSink& out) {
   BlockPlan plan;
   auto p = plan_block(words, plan);
   if (!p) return std::unexpected(p.error());

@@ -25,8 +25,8 @@ std::string upper(std::string s) {
 
 }  // namespace
 
-Result<Step> Interpreter::Impl::skip_block(const Words& words, const AxisVec& target,
-                                           AxisMask moved, CommandSink& out) {
+Flow<Step> Interpreter::Impl::skip_block(const Words& words, const AxisVec& target, AxisMask moved,
+                                         CommandSink& out) {
   const SourceLoc at = loc(cur_col);
   const config::Switches& sw = dialect.sw;
   auto word_loc = [&](char c) { return words.has(c) ? loc(words.at(c).column) : at; };
@@ -279,7 +279,7 @@ Result<Step> Interpreter::Impl::skip_block(const Words& words, const AxisVec& ta
 // the tool reference point, Fanuc-class); without a signal the programmed end
 // point is stored. The next block starts where the axes came to rest
 // (#5001..), which differs from the latch by the stopping distance.
-Result<void> Interpreter::Impl::finish_skip(const SyncState& s) {
+Flow<void> Interpreter::Impl::finish_skip(const SyncState& s) {
   PendingSkip& ps = pending_skip;
   const AxisVec latch = s.triggered ? s.latch_machine : ps.target;
   skip_machine = latch;

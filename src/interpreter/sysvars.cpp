@@ -116,7 +116,7 @@ int system_number(std::string_view name) {
 
 }  // namespace
 
-Result<Value> Interpreter::Impl::read_var(int n, SourceLoc where) {
+Flow<Value> Interpreter::Impl::read_var(int n, SourceLoc where) {
   if (n == 0) return Value::null();
   if (n < 0) return fail(AlarmId::kIllegalVariable, "#" + std::to_string(n), where);
   if (VariableStore::is_local(n) || VariableStore::is_common(n) ||
@@ -125,8 +125,7 @@ Result<Value> Interpreter::Impl::read_var(int n, SourceLoc where) {
   }
   if (is_live(n) && motion_since_sync) {
     // Buffer stop: the value is the one after the queued motion has ended.
-    need_sync = true;
-    return fail(AlarmId::kInternal, "sync");
+    return need_sync();
   }
   const auto axis_value = [&](int base, auto&& f) -> Value {
     const int i = n - base;
@@ -278,7 +277,7 @@ double* Interpreter::Impl::tool_field(int n) noexcept {
   return nullptr;
 }
 
-Result<void> Interpreter::Impl::write_var(int n, Value v, SourceLoc where) {
+Flow<void> Interpreter::Impl::write_var(int n, Value v, SourceLoc where) {
   if (VariableStore::is_local(n) || VariableStore::is_common(n) ||
       VariableStore::is_persistent(n)) {
     vars.set(n, v);
@@ -351,7 +350,7 @@ Result<void> Interpreter::Impl::write_var(int n, Value v, SourceLoc where) {
               "#" + std::to_string(n) + " is not a variable of this control", where);
 }
 
-Result<Value> Interpreter::Impl::read_named_var(const std::string& name, SourceLoc where) {
+Flow<Value> Interpreter::Impl::read_named_var(const std::string& name, SourceLoc where) {
   if (!name.empty() && name.front() == '_') {
     const int n = system_number(name);
     if (n > 0) return read_var(n, where);
@@ -360,7 +359,7 @@ Result<Value> Interpreter::Impl::read_named_var(const std::string& name, SourceL
   return vars.get_named(name);
 }
 
-Result<void> Interpreter::Impl::write_named_var(const std::string& name, Value v, SourceLoc where) {
+Flow<void> Interpreter::Impl::write_named_var(const std::string& name, Value v, SourceLoc where) {
   if (!name.empty() && name.front() == '_') {
     const int n = system_number(name);
     if (n > 0) return write_var(n, v, where);
