@@ -36,6 +36,10 @@
 
 namespace skipnc::interp {
 
+namespace sysvar {
+struct Range;
+}
+
 // A file of programs: the main program file or one found on the include path.
 struct ProgramFile {
   std::string path;
@@ -381,6 +385,10 @@ struct Interpreter::Impl {
 
   // sysvars.cpp
   Flow<Value> read_var(int n, SourceLoc where);
+  Flow<Value> read_position(const sysvar::Range& r, int i, SourceLoc where);
+  Value read_modal(const sysvar::Range& r, int i) const;
+  Value read_control(const sysvar::Range& r, int n) const;
+  Flow<void> write_control(const sysvar::Range& r, int n, Value v, SourceLoc where);
   Flow<void> write_var(int n, Value v, SourceLoc where);
   double* tool_field(int n) noexcept;
   Flow<Value> read_named_var(const std::string& name, SourceLoc where);
