@@ -393,7 +393,9 @@ int dialects_command() {
                           (1 << sw.skip_p_count) - 1)
             : std::string("none"));
     fmt::print("  inputs      {}{}\n", inputs,
-               d->param(3008) != nullptr ? " (fixed; 3008#2 = 1: parameters 3012, 3020-3025)" : "");
+               d->param(config::param::kSkipAddressing) != nullptr
+                   ? " (fixed; 3008#2 = 1: parameters 3012, 3020-3025)"
+                   : "");
     fmt::print("  detection   {}\n",
                sw.skip_edge_rising_only ? std::string("rising edge only")
                : sw.skip_signal_param != 0

@@ -12,6 +12,7 @@
 
 #include "canon/canon.hpp"
 #include "config/dialect.hpp"
+#include "config/param_numbers.hpp"
 #include "core/axes.hpp"
 #include "core/diag.hpp"
 
@@ -133,6 +134,7 @@ class Parameters {
 
   double get(int number) const noexcept;
   bool bit(int number, int b) const noexcept;
+  bool bit(param::Bit b) const noexcept { return bit(b.number, b.bit); }
   [[nodiscard]] Result<void> apply(const ParamSetting& s);
   // "6200#7=1" or "1174=200" (command line)
   [[nodiscard]] static Result<ParamSetting> parse_setting(std::string_view text);

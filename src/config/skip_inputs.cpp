@@ -6,11 +6,12 @@ namespace skipnc::config {
 
 canon::SignalAddr skip_input_address(const Dialect& d, const Parameters& p, int index) noexcept {
   canon::SignalAddr a;
-  const bool by_params = d.param(3008) != nullptr;  // Fanuc-style address parameters
-  if (by_params && p.bit(3008, 2) && index < 4) {
-    a.area = p.bit(3008, 1) ? 'G' : 'X';
-    a.byte = static_cast<std::uint16_t>(p.get(3012));
-    a.bit = static_cast<std::uint8_t>(p.get(3020 + index));
+  const bool by_params =
+      d.param(param::kSkipAddressing) != nullptr;  // Fanuc-style address parameters
+  if (by_params && p.bit(param::kSkipByParameters) && index < 4) {
+    a.area = p.bit(param::kSkipAreaG) ? 'G' : 'X';
+    a.byte = static_cast<std::uint16_t>(p.get(param::kSkipByte));
+    a.bit = static_cast<std::uint8_t>(p.get(param::kSkipBitFirst + index));
     return a;
   }
   if (index >= 0 && index < static_cast<int>(d.fixed_skip_inputs.size()) &&
@@ -19,28 +20,28 @@ canon::SignalAddr skip_input_address(const Dialect& d, const Parameters& p, int 
   }
   if (!by_params) return d.fixed_skip_inputs.front();  // not reached: P is checked first
   a.area = 'X';
-  a.byte = static_cast<std::uint16_t>(p.get(3025));
+  a.byte = static_cast<std::uint16_t>(p.get(param::kSkip5To12Byte));
   a.bit = static_cast<std::uint8_t>((index - 4) & 7);
   return a;
 }
 
 Result<void> check_skip_addresses(const Dialect& d, const Parameters& p) {
-  if (d.param(3008) == nullptr || !p.bit(3008, 2)) return {};
-  const double byte = p.get(3012);
-  const bool g_area = p.bit(3008, 1);
+  if (d.param(param::kSkipAddressing) == nullptr || !p.bit(param::kSkipByParameters)) return {};
+  const double byte = p.get(param::kSkipByte);
+  const bool g_area = p.bit(param::kSkipAreaG);
   if (byte < 0 || byte > (g_area ? 511 : 127)) {
     return fail(AlarmId::kConfig,
                 "parameter 3012 = " + std::to_string(static_cast<long long>(byte)) +
                     " is out of range for area " + (g_area ? "G (0-511)" : "X (0-127)") +
                     " selected by 3008#1");
   }
-  for (int n = 3020; n <= 3023; ++n) {
+  for (int n = param::kSkipBitFirst; n <= param::kSkipBitLast; ++n) {
     const double bit = p.get(n);
     if (bit < 0 || bit > 7) {
       return fail(AlarmId::kConfig, "parameter " + std::to_string(n) + " must be a bit number 0-7");
     }
   }
-  if (p.get(3025) < 0 || p.get(3025) > 127) {
+  if (p.get(param::kSkip5To12Byte) < 0 || p.get(param::kSkip5To12Byte) > 127) {
     return fail(AlarmId::kConfig, "parameter 3025 must be an X byte 0-127");
   }
   return {};
@@ -53,8 +54,9 @@ std::optional<canon::SignalAddr> parse_signal_name(std::string_view name, const 
     int n = 1;
     if (!rest.empty()) {
       auto r = std::from_chars(rest.data(), rest.data() + rest.size(), n);
-      const int count = d.param(3008) != nullptr ? canon::SkipSpec::kMaxInputs
-                                                 : static_cast<int>(d.fixed_skip_inputs.size());
+      const int count = d.param(param::kSkipAddressing) != nullptr
+                            ? canon::SkipSpec::kMaxInputs
+                            : static_cast<int>(d.fixed_skip_inputs.size());
       if (r.ec != std::errc{} || r.ptr != rest.data() + rest.size() || n < 1 || n > count) {
         return std::nullopt;
       }

@@ -35,13 +35,14 @@ Flow<void> Interpreter::Impl::init(const AxisVec& start) {
     modal.plane = PlaneSel::kZX;
     modal.feed_mode = FeedMode::kPerRev;
     length_axis = -1;
-    if (params.bit(1006, 3)) axis_scale[static_cast<std::size_t>(mc.axis_index('X'))] = 2.0;
+    if (params.bit(config::param::kDiameterX))
+      axis_scale[static_cast<std::size_t>(mc.axis_index('X'))] = 2.0;
   }
   pos = start;
   work_offsets.assign(kWorkSystems, AxisVec{});
   std::copy(mc.work_offsets.begin(), mc.work_offsets.end(), work_offsets.begin());
   parse_limits.max_bracket_depth = dialect.sw.macro_bracket_depth;
-  nat = params.bit(6004, 0);
+  nat = params.bit(config::param::kSignedArcFunctions);
   tools.assign(static_cast<std::size_t>(mc.tool_offset_count) + 1, config::ToolOffset{});
   for (const auto& [n, t] : mc.tool_offsets) tools[static_cast<std::size_t>(n)] = t;
   modal.units = mc.inch_machine ? Units::kInch : Units::kMetric;

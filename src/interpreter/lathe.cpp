@@ -212,12 +212,12 @@ Flow<void> Interpreter::Impl::turning_cycle(const Words& words, AxisVec& target,
   const AxisVec start = pos;
   AxisVec p = start;
   p[x] = target[x] + taper;
-  emit(out, canon::Rapid{p, params.bit(1401, 1)});
+  emit(out, canon::Rapid{p, params.bit(config::param::kLinearRapid)});
   p = target;
   emit(out, canon::Feed{p, feed, false});
   p[x] = start[x];
   emit(out, canon::Feed{p, feed, false});
-  emit(out, canon::Rapid{start, params.bit(1401, 1)});
+  emit(out, canon::Rapid{start, params.bit(config::param::kLinearRapid)});
   turning_cycle_z = target[z];
   have_turning_cycle_z = true;
   target = start;

@@ -87,8 +87,8 @@ const MillCode* find(int code) {
 // measuring position), 6254 epsilon (the signal must come within epsilon of
 // it); the measuring position reached signals XAE, YAE, ZAE of the machining
 // centre are X4.0, X4.1, X4.2 (Fanuc connection manual, signal list).
-constexpr int kG37FeedParam = 6241;
-constexpr int kG37GammaParam = 6251;
+constexpr int kG37FeedParam = config::param::kG37Feed;
+constexpr int kG37GammaParam = config::param::kG37Gamma;
 struct MeasureSignal {
   char axis;
   canon::SignalAddr addr;
@@ -189,10 +189,11 @@ Flow<bool> Interpreter::Impl::apply_frame_code(const Words& words, const MillReq
           words.has('X') || words.has('Y')
               ? xform::to_work(before_rotation, {word(0, here[0]), word(1, here[1]), 0})
               : here_work;
-      double angle = params.get(5410) * 0.001;
+      double angle = params.get(config::param::kRotationAngle) * 0.001;
       if (words.has('R')) {
-        angle = scaled_word(words.at('R'), 0.001, params.bit(3401, 0));
-        if (params.bit(5400, 0) && modal.distance == Distance::kIncremental) {
+        angle = scaled_word(words.at('R'), 0.001, params.bit(config::param::kCalculatorDecimal));
+        if (params.bit(config::param::kRotationIncremental) &&
+            modal.distance == Distance::kIncremental) {
           angle += frame.rotating ? rotation_angle : 0.0;
         }
       }
@@ -207,9 +208,9 @@ Flow<bool> Interpreter::Impl::apply_frame_code(const Words& words, const MillReq
       next.scale = {1.0, 1.0, 1.0};
       break;
     case 510: {
-      const double inc = params.bit(5400, 7) ? 0.00001 : 0.001;
-      const bool calc = params.bit(3401, 0);
-      double all = params.get(5411) * inc;
+      const double inc = params.bit(config::param::kScalingFine) ? 0.00001 : 0.001;
+      const bool calc = params.bit(config::param::kCalculatorDecimal);
+      double all = params.get(config::param::kMagnification) * inc;
       if (words.has('P')) all = scaled_word(words.at('P'), inc, calc);
       std::array<double, 3> f{all, all, all};
       for (int i = 0; i < 3; ++i) {
@@ -325,7 +326,7 @@ Flow<crc::BlockMode> Interpreter::Impl::comp_mode(const BlockPlan& plan) const {
   }
   // 5003#0 SUP: start-up and cancel of type A (0) or B (1), FANUC parameter
   // manual (cutter compensation C).
-  m.type_b = params.bit(5003, 0);
+  m.type_b = params.bit(config::param::kCompStartTypeB);
   // G28/G30 and G53 in offset mode: the vector is cancelled for the block's
   // moves and built again at the next move (FANUC operator's manual, cutter
   // compensation C, "reference position return / G53 in offset mode").
@@ -506,7 +507,7 @@ Flow<Step> Interpreter::Impl::g37_block(const Words& words, CommandSink& out) {
   AxisVec approach = pos;
   approach[axis] = target[axis] - dir * gamma;
   if (dir * (approach[axis] - pos[axis]) > 0.0) {
-    emit(out, canon::Rapid{approach, params.bit(1401, 1)});
+    emit(out, canon::Rapid{approach, params.bit(config::param::kLinearRapid)});
     pos = approach;
   }
   canon::Skip sk;
@@ -619,7 +620,7 @@ Flow<Step> Interpreter::Impl::canned_cycle(const Words& words, CommandSink& out)
                    work_of(z, m[z])};
     return xform::to_program(frame, w);
   };
-  const bool linear = params.bit(1401, 1);
+  const bool linear = params.bit(config::param::kLinearRapid);
   const double feed = feed_mm_per_min();
   for (int k = 0; k < repeats; ++k) {
     AxisVec target;
@@ -649,7 +650,8 @@ Flow<Step> Interpreter::Impl::canned_cycle(const Words& words, CommandSink& out)
     h.q = d.q;
     h.dwell_s = cycles::uses_p(modal.cycle) ? d.p_ms / 1000.0 : 0.0;
     h.peck_clearance = params.get(modal.cycle == Cycle::kG73 ? 5114 : 5115) / unit_mm();
-    h.shift_dir = cycles::shift_direction(static_cast<int>(params.get(5101)) >> 4);
+    h.shift_dir =
+        cycles::shift_direction(static_cast<int>(params.get(config::param::kShiftDirection)) >> 4);
     h.spindle_dir = modal.spindle_dir != 0 ? modal.spindle_dir : 1;
     for (const cycles::Move& m : cycles::hole_moves(h)) {
       const xform::Point w = xform::to_work(frame, m.to);

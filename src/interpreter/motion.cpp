@@ -23,7 +23,7 @@ Flow<void> Interpreter::Impl::dwell(const Words& words, CommandSink& out) {
     seconds = word_length(words.at('U'), false);
   }
   if (seconds < 0) return fail(AlarmId::kBadValue, "negative dwell", loc(cur_col));
-  if (modal.feed_mode == FeedMode::kPerRev && params.bit(3405, 1)) {
+  if (modal.feed_mode == FeedMode::kPerRev && params.bit(config::param::kDwellRevolutions)) {
     // 3405#1 DWL: in feed per revolution the dwell counts spindle
     // revolutions (X1. = 1 revolution, P1000 = 1 revolution).
     auto s = need_spindle_for_feed(loc(cur_col));
@@ -62,7 +62,7 @@ Flow<void> Interpreter::Impl::reference_return(const Words& words, int g, Comman
   for (int i = 0; i < axis_count; ++i) {
     if (moved.has(i)) ref[i] = point != nullptr ? (*point)[i] : 0.0;
   }
-  const bool linear = params.bit(1401, 1);
+  const bool linear = params.bit(config::param::kLinearRapid);
   emit(out, canon::Rapid{mid, linear});
   emit(out, canon::Rapid{ref, linear});
   pos = ref;
@@ -78,7 +78,7 @@ Flow<Step> Interpreter::Impl::motion(const Words& words, CommandSink& out, bool 
   if (g53 && !skip) {
     // G53 positions at rapid traverse whatever the modal motion (B-63944EN
     // "Machine coordinate system"); in G91 it is an incremental rapid.
-    emit(out, canon::Rapid{target, params.bit(1401, 1)});
+    emit(out, canon::Rapid{target, params.bit(config::param::kLinearRapid)});
     pos = target;
     motion_since_sync = true;
     return Step::kContinue;
@@ -92,7 +92,7 @@ Flow<Step> Interpreter::Impl::motion(const Words& words, CommandSink& out, bool 
   const bool exact = modal.path == PathMode::kExactStop || words.has_g(90);
   switch (modal.motion) {
     case Motion::kRapid:
-      emit(out, canon::Rapid{target, params.bit(1401, 1)});
+      emit(out, canon::Rapid{target, params.bit(config::param::kLinearRapid)});
       break;
     case Motion::kLinear:
       if (feed_mm_per_min() <= 0.0) {
@@ -152,7 +152,9 @@ Flow<void> Interpreter::Impl::arc(const Words& words, const AxisVec& target, Com
   const bool flipped = framed && ((frame.mirror[0] != (frame.scale[0] < 0.0)) !=
                                   (frame.mirror[1] != (frame.scale[1] < 0.0)));
   const bool ccw = (modal.motion == Motion::kCcwArc) != flipped;
-  const double tol = params.get(3410) > 0 ? params.get(3410) : 0.02;
+  const double tol = params.get(config::param::kArcRadiusTolerance) > 0
+                         ? params.get(config::param::kArcRadiusTolerance)
+                         : 0.02;
   double cx = 0, cy = 0;
   if (words.has('R')) {
     const double r =

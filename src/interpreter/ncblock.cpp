@@ -65,7 +65,7 @@ std::string g_name(int code) {
 
 double Interpreter::Impl::word_length(const WordVal& w, bool rotary) const noexcept {
   (void)rotary;
-  if (w.is_expr || w.has_point || params.bit(3401, 0)) return w.value;
+  if (w.is_expr || w.has_point || params.bit(config::param::kCalculatorDecimal)) return w.value;
   // Without a decimal point a length is in least input increments.
   const double increment = modal.units == Units::kInch ? 0.0001 : 0.001;
   return w.value * increment;
