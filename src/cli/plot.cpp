@@ -47,6 +47,7 @@ Result<void> PlotCapture::write(const std::vector<std::string>& files, const Ses
   plot::PlotInput in;
   in.program = out.program;
   in.source = out.source;
+  in.read_file = read_program_text;
   in.machine = &s.machine;
   in.dialect = &s.dialect;
   in.scene = &s.scene;

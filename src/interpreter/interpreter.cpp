@@ -80,7 +80,7 @@ Flow<void> Interpreter::Impl::init(const AxisVec& start) {
   main.file = file.get();
   main.start = file->src->tell();
   main.resume = main.start;
-  contexts.push_back(CallContext{file->display, 0, CallContext::kNone, 0, ""});
+  contexts.push_back(CallContext{file->display, 0, CallContext::kNone, 0, "", file->path});
   files.push_back(std::move(file));
   frames.push_back(main);
   return {};

@@ -89,6 +89,7 @@ struct CallContext {
   std::uint32_t parent = kNone;  // the calling context
   std::uint32_t call_line = 0;   // line of the calling block in the parent
   std::string call;              // "G65 P9023", "M98 P1000", "G66 P9023"
+  std::string path;              // where the file was read from ("" when given as text)
   friend bool operator==(const CallContext&, const CallContext&) = default;
 };
 

@@ -262,9 +262,9 @@ Flow<void> Interpreter::Impl::call(std::int64_t program, int repeats, bool macro
   f.program = program;
   f.repeats_left = repeats - 1;
   f.macro = macro;
-  f.context = context_of(
-      CallContext{file->display, program, frames.back().context, where.line,
-                  (macro ? (modal_call ? "G66 P" : "G65 P") : "M98 P") + std::to_string(program)});
+  f.context = context_of(CallContext{
+      file->display, program, frames.back().context, where.line,
+      (macro ? (modal_call ? "G66 P" : "G65 P") : "M98 P") + std::to_string(program), file->path});
   frames.push_back(f);
   return file->src->seek(at);
 }

@@ -278,6 +278,7 @@ Result<RunResult> Simulator::run(const interp::Setup& setup, const RunOptions& o
       r.torque = &plant.torque();
       r.feed_mm_per_min = tout.path_speed * 60.0;
       r.line = tout.line;
+      r.source = tout.source;
       r.file = file_of(tout.source);
       r.plant = &plant;
       r.handshake = tout.handshake;

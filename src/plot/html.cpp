@@ -264,6 +264,8 @@ void write_samples(Json& j, const PlotModel& m) {
   j.array(m.t, [&](double v) { j.num(v); });
   j.key("line");
   j.array(m.line, [&](std::uint32_t v) { j.integer(v); });
+  j.key("ctx");
+  j.array(m.ctx, [&](std::uint32_t v) { j.integer(v); });
   for (int k = 0; k < 3; ++k) {
     j.key(k == 0 ? "px" : k == 1 ? "py" : "pz");
     j.array(m.path, [&](const Vec3& p) { j.num(p[k]); });
@@ -272,6 +274,7 @@ void write_samples(Json& j, const PlotModel& m) {
   j.array(m.blocks, [&](const BlockView& b) {
     j.open('{');
     j.integer("line", b.line);
+    j.integer("ctx", b.ctx);
     j.str("kind", move_kind_name(b.kind));
     j.num("t0", b.t0);
     j.num("t1", b.t1);
@@ -311,6 +314,7 @@ void write_skips(Json& j, const PlotModel& m) {
     j.open('{');
     j.integer("index", s.index);
     j.integer("line", s.line);
+    j.integer("ctx", s.ctx);
     j.str("block", s.block);
     j.str("signal", s.signal);
     j.str("kind", s.kind);
@@ -350,15 +354,28 @@ void write_skips(Json& j, const PlotModel& m) {
 std::string to_json(const PlotModel& m) {
   Json j;
   j.open('{');
-  j.str("format", "skipnc-plot/1");
+  j.str("format", "skipnc-plot/2");
   write_meta(j, m);
   write_geometry(j, m);
   write_samples(j, m);
   write_skips(j, m);
   j.key("signals");
   j.array(m.signal_names, [&](const std::string& s) { j.str(s); });
-  j.key("source");
-  j.array(m.source, [&](const std::string& s) { j.str(s); });
+  j.key("files");
+  j.array(m.files, [&](const ListingFile& f) {
+    j.open('{');
+    j.str("name", f.name);
+    j.key("source");
+    j.array(f.lines, [&](const std::string& s) { j.str(s); });
+    j.close('}');
+  });
+  j.key("contexts");
+  j.array(m.contexts, [&](const PlaceContext& c) {
+    j.open('{');
+    j.integer("file", c.file);
+    j.str("where", c.where);
+    j.close('}');
+  });
   j.key("variables");
   j.array(m.variables, [&](const std::pair<std::string, std::optional<double>>& v) {
     j.open('[');

@@ -69,7 +69,7 @@ std::vector<ViewDef> views_for(const std::array<int, 3>& xyz, const std::vector<
 const BlockRun* skip_block(const std::vector<BlockRun>& blocks, const interp::SkipRecord& s) {
   const BlockRun* best = nullptr;
   for (const auto& b : blocks) {
-    if (b.line != s.line) continue;
+    if (b.line != s.line || b.source != s.context) continue;
     if (b.t0 > s.time_s + 1e-9) break;
     best = &b;
   }
@@ -89,6 +89,39 @@ std::vector<std::string> split_lines(std::string_view text, std::size_t max_line
     i = nl + 1;
   }
   return out;
+}
+
+// The files of the run for the listing, one per distinct file of its call
+// contexts ([0] the main program, with the text the caller gave), and for
+// each context the file its lines are in. At most kListingLines lines are
+// kept over all files.
+constexpr std::size_t kListingLines = 200000;
+
+void build_listing(const PlotInput& in, PlotModel& pm) {
+  const auto& contexts = in.result->contexts;
+  pm.files.push_back(ListingFile{in.program, split_lines(in.source, kListingLines)});
+  std::size_t lines = pm.files[0].lines.size();
+  std::vector<std::string> paths{contexts.empty() ? std::string() : contexts[0].path};
+  pm.contexts.push_back(PlaceContext{0, ""});
+  for (std::size_t c = 1; c < contexts.size(); ++c) {
+    const interp::CallContext& cc = contexts[c];
+    std::uint32_t f = 0;
+    while (f < pm.files.size() && !(pm.files[f].name == cc.file && paths[f] == cc.path)) ++f;
+    if (f == pm.files.size()) {
+      ListingFile lf{cc.file, {}};
+      if (in.read_file && !cc.path.empty() && lines < kListingLines) {
+        lf.lines = split_lines(in.read_file(cc.path), kListingLines - lines);
+        lines += lf.lines.size();
+      }
+      pm.files.push_back(std::move(lf));
+      paths.push_back(cc.path);
+    }
+    // where() names a line: "O9810.nc:0 (O9810) called from ..."; the
+    // context alone is the same without the ":0".
+    std::string where = report::where(contexts, static_cast<std::uint32_t>(c), 0);
+    where.erase(cc.file.size(), 2);
+    pm.contexts.push_back(PlaceContext{f, std::move(where)});
+  }
 }
 
 // Length (gauge line to tip, mm) of the tool in the spindle at time t, from
@@ -131,6 +164,7 @@ void build_skips(const PlotInput& in, PlotModel& pm) {
     SkipMark sk;
     sk.index = k;
     sk.line = s.line;
+    sk.ctx = s.context;
     sk.block = s.block;
     sk.signal = s.signal;
     sk.triggered = s.triggered;
@@ -150,7 +184,10 @@ void build_skips(const PlotInput& in, PlotModel& pm) {
       sk.stop_t = std::max(b->t1, s.time_s);
       start = b->start_act;
     }
-    while (next_move < moves.size() && moves[next_move].line != s.line) ++next_move;
+    while (next_move < moves.size() &&
+           (moves[next_move].line != s.line || moves[next_move].source != s.context)) {
+      ++next_move;
+    }
     AxisVec target = s.machine_position;
     if (next_move < moves.size()) {
       target = moves[next_move].target;
@@ -185,8 +222,9 @@ void build_skips(const PlotInput& in, PlotModel& pm) {
       rest += fmt::format(" {}{}", a, num(s.end_position[i]));
       sk.vars.push_back(std::move(v));
     }
-    sk.label = fmt::format("L{}{}{}", s.line, s.triggered ? "" : " no signal,", vars);
-    sk.rest_label = fmt::format("L{} rest{}", s.line, rest);
+    const std::string at = place_label(pm, s.context, s.line, s.n);
+    sk.label = fmt::format("{}{}{}", at, s.triggered ? "" : " no signal,", vars);
+    sk.rest_label = fmt::format("{} rest{}", at, rest);
     pm.skips.push_back(std::move(sk));
   }
 }
@@ -270,6 +308,21 @@ std::string clean_utf8(std::string_view text) {
   return utf8::make_valid(text);
 }
 
+std::string place_label(const PlotModel& pm, std::uint32_t ctx, std::uint32_t line, int n) {
+  const std::uint32_t f = ctx < pm.contexts.size() ? pm.contexts[ctx].file : 0;
+  std::string out =
+      f == 0 ? fmt::format("L{}", line) : fmt::format("{}:{}", pm.files[f].name, line);
+  if (n >= 0) out += fmt::format(" N{}", n);
+  return out;
+}
+
+std::string place_text(const PlotModel& pm, std::uint32_t ctx, std::uint32_t line) {
+  if (ctx == 0 || ctx >= pm.contexts.size()) return fmt::format("line {}", line);
+  std::string where = pm.contexts[ctx].where;
+  where.insert(pm.files[pm.contexts[ctx].file].name.size(), fmt::format(":{}", line));
+  return where;
+}
+
 std::string skip_var_name(const config::Dialect& d, int axis_index, char axis_name) {
   if (d.skip_vars.work_base > 0) return fmt::format("#{}", d.skip_vars.work_base + axis_index);
   if (!d.skip_vars.named_local.empty())
@@ -301,7 +354,9 @@ PlotModel build_model(const PlotInput& in) {
   if (r.alarm) {
     const report::AlarmView v = report::view_alarm(*r.alarm, in.dialect);
     pm.alarm = fmt::format("{} ({}): {}", v.code, v.number, v.message);
-    if (r.alarm->loc.line > 0) pm.alarm += fmt::format(" at line {}", r.alarm->loc.line);
+    if (r.alarm->loc.line > 0) {
+      pm.alarm += " at " + report::where(r.contexts, r.alarm_context, r.alarm->loc.line);
+    }
   }
   for (const auto& a : m.axes) pm.axis_names.push_back(a.name);
   pm.xyz = {m.axis_index('X'), m.axis_index('Y'), m.axis_index('Z')};
@@ -309,7 +364,7 @@ PlotModel build_model(const PlotInput& in) {
   pm.signal_names = rec.signal_names();
   pm.messages = r.messages;
   pm.variables = in.variables;
-  pm.source = split_lines(in.source, 200000);
+  build_listing(in, pm);
 
   const auto& samples = rec.samples();
   pm.t.reserve(samples.size());
@@ -319,6 +374,7 @@ PlotModel build_model(const PlotInput& in) {
   for (const auto& s : samples) {
     pm.t.push_back(s.t);
     pm.line.push_back(s.line);
+    pm.ctx.push_back(s.source);
     const double len = tools.at(s.t);
     pm.tip_path = pm.tip_path || len != 0.0;
     pm.path.push_back(tip(to3(s.act, pm.xyz), len));
@@ -329,6 +385,7 @@ PlotModel build_model(const PlotInput& in) {
     const BlockRun& b = blocks[i];
     BlockView v;
     v.line = b.line;
+    v.ctx = b.source;
     v.kind = b.kind;
     v.t0 = b.t0;
     v.t1 = b.t1;

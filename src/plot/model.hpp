@@ -7,6 +7,7 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <optional>
 #include <string>
@@ -96,6 +97,7 @@ struct ViewDef {
 // block's end) through samples [s0, s1) to `to`.
 struct BlockView {
   std::uint32_t line = 0;
+  std::uint32_t ctx = 0;  // call context (PlotModel::contexts)
   MoveKind kind = MoveKind::kNone;
   double t0 = 0.0, t1 = 0.0;
   std::size_t s0 = 0, s1 = 0;
@@ -112,6 +114,7 @@ struct SkipVar {
 struct SkipMark {
   std::size_t index = 0;
   std::uint32_t line = 0;
+  std::uint32_t ctx = 0;
   std::string block, signal, kind;
   bool triggered = false;
   int p = -1;
@@ -145,6 +148,20 @@ struct Channel {
   double min_span = 1.0;  // smallest value range a strip is scaled to
 };
 
+// A file the run executed blocks of, with its text for the listing.
+struct ListingFile {
+  std::string name;                // as the report names it
+  std::vector<std::string> lines;  // 1-based: lines[line - 1]; empty when unknown
+};
+
+// A call context of the run (interp::CallContext): the file its lines are
+// in, and how a place in it is named ("L12" in the main program,
+// "O9810.nc:12" in another file).
+struct PlaceContext {
+  std::uint32_t file = 0;  // PlotModel::files
+  std::string where;       // "O9810.nc (O9810) called from probe.nc:9 (G65 P9810)"; "" for the main
+};
+
 struct PlotModel {
   std::string program, machine, dialect, status, alarm;
   double time_s = 0.0;
@@ -153,14 +170,16 @@ struct PlotModel {
   std::array<int, 3> xyz{-1, -1, -1};  // machine axis index of X, Y, Z (-1: absent)
   std::vector<double> t;               // sample instants
   std::vector<std::uint32_t> line;     // sample lines
+  std::vector<std::uint32_t> ctx;      // sample call contexts
   std::vector<Vec3> path;              // actual position per sample (x, y, z)
   std::vector<BlockView> blocks;
   std::vector<Channel> channels;
   std::vector<Shape> shapes;
   std::vector<SkipMark> skips;
   std::vector<ViewDef> views;
-  Box3 extent;                      // everything the views must show
-  std::vector<std::string> source;  // program lines (1-based: source[line - 1])
+  Box3 extent;                         // everything the views must show
+  std::vector<ListingFile> files;      // [0] the main program
+  std::vector<PlaceContext> contexts;  // [0] the main program
   std::vector<std::pair<std::string, std::optional<double>>> variables;
   std::vector<std::string> messages;
   std::vector<std::string> signal_names;
@@ -173,6 +192,10 @@ struct PlotModel {
 struct PlotInput {
   std::string program;      // name shown in the title
   std::string_view source;  // program text ("" when unknown)
+  // Reads the text of a file a call went to (a macro, a subprogram file),
+  // by the path the interpreter read it from; null: those files are listed
+  // without text.
+  std::function<std::string(const std::string& path)> read_file;
   const config::MachineConfig* machine = nullptr;
   const config::Dialect* dialect = nullptr;
   const machine::Scene* scene = nullptr;
@@ -189,6 +212,13 @@ std::vector<Shape> scene_shapes(const machine::Scene& scene, const config::Machi
 // What of the scene has a size of its own (parts, tool setter): the views
 // show all of it.
 void add_scene_extent(const machine::Scene& scene, Box3& extent);
+
+// A block's place in a label: "L12" in the main program's file,
+// "O9810.nc:12" in another, with " N30" when `n` >= 0.
+std::string place_label(const PlotModel& pm, std::uint32_t ctx, std::uint32_t line, int n = -1);
+// The same for people: "line 12" in the main program, else the report's
+// where ("O9810.nc:12 (O9810) called from probe.nc:9 (G65 P9810)").
+std::string place_text(const PlotModel& pm, std::uint32_t ctx, std::uint32_t line);
 
 // "#5063" (Fanuc-style numbered) or the dialect's named variable.
 std::string skip_var_name(const config::Dialect& d, int axis_index, char axis_name);

@@ -99,7 +99,7 @@ void Recorder::emit(const canon::Stamped& c) {
           if (cmd.code == 6 && selected_tool_ >= 0) pending_tool_ = selected_tool_;
         } else if constexpr (std::is_same_v<T, canon::Skip>) {
           kind = MoveKind::kSkip;
-          skip_moves_.push_back(SkipMove{c.line, tail_, cmd.target, cmd.feed_mm_per_min});
+          skip_moves_.push_back(SkipMove{c.line, c.source, tail_, cmd.target, cmd.feed_mm_per_min});
           tail_from_trace_ = true;
         }
         if constexpr (std::is_same_v<T, canon::Rapid> || std::is_same_v<T, canon::Feed> ||
@@ -110,15 +110,16 @@ void Recorder::emit(const canon::Stamped& c) {
       c.cmd);
   if (kind == MoveKind::kNone) return;
   if (pending_.size() >= kMaxPending) pending_.pop_front();
-  pending_.push_back(Pending{c.line, kind});
+  pending_.push_back(Pending{c.line, c.source, kind});
 }
 
 // The kind of the command that started the block at `line`. Commands are
 // emitted before the kernel runs them, in order; a command that never shows
 // in the trace (a zero-length move) is passed over.
-MoveKind Recorder::take_kind(std::uint32_t line) {
-  const auto it = std::find_if(pending_.begin(), pending_.end(),
-                               [&](const Pending& p) { return p.line == line; });
+MoveKind Recorder::take_kind(std::uint32_t line, std::uint32_t source) {
+  const auto it = std::find_if(pending_.begin(), pending_.end(), [&](const Pending& p) {
+    return p.line == line && p.source == source;
+  });
   if (it == pending_.end()) return MoveKind::kNone;
   const MoveKind k = it->kind;
   pending_.erase(pending_.begin(), it + 1);
@@ -201,6 +202,7 @@ void Recorder::row(const machine::TraceRow& r) {
   Sample cur;
   cur.t = r.time_s;
   cur.line = r.line;
+  cur.source = r.source;
   cur.feed_mm_min = r.feed_mm_per_min;
   if (r.commanded != nullptr) cur.cmd = *r.commanded;
   if (r.actual != nullptr) cur.act = *r.actual;
@@ -219,8 +221,8 @@ void Recorder::row(const machine::TraceRow& r) {
   if (!have_prev_) {
     have_prev_ = true;
     cur.pin = kPinHard;
-    blocks_.push_back(
-        BlockRun{cur.line, take_kind(cur.line), cur.t, cur.t, cur.act, cur.act, cur.cmd});
+    blocks_.push_back(BlockRun{cur.line, cur.source, take_kind(cur.line, cur.source), cur.t, cur.t,
+                               cur.act, cur.act, cur.cmd});
     keep(cur);
     reset_sleeve(cur);
     prev_ = cur;
@@ -230,15 +232,15 @@ void Recorder::row(const machine::TraceRow& r) {
     tool_changes_.push_back(ToolChange{cur.t, pending_tool_});
     pending_tool_ = -1;
   }
-  const bool new_block = cur.line != prev_.line;
+  const bool new_block = cur.line != prev_.line || cur.source != prev_.source;
   const bool edge = cur.signals != prev_.signals;
   if (new_block) {
     BlockRun& b = blocks_.back();
     b.t1 = prev_.t;
     b.end_act = prev_.act;
     b.end_cmd = prev_.cmd;
-    blocks_.push_back(
-        BlockRun{cur.line, take_kind(cur.line), cur.t, cur.t, cur.act, cur.act, cur.cmd});
+    blocks_.push_back(BlockRun{cur.line, cur.source, take_kind(cur.line, cur.source), cur.t, cur.t,
+                               cur.act, cur.act, cur.cmd});
   }
   const bool prev_kept = !kept_.empty() && kept_.back().t >= prev_.t;
   if (edge) {

@@ -31,6 +31,7 @@ const char* move_kind_name(MoveKind k) noexcept;
 struct Sample {
   double t = 0.0;  // simulated seconds
   std::uint32_t line = 0;
+  std::uint32_t source = 0;   // call context of the block (interp::CallContext)
   std::uint32_t signals = 0;  // bit i: signal i (signal_names()[i]) on
   double feed_mm_min = 0.0;   // commanded path speed
   AxisVec cmd;                // machine coordinates, mm
@@ -42,9 +43,11 @@ struct Sample {
 inline constexpr std::uint8_t kPinSoft = 1;  // block boundary
 inline constexpr std::uint8_t kPinHard = 2;  // signal edge and the periods around it
 
-// One executed block: consecutive servo periods with the same source line.
+// One executed block: consecutive servo periods with the same source line
+// (in the same call context).
 struct BlockRun {
   std::uint32_t line = 0;
+  std::uint32_t source = 0;
   MoveKind kind = MoveKind::kNone;
   double t0 = 0.0;  // first period of the block
   double t1 = 0.0;  // last period of the block
@@ -56,6 +59,7 @@ struct BlockRun {
 // A G31-family command as the interpreter emitted it (machine coordinates).
 struct SkipMove {
   std::uint32_t line = 0;
+  std::uint32_t source = 0;
   AxisVec start;  // where the command stood when the block began
   AxisVec target;
   double feed_mm_min = 0.0;
@@ -99,13 +103,14 @@ class Recorder final : public machine::TraceSink, public interp::CommandSink {
  private:
   struct Pending {
     std::uint32_t line;
+    std::uint32_t source;
     MoveKind kind;
   };
   void keep(const Sample& s);
   void reset_sleeve(const Sample& anchor);
   bool sleeve_accepts(const Sample& s);
   void thin();
-  MoveKind take_kind(std::uint32_t line);
+  MoveKind take_kind(std::uint32_t line, std::uint32_t source);
 
   int n_ = 0;
   Decimation d_;

@@ -279,7 +279,8 @@ double draw_panel(Svg& o, const PlotModel& m, double x, double y, double w) {
       rest += fmt::format("{}{}{}", rest.empty() ? "" : " ",
                           m.axis_names[static_cast<std::size_t>(a)], num(s.end_position[a]));
     }
-    const std::string head = fmt::format("{}. line {}: {}", s.index + 1, s.line, s.block);
+    const std::string head =
+        fmt::format("{}. {}: {}", s.index + 1, place_text(m, s.ctx, s.line), s.block);
     const std::string what =
         s.triggered ? fmt::format("{} at {} s: stored {}", s.signal, num(s.latch_t, 6), vars)
                     : fmt::format("no signal: ran to its end point, stored {}", vars);

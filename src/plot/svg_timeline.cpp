@@ -151,7 +151,7 @@ double draw_timeline(Svg& o, const PlotModel& m, double x, double y, double w) {
         "stroke=\"#e0007a\" "
         "stroke-width=\"1.5\"/>\n",
         s.index, xl, strips_top, strips_bottom);
-    const std::string text = fmt::format("L{}", s.line);
+    const std::string text = place_label(m, s.ctx, s.line);
     const double tw = text_width(text, 10);
     Box2 b{xl - tw / 2, band, tw, 12};
     bool leader = false;

@@ -285,11 +285,73 @@ def run(skipnc, browser, tmp):
     check(info is not None and 'line 6: G31 X60. F300.' in info.group(1), 'block 3 is line 6 (the first skip)')
     check(console_messages(err) == [], 'no console messages when stepping')
 
+    # 4. A skip inside a macro file: the listing shows the macro's own text
+    #    and highlights its line, not the main program's line of that number.
+    macro_checks(skipnc, browser, tmp, scene)
+
     if failures:
         print('%d check(s) failed' % len(failures))
         return 1
     print('plot page: all checks passed')
     return 0
+
+
+MAIN = """%
+O0200 (MAIN: CALLS A TOUCH MACRO)
+G21 G90 G17 G54
+G0 X0 Y0 Z5.
+G65 P9200 X60.
+G0 X0
+M30
+%
+"""
+MACRO = """%
+O9200 (TOUCH ALONG X)
+(X: WHERE TO STOP IF NOTHING IS MET)
+G31 X#24 F300.
+#100=#5061
+M99
+%
+"""
+
+
+def macro_checks(skipnc, browser, tmp, scene):
+    folder = os.path.join(tmp, 'macro')
+    os.mkdir(folder)
+    prog = os.path.join(folder, 'main.nc')
+    open(prog, 'w').write(MAIN)
+    open(os.path.join(folder, 'O9200.nc'), 'w').write(MACRO)
+    page = os.path.join(folder, 'main.html')
+    r = subprocess.run([skipnc, 'run', 'main.nc', '-s', scene, '--plot', page, '-q'],
+                       capture_output=True, text=True, timeout=300, cwd=folder)
+    check(r.returncode == 0, 'macro run exits 0 (%d: %s)' % (r.returncode, r.stderr))
+    html = open(page).read()
+    data = json.loads(re.search(r'<script type="application/json" id="plot-data">(.*?)</script>',
+                                html, re.S).group(1))
+    names = [f['name'] for f in data['files']]
+    check(names == ['main.nc', 'O9200.nc'], 'the page lists the main program and the macro: %s' % names)
+    macro_file = names.index('O9200.nc') if 'O9200.nc' in names else -1
+    step = None
+    for i, b in enumerate(data['blocks']):
+        if b['line'] == 4 and data['contexts'][b['ctx']]['file'] == macro_file:
+            step = i + 1
+            break
+    check(step is not None, 'a block runs at O9200.nc line 4 (the G31)')
+    if step is None:
+        return
+    dom, err = chromium(browser, 'file://' + page + '#step=%d' % step, tmp, ['--dump-dom'])
+    info = re.search(r'<span id="block-info">([^<]*)</span>', dom)
+    check(info is not None and 'O9200.nc:4 (O9200) called from main.nc:5 (G65 P9200): G31 X#24 F300.'
+          in info.group(1), 'the block is named in the macro: %s' % (info and info.group(1)))
+    current = re.findall(r'<div ([^>]*class="src[^"]*current[^"]*"[^>]*)>(.*?)</div>', dom)
+    check(len(current) == 1, 'one listing line is highlighted (%d)' % len(current))
+    if len(current) == 1:
+        attrs, row = current[0]
+        check('data-file="%d"' % macro_file in attrs and 'data-line="4"' in attrs,
+              'the highlighted line is the macro\'s line 4: %s' % attrs)
+        check('G31 X#24 F300.' in row, 'the highlighted line shows the macro\'s text: %s' % row)
+    check('>O9200.nc</div>' in dom, 'the listing has a section for the macro file')
+    check(console_messages(err) == [], 'no console messages on the macro page')
 
 
 if __name__ == '__main__':

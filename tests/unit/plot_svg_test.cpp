@@ -198,12 +198,57 @@ TEST(PlotSvg, PageFetchesNothingAndCarriesEverySkip) {
   ASSERT_NE(a, std::string::npos);
   const auto b = page.find("</script>", a);
   const json data = json::parse(page.substr(a + open.size(), b - a - open.size()));
-  EXPECT_EQ(data["format"], "skipnc-plot/1");
+  EXPECT_EQ(data["format"], "skipnc-plot/2");
   ASSERT_EQ(data["skips"].size(), 5u);
   EXPECT_EQ(data["skips"][0]["line"], 6);
   EXPECT_EQ(data["skips"][0]["vars"][0]["name"], "#5061");
   EXPECT_NEAR(data["skips"][0]["vars"][0]["value"].get<double>(), 40.0, 1e-6);
-  EXPECT_EQ(data["source"].size(), 20u);  // the program, line by line
+  ASSERT_EQ(data["files"].size(), 1u);                // the main program only: no call
+  EXPECT_EQ(data["files"][0]["source"].size(), 20u);  // line by line
+  EXPECT_EQ(data["skips"][0]["ctx"], 0);
+  EXPECT_EQ(data["contexts"].size(), 1u);
+}
+
+// A skip inside a macro file (issue 16): the SVG's labels and skip card name
+// the macro's file and line, and the page carries the macro's own text with
+// the skip's block in the macro's context (was: "L4" and line 4 of the main
+// program, "G65 P9200 X60.").
+TEST(PlotSvg, ASkipInAMacroIsNamedByTheMacrosFileAndLine) {
+  TempDir dir;
+  dir.write("main.nc",
+            "%\nO0200 (MAIN)\nG21 G90 G17 G54\nG0 X0 Y0 Z5.\nN50 G65 P9200 X60.\n"
+            "G0 X0\nM30\n%\n");
+  dir.write("O9200.nc",
+            "%\nO9200 (TOUCH ALONG X)\n(X: WHERE TO STOP)\nN10 G31 X#24 F300.\n"
+            "#100=#5061\nM99\n%\n");
+  const auto scene = dir.write("bore.toml", kScene);
+  const auto svg = (dir.path / "main.svg").string();
+  const auto html = (dir.path / "main.html").string();
+  const auto r = run_cli({"run", (dir.path / "main.nc").string(), "-s", scene.string(), "--plot",
+                          svg, "--plot", html, "-q"});
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  const std::string picture = read_file(svg);
+  EXPECT_NE(picture.find("O9200.nc:4 N10 #5061=40.0000"), std::string::npos)
+      << "the latch label names the macro's line and N";
+  const auto card = picture.find("1. O9200.nc:4 (O9200) called from ");
+  ASSERT_NE(card, std::string::npos) << "the skip card names the macro's line";
+  EXPECT_EQ(picture.find(">L4"), std::string::npos) << "no label names line 4 of the main program";
+  const std::string page = read_file(html);
+  const std::string open = "<script type=\"application/json\" id=\"plot-data\">";
+  const auto a = page.find(open);
+  ASSERT_NE(a, std::string::npos);
+  const json data =
+      json::parse(page.substr(a + open.size(), page.find("</script>", a) - a - open.size()));
+  ASSERT_EQ(data["files"].size(), 2u);
+  EXPECT_EQ(data["files"][1]["name"], "O9200.nc");
+  EXPECT_EQ(data["files"][1]["source"][3], "N10 G31 X#24 F300.");
+  ASSERT_EQ(data["skips"].size(), 1u);
+  const int ctx = data["skips"][0]["ctx"].get<int>();
+  EXPECT_EQ(data["contexts"][ctx]["file"], 1);
+  const std::string where = data["contexts"][ctx]["where"];
+  EXPECT_EQ(where.rfind("O9200.nc (O9200) called from ", 0), 0u) << where;
+  EXPECT_NE(where.find("main.nc:5 (G65 P9200)"), std::string::npos) << where;
+  EXPECT_EQ(data["skips"][0]["line"], 4);
 }
 
 // Two minutes of slow feed end in a touch: the drawing holds a few hundred

@@ -56,8 +56,23 @@
   function dot(p, u) { return p[0] * u[0] + p[1] * u[1] + p[2] * u[2]; }
   function samplePt(i) { return [D.px[i], D.py[i], D.pz[i]]; }
   function ink(name) { return D.inks[name]; }
-  function sourceLine(line) {
-    return line > 0 && line <= D.source.length ? D.source[line - 1].trim() : '';
+  // A block is (ctx, line): its call context names the file the line is in.
+  function fileOf(ctx) { var c = D.contexts[ctx]; return c ? c.file : 0; }
+  function sourceLine(ctx, line) {
+    var src = (D.files[fileOf(ctx)] || {source: []}).source;
+    return line > 0 && line <= src.length ? src[line - 1].trim() : '';
+  }
+  // "line 12" in the main program, "O9810.nc:12 (O9810) called from ..." in a call.
+  function place(ctx, line) {
+    var c = D.contexts[ctx];
+    if (!ctx || !c) return 'line ' + line;
+    var name = D.files[c.file].name;
+    return name + ':' + line + c.where.slice(name.length);
+  }
+  // "L12" in the main program's file, "O9810.nc:12" in another.
+  function placeShort(ctx, line) {
+    var f = fileOf(ctx);
+    return f === 0 ? 'L' + line : D.files[f].name + ':' + line;
   }
   function axisText(vals, axes) {
     var out = [];
@@ -225,6 +240,9 @@
   K.samplePt = samplePt;
   K.ink = ink;
   K.sourceLine = sourceLine;
+  K.fileOf = fileOf;
+  K.place = place;
+  K.placeShort = placeShort;
   K.axisText = axisText;
   K.allAxes = allAxes;
   K.lowerBound = lowerBound;

@@ -13,12 +13,13 @@
       info.textContent = 'All blocks shown. Step with \u2190 \u2192 or the buttons; click the path to pick a block.';
     } else {
       var b = D.blocks[i], axes = K.allAxes();
-      info.textContent = 'Block ' + (i + 1) + ' of ' + D.blocks.length + ' \u00b7 line ' + b.line +
-        (K.sourceLine(b.line) ? ': ' + K.sourceLine(b.line) : '') + ' \u00b7 ' + b.kind + ' \u00b7 ' +
+      info.textContent = 'Block ' + (i + 1) + ' of ' + D.blocks.length + ' \u00b7 ' + K.place(b.ctx, b.line) +
+        (K.sourceLine(b.ctx, b.line) ? ': ' + K.sourceLine(b.ctx, b.line) : '') + ' \u00b7 ' + b.kind + ' \u00b7 ' +
         K.num(b.t0, 3) + '\u2013' + K.num(b.t1, 3) + ' s \u00b7 ends at ' + K.axisText(b.end, axes) + ' (machine)';
     }
     document.querySelectorAll('#listing .src').forEach(function (n) {
-      var on = i >= 0 && +n.getAttribute('data-line') === D.blocks[i].line;
+      var on = i >= 0 && +n.getAttribute('data-line') === D.blocks[i].line &&
+               +n.getAttribute('data-file') === K.fileOf(D.blocks[i].ctx);
       n.classList.toggle('current', on);
       if (on && n.scrollIntoView) n.scrollIntoView({block: 'nearest'});
     });
@@ -88,7 +89,7 @@
       var vars = s.vars.map(function (v) { return v.name + ' = ' + K.num(v.value); }).join(', ');
       var rest = s.moved.map(function (a) { return D.meta.axes[a] + K.num(s.endPosition[a]); }).join(' ');
       box.appendChild(K.el('div', {cls: 'card', 'data-skip': s.index}, [
-        K.el('div', {cls: 'head', text: (s.index + 1) + '. line ' + s.line + ': ' + s.block}),
+        K.el('div', {cls: 'head', text: (s.index + 1) + '. ' + K.place(s.ctx, s.line) + ': ' + s.block}),
         K.el('div', {cls: 'latch', text: s.triggered ? s.signal + ' at ' + K.num(s.latchT, 6) + ' s: stored ' + vars
                                                    : 'no signal: ran to its end point, stored ' + vars}),
         K.el('div', {text: 'rest ' + rest + ' (work) at ' + K.num(s.stopT, 4) + ' s, ' + K.num(s.overtravel) + ' mm past the latch'}),
@@ -111,20 +112,29 @@
     }
     return box;
   }
+  // One section per file the run executed (the main program first, then
+  // each macro or subprogram file), its lines marked where blocks ran.
   function listing() {
     var box = K.el('div', {id: 'listing'});
-    if (!D.source.length) return box;
     var ran = {};
-    D.blocks.forEach(function (b) { ran[b.line] = true; });
-    D.skips.forEach(function (s) { ran[s.line] = 'skip'; });
-    D.source.forEach(function (text, k) {
-      var line = k + 1;
-      var row = K.el('div', {cls: 'src' + (ran[line] ? ' ran' : '') + (ran[line] === 'skip' ? ' skipline' : ''), 'data-line': line,
-                           onclick: function () {
-                             for (var i = 0; i < D.blocks.length; i++) if (D.blocks[i].line === line) { selectBlock(i); return; }
-                           }},
-                   [K.el('span', {cls: 'no', text: String(line)}), K.el('span', {text: text})]);
-      box.appendChild(row);
+    function key(ctx, line) { return K.fileOf(ctx) + ':' + line; }
+    D.blocks.forEach(function (b) { ran[key(b.ctx, b.line)] = true; });
+    D.skips.forEach(function (s) { ran[key(s.ctx, s.line)] = 'skip'; });
+    D.files.forEach(function (file, f) {
+      if (!file.source.length) return;
+      if (D.files.length > 1) box.appendChild(K.el('div', {cls: 'file', 'data-file': f, text: file.name}));
+      file.source.forEach(function (text, k) {
+        var line = k + 1, mark = ran[f + ':' + line];
+        var row = K.el('div', {cls: 'src' + (mark ? ' ran' : '') + (mark === 'skip' ? ' skipline' : ''),
+                             'data-line': line, 'data-file': f,
+                             onclick: function () {
+                               for (var i = 0; i < D.blocks.length; i++) {
+                                 if (D.blocks[i].line === line && K.fileOf(D.blocks[i].ctx) === f) { selectBlock(i); return; }
+                               }
+                             }},
+                     [K.el('span', {cls: 'no', text: String(line)}), K.el('span', {text: text})]);
+        box.appendChild(row);
+      });
     });
     return box;
   }
@@ -175,7 +185,7 @@
     S.views = D.views.map(K.makeView);
     S.views.forEach(function (vs) { grid.appendChild(vs.canvas); });
     var aside = K.el('aside', {}, [K.el('h2', {text: 'Legend'}), legend(), skipCards(), variables(),
-                                 D.source.length ? K.el('h2', {text: 'Program'}) : null, listing()]);
+                                 D.files.some(function (f) { return f.source.length; }) ? K.el('h2', {text: 'Program'}) : null, listing()]);
     S.tl = K.makeTimeline();
     var scope = K.el('div', {id: 'scope'}, [S.tl.canvas]);
     S.tip = K.el('div', {id: 'tip'});

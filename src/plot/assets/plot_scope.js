@@ -150,7 +150,7 @@
       ctx.strokeStyle = '#e0007a'; ctx.lineWidth = 1.5; ctx.setLineDash([]);
       ctx.beginPath(); ctx.moveTo(xl, top); ctx.lineTo(xl, bottom); ctx.stroke();
       ctx.font = '10px ' + FONT; ctx.fillStyle = '#b0005f'; ctx.textAlign = 'center';
-      ctx.fillText('L' + s.line, xl, 27);
+      ctx.fillText(K.placeShort(s.ctx, s.line), xl, 27);
     });
     if (S.hoverT !== null) {
       var hx = t2x(S.hoverT);

@@ -333,7 +333,7 @@
   }
 
   function skipLines(s, which) {
-    var lines = [['b', 'Skip ' + (s.index + 1) + ' \u00b7 line ' + s.line + ': ' + s.block]];
+    var lines = [['b', 'Skip ' + (s.index + 1) + ' \u00b7 ' + K.place(s.ctx, s.line) + ': ' + s.block]];
     var axes = K.allAxes();
     if (which === 'latch') {
       lines.push(['m', s.triggered ? 'latch: ' + s.signal + ' at ' + K.num(s.latchT, 6) + ' s'
@@ -350,8 +350,9 @@
   }
 
   function sampleLines(i) {
-    var t = D.t[i], line = D.line[i], b = D.blocks[K.blockAt(t)];
-    var lines = [['b', 't = ' + K.num(t, 6) + ' s \u00b7 line ' + line + (K.sourceLine(line) ? ': ' + K.sourceLine(line) : '')]];
+    var t = D.t[i], line = D.line[i], ctx = D.ctx[i], b = D.blocks[K.blockAt(t)];
+    var lines = [['b', 't = ' + K.num(t, 6) + ' s \u00b7 ' + K.place(ctx, line) +
+                  (K.sourceLine(ctx, line) ? ': ' + K.sourceLine(ctx, line) : '')]];
     lines.push(['', (b ? b.kind : '') + ' \u00b7 machine (actual) ' + D.meta.axes.map(function (a) {
       var c = K.channel('pos_' + a);
       return c ? a + K.num(c.series[0].v[i]) : '';
@@ -366,7 +367,7 @@
     var s = varsAt(t);
     if (s) {
       lines.push(['m', s.vars.map(function (v) { return v.name + ' = ' + K.num(v.value); }).join(', ') +
-                  ' (from line ' + s.line + ')']);
+                  ' (from ' + K.place(s.ctx, s.line) + ')']);
     }
     return lines;
   }
