@@ -65,6 +65,7 @@ class Plant {
   bool signal_level(std::size_t i) const noexcept { return signals_[i].level; }
   // Parts, probe, tools, setter and gauges: tool changes, faults, touches.
   ProbeScene& probing() noexcept { return probing_; }
+  const Scene& scene() const noexcept { return scene_; }
   const ProbeScene& probing() const noexcept { return probing_; }
 
  private:

@@ -3,7 +3,13 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <optional>
+#include <string>
 #include <type_traits>
+
+#include "config/skip_inputs.hpp"
+#include "machine/geometry.hpp"
+#include "machine/scene.hpp"
 
 namespace skipnc::machine {
 
@@ -27,6 +33,7 @@ void ProbeSafety::emit(const canon::Stamped& c) {
         using T = std::decay_t<decltype(cmd)>;
         if constexpr (std::is_same_v<T, canon::Skip>) {
           warn_braking(cmd, c);
+          warn_unreachable(cmd, c);
           last_target_ = cmd.target;
         } else if constexpr (std::is_same_v<T, canon::Rapid> || std::is_same_v<T, canon::Feed> ||
                              std::is_same_v<T, canon::Arc>) {
@@ -38,6 +45,106 @@ void ProbeSafety::emit(const canon::Stamped& c) {
         }
       },
       c.cmd);
+}
+
+// How far a skip's direction is followed when looking for a surface: past
+// any machine's travel.
+constexpr double kRayMm = 100000.0;
+
+std::optional<bool> ProbeSafety::reachable(const canon::SignalAddr& input, const AxisVec& from,
+                                           const AxisVec& dir) const {
+  const Scene& sc = plant_.scene();
+  const ProbeScene& ps = plant_.probing();
+  const Probing& spec = ps.spec();
+  const int tool_no = tool_for_next_command();
+  const bool probe_in = spec.probe && tool_no == spec.probe->tool;
+  const ToolSpec* tool = probe_in ? nullptr : spec.tool(tool_no);
+  const AxisVec far = from + dir * kRayMm;
+  std::optional<bool> out;
+  const auto found = [&](bool yes) { out = out.value_or(false) || yes; };
+  for (const Trigger& t : sc.triggers) {
+    if (!(t.signal == input)) continue;
+    const bool on_at_start = t.decreasing ? from[t.axis] < t.at : from[t.axis] > t.at;
+    found(on_at_start || (t.decreasing ? dir[t.axis] < 0.0 : dir[t.axis] > 0.0));
+  }
+  for (const Pulse& p : sc.pulses) {
+    if (p.signal == input) found(true);  // in time, not in space: it may come
+  }
+  for (const GaugeSpec& g : spec.gauges) {
+    for (const GaugeStep& st : g.steps) {
+      if (st.signal == input) found(true);  // follows the grinding, not a surface
+    }
+  }
+  if (spec.probe && spec.probe->signal == input) {
+    if (!probe_in) {
+      found(false);  // no probe to switch it
+    } else {
+      const geo::Vec3 a = ps.ball_at(from);
+      const double r = spec.probe->ball_radius;
+      geo::Contact c;
+      found(ps.material().distance(a) <= r ||
+            ps.material().first_contact(a, ps.ball_at(far), r, c));
+    }
+  }
+  if (spec.tool_setter && spec.tool_setter->signal == input) {
+    const ToolSetterSpec& ts = *spec.tool_setter;
+    const geo::Column setter{ts.x, ts.y, ts.radius, ts.top - ts.thickness, ts.top};
+    if (tool == nullptr && !probe_in) {
+      found(false);
+    } else {
+      // The probe presses the setter with its ball's column as a tool would.
+      const geo::Column col =
+          tool != nullptr
+              ? ps.tool_column(*tool, from)
+              : geo::Column{ps.ball_at(from).x, ps.ball_at(from).y, spec.probe->ball_radius,
+                            ps.ball_at(from).z - spec.probe->ball_radius, ps.ball_at(from).z};
+      const auto along = [&](char axis) {
+        const int i = m_.axis_index(axis);
+        return i < 0 ? 0.0 : dir[i] * kRayMm;
+      };
+      const geo::Vec3 move{along('X'), along('Y'), along('Z')};
+      double t = 0.0;
+      found(geo::column_overlap(col, setter) > 0.0 ||
+            geo::column_first_overlap(col, move, setter, 1e-6, t));
+    }
+  }
+  return out;
+}
+
+// A skip whose direction leads away from everything of the scene that
+// switches its inputs can only run to its end point (a wrong sign, a wrong
+// axis, a wrong P word). Said before the move, as the warning skip_unreachable.
+// Nothing is said when the scene drives none of the inputs (a scene-less
+// run, a pulse) or for a torque limit skip (ended by torque, not an input).
+void ProbeSafety::warn_unreachable(const canon::Skip& s, const canon::Stamped& at) {
+  if (s.spec.kind == canon::SkipKind::kTorque || s.spec.ignore_inputs) return;
+  const int n = m_.axis_count();
+  AxisVec dir = s.target - last_target_;
+  const double len = norm(dir, n);
+  if (len < 1e-9) return;
+  dir = dir * (1.0 / len);
+  bool any_source = false;
+  std::string inputs;
+  for (int i = 0; i < s.spec.input_count; ++i) {
+    const std::optional<bool> r = reachable(s.spec.inputs[i], last_target_, dir);
+    if (!r) continue;
+    if (*r) return;
+    any_source = true;
+    inputs += (inputs.empty() ? "" : ", ") + config::signal_name(s.spec.inputs[i]);
+  }
+  if (!any_source) return;
+  std::string heading;
+  for (int i = 0; i < n; ++i) {
+    if (std::fabs(dir[i]) < 1e-9) continue;
+    heading += fmt::format("{}{}{}", heading.empty() ? "" : " ", dir[i] > 0.0 ? "+" : "-",
+                           m_.axes[static_cast<std::size_t>(i)].name);
+  }
+  interp::add_warning(
+      warnings_,
+      interp::Warning{"skip_unreachable", at.source, at.line,
+                      fmt::format("the skip move from {} along {} leads away from everything in "
+                                  "the scene that switches {}: it can only run to its end point",
+                                  where(last_target_), heading, inputs)});
 }
 
 double ProbeSafety::braking_distance(const canon::Skip& s, const AxisVec& from) const noexcept {
@@ -68,16 +175,22 @@ double ProbeSafety::braking_distance(const canon::Skip& s, const AxisVec& from) 
   return v * v / (2.0 * accel) + fe;
 }
 
+int ProbeSafety::tool_for_next_command() const noexcept {
+  return tool_change_ ? *tool_change_ : plant_.probing().next_spindle_tool();
+}
+
 void ProbeSafety::warn_braking(const canon::Skip& s, const canon::Stamped& at) {
   const ProbeScene& ps = plant_.probing();
   const Probing& spec = ps.spec();
+  const int tool = tool_for_next_command();
+  const bool probe_in = spec.probe && tool == spec.probe->tool;
   double limit = -1.0;
   const char* what = "";
   for (int i = 0; i < s.spec.input_count; ++i) {
-    if (spec.probe && ps.probe_in_spindle() && s.spec.inputs[i] == spec.probe->signal) {
+    if (probe_in && s.spec.inputs[i] == spec.probe->signal) {
       limit = spec.probe->max_overtravel;
       what = "the probe's stylus";
-    } else if (spec.tool_setter && ps.tool_in_spindle() != nullptr &&
+    } else if (spec.tool_setter && !probe_in && spec.tool(tool) != nullptr &&
                s.spec.inputs[i] == spec.tool_setter->signal) {
       limit = spec.tool_setter->max_overtravel;
       what = "the tool setter";

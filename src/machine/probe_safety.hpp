@@ -65,6 +65,15 @@ class ProbeSafety final : public interp::CommandSink {
                                           std::string_view file);
   std::string where(const AxisVec& machine) const;
   void warn_braking(const canon::Skip& s, const canon::Stamped& at);
+  void warn_unreachable(const canon::Skip& s, const canon::Stamped& at);
+  // The tool the next command will run with: the commands are read ahead
+  // of the machine, so a tool change may be on its way still.
+  int tool_for_next_command() const noexcept;
+  // Can something of the scene switch `input` on somewhere along the ray
+  // from `from` in direction `dir` (unit, machine mm)? nullopt: nothing of
+  // the scene drives that input.
+  std::optional<bool> reachable(const canon::SignalAddr& input, const AxisVec& from,
+                                const AxisVec& dir) const;
 
   const config::MachineConfig& m_;
   const Plant& plant_;

@@ -70,6 +70,8 @@ class ProbeScene {
   // Tool changes (M06): takes effect at the next period.
   void set_spindle_tool(int tool) noexcept { pending_tool_ = tool; }
   int spindle_tool() const noexcept { return spindle_tool_; }
+  // The tool in the spindle once a change set but not yet made has been made.
+  int next_spindle_tool() const noexcept { return pending_tool_ ? *pending_tool_ : spindle_tool_; }
   bool probe_in_spindle() const noexcept {
     return spec_.probe && spindle_tool_ == spec_.probe->tool;
   }

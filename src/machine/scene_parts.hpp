@@ -97,8 +97,8 @@ struct Probing {
 
 // The top-level keys these tables use, for the scene's key check.
 inline constexpr std::string_view kProbingKeys[] = {
-    "box",   "cylinder", "sphere",      "plane", "bore",         "pocket",
-    "probe", "tool",     "tool_setter", "gauge", "spindle_tool", "frame", "mesh"};
+    "box",  "cylinder",    "sphere", "plane",        "bore",  "pocket", "probe",
+    "tool", "tool_setter", "gauge",  "spindle_tool", "frame", "mesh"};
 
 // The `signal` key of a scene table ("X0.4", "SKIP", "SKIP1".."SKIP12"): its
 // address, and its text in `name`. Errors name the table or the key.
