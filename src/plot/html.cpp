@@ -239,6 +239,11 @@ void write_geometry(Json& j, const PlotModel& m) {
   j.vec3("lo", m.extent.lo);
   j.vec3("hi", m.extent.hi);
   j.close('}');
+  j.key("fullExtent");
+  j.open('{');
+  j.vec3("lo", m.full_extent.lo);
+  j.vec3("hi", m.full_extent.hi);
+  j.close('}');
   j.key("shapes");
   j.array(m.shapes, [&](const Shape& s) {
     j.open('{');

@@ -430,15 +430,46 @@ PlotModel build_model(const PlotInput& in) {
   }
   // Every side of the extent at least 2 mm, so that a one-axis run (a
   // probe going straight down) still has a frame around it.
-  for (int k = 0; k < 3; ++k) {
-    const double span = pm.extent.hi[k] - pm.extent.lo[k];
-    if (span < 2.0) {
-      const double c = 0.5 * (pm.extent.hi[k] + pm.extent.lo[k]);
-      pm.extent.lo[k] = c - 1.0;
-      pm.extent.hi[k] = c + 1.0;
+  const auto at_least_2mm = [](Box3& b) {
+    for (int k = 0; k < 3; ++k) {
+      const double span = b.hi[k] - b.lo[k];
+      if (span < 2.0) {
+        const double c = 0.5 * (b.hi[k] + b.lo[k]);
+        b.lo[k] = c - 1.0;
+        b.hi[k] = c + 1.0;
+      }
     }
+  };
+  at_least_2mm(pm.extent);
+  pm.full_extent = pm.extent;
+  // The views are framed on where the run worked: the feed, arc and skip
+  // moves and the skip points, a margin around them. Rapids to and from
+  // home, and the parts and tool setter away from the work, are drawn where
+  // they fall in that frame (the page zooms out to them).
+  Box3 work;
+  for (const BlockView& b : pm.blocks) {
+    if (b.kind != MoveKind::kFeed && b.kind != MoveKind::kArc && b.kind != MoveKind::kSkip) {
+      continue;
+    }
+    for (std::size_t i = b.s0; i < b.s1 && i < pm.path.size(); ++i) work.add(pm.path[i]);
+    work.add(b.to);
   }
-  if (in.scene != nullptr) pm.shapes = scene_shapes(*in.scene, m, pm.xyz, pm.extent);
+  for (const auto& sk : pm.skips) {
+    work.add(sk.start);
+    work.add(sk.latch);
+    work.add(sk.rest);
+    if (!sk.triggered && sk.has_target) work.add(sk.target);
+  }
+  if (!work.empty()) {
+    constexpr double kMarginMm = 5.0;
+    for (int k = 0; k < 3; ++k) {
+      work.lo[k] = std::max(work.lo[k] - kMarginMm, pm.full_extent.lo[k]);
+      work.hi[k] = std::min(work.hi[k] + kMarginMm, pm.full_extent.hi[k]);
+    }
+    at_least_2mm(work);
+    pm.extent = work;
+  }
+  if (in.scene != nullptr) pm.shapes = scene_shapes(*in.scene, m, pm.xyz, pm.full_extent);
   build_channels(in, pm);
   return pm;
 }

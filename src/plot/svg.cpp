@@ -164,7 +164,7 @@ void draw_ticks(Svg& o, const ViewDef& v, const Frame& f) {
   o.add("<path class=\"grid\" d=\"{}\" stroke=\"#ececec\" fill=\"none\"/>\n", grid);
   o.add(
       "<text x=\"{:.1f}\" y=\"{:.1f}\" font-size=\"11\" font-weight=\"bold\" fill=\"#444\">"
-      "{} \u2192  {} \u2191  (mm, machine)</text>\n",
+      "{} \u2192  {} \u2191  (mm, machine; labels in work coordinates)</text>\n",
       f.x - 44, f.y + f.h + 26, v.u_name, v.v_name);
 }
 

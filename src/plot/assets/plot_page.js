@@ -51,6 +51,11 @@
     var f = K.fullTime(); S.tl.t0 = f[0]; S.tl.t1 = f[1];
     redrawAll();
   }
+  function wholeScene() {
+    S.views.forEach(function (vs) { vs.frame = K.fitFrame(vs.def, vs.rect, true); });
+    var f = K.fullTime(); S.tl.t0 = f[0]; S.tl.t1 = f[1];
+    redrawAll();
+  }
   function redrawAll() { S.views.forEach(K.drawView); K.drawTimeline(); }
 
   // ---- page -------------------------------------------------------------
@@ -179,6 +184,7 @@
       K.el('button', {text: 'next block \u25b6', onclick: function () { stepBlock(1); }}),
       K.el('button', {text: 'all blocks', onclick: function () { selectBlock(-1); }}),
       K.el('button', {text: 'reset zoom', onclick: resetZoom}),
+      K.el('button', {text: 'whole scene', onclick: wholeScene}),
       K.el('span', {id: 'block-info'})
     ]);
     var grid = K.el('div', {id: 'views'});

@@ -6,8 +6,10 @@
   var D = K.D, S = K.S, FONT = K.FONT;
 
   // ---- views --------------------------------------------------------------
-  function fitFrame(def, rect) {
-    var e = D.extent, u0 = Infinity, u1 = -Infinity, v0 = Infinity, v1 = -Infinity;
+  // Fits a view to where the run worked (D.extent), or with `all` to the
+  // whole path and scene (D.fullExtent).
+  function fitFrame(def, rect, all) {
+    var e = all ? D.fullExtent : D.extent, u0 = Infinity, u1 = -Infinity, v0 = Infinity, v1 = -Infinity;
     for (var c = 0; c < 8; c++) {
       var p = [c & 1 ? e.hi[0] : e.lo[0], c & 2 ? e.hi[1] : e.lo[1], c & 4 ? e.hi[2] : e.lo[2]];
       var pu = K.dot(p, def.u), pv = K.dot(p, def.v);
@@ -107,7 +109,7 @@
     ctx.textAlign = 'left';
     ctx.font = 'bold 11px ' + FONT;
     ctx.fillStyle = '#444';
-    ctx.fillText(def.uName + ' \u2192  ' + def.vName + ' \u2191  (mm, machine)', r.x - 44, r.y + r.h + 26);
+    ctx.fillText(def.uName + ' \u2192  ' + def.vName + ' \u2191  (mm, machine; labels in work coordinates)', r.x - 44, r.y + r.h + 26);
   }
   function axisColour(k) {
     var idx = D.meta.xyz[k], pos = idx >= 0 ? K.channel('pos_' + D.meta.axes[idx]) : null;
