@@ -177,8 +177,8 @@ struct PlotModel {
   std::vector<Shape> shapes;
   std::vector<SkipMark> skips;
   std::vector<ViewDef> views;
-  Box3 extent;       // what the views are framed on: where the run worked
-  Box3 full_extent;  // everything: the whole path and the scene
+  Box3 extent;                         // what the views are framed on: where the run worked
+  Box3 full_extent;                    // everything: the whole path and the scene
   std::vector<ListingFile> files;      // [0] the main program
   std::vector<PlaceContext> contexts;  // [0] the main program
   std::vector<std::pair<std::string, std::optional<double>>> variables;

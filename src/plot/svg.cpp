@@ -347,7 +347,9 @@ std::string to_svg(const PlotModel& m) {
   const double px = kMargin + 2 * kCellW + kGap + 20;
   const double panel_bottom = draw_panel(body, m, px, kHeaderH, kWidth - kMargin - px);
   const double ty = std::max(views_bottom, panel_bottom) + 24;
-  const double bottom = draw_timeline(body, m, kMargin, ty, kWidth - 2 * kMargin);
+  const double bottom = draw_more_zooms(
+      body, m, kMargin, draw_timeline(body, m, kMargin, ty, kWidth - 2 * kMargin) + 24,
+      kWidth - 2 * kMargin);
   const double height = std::ceil(bottom + kMargin);
   std::string out = fmt::format(
       "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"

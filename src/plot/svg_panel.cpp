@@ -8,8 +8,9 @@
 namespace skipnc::plot {
 namespace {
 
-constexpr std::size_t kMaxCards = 4;    // skips drawn with a zoom
-constexpr std::size_t kMaxListed = 24;  // further skips, one line each
+constexpr std::size_t kMaxCards = 4;        // skips drawn with a zoom
+constexpr std::size_t kMaxListed = 24;      // further skips, one line each
+constexpr std::size_t kMaxGridZooms = 300;  // zooms below the timeline
 constexpr double kZoomH = 118;
 
 const Channel* channel(const PlotModel& m, std::string_view id) {
@@ -250,6 +251,72 @@ std::pair<double, double> latch_window(const PlotModel& m, const SkipMark& s) {
   return {s.latch_t - std::max(0.25 * d, 0.004), s.stop_t + 0.1 * d};
 }
 
+// One skip's card: its place and block, what it stored, where it came to
+// rest and, with `zoom`, the zoom on its latch. Returns the y below it.
+double draw_skip_card(Svg& o, const PlotModel& m, const SkipMark& s, double x, double y, double w,
+                      bool zoom) {
+  std::string vars;
+  for (const auto& v : s.vars)
+    vars += fmt::format("{}{} = {}", vars.empty() ? "" : ", ", v.name, num(v.value));
+  std::string rest;
+  for (int a : s.moved_axes) {
+    rest += fmt::format("{}{}{}", rest.empty() ? "" : " ",
+                        m.axis_names[static_cast<std::size_t>(a)], num(s.end_position[a]));
+  }
+  const std::string head =
+      fmt::format("{}. {}: {}", s.index + 1, place_text(m, s.ctx, s.line), s.block);
+  const std::string what =
+      s.triggered ? fmt::format("{} at {} s: stored {}", s.signal, num(s.latch_t, 6), vars)
+                  : fmt::format("no signal: ran to its end point, stored {}", vars);
+  const std::string stop = fmt::format("rest {} (work) at {} s, {} mm past the latch", rest,
+                                       num(s.stop_t, 4), num(s.overtravel_mm));
+  o.add("<g class=\"skip-card\" data-skip=\"{}\">\n", s.index);
+  o.add("<text x=\"{}\" y=\"{}\" font-size=\"12\" font-weight=\"bold\" fill=\"#222\">{}</text>\n",
+        x, y + 12, esc(fit_text(head, w, 12)));
+  if (!zoom) {
+    o.add("<text x=\"{}\" y=\"{}\" font-size=\"11\" fill=\"#b0005f\">{}</text>\n</g>\n", x + 12,
+          y + 26, esc(fit_text(what, w - 12, 11)));
+    return y + 32;
+  }
+  o.add("<text x=\"{}\" y=\"{}\" font-size=\"11\" fill=\"#b0005f\">{}</text>\n", x + 12, y + 27,
+        esc(fit_text(what, w - 12, 11)));
+  o.add("<text x=\"{}\" y=\"{}\" font-size=\"11\" fill=\"#333\">{}</text>\n", x + 12, y + 41,
+        esc(fit_text(stop, w - 12, 11)));
+  draw_zoom(o, m, s, x, y + 48, w, kZoomH);
+  o.add("</g>\n");
+  return y + 48 + kZoomH + 12;
+}
+
+// The zooms of the skips after the first kMaxCards, in a grid of three
+// across, below the timeline: every latch has its zoom in the SVG (at most
+// kMaxGridZooms of them; the page has all).
+double draw_more_zooms(Svg& o, const PlotModel& m, double x, double y, double w) {
+  if (m.skips.size() <= kMaxCards) return y;
+  o.add(
+      "<text x=\"{}\" y=\"{}\" font-size=\"14\" font-weight=\"bold\" fill=\"#222\">Latch zooms "
+      "of skips {} to {}</text>\n",
+      x, y + 14, kMaxCards + 1, std::min(m.skips.size(), kMaxCards + kMaxGridZooms));
+  y += 26;
+  constexpr int kAcross = 3;
+  constexpr double kGapX = 24;
+  const double cw = (w - (kAcross - 1) * kGapX) / kAcross;
+  double row_bottom = y;
+  for (std::size_t k = kMaxCards; k < m.skips.size(); ++k) {
+    const std::size_t i = k - kMaxCards;
+    if (i >= kMaxGridZooms) {
+      o.add(
+          "<text x=\"{}\" y=\"{}\" font-size=\"11\" fill=\"#666\">{} more in the HTML "
+          "page</text>\n",
+          x, row_bottom + 12, m.skips.size() - k);
+      return row_bottom + 18;
+    }
+    const double cx = x + static_cast<double>(i % kAcross) * (cw + kGapX);
+    if (i % kAcross == 0) y = row_bottom;
+    row_bottom = std::max(row_bottom, draw_skip_card(o, m, m.skips[k], cx, y, cw, true));
+  }
+  return row_bottom;
+}
+
 double draw_panel(Svg& o, const PlotModel& m, double x, double y, double w) {
   y = draw_legend(o, m, x, y, w) + 10;
   o.add(
@@ -271,37 +338,11 @@ double draw_panel(Svg& o, const PlotModel& m, double x, double y, double w) {
       y += 18;
       break;
     }
-    std::string vars;
-    for (const auto& v : s.vars)
-      vars += fmt::format("{}{} = {}", vars.empty() ? "" : ", ", v.name, num(v.value));
-    std::string rest;
-    for (int a : s.moved_axes) {
-      rest += fmt::format("{}{}{}", rest.empty() ? "" : " ",
-                          m.axis_names[static_cast<std::size_t>(a)], num(s.end_position[a]));
-    }
-    const std::string head =
-        fmt::format("{}. {}: {}", s.index + 1, place_text(m, s.ctx, s.line), s.block);
-    const std::string what =
-        s.triggered ? fmt::format("{} at {} s: stored {}", s.signal, num(s.latch_t, 6), vars)
-                    : fmt::format("no signal: ran to its end point, stored {}", vars);
-    const std::string stop = fmt::format("rest {} (work) at {} s, {} mm past the latch", rest,
-                                         num(s.stop_t, 4), num(s.overtravel_mm));
-    o.add("<g class=\"skip-card\" data-skip=\"{}\">\n", s.index);
-    o.add("<text x=\"{}\" y=\"{}\" font-size=\"12\" font-weight=\"bold\" fill=\"#222\">{}</text>\n",
-          x, y + 12, esc(fit_text(head, w, 12)));
     if (s.index >= kMaxCards) {
-      o.add("<text x=\"{}\" y=\"{}\" font-size=\"11\" fill=\"#b0005f\">{}</text>\n</g>\n", x + 12,
-            y + 26, esc(fit_text(what, w - 12, 11)));
-      y += 32;
+      y = draw_skip_card(o, m, s, x, y, w, false);
       continue;
     }
-    o.add("<text x=\"{}\" y=\"{}\" font-size=\"11\" fill=\"#b0005f\">{}</text>\n", x + 12, y + 27,
-          esc(fit_text(what, w - 12, 11)));
-    o.add("<text x=\"{}\" y=\"{}\" font-size=\"11\" fill=\"#333\">{}</text>\n", x + 12, y + 41,
-          esc(fit_text(stop, w - 12, 11)));
-    draw_zoom(o, m, s, x, y + 48, w, kZoomH);
-    o.add("</g>\n");
-    y += 48 + kZoomH + 12;
+    y = draw_skip_card(o, m, s, x, y, w, true);
   }
   if (!m.variables.empty()) {
     o.add(

@@ -41,6 +41,9 @@ double draw_panel(Svg& o, const PlotModel& m, double x, double y, double w);
 
 // The scope: one strip per channel, skip instants marked. Returns the bottom.
 double draw_timeline(Svg& o, const PlotModel& m, double x, double y, double w);
+// The latch zooms of the skips the panel shows without one, in a grid
+// (svg_panel.cpp); returns the y below them.
+double draw_more_zooms(Svg& o, const PlotModel& m, double x, double y, double w);
 
 // Time window [t0, t1] of the zoom on skip k's latch.
 std::pair<double, double> latch_window(const PlotModel& m, const SkipMark& s);
