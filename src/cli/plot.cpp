@@ -48,6 +48,7 @@ Result<void> PlotCapture::write(const std::vector<std::string>& files, const Ses
   in.program = out.program;
   in.source = out.source;
   in.read_file = read_program_text;
+  in.x_in_diameter = s.machine.lathe() && s.params->bit(config::param::kDiameterX);
   in.machine = &s.machine;
   in.dialect = &s.dialect;
   in.scene = &s.scene;

@@ -232,6 +232,8 @@ void write_geometry(Json& j, const PlotModel& m) {
     j.integer("look", v.look_axis);
     j.str("uName", v.u_name);
     j.str("vName", v.v_name);
+    j.num("vScale", v.v_scale);
+    j.str("note", v.note);
     j.close('}');
   });
   j.key("extent");

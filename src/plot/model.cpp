@@ -47,19 +47,34 @@ Vec3 to3(const AxisVec& a, const std::array<int, 3>& xyz) {
   return p;
 }
 
-std::vector<ViewDef> views_for(const std::array<int, 3>& xyz, const std::vector<char>& names) {
+std::vector<ViewDef> views_for(const std::array<int, 3>& xyz, const std::vector<char>& names,
+                               bool lathe, bool x_in_diameter) {
   const bool x = xyz[0] >= 0, y = xyz[1] >= 0, z = xyz[2] >= 0;
   auto nm = [&](int k) {
     return std::string(1, names[static_cast<std::size_t>(xyz[static_cast<std::size_t>(k)])]);
   };
   std::vector<ViewDef> v;
-  if (x && y) v.push_back(ViewDef{"xy", "Top view (XY)", {1, 0, 0}, {0, 1, 0}, 2, nm(0), nm(1)});
-  if (x && z) v.push_back(ViewDef{"xz", "Front view (XZ)", {1, 0, 0}, {0, 0, 1}, 1, nm(0), nm(2)});
-  if (y && z) v.push_back(ViewDef{"yz", "Side view (YZ)", {0, 1, 0}, {0, 0, 1}, 0, nm(1), nm(2)});
+  if (lathe && x && z && !y) {
+    // A lathe as its drawings show it: Z horizontal, X up (in diameter when
+    // X is programmed in diameter), looking along -Y.
+    ViewDef d{"zx", "Lathe view (ZX)", {0, 0, 1}, {1, 0, 0}, 1, nm(2), nm(0), 1.0, ""};
+    if (x_in_diameter) {
+      d.v_scale = 2.0;
+      d.note = nm(0) + " in diameter";
+    }
+    v.push_back(d);
+    return v;
+  }
+  if (x && y)
+    v.push_back(ViewDef{"xy", "Top view (XY)", {1, 0, 0}, {0, 1, 0}, 2, nm(0), nm(1), 1.0, ""});
+  if (x && z)
+    v.push_back(ViewDef{"xz", "Front view (XZ)", {1, 0, 0}, {0, 0, 1}, 1, nm(0), nm(2), 1.0, ""});
+  if (y && z)
+    v.push_back(ViewDef{"yz", "Side view (YZ)", {0, 1, 0}, {0, 0, 1}, 0, nm(1), nm(2), 1.0, ""});
   if (x && y && z) {
     // Looking from +X -Y +Z: X runs right and down, Y right and up, Z up.
     const double a = 1.0 / std::sqrt(2.0), b = 1.0 / std::sqrt(6.0);
-    v.push_back(ViewDef{"iso", "Isometric view", {a, a, 0}, {-b, b, 2 * b}, -1, "", ""});
+    v.push_back(ViewDef{"iso", "Isometric view", {a, a, 0}, {-b, b, 2 * b}, -1, "", "", 1.0, ""});
   }
   return v;
 }
@@ -360,7 +375,7 @@ PlotModel build_model(const PlotInput& in) {
   }
   for (const auto& a : m.axes) pm.axis_names.push_back(a.name);
   pm.xyz = {m.axis_index('X'), m.axis_index('Y'), m.axis_index('Z')};
-  pm.views = views_for(pm.xyz, pm.axis_names);
+  pm.views = views_for(pm.xyz, pm.axis_names, m.lathe(), in.x_in_diameter);
   pm.signal_names = rec.signal_names();
   pm.messages = r.messages;
   pm.variables = in.variables;

@@ -91,6 +91,10 @@ struct ViewDef {
   Vec3 u, v;
   int look_axis = -1;          // 0/1/2 for views along an axis, -1 for the isometric view
   std::string u_name, v_name;  // axis names on the view's edges ("" for iso)
+  // The vertical axis's tick labels are v_scale times the machine value (2:
+  // a lathe's X shown in diameter); the geometry stays in machine mm.
+  double v_scale = 1.0;
+  std::string note;  // added to the axis legend ("X in diameter")
 };
 
 // One executed block, for drawing: the path runs from `from` (the previous
@@ -203,6 +207,7 @@ struct PlotInput {
   const machine::RunResult* result = nullptr;
   const Recorder* recorder = nullptr;
   std::vector<std::pair<std::string, std::optional<double>>> variables;
+  bool x_in_diameter = false;  // a lathe's X programmed in diameter (1006#3)
 };
 
 [[nodiscard]] PlotModel build_model(const PlotInput& in);

@@ -141,9 +141,11 @@ void draw_ticks(Svg& o, const ViewDef& v, const Frame& f) {
     }
     return;
   }
-  const double su = nice_step((f.u1 - f.u0), 6), sv = nice_step((f.v1 - f.v0), 5);
+  const double su = nice_step((f.u1 - f.u0), 6);
+  const double sv = nice_step((f.v1 - f.v0) * v.v_scale, 5) / v.v_scale;
   const int du = su < 1 ? static_cast<int>(std::ceil(-std::log10(su))) : 0;
-  const int dv = sv < 1 ? static_cast<int>(std::ceil(-std::log10(sv))) : 0;
+  const double sv_shown = sv * v.v_scale;
+  const int dv = sv_shown < 1 ? static_cast<int>(std::ceil(-std::log10(sv_shown))) : 0;
   std::string grid;
   for (double u = std::ceil(f.u0 / su) * su; u <= f.u1; u += su) {
     const double x = f.px(u);
@@ -159,13 +161,13 @@ void draw_ticks(Svg& o, const ViewDef& v, const Frame& f) {
     o.add(
         "<text x=\"{:.1f}\" y=\"{:.1f}\" font-size=\"10\" fill=\"#666\" "
         "text-anchor=\"end\">{}</text>\n",
-        f.x - 4, y + 3, num(w, dv));
+        f.x - 4, y + 3, num(w * v.v_scale, dv));
   }
   o.add("<path class=\"grid\" d=\"{}\" stroke=\"#ececec\" fill=\"none\"/>\n", grid);
   o.add(
       "<text x=\"{:.1f}\" y=\"{:.1f}\" font-size=\"11\" font-weight=\"bold\" fill=\"#444\">"
-      "{} \u2192  {} \u2191  (mm, machine; labels in work coordinates)</text>\n",
-      f.x - 44, f.y + f.h + 26, v.u_name, v.v_name);
+      "{} \u2192  {} \u2191  (mm, machine{}; labels in work coordinates)</text>\n",
+      f.x - 44, f.y + f.h + 26, v.u_name, v.v_name, v.note.empty() ? "" : ", " + v.note);
 }
 
 void draw_markers(Svg& o, const PlotModel& m, const ViewDef& v, const Frame& f, LabelPlacer& labels,

@@ -251,6 +251,38 @@ TEST(PlotSvg, ASkipInAMacroIsNamedByTheMacrosFileAndLine) {
   EXPECT_EQ(data["skips"][0]["line"], 4);
 }
 
+// A lathe (issue 16) is drawn as its drawings show it: one view with Z
+// horizontal and X up, X labelled in diameter when it is programmed in
+// diameter (lathe2: 1006#3 = 1); the latch marker is where the machine
+// position projects (Z right, X up).
+TEST(PlotSvg, ALatheHasZHorizontalAndXUpInDiameter) {
+  TempDir dir;
+  const auto prog = dir.write("lathe.nc", "G50 X100. Z50.\nG98 G31 U-80. F100.\nM30\n");
+  const auto scene =
+      dir.write("lathe.toml",
+                "[[trigger]]\nsignal = \"SKIP\"\naxis = \"X\"\nat = -20.0\ndirection = "
+                "\"decreasing\"\n");
+  const auto svg = (dir.path / "lathe.svg").string();
+  const auto rep = (dir.path / "lathe.json").string();
+  const auto r = run_cli({"run", prog.string(), "-m", "lathe2", "-s", scene.string(), "--report",
+                          rep, "--plot", svg, "-q"});
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  const json s = read_svg(dir, svg);
+  ASSERT_EQ(s["views"].size(), 1u);
+  ASSERT_TRUE(s["views"].contains("zx")) << s.dump();
+  const json& v = s["views"]["zx"];
+  ASSERT_EQ(v["skip"].size(), 1u);
+  // data-frame: u0 u1 v0 v1 x y w h; u is machine Z, v machine X (radius).
+  const auto& f = v["frame"];
+  const double u0 = f[0], u1 = f[1], v0 = f[2], v1 = f[3], x = f[4], y = f[5], w = f[6], h = f[7];
+  const double cx = v["skip"][0][1], cy = v["skip"][0][2];
+  EXPECT_NEAR(cx, x + (0.0 - u0) / (u1 - u0) * w, 1.0) << "Z = 0";
+  EXPECT_NEAR(cy, y + (v1 - (-20.0)) / (v1 - v0) * h, 1.0) << "X = -20 (radius), up";
+  const std::string text = read_file(svg);
+  EXPECT_NE(text.find("Z \u2192  X \u2191  (mm, machine, X in diameter"), std::string::npos);
+  EXPECT_NE(text.find(">-40</text>"), std::string::npos) << "X -20 labelled -40 (diameter)";
+}
+
 // Two minutes of slow feed end in a touch: the drawing holds a few hundred
 // samples, and the latch is still exactly where the report says.
 TEST(PlotSvg, LongRunIsThinnedWithoutLosingTheLatch) {

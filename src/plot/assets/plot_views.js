@@ -89,7 +89,8 @@
       });
       return;
     }
-    var su = K.niceStep(f.u1 - f.u0, 6), sv = K.niceStep(f.v1 - f.v0, 5);
+    var vk = def.vScale || 1;
+    var su = K.niceStep(f.u1 - f.u0, 6), sv = K.niceStep((f.v1 - f.v0) * vk, 5) / vk;
     ctx.strokeStyle = '#ececec'; ctx.lineWidth = 1; ctx.setLineDash([]);
     ctx.beginPath();
     var u, v, x, y;
@@ -103,13 +104,14 @@
     for (v = Math.ceil(f.v0 / sv) * sv; v <= f.v1; v += sv) {
       y = v2py(vs, v);
       ctx.moveTo(r.x, y); ctx.lineTo(r.x + r.w, y);
-      ctx.fillText(K.num(v, K.decimals(sv)), r.x - 4, y + 3);
+      ctx.fillText(K.num(v * vk, K.decimals(sv * vk)), r.x - 4, y + 3);
     }
     ctx.stroke();
     ctx.textAlign = 'left';
     ctx.font = 'bold 11px ' + FONT;
     ctx.fillStyle = '#444';
-    ctx.fillText(def.uName + ' \u2192  ' + def.vName + ' \u2191  (mm, machine; labels in work coordinates)', r.x - 44, r.y + r.h + 26);
+    ctx.fillText(def.uName + ' \u2192  ' + def.vName + ' \u2191  (mm, machine' + (def.note ? ', ' + def.note : '') +
+                 '; labels in work coordinates)', r.x - 44, r.y + r.h + 26);
   }
   function axisColour(k) {
     var idx = D.meta.xyz[k], pos = idx >= 0 ? K.channel('pos_' + D.meta.axes[idx]) : null;
