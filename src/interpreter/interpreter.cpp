@@ -317,6 +317,16 @@ AxisVec Interpreter::work_from_machine(const AxisVec& machine) const noexcept {
   for (int i = 0; i < impl_->axis_count; ++i) w[i] = impl_->work_of(i, machine[i]);
   return w;
 }
+WorkFrame Interpreter::work_frame() const noexcept {
+  WorkFrame f;
+  f.unit_mm = impl_->unit_mm();
+  const bool tool_in = impl_->dialect.sw.current_tool_offsets;
+  for (int i = 0; i < impl_->axis_count; ++i) {
+    f.scale[i] = impl_->axis_scale[static_cast<std::size_t>(i)];
+    f.shift[i] = impl_->offset_total(i) - (tool_in ? impl_->tool_offset_total(i) : 0.0);
+  }
+  return f;
+}
 const std::vector<std::string>& Interpreter::messages() const noexcept {
   return impl_->messages;
 }

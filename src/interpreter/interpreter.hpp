@@ -93,6 +93,22 @@ struct CallContext {
   friend bool operator==(const CallContext&, const CallContext&) = default;
 };
 
+// Machine -> work coordinates for one state of the offsets: axis i reads
+// (machine_i * scale_i - shift_i) / unit_mm (program units; scale 2 for a
+// lathe's X in diameter). The trace's work columns use the frame of the
+// block that is running.
+struct WorkFrame {
+  AxisVec scale;
+  AxisVec shift;
+  double unit_mm = 1.0;
+  AxisVec apply(const AxisVec& machine, int axes) const noexcept {
+    AxisVec w;
+    for (int i = 0; i < axes; ++i) w[i] = (machine[i] * scale[i] - shift[i]) / unit_mm + 0.0;
+    return w;
+  }
+  friend bool operator==(const WorkFrame&, const WorkFrame&) = default;
+};
+
 // One executed skip block, as the report shows it.
 struct SkipRecord {
   std::uint32_t line = 0;
@@ -138,6 +154,9 @@ class Interpreter {
   // Machine coordinates -> work coordinates in program units, with the
   // offsets active now.
   AxisVec work_from_machine(const AxisVec& machine) const noexcept;
+  // How a machine position reads in work coordinates with the offsets active
+  // now, as #5041.. reads it (the dialect's tool offsets in or out).
+  WorkFrame work_frame() const noexcept;
   const std::vector<std::string>& messages() const noexcept;
   const std::vector<Warning>& warnings() const noexcept;
   const std::vector<SkipRecord>& skips() const noexcept;

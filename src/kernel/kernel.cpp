@@ -344,6 +344,7 @@ void Kernel::tick(const TickInput& in, TickOutput& out) noexcept {
   out.path_speed = interp_.path_speed();
   out.line = interp_.line();
   out.source = interp_.source();
+  out.tag = interp_.tag();
   out.skip_active = skip_.active && !skip_.done;
   out.handshake = handshake_;
   out.torque_limit_pct = AxisVec{};

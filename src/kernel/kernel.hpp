@@ -55,6 +55,7 @@ struct TickOutput {
   double path_speed = 0.0;
   std::uint32_t line = 0;    // source line of the active motion
   std::uint32_t source = 0;  // and its call context (canon::Stamped::source)
+  std::uint32_t tag = 0;     // its command's number in push order (Kernel::next_tag)
   bool skip_active = false;
   SkipHandshake handshake;
   // Torque limit the servo applies, % per axis (0: the servo's own limit).
@@ -113,6 +114,9 @@ class Kernel {
   }
   // Queues a motion or dwell command (other commands are not the kernel's).
   void push(const canon::Stamped& cmd);
+  // The number the next pushed command gets (1, 2, ...; TickOutput::tag
+  // names the running one), for callers that keep data per command.
+  std::uint32_t next_tag() const noexcept { return next_tag_; }
   // Sets the position of an idle machine (start-up, after a follow-up).
   void set_position(const AxisVec& machine) noexcept;
   // The operator's switches; they act from the next tick. Feed hold,

@@ -78,6 +78,13 @@ class ProbeScene {
   const ToolSpec* tool_in_spindle() const noexcept {
     return probe_in_spindle() ? nullptr : spec_.tool(spindle_tool_);
   }
+  // Gauge line to the tip of what is in the spindle (the probe's ball
+  // centre), mm; 0 when the scene gives it no length.
+  double spindle_tool_length() const noexcept {
+    if (probe_in_spindle()) return spec_.probe->length;
+    const ToolSpec* t = spec_.tool(spindle_tool_);
+    return t != nullptr ? t->length : 0.0;
+  }
 
   const PlantFault& fault() const noexcept { return fault_; }
   const Probing& spec() const noexcept { return spec_; }

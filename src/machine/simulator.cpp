@@ -4,6 +4,7 @@
 
 #include <array>
 #include <cmath>
+#include <deque>
 #include <type_traits>
 #include <unordered_map>
 
@@ -76,10 +77,32 @@ class BlockClock {
   std::vector<BlockTime> places_;
 };
 
+// The work frame of each command pushed to the kernel, kept only where it
+// changes and dropped once the kernel has passed it: read back by the
+// running command's tag (tags grow in push order).
+class FrameLog {
+ public:
+  void note(std::uint32_t tag, const interp::WorkFrame& f) {
+    if (!log_.empty() && log_.back().second == f) return;
+    log_.emplace_back(tag, f);
+  }
+  const interp::WorkFrame& at(std::uint32_t tag) {
+    while (log_.size() > 1 && log_[1].first <= tag) log_.pop_front();
+    return log_.front().second;
+  }
+
+ private:
+  std::deque<std::pair<std::uint32_t, interp::WorkFrame>> log_;
+};
+
 // Routes the interpreter's commands: motion to the kernel, the rest recorded.
+// With a frame log, each motion command's work frame is noted (the trace's
+// work columns).
 class Router final : public interp::CommandSink {
  public:
-  Router(kernel::Kernel& k, interp::CommandSink* tap) : k_(k), tap_(tap) {}
+  Router(kernel::Kernel& k, interp::CommandSink* tap, const interp::Interpreter* in = nullptr,
+         FrameLog* frames = nullptr)
+      : k_(k), tap_(tap), in_(in), frames_(frames) {}
   void emit(const canon::Stamped& c) override {
     if (tap_ != nullptr) tap_->emit(c);
     std::visit(
@@ -88,6 +111,7 @@ class Router final : public interp::CommandSink {
           if constexpr (std::is_same_v<T, canon::Rapid> || std::is_same_v<T, canon::Feed> ||
                         std::is_same_v<T, canon::Arc> || std::is_same_v<T, canon::Dwell> ||
                         std::is_same_v<T, canon::Skip>) {
+            if (frames_ != nullptr) frames_->note(k_.next_tag(), in_->work_frame());
             k_.push(c);
           } else if constexpr (std::is_same_v<T, canon::Message>) {
             messages.push_back(cmd.text);
@@ -100,6 +124,8 @@ class Router final : public interp::CommandSink {
  private:
   kernel::Kernel& k_;
   interp::CommandSink* tap_;
+  const interp::Interpreter* in_;
+  FrameLog* frames_;
 };
 
 Error stroke_alarm(const config::MachineConfig& m, int axis, double pos, std::string_view file,
@@ -161,7 +187,10 @@ Result<RunResult> Simulator::run(const interp::Setup& setup, const RunOptions& o
   plant.reset(home);
   plant.for_each_signal([&](const canon::SignalAddr& a, bool on) { k.preset_signal(a, on); });
   ProbeSafety safety(m_, p_, plant, opts.commands);
-  Router router(k, &safety);
+  FrameLog frames;
+  frames.note(0, in.work_frame());
+  Router router(k, &safety, &in, opts.trace != nullptr ? &frames : nullptr);
+  AxisVec work_now;
   // Machine lock and Z-axis cancel (operator switches kept as parameters):
   // the locked axes do not move, the command does.
   AxisMask locked;
@@ -279,6 +308,8 @@ Result<RunResult> Simulator::run(const interp::Setup& setup, const RunOptions& o
       r.feed_mm_per_min = tout.path_speed * 60.0;
       r.line = tout.line;
       r.source = tout.source;
+      work_now = frames.at(tout.tag).apply(plant.actual(), m_.axis_count());
+      r.work = &work_now;
       r.file = file_of(tout.source);
       r.plant = &plant;
       r.handshake = tout.handshake;

@@ -27,7 +27,10 @@ struct TraceRow {
   const AxisVec* torque = nullptr;
   double feed_mm_per_min = 0.0;
   std::uint32_t line = 0;
-  std::uint32_t source = 0;         // call context of the active block (interp::CallContext)
+  std::uint32_t source = 0;  // call context of the active block (interp::CallContext)
+  // The actual position in the running block's work coordinates (program
+  // units, as #5041.. reads it); null when not computed.
+  const AxisVec* work = nullptr;
   std::string_view file;            // file of the active block (valid during the call)
   const Plant* plant = nullptr;     // signal levels
   kernel::SkipHandshake handshake;  // the skip block's handshake

@@ -355,6 +355,27 @@ void CsvTrace::header(const machine::TraceRow& r) {
   // the ball touches a surface (docs/scene.md).
   probe_ = r.plant != nullptr ? r.plant->probing().probe() : nullptr;
   if (probe_ != nullptr) buf_ += ",probe_deflection,probe_contact";
+  // The actual position in the running block's work coordinates (as
+  // #5041..), and the tip of what is in the spindle along Z (machine) when
+  // the scene gives its tools or probe a length.
+  work_ = r.work != nullptr;
+  if (work_) {
+    for (const auto& a : m_.axes) {
+      buf_ += ',';
+      buf_ += a.name;
+      buf_ += "_work";
+    }
+  }
+  tip_axis_ = -1;
+  if (r.plant != nullptr) {
+    const auto& spec = r.plant->probing().spec();
+    if (spec.probe || !spec.tools.empty()) tip_axis_ = m_.axis_index('Z');
+  }
+  if (tip_axis_ >= 0) {
+    buf_ += ',';
+    buf_ += m_.axes[static_cast<std::size_t>(tip_axis_)].name;
+    buf_ += "_tip";
+  }
   buf_ += '\n';
   header_done_ = true;
 }
@@ -387,7 +408,7 @@ void CsvTrace::row(const machine::TraceRow& r) {
   }
   const int n = m_.axis_count();
   const std::size_t signals = r.plant != nullptr ? r.plant->signal_count() : 0;
-  const std::size_t room = (4 + 4 * static_cast<std::size_t>(n)) * (kNumberRoom + 1) +
+  const std::size_t room = (6 + 5 * static_cast<std::size_t>(n)) * (kNumberRoom + 1) +
                            2 * (signals + 4) + 1 + 2 * r.file.size() + 3;
   if (row_.size() < room) row_.resize(room);
   char* p = row_.data();
@@ -430,6 +451,16 @@ void CsvTrace::row(const machine::TraceRow& r) {
     p = trace_number(p, probe_->deflection());
     *p++ = ',';
     *p++ = probe_->touching() ? '1' : '0';
+  }
+  if (work_) {
+    for (int i = 0; i < n; ++i) {
+      *p++ = ',';
+      p = trace_number(p, r.work != nullptr ? (*r.work)[i] : 0.0);
+    }
+  }
+  if (tip_axis_ >= 0) {
+    *p++ = ',';
+    p = trace_number(p, (*r.actual)[tip_axis_] - r.plant->probing().spindle_tool_length());
   }
   *p++ = '\n';
   const auto len = static_cast<std::uint64_t>(p - row_.data());

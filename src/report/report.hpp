@@ -82,6 +82,8 @@ class CsvTrace final : public machine::TraceSink {
   std::uint64_t bytes_ = 0;  // rows accepted (written or buffered)
   std::int64_t every_ = 1;
   const machine::TouchProbe* probe_ = nullptr;  // the scene's probe (trace columns), if any
+  bool work_ = false;                           // <axis>_work columns
+  int tip_axis_ = -1;                           // the <Z>_tip column's axis, -1: none
   bool header_done_ = false;
   std::optional<Error> error_;
   std::function<void()> stop_;

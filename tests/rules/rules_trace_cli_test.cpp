@@ -229,5 +229,48 @@ TEST(TraceCli, ProbeDeflectionAndContactColumns) {
   }
 }
 
+// The work columns (issue 16) are the actual position in the offsets of the
+// block that runs, as #5041.. reads it: a G54 block in G54, the next G55
+// block in G55; on Fanuc with the tool length offset in (the gauge line),
+// on NCT without it (the programmed tip). The tip column is the gauge line
+// less the length of what is in the spindle (the probe: 150 mm to its ball).
+TEST(TraceCli, WorkAndTipColumnsFollowTheRunningBlock) {
+  TempDir tmp;
+  const std::string ex = std::string(SKIPNC_SOURCE_DIR) + "/examples/probing/";
+  const auto prog =
+      tmp.write("w.nc",
+                "G21 G90 G17 G40 G54\nG10 L2 P1 X100. Y50. Z0\n"
+                "G43 H20 G0 X10. Y5. Z-200.\nG04 X0.5\nG55 G0 X0 Y0\nG04 X0.5\nM30\n");
+  for (const char* dialect : {"fanuc", "nct"}) {
+    const auto trace = tmp.path / (std::string(dialect) + ".csv");
+    const auto r =
+        run_cli({"run", prog.string(), "-s", ex + "fixture.scene.toml", "-m",
+                 ex + "mill3_probe.machine.toml", "-d", dialect, "--trace", trace.string(), "-q"});
+    ASSERT_EQ(r.exit_code, 0) << r.out;
+    const Csv c = parse_csv(read_file(trace));
+    const int line = c.col("line"), xw = c.col("X_work"), yw = c.col("Y_work"),
+              zw = c.col("Z_work"), tip = c.col("Z_tip"), za = c.col("Z_act");
+    ASSERT_GE(xw, 0);
+    ASSERT_GE(tip, 0);
+    const bool fanuc = std::string(dialect) == "fanuc";
+    bool seen4 = false, seen6 = false;
+    for (const auto& row : c.rows) {
+      EXPECT_NEAR(row[tip], row[za] - 150.0, 1e-6);
+      if (row[line] == 4.0) {  // the dwell after the G54 move: at rest
+        seen4 = true;
+        EXPECT_NEAR(row[xw], 10.0, 0.001) << dialect;
+        EXPECT_NEAR(row[yw], 5.0, 0.001) << dialect;
+        EXPECT_NEAR(row[zw], fanuc ? -50.0 : -200.0, 0.001) << dialect;
+        EXPECT_NEAR(row[tip], -200.0, 0.001);
+      } else if (row[line] == 6.0) {  // after the G55 move
+        seen6 = true;
+        EXPECT_NEAR(row[xw], 0.0, 0.001) << dialect;
+        EXPECT_NEAR(row[yw], 0.0, 0.001) << dialect;
+      }
+    }
+    EXPECT_TRUE(seen4 && seen6);
+  }
+}
+
 }  // namespace
 }  // namespace skipnc::rules
