@@ -326,6 +326,7 @@ void write_skips(Json& j, const PlotModel& m) {
     j.str("signal", s.signal);
     j.str("kind", s.kind);
     j.boolean("triggered", s.triggered);
+    j.boolean("endedByAlarm", s.ended_by_alarm);
     j.integer("p", s.p);
     j.exact("latchT", s.latch_t);
     j.exact("stopT", s.stop_t);

@@ -183,6 +183,7 @@ void build_skips(const PlotInput& in, PlotModel& pm) {
     sk.block = s.block;
     sk.signal = s.signal;
     sk.triggered = s.triggered;
+    sk.ended_by_alarm = s.ended_by_alarm;
     sk.p = s.p;
     sk.kind = s.kind == canon::SkipKind::kTorque      ? "torque"
               : s.kind == canon::SkipKind::kMultiStep ? "multi_step"
@@ -239,7 +240,7 @@ void build_skips(const PlotInput& in, PlotModel& pm) {
     }
     const std::string at = place_label(pm, s.context, s.line, s.n);
     sk.label = fmt::format("{}{}{}", at, s.triggered ? "" : " no signal,", vars);
-    sk.rest_label = fmt::format("{} rest{}", at, rest);
+    sk.rest_label = fmt::format("{} {}{}", at, s.ended_by_alarm ? "ALARM at" : "rest", rest);
     pm.skips.push_back(std::move(sk));
   }
 }

@@ -130,6 +130,7 @@ struct SkipMark {
   std::vector<int> moved_axes;  // axes the skip block moved
   std::vector<SkipVar> vars;    // what went into the skip variables (moved axes)
   double overtravel_mm = 0.0;   // from the latch to the rest point
+  bool ended_by_alarm = false;  // the run's alarm stopped it (a probe crash, ...)
   std::string label;            // "L6 #5063=-23.8000"
   std::string rest_label;       // "L6 rest Z-23.8105"
 };

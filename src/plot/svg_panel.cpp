@@ -268,8 +268,12 @@ double draw_skip_card(Svg& o, const PlotModel& m, const SkipMark& s, double x, d
   const std::string what =
       s.triggered ? fmt::format("{} at {} s: stored {}", s.signal, num(s.latch_t, 6), vars)
                   : fmt::format("no signal: ran to its end point, stored {}", vars);
-  const std::string stop = fmt::format("rest {} (work) at {} s, {} mm past the latch", rest,
-                                       num(s.stop_t, 4), num(s.overtravel_mm));
+  const std::string stop =
+      s.ended_by_alarm
+          ? fmt::format("cut short by the alarm: stopped at {} (work) at {} s, {} mm past the latch",
+                        rest, num(s.stop_t, 4), num(s.overtravel_mm))
+          : fmt::format("rest {} (work) at {} s, {} mm past the latch", rest, num(s.stop_t, 4),
+                        num(s.overtravel_mm));
   o.add("<g class=\"skip-card\" data-skip=\"{}\">\n", s.index);
   o.add("<text x=\"{}\" y=\"{}\" font-size=\"12\" font-weight=\"bold\" fill=\"#222\">{}</text>\n",
         x, y + 12, esc(fit_text(head, w, 12)));

@@ -283,6 +283,23 @@ TEST(PlotSvg, ALatheHasZHorizontalAndXUpInDiameter) {
   EXPECT_NE(text.find(">-40</text>"), std::string::npos) << "X -20 labelled -40 (diameter)";
 }
 
+// A skip cut short by an alarm (a probe crash) is marked as such: its rest
+// label and its card say the alarm stopped it, and the page's data says so.
+TEST(PlotSvg, ASkipCutShortByAnAlarmIsMarked) {
+  TempDir dir;
+  const std::string g = std::string(SKIPNC_SOURCE_DIR) + "/tests/golden/probing/crash";
+  const auto svg = (dir.path / "crash.svg").string();
+  const auto html = (dir.path / "crash.html").string();
+  const auto r = run_cli({"run", g + ".nc", "-s", g + ".scene.toml", "-m", g + ".machine.toml",
+                          "--plot", svg, "--plot", html, "-q"});
+  ASSERT_EQ(r.exit_code, 1) << r.out;
+  const std::string picture = read_file(svg);
+  EXPECT_NE(picture.find("L8 ALARM at Z-230.5500"), std::string::npos);
+  EXPECT_NE(picture.find("cut short by the alarm: stopped at Z-230.5500 (work)"),
+            std::string::npos);
+  EXPECT_NE(read_file(html).find("\"endedByAlarm\":true"), std::string::npos);
+}
+
 // Two minutes of slow feed end in a touch: the drawing holds a few hundred
 // samples, and the latch is still exactly where the report says.
 TEST(PlotSvg, LongRunIsThinnedWithoutLosingTheLatch) {

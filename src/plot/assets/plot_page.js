@@ -97,7 +97,9 @@
         K.el('div', {cls: 'head', text: (s.index + 1) + '. ' + K.place(s.ctx, s.line) + ': ' + s.block}),
         K.el('div', {cls: 'latch', text: s.triggered ? s.signal + ' at ' + K.num(s.latchT, 6) + ' s: stored ' + vars
                                                    : 'no signal: ran to its end point, stored ' + vars}),
-        K.el('div', {text: 'rest ' + rest + ' (work) at ' + K.num(s.stopT, 4) + ' s, ' + K.num(s.overtravel) + ' mm past the latch'}),
+        K.el('div', {cls: s.endedByAlarm ? 'alarm' : '',
+                     text: (s.endedByAlarm ? 'cut short by the alarm: stopped at ' : 'rest ') + rest + ' (work) at ' +
+                           K.num(s.stopT, 4) + ' s, ' + K.num(s.overtravel) + ' mm past the latch'}),
         K.el('button', {text: 'zoom on this latch', onclick: function () { zoomSkip(s.index); }})
       ]));
     });
