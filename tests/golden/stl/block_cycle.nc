@@ -1,0 +1,1 @@
+../../../examples/stl/block_cycle.nc
