@@ -741,14 +741,14 @@ double Material::part_sdf(const Part& part, Vec3 p) const noexcept {
   return std::max(solid, -hole);
 }
 
-double Material::distance(Vec3 p) const noexcept {
-  double best = kInf;
+double Material::distance(Vec3 p, double cap) const noexcept {
+  double best = cap;
   for (const Part& part : parts_) {
     const Vec3 q = part.place.to_local(p);
     if (!part.solids.empty() && part_sdf(part, q) < 0.0) return 0.0;
     for (const auto& mesh : part.meshes) {
       if (mesh->inside(q)) return 0.0;
-      best = std::min(best, mesh->surface_distance(q));
+      best = std::min(best, mesh->surface_distance(q, best));
     }
   }
   Vec3 q;

@@ -16,6 +16,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <memory>
 #include <string>
 #include <vector>
@@ -147,7 +148,8 @@ class Material {
   // overlaps the material at a does not "touch" what it overlaps.
   bool first_contact(Vec3 a, Vec3 b, double radius, Contact& out) const noexcept;
   // Distance from p to the material; 0 inside it.
-  double distance(Vec3 p) const noexcept;
+  // With `cap`: min(distance, cap), found faster far from the material.
+  double distance(Vec3 p, double cap = std::numeric_limits<double>::infinity()) const noexcept;
   // How deep p is inside the material (0 outside); a CSG estimate near holes.
   double depth(Vec3 p) const noexcept;
   // The first part the column overlaps by more than `tol`, or -1. A column

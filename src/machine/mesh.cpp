@@ -302,8 +302,8 @@ bool TriMesh::first_contact(Vec3 a, Vec3 b, double radius, double& t, Vec3& poin
   return found;
 }
 
-double TriMesh::surface_distance(Vec3 p) const noexcept {
-  double best = kInf;
+double TriMesh::surface_distance(Vec3 p, double cap) const noexcept {
+  double best = cap;
   if (nodes_.empty()) return best;
   std::array<std::uint32_t, kStackDepth> stack{};
   int top = 0;

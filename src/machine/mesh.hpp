@@ -10,6 +10,7 @@
 #pragma once
 
 #include <cstdint>
+#include <limits>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -45,8 +46,11 @@ class TriMesh {
   // to b, comes within `radius` of the surface (having been farther at a).
   bool first_contact(Vec3 a, Vec3 b, double radius, double& t, Vec3& point,
                      Vec3& normal) const noexcept;
-  // Distance from p to the surface, and whether p is inside the solid.
-  double surface_distance(Vec3 p) const noexcept;
+  // Distance from p to the surface (at most `cap`: a search that only needs
+  // to know the surface is farther than cap stops at the first boxes), and
+  // whether p is inside the solid.
+  double surface_distance(Vec3 p,
+                          double cap = std::numeric_limits<double>::infinity()) const noexcept;
   bool inside(Vec3 p) const noexcept;
   // How far a vertical column (axis x, y; z from bottom to top; radius)
   // overlaps the surface: radius minus the horizontal distance from its
