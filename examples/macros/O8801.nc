@@ -1,6 +1,6 @@
 %
-O9801 (TOOL LENGTH ON A TOOL SETTER)
-(G65 P9801 T..  with the tool above the setter, G54-G59 active.)
+O8801 (TOOL LENGTH ON A TOOL SETTER)
+(G65 P8801 T..  with the tool above the setter, G54-G59 active.)
 (T: offset number to set. #501: machine Z of the setter's contact face.)
 (The length is from the spindle gauge line, machine Z0, to the tool tip.)
 (It goes to the H geometry offset T, whose wear is set to 0.)

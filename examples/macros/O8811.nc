@@ -1,6 +1,6 @@
 %
-O9811 (SINGLE SURFACE IN Z)
-(G65 P9811 Z.. S..  with the probe above the surface.)
+O8811 (SINGLE SURFACE IN Z)
+(G65 P8811 Z.. S..  with the probe above the surface.)
 (Z: where the surface should be, work coordinates. S: work offset to set,)
 (1-6 = G54-G59, so that the surface is at Z; omitted: none.)
 (Results: #137 measured Z, #141 error: measured - nominal.)

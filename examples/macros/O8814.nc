@@ -1,6 +1,6 @@
 %
-O9814 (BORE CENTRE AND DIAMETER)
-(G65 P9814 D.. S..  with the probe inside the bore, at the measuring depth.)
+O8814 (BORE CENTRE AND DIAMETER)
+(G65 P8814 D.. S..  with the probe inside the bore, at the measuring depth.)
 (D: nominal bore diameter. S: work offset to set, 1-6 = G54-G59, omitted: none.)
 (#500: effective diameter of the stylus ball, from calibration.)
 (Results: #135 X centre, #136 Y centre, #138 diameter; work coordinates.)

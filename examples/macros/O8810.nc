@@ -1,6 +1,6 @@
 %
-O9810 (PROTECTED POSITIONING MOVE)
-(G65 P9810 X.. Y.. Z.. F..  X Y Z: end point, work coordinates, any of them;)
+O8810 (PROTECTED POSITIONING MOVE)
+(G65 P8810 X.. Y.. Z.. F..  X Y Z: end point, work coordinates, any of them;)
 (F: feed, mm/min, 3000 when omitted. The move is a skip move: if the probe)
 (touches on the way, the program stops with alarm 3091 PATH OBSTRUCTED.)
 #4=#5001 (end point of the previous block: the start)
