@@ -15,7 +15,10 @@ namespace skipnc::machine {
 
 ProbeSafety::ProbeSafety(const config::MachineConfig& m, const config::Parameters& p,
                          const Plant& plant, interp::CommandSink* next)
-    : m_(m), plant_(plant), next_(next), protection_(p.get(kProbeProtectionParam) != 0.0) {}
+    : m_(m), plant_(plant), next_(next), protection_(p.get(kProbeProtectionParam) != 0.0) {
+  const auto& probe = plant.probing().spec().probe;
+  switched_on_ = !(probe && probe->on_m != 0);
+}
 
 std::string ProbeSafety::where(const AxisVec& v) const {
   std::string out;
@@ -33,7 +36,7 @@ void ProbeSafety::emit(const canon::Stamped& c) {
         using T = std::decay_t<decltype(cmd)>;
         if constexpr (std::is_same_v<T, canon::Skip>) {
           warn_braking(cmd, c);
-          warn_unreachable(cmd, c);
+          if (!warn_probe_off(cmd, c)) warn_unreachable(cmd, c);
           last_target_ = cmd.target;
         } else if constexpr (std::is_same_v<T, canon::Rapid> || std::is_same_v<T, canon::Feed> ||
                              std::is_same_v<T, canon::Arc>) {
@@ -42,9 +45,36 @@ void ProbeSafety::emit(const canon::Stamped& c) {
           selected_tool_ = cmd.tool;
         } else if constexpr (std::is_same_v<T, canon::MCode>) {
           if (cmd.code == 6 && selected_tool_ >= 0) tool_change_ = selected_tool_;
+          const auto& probe = plant_.probing().spec().probe;
+          if (probe && probe->on_m != 0 && (cmd.code == probe->on_m || cmd.code == probe->off_m)) {
+            switched_on_ = cmd.code == probe->on_m;
+            power_change_ = switched_on_;
+            if (switched_on_) {
+              power_source_ = c.source;
+              power_line_ = c.line;
+            }
+          }
         }
       },
       c.cmd);
+}
+
+bool ProbeSafety::warn_probe_off(const canon::Skip& s, const canon::Stamped& at) {
+  const auto& probe = plant_.probing().spec().probe;
+  if (switched_on_ || !probe || tool_for_next_command() != probe->tool ||
+      s.spec.kind == canon::SkipKind::kTorque) {
+    return false;
+  }
+  bool listens = false;
+  for (int i = 0; i < s.spec.input_count; ++i)
+    listens = listens || s.spec.inputs[i] == probe->signal;
+  if (!listens) return false;
+  interp::add_warning(
+      warnings_, interp::Warning{"probe_off", at.source, at.line,
+                                 fmt::format("the skip listens to the probe's input {}, but the "
+                                             "probe is switched off (M{} switches it on)",
+                                             config::signal_name(probe->signal), probe->on_m)});
+  return true;
 }
 
 // How far a skip's direction is followed when looking for a surface: past
@@ -221,6 +251,34 @@ std::optional<SafetyAlarm> ProbeSafety::check_period(Plant& plant, const kernel:
   if (tool_change_ && k.idle()) {
     ps.set_spindle_tool(*tool_change_);
     tool_change_.reset();
+  }
+  // The probe's switch: made when the motion before it has ended; switched
+  // on, the probe signals once its start-up time has passed.
+  const double now_s = k.clock().seconds(k.now());
+  if (power_change_ && k.idle()) {
+    if (*power_change_) {
+      power_on_at_s_ = now_s + ps.spec().probe->start_time_s;
+    } else {
+      ps.set_probe_power(false);
+      power_on_at_s_ = -1.0;
+    }
+    power_change_.reset();
+  }
+  if (power_on_at_s_ >= 0.0 && now_s >= power_on_at_s_ - 1e-12) {
+    ps.set_probe_power(true);
+    power_on_at_s_ = -1.0;
+    // Coming on with the stylus already deflected, the input rises at once:
+    // a skip running then stores where the probe was, past the surface.
+    const TouchProbe* probe = ps.probe_in_spindle() ? ps.probe() : nullptr;
+    if (probe != nullptr && probe->deflection() > 0.0) {
+      interp::add_warning(
+          warnings_,
+          interp::Warning{"probe_start_deflected", power_source_, power_line_,
+                          fmt::format("the probe switched on here became ready at {:.4f} s with "
+                                      "its stylus already deflected {:.4f} mm: its input came on "
+                                      "at once, wherever the axes were",
+                                      now_s, probe->deflection())});
+    }
   }
   const PlantFault& f = ps.fault();
   const SourceLoc loc{file, at_line, 1};

@@ -39,13 +39,15 @@ class ProbeSafety final : public interp::CommandSink {
   void emit(const canon::Stamped& c) override;
   // True while a tool change waits for the motion before it to end: the
   // interpreter must not read further.
-  bool holds_reading() const noexcept { return tool_change_.has_value(); }
+  bool holds_reading() const noexcept {
+    return tool_change_.has_value() || power_change_.has_value();
+  }
   // After each kernel tick. `line` is the line the kernel shows now.
   [[nodiscard]] std::optional<SafetyAlarm> after_period(Plant& plant, const kernel::Kernel& k,
                                                         std::uint32_t line, std::string_view file) {
     const ProbeScene& ps = plant.probing();
-    if (!tool_change_ && ps.fault().kind == PlantFault::Kind::kNone &&
-        !(protection_ && ps.touch_switched_on())) {
+    if (!tool_change_ && !power_change_ && power_on_at_s_ < 0.0 &&
+        ps.fault().kind == PlantFault::Kind::kNone && !(protection_ && ps.touch_switched_on())) {
       period_line_ = line;  // nothing to do (most periods)
       return std::nullopt;
     }
@@ -82,6 +84,16 @@ class ProbeSafety final : public interp::CommandSink {
   AxisVec last_target_;
   int selected_tool_ = -1;
   std::optional<int> tool_change_;
+  // A switched probe (ProbeSpec::on_m): the switch read and not yet made
+  // (made once the motion before it has ended, as a tool change), the
+  // instant its start-up time ends, and its state as the program has set it.
+  std::optional<bool> power_change_;
+  double power_on_at_s_ = -1.0;
+  bool switched_on_ = true;
+  std::uint32_t power_source_ = 0, power_line_ = 0;  // the block of the last switch-on
+  // A skip that listens to a switched-off probe: warning probe_off; true
+  // when said.
+  bool warn_probe_off(const canon::Skip& s, const canon::Stamped& at);
   std::uint32_t period_line_ = 0;
   std::vector<std::string> messages_;
   std::vector<interp::Warning> warnings_;

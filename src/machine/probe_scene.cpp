@@ -68,6 +68,9 @@ geo::Column ProbeScene::tool_column(const ToolSpec& t, const AxisVec& machine) c
   return geo::Column{p.x, p.y, t.radius, p.z - t.length, p.z};
 }
 
+// An edge at the start of the period (a tool change, a switch).
+constexpr double kAtOnce = 1e-9;
+
 void ProbeScene::push_edge(std::size_t source, double frac, bool on) noexcept {
   if (edge_count_ < edges_.size()) edges_[edge_count_++] = Edge{source, frac, on};
   sources_[source].on = on;
@@ -82,10 +85,12 @@ void ProbeScene::reset(const AxisVec& actual) noexcept {
   edge_count_ = 0;
   touch_on_ = false;
   pending_tool_.reset();
+  pending_power_.reset();
+  powered_ = !(spec_.probe && spec_.probe->on_m != 0);
   if (probe_) {
     const bool in = probe_in_spindle();
     if (in) probe_->reset(ball_at(actual));
-    sources_[probe_source_].on = in && probe_->on();
+    sources_[probe_source_].on = powered_ && in && probe_->on();
   }
   if (setter_) {
     const ToolSpec* t = tool_in_spindle();
@@ -104,14 +109,13 @@ void ProbeScene::reset(const AxisVec& actual) noexcept {
 void ProbeScene::change_tool(const AxisVec& at) noexcept {
   spindle_tool_ = *pending_tool_;
   pending_tool_.reset();
-  constexpr double kAtOnce = 1e-9;
   if (probe_) {
     bool now = false;
     if (probe_in_spindle()) {
       probe_->reset(ball_at(at));
       now = probe_->on();
     }
-    if (now != sources_[probe_source_].on) push_edge(probe_source_, kAtOnce, now);
+    if (now != sources_[probe_source_].on) probe_edge(kAtOnce, now);
   }
   if (setter_) {
     const ToolSpec* t = tool_in_spindle();
@@ -122,13 +126,23 @@ void ProbeScene::change_tool(const AxisVec& at) noexcept {
   }
 }
 
+// Switched on, the input shows at once whether the stylus is deflected;
+// switched off, it goes off.
+void ProbeScene::apply_power() noexcept {
+  powered_ = *pending_power_;
+  pending_power_.reset();
+  const bool now = powered_ && probe_in_spindle() && probe_->on();
+  if (now != sources_[probe_source_].on) push_edge(probe_source_, kAtOnce, now);
+}
+
 void ProbeScene::advance_sensors(const AxisVec& before, const AxisVec& after) noexcept {
   if (pending_tool_) change_tool(before);
+  if (pending_power_ && probe_) apply_power();
   if (!senses_) return;
   SensorEdge e[2];
   if (probe_ && probe_in_spindle()) {
     const int n = probe_->advance(ball_at(before), ball_at(after), e);
-    for (int i = 0; i < n; ++i) push_edge(probe_source_, e[i].frac, e[i].on);
+    for (int i = 0; i < n; ++i) probe_edge(e[i].frac, e[i].on);
   }
   if (setter_) {
     const ToolSpec* t = tool_in_spindle();

@@ -55,6 +55,10 @@ class ProbeScene {
     touch_on_ = false;
     if (pending_tool_ || senses_) advance_sensors(before, after);
   }
+  // A switched probe (ProbeSpec::on_m): whether its input can come on.
+  // Takes effect at the next period.
+  void set_probe_power(bool on) noexcept { pending_power_ = on; }
+  bool probe_powered() const noexcept { return powered_; }
 
   struct Edge {
     std::size_t source = 0;
@@ -111,6 +115,11 @@ class ProbeScene {
   };
   geo::Vec3 point(const AxisVec& machine) const noexcept;
   void push_edge(std::size_t source, double frac, bool on) noexcept;
+  // The probe's input follows its switch only while it is powered.
+  void probe_edge(double frac, bool on) noexcept {
+    if (powered_) push_edge(probe_source_, frac, on);
+  }
+  void apply_power() noexcept;
   void change_tool(const AxisVec& at) noexcept;
   void check_collision(const AxisVec& before, const AxisVec& after) noexcept;
   void check_crash(const AxisVec& before, const AxisVec& after) noexcept;
@@ -127,6 +136,8 @@ class ProbeScene {
   std::size_t edge_count_ = 0;
   int spindle_tool_ = 0;
   std::optional<int> pending_tool_;
+  bool powered_ = true;  // a switched probe starts off (ProbeSpec::on_m)
+  std::optional<bool> pending_power_;
   bool touch_on_ = false;
   // Something to sense or to hit: a probe, a setter, gauges or parts.
   bool senses_ = false;

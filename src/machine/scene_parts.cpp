@@ -387,11 +387,11 @@ Result<double> probe_length(const toml::table& t, const Reader& rd, int tool) {
 
 Result<ProbeSpec> parse_probe(const toml::table& t, const Reader& rd) {
   const auto origin = rd.origin;
-  auto k =
-      check_keys(t,
-                 {"signal", "tool", "offset", "ball_radius", "length", "stylus_length",
-                  "body_radius", "pre_travel", "max_overtravel", "lobing", "repeatability", "seed"},
-                 origin, "[probe]");
+  auto k = check_keys(t,
+                      {"signal", "tool", "offset", "ball_radius", "length", "stylus_length",
+                       "body_radius", "pre_travel", "max_overtravel", "lobing", "repeatability",
+                       "seed", "on_m", "off_m", "start_time"},
+                      origin, "[probe]");
   if (!k) return std::unexpected(k.error());
   ProbeSpec p;
   auto sig = rd.signal(t, p.signal_name);
@@ -427,6 +427,22 @@ Result<ProbeSpec> parse_probe(const toml::table& t, const Reader& rd) {
   auto seed = rd.integer(t, "seed", 0, std::numeric_limits<std::int64_t>::max(), 1);
   if (!seed) return std::unexpected(seed.error());
   p.seed = static_cast<std::uint64_t>(*seed);
+  auto on_m = rd.integer(t, "on_m", 0, 9999, 0);
+  if (!on_m) return std::unexpected(on_m.error());
+  auto off_m = rd.integer(t, "off_m", 0, 9999, 0);
+  if (!off_m) return std::unexpected(off_m.error());
+  auto start = rd.number(t, "start_time", 0.0, 60.0, 0.0);
+  if (!start) return std::unexpected(start.error());
+  if (*on_m == 0 && (*off_m != 0 || *start != 0.0)) {
+    return config_error(*t.get(*off_m != 0 ? "off_m" : "start_time"), origin,
+                        "off_m and start_time need on_m: the M code that switches the probe on");
+  }
+  if (*on_m != 0 && *on_m == *off_m) {
+    return config_error(*t.get("off_m"), origin, "off_m must differ from on_m");
+  }
+  p.on_m = static_cast<int>(*on_m);
+  p.off_m = static_cast<int>(*off_m);
+  p.start_time_s = *start;
   if (const auto* n = t.get("lobing")) {
     const auto* lt = n->as_table();
     if (lt == nullptr) {

@@ -39,6 +39,13 @@ struct ProbeSpec {
   double lobing_phase_deg = 0.0;  // approach direction of least pre-travel
   double repeatability = 0.0;     // 1-sigma scatter of the switch point, mm
   std::uint64_t seed = 1;
+  // Switching (an optical or radio probe): the M code that switches it on,
+  // 0 when it is always on; the one that switches it off; the time from the
+  // switch-on to a probe that signals, s. Off, the probe still deflects (and
+  // crashes) but its input stays off.
+  int on_m = 0;
+  int off_m = 0;
+  double start_time_s = 0.0;
 };
 
 // A tool in the magazine: a flat-ended column below the gauge line.

@@ -128,6 +128,15 @@ TEST(SceneProbing, RefusesWhatCannotBe) {
                4);
   expect_error("[probe]\nsignal = \"Y0.4\"\nball_radius = 1\nmax_overtravel = 1\n", 2);
   expect_error("[probe]\nsignal = \"SKIP\"\nball_radius = 1\n", 1);  // max_overtravel missing
+  // A switched probe: off_m and start_time need on_m; on and off differ.
+  expect_error("[probe]\nsignal = \"SKIP\"\nball_radius = 1\nmax_overtravel = 1\noff_m = 82\n", 5);
+  expect_error("[probe]\nsignal = \"SKIP\"\nball_radius = 1\nmax_overtravel = 1\nstart_time = 1\n",
+               5);
+  expect_error(
+      "[probe]\nsignal = \"SKIP\"\nball_radius = 1\nmax_overtravel = 1\non_m = 81\noff_m = 81\n",
+      6);
+  expect_error("[probe]\nsignal = \"SKIP\"\nball_radius = 1\nmax_overtravel = 1\nstart_time = 61\n",
+               5);
   expect_error("spindle_tool = 3\n[[tool]]\nnumber = 1\nlength = 10\nradius = 1\n", 1);
   expect_error(
       "[[tool]]\nnumber = 1\nlength = 10\nradius = 1\n[[tool]]\nnumber = 1\nlength = 5\nradius = "
