@@ -377,12 +377,46 @@ int polynomial_roots(const double* c, int n, double lo, double hi, double* roots
 Material::Material(std::vector<Part> parts) : parts_(std::move(parts)) {
   for (int p = 0; p < static_cast<int>(parts_.size()); ++p) {
     const Part& part = parts_[static_cast<std::size_t>(p)];
+    PartBounds b;
+    b.begin = features_.size();
     for (int s = 0; s < static_cast<int>(part.solids.size()); ++s) add_solid_features(p, s);
     for (int h = 0; h < static_cast<int>(part.holes.size()); ++h) {
       add_hole_features(p, h);
       for (int s = 0; s < static_cast<int>(part.solids.size()); ++s) add_rims(p, h, s);
     }
+    b.end = features_.size();
+    b.lo = Vec3{kInf, kInf, kInf};
+    b.hi = Vec3{-kInf, -kInf, -kInf};
+    const auto grow = [&](Vec3 lo, Vec3 hi) {
+      b.lo = Vec3{std::fmin(b.lo.x, lo.x), std::fmin(b.lo.y, lo.y), std::fmin(b.lo.z, lo.z)};
+      b.hi = Vec3{std::fmax(b.hi.x, hi.x), std::fmax(b.hi.y, hi.y), std::fmax(b.hi.z, hi.z)};
+    };
+    for (const Shape& s : part.solids) {
+      switch (s.kind) {
+        case ShapeKind::kBox:
+          grow(s.lo, s.hi);
+          break;
+        case ShapeKind::kCylinder:
+          grow(Vec3{s.lo.x - s.radius, s.lo.y - s.radius, s.lo.z},
+               Vec3{s.hi.x + s.radius, s.hi.y + s.radius, s.hi.z});
+          break;
+        case ShapeKind::kSphere:
+          grow(s.center - Vec3{s.radius, s.radius, s.radius},
+               s.center + Vec3{s.radius, s.radius, s.radius});
+          break;
+        case ShapeKind::kHalfSpace:
+          b.bounded = false;
+          break;
+      }
+    }
+    bounds_.push_back(b);
   }
+}
+
+// Can nothing within the box lo..hi (part frame) reach the part's solids?
+bool Material::beyond(const PartBounds& b, Vec3 lo, Vec3 hi) const noexcept {
+  return b.bounded && (lo.x > b.hi.x || hi.x < b.lo.x || lo.y > b.hi.y || hi.y < b.lo.y ||
+                       lo.z > b.hi.z || hi.z < b.lo.z);
 }
 
 void Material::add_solid_features(int part, int solid) {
@@ -662,15 +696,24 @@ bool Material::contact_with(const Feature& f, Vec3 a, Vec3 b, double radius,
 bool Material::first_contact(Vec3 a, Vec3 b, double radius, Contact& out) const noexcept {
   bool found = false;
   Contact c;
-  for (const Feature& f : features_) {
+  for (const PartBounds& pb : bounds_) {
+    if (pb.begin == pb.end) continue;
     // Each feature in its part's frame: a and b are moved there, the contact
-    // is moved back.
-    const Placement& pl = place_of(f);
-    if (contact_with(f, pl.to_local(a), pl.to_local(b), radius, c) && (!found || c.t < out.t)) {
-      out = c;
-      out.point = pl.to_machine(c.point);
-      out.normal = pl.turn(c.normal);
-      found = true;
+    // is moved back. A part whose box the swept ball cannot reach is passed.
+    const Placement& pl = place_of(features_[pb.begin]);
+    const Vec3 la = pl.to_local(a), lb = pl.to_local(b);
+    const Vec3 r{radius, radius, radius};
+    const Vec3 lo{std::fmin(la.x, lb.x), std::fmin(la.y, lb.y), std::fmin(la.z, lb.z)};
+    const Vec3 hi{std::fmax(la.x, lb.x), std::fmax(la.y, lb.y), std::fmax(la.z, lb.z)};
+    if (beyond(pb, lo - r, hi + r)) continue;
+    for (std::size_t i = pb.begin; i < pb.end; ++i) {
+      const Feature& f = features_[i];
+      if (contact_with(f, la, lb, radius, c) && (!found || c.t < out.t)) {
+        out = c;
+        out.point = pl.to_machine(c.point);
+        out.normal = pl.turn(c.normal);
+        found = true;
+      }
     }
   }
   for (std::size_t p = 0; p < parts_.size(); ++p) {
@@ -752,9 +795,19 @@ double Material::distance(Vec3 p, double cap) const noexcept {
     }
   }
   Vec3 q;
-  for (const Feature& f : features_) {
-    const double d = feature_distance(f, place_of(f).to_local(p), q);
-    if (d < best && valid(f, q)) best = d;
+  for (const PartBounds& pb : bounds_) {
+    if (pb.begin == pb.end) continue;
+    const Vec3 lp = place_of(features_[pb.begin]).to_local(p);
+    // Nothing of the part is nearer than `best` when its box, grown by best,
+    // does not hold the point.
+    if (best < kInf && beyond(pb, lp - Vec3{best, best, best}, lp + Vec3{best, best, best})) {
+      continue;
+    }
+    for (std::size_t i = pb.begin; i < pb.end; ++i) {
+      const Feature& f = features_[i];
+      const double d = feature_distance(f, lp, q);
+      if (d < best && valid(f, q)) best = d;
+    }
   }
   return best;
 }

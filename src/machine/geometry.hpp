@@ -208,8 +208,19 @@ class Material {
     return parts_[static_cast<std::size_t>(f.part)].place;
   }
 
+  // Each part's features (a run of features_, in part order) and the box,
+  // in the part's frame, that holds its solids (and so every feature): a
+  // query that cannot reach the box skips the part (most servo periods).
+  struct PartBounds {
+    std::size_t begin = 0, end = 0;
+    Vec3 lo, hi;
+    bool bounded = true;  // false with a half-space solid
+  };
+  bool beyond(const PartBounds& b, Vec3 lo, Vec3 hi) const noexcept;
+
   std::vector<Part> parts_;
   std::vector<Feature> features_;
+  std::vector<PartBounds> bounds_;
 };
 
 // Real roots of c[0] + c[1] t + ... + c[n] t^n (n <= 4) in [lo, hi], in
