@@ -15,7 +15,7 @@ work=$(mktemp -d "${TMPDIR:-/tmp}/skipnc-stl.XXXXXX")
 trap 'rm -rf "$work"' EXIT
 
 python3 - "$work" <<'PY'
-import struct, sys, os
+import os, sys
 out = sys.argv[1]
 N = 707                    # grid cells per side: 2 N^2 triangles on the top face
 X0, Y0, X1, Y1, ZB, ZT = -200.0, -200.0, 200.0, 200.0, -250.0, -200.0
@@ -35,14 +35,9 @@ for k in range(m):
     (x0, y0), (x1, y1) = ring[k], ring[(k + 1) % m]
     tris += [((x0, y0, ZT), (x0, y0, ZB), (x1, y1, ZB)), ((x0, y0, ZT), (x1, y1, ZB), (x1, y1, ZT))]
     tris.append(((0.0, 0.0, ZB), (x1, y1, ZB), (x0, y0, ZB)))  # bottom: a fan from its centre
-with open(os.path.join(out, 'plate.stl'), 'wb') as f:
-    f.write(b'skipnc bench plate'.ljust(80, b' '))
-    f.write(struct.pack('<I', len(tris)))
-    for t in tris:
-        f.write(struct.pack('<3f', 0, 0, 0))
-        for v in t:
-            f.write(struct.pack('<3f', *v))
-        f.write(b'\0\0')
+sys.path.insert(0, 'examples/stl')
+from make_block import write  # the binary STL writer of the example part
+write(os.path.join(out, 'plate.stl'), tris, 'skipnc bench plate')
 print('plate.stl: %d triangles, %.1f MB' % (len(tris), os.path.getsize(os.path.join(out, 'plate.stl')) / 1e6))
 # 100 touches on a 10 x 10 grid of points of the top face.
 lines = ['G21 G90 G17 G40 G54', 'G43 H20 G0 Z-150.']
