@@ -35,6 +35,7 @@ for k in range(m):
     (x0, y0), (x1, y1) = ring[k], ring[(k + 1) % m]
     tris += [((x0, y0, ZT), (x0, y0, ZB), (x1, y1, ZB)), ((x0, y0, ZT), (x1, y1, ZB), (x1, y1, ZT))]
     tris.append(((0.0, 0.0, ZB), (x1, y1, ZB), (x0, y0, ZB)))  # bottom: a fan from its centre
+sys.dont_write_bytecode = True  # leave the source tree as it is
 sys.path.insert(0, 'examples/stl')
 from make_block import write  # the binary STL writer of the example part
 write(os.path.join(out, 'plate.stl'), tris, 'skipnc bench plate')
