@@ -420,10 +420,15 @@ Result<RunResult> Simulator::run(const interp::Setup& setup, const RunOptions& o
       break;
     }
     if (opts.interrupt != nullptr && opts.interrupt->load(std::memory_order_relaxed)) {
+      // The block the stop cut: the one the machine runs, or while the
+      // machine is idle the one the interpreter is at (a macro loop). Was
+      // always the interpreter's, a block or more ahead of the machine.
+      const bool moving = !k.idle() && tout.line != 0;
+      const std::uint32_t ctx = moving ? tout.source : in.context();
       res.status = RunStatus::kInterrupted;
       res.alarm = Error{AlarmId::kInterrupted, "stopped by a signal",
-                        SourceLoc{file_of(in.context()), in.line(), 1}, -1};
-      res.alarm_context = in.context();
+                        SourceLoc{file_of(ctx), moving ? tout.line : in.line(), 1}, -1};
+      res.alarm_context = ctx;
       break;
     }
     if (opts.progress) {

@@ -218,6 +218,8 @@ TEST(RobustOutputs, TraceToAPipeClosedEarlyIsAnAlarmWithAReport) {
   EXPECT_EQ(j.value("status", ""), "alarm");
   EXPECT_EQ(j["alarm"].value("code", ""), alarm_code(AlarmId::kFileAccess));
   EXPECT_NE(j["alarm"].value("message", "").find("trace"), std::string::npos);
+  EXPECT_EQ(j["alarm"].value("line", 0), 1)
+      << "the G01 that was running (was 2: the M30 read ahead)";
   // Stopped early: the 100 mm move did not end.
   EXPECT_LT(j["final"]["position"].value("X", 100.0), 99.0);
 }
