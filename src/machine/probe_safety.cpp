@@ -119,15 +119,10 @@ std::optional<bool> ProbeSafety::reachable(const canon::SignalAddr& input, const
   if (spec.tool_setter && spec.tool_setter->signal == input) {
     const ToolSetterSpec& ts = *spec.tool_setter;
     const geo::Column setter{ts.x, ts.y, ts.radius, ts.top - ts.thickness, ts.top};
-    if (tool == nullptr && !probe_in) {
-      found(false);
+    if (tool == nullptr) {
+      found(false);  // the setter senses a tool, not the probe (docs/scene.md)
     } else {
-      // The probe presses the setter with its ball's column as a tool would.
-      const geo::Column col =
-          tool != nullptr
-              ? ps.tool_column(*tool, from)
-              : geo::Column{ps.ball_at(from).x, ps.ball_at(from).y, spec.probe->ball_radius,
-                            ps.ball_at(from).z - spec.probe->ball_radius, ps.ball_at(from).z};
+      const geo::Column col = ps.tool_column(*tool, from);
       const auto along = [&](char axis) {
         const int i = m_.axis_index(axis);
         return i < 0 ? 0.0 : dir[i] * kRayMm;
