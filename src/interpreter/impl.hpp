@@ -390,7 +390,7 @@ struct Interpreter::Impl {
   Value read_control(const sysvar::Range& r, int n) const;
   Flow<void> write_control(const sysvar::Range& r, int n, Value v, SourceLoc where);
   Flow<void> write_var(int n, Value v, SourceLoc where);
-  double* tool_field(int n) noexcept;
+  double* tool_field(const sysvar::Range& r, int k) noexcept;
   Flow<Value> read_named_var(const std::string& name, SourceLoc where);
   Flow<void> write_named_var(const std::string& name, Value v, SourceLoc where);
 

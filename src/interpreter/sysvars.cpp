@@ -123,7 +123,8 @@ Flow<Value> Interpreter::Impl::read_var(int n, SourceLoc where) {
   }
   int k = 0;
   const sysvar::Range* r = sysvar::find(n, k);
-  if (r == nullptr || !(r->access & sysvar::kRead) || (tool_field(n) == nullptr && is_tool(*r))) {
+  double* tool = r != nullptr && is_tool(*r) ? tool_field(*r, k) : nullptr;
+  if (r == nullptr || !(r->access & sysvar::kRead) || (is_tool(*r) && tool == nullptr)) {
     return fail(AlarmId::kIllegalVariable,
                 "#" + std::to_string(n) + " is not a variable of this control", where);
   }
@@ -135,7 +136,7 @@ Flow<Value> Interpreter::Impl::read_var(int n, SourceLoc where) {
     if (axis >= axis_count) return Value::null();
     return Value::of(work_offsets[static_cast<std::size_t>(set)][axis] / unit_mm() + 0.0);
   }
-  if (double* f = tool_field(n)) return Value::of(*f / unit_mm() + 0.0);
+  if (tool != nullptr) return Value::of(*tool / unit_mm() + 0.0);
   if (k >= 5000) return read_position(*r, k - r->first, where);
   if (k >= 4000) return read_modal(*r, k - r->first);
   return read_control(*r, k);
@@ -262,19 +263,16 @@ Value Interpreter::Impl::read_control(const sysvar::Range& r, int n) const {
   }
 }
 
-// The tool offset a variable names (memory C), nullptr when none (or when
-// the offset number is above the machine's count).
-double* Interpreter::Impl::tool_field(int n) noexcept {
-  int k = 0;
-  const sysvar::Range* r = sysvar::find(n, k);
-  if (r == nullptr || !is_tool(*r)) return nullptr;
+// The tool offset number `k` of a tool-offset range names (memory C),
+// nullptr when the machine has no such offset.
+double* Interpreter::Impl::tool_field(const sysvar::Range& r, int k) noexcept {
   const int count = mc.tool_offset_count;
-  const int slot = k - r->first + 1;
+  const int slot = k - r.first + 1;
   if (slot > count) return nullptr;
-  const bool short_table = r->id == sysvar::Id::kHWearShort || r->id == sysvar::Id::kHGeomShort;
+  const bool short_table = r.id == sysvar::Id::kHWearShort || r.id == sysvar::Id::kHGeomShort;
   if (short_table && count > 200) return nullptr;
   config::ToolOffset& t = tools[static_cast<std::size_t>(slot)];
-  switch (r->id) {
+  switch (r.id) {
     case sysvar::Id::kHWearShort:
     case sysvar::Id::kHWear:
       return &t.length_wear;
@@ -312,11 +310,11 @@ Flow<void> Interpreter::Impl::write_var(int n, Value v, SourceLoc where) {
       work_offsets[static_cast<std::size_t>(set)][axis] = v.num() * unit_mm();
       return {};
     }
-    if (double* f = tool_field(n)) {
+    if (!is_tool(*r)) return write_control(*r, k, v, where);
+    if (double* f = tool_field(*r, k)) {
       *f = v.num() * unit_mm();
       return {};
     }
-    if (!is_tool(*r)) return write_control(*r, k, v, where);
   }
   if (sysvar::is_protected(n)) {
     return fail(AlarmId::kWriteProtected, "#" + std::to_string(n) + " cannot be written", where);

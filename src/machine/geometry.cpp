@@ -696,11 +696,12 @@ bool Material::contact_with(const Feature& f, Vec3 a, Vec3 b, double radius,
 bool Material::first_contact(Vec3 a, Vec3 b, double radius, Contact& out) const noexcept {
   bool found = false;
   Contact c;
-  for (const PartBounds& pb : bounds_) {
+  for (std::size_t p = 0; p < parts_.size(); ++p) {
+    const PartBounds& pb = bounds_[p];
     if (pb.begin == pb.end) continue;
     // Each feature in its part's frame: a and b are moved there, the contact
     // is moved back. A part whose box the swept ball cannot reach is passed.
-    const Placement& pl = place_of(features_[pb.begin]);
+    const Placement& pl = parts_[p].place;
     const Vec3 la = pl.to_local(a), lb = pl.to_local(b);
     const Vec3 r{radius, radius, radius};
     const Vec3 lo{std::fmin(la.x, lb.x), std::fmin(la.y, lb.y), std::fmin(la.z, lb.z)};
@@ -786,25 +787,28 @@ double Material::part_sdf(const Part& part, Vec3 p) const noexcept {
 
 double Material::distance(Vec3 p, double cap) const noexcept {
   double best = cap;
-  for (const Part& part : parts_) {
+  for (std::size_t i = 0; i < parts_.size(); ++i) {
+    const Part& part = parts_[i];
     const Vec3 q = part.place.to_local(p);
-    if (!part.solids.empty() && part_sdf(part, q) < 0.0) return 0.0;
+    // Inside a solid only within the box that holds them.
+    if (!part.solids.empty() && !beyond(bounds_[i], q, q) && part_sdf(part, q) < 0.0) return 0.0;
     for (const auto& mesh : part.meshes) {
       if (mesh->inside(q)) return 0.0;
       best = std::min(best, mesh->surface_distance(q, best));
     }
   }
   Vec3 q;
-  for (const PartBounds& pb : bounds_) {
+  for (std::size_t i = 0; i < parts_.size(); ++i) {
+    const PartBounds& pb = bounds_[i];
     if (pb.begin == pb.end) continue;
-    const Vec3 lp = place_of(features_[pb.begin]).to_local(p);
+    const Vec3 lp = parts_[i].place.to_local(p);
     // Nothing of the part is nearer than `best` when its box, grown by best,
     // does not hold the point.
     if (best < kInf && beyond(pb, lp - Vec3{best, best, best}, lp + Vec3{best, best, best})) {
       continue;
     }
-    for (std::size_t i = pb.begin; i < pb.end; ++i) {
-      const Feature& f = features_[i];
+    for (std::size_t fi = pb.begin; fi < pb.end; ++fi) {
+      const Feature& f = features_[fi];
       const double d = feature_distance(f, lp, q);
       if (d < best && valid(f, q)) best = d;
     }

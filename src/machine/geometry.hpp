@@ -204,9 +204,6 @@ class Material {
   bool valid(const Feature& f, Vec3 q) const noexcept;
   double feature_distance(const Feature& f, Vec3 p, Vec3& closest) const noexcept;
   double part_sdf(const Part& part, Vec3 p) const noexcept;
-  const Placement& place_of(const Feature& f) const noexcept {
-    return parts_[static_cast<std::size_t>(f.part)].place;
-  }
 
   // Each part's features (a run of features_, in part order) and the box,
   // in the part's frame, that holds its solids (and so every feature): a

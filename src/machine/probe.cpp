@@ -138,7 +138,7 @@ int TouchProbe::advance(geo::Vec3 a, geo::Vec3 b, SensorEdge* edges) noexcept {
 // --- SetterSensor ---------------------------------------------------------------
 
 SetterSensor::SetterSensor(const ToolSetterSpec& spec) noexcept : spec_(spec) {
-  disc_ = geo::Column{spec.x, spec.y, spec.radius, spec.top - spec.thickness, spec.top};
+  disc_ = spec.disc();
   // A zero pre-travel switches at first contact (1 nm of overlap).
   switch_ = std::max(spec.pre_travel, 1e-6);
 }

@@ -117,20 +117,14 @@ std::optional<bool> ProbeSafety::reachable(const canon::SignalAddr& input, const
     }
   }
   if (spec.tool_setter && spec.tool_setter->signal == input) {
-    const ToolSetterSpec& ts = *spec.tool_setter;
-    const geo::Column setter{ts.x, ts.y, ts.radius, ts.top - ts.thickness, ts.top};
+    const geo::Column setter = spec.tool_setter->disc();
     if (tool == nullptr) {
       found(false);  // the setter senses a tool, not the probe (docs/scene.md)
     } else {
       const geo::Column col = ps.tool_column(*tool, from);
-      const auto along = [&](char axis) {
-        const int i = m_.axis_index(axis);
-        return i < 0 ? 0.0 : dir[i] * kRayMm;
-      };
-      const geo::Vec3 move{along('X'), along('Y'), along('Z')};
       double t = 0.0;
       found(geo::column_overlap(col, setter) > 0.0 ||
-            geo::column_first_overlap(col, move, setter, 1e-6, t));
+            geo::column_first_overlap(col, ps.point(far) - ps.point(from), setter, 1e-6, t));
     }
   }
   return out;

@@ -58,7 +58,6 @@ class ProbeScene {
   // A switched probe (ProbeSpec::on_m): whether its input can come on.
   // Takes effect at the next period.
   void set_probe_power(bool on) noexcept { pending_power_ = on; }
-  bool probe_powered() const noexcept { return powered_; }
 
   struct Edge {
     std::size_t source = 0;
@@ -97,6 +96,8 @@ class ProbeScene {
   const SetterSensor* setter() const noexcept { return setter_ ? &*setter_ : nullptr; }
   const std::vector<GaugeSensor>& gauges() const noexcept { return gauges_; }
 
+  // A machine position's X, Y, Z (0 for an axis the machine lacks).
+  geo::Vec3 point(const AxisVec& machine) const noexcept;
   // Where the ball centre is for a machine position.
   geo::Vec3 ball_at(const AxisVec& machine) const noexcept;
   // The tool's column for a machine position (tool in the spindle).
@@ -113,7 +114,6 @@ class ProbeScene {
     std::size_t step = 0;
     bool on = false;
   };
-  geo::Vec3 point(const AxisVec& machine) const noexcept;
   void push_edge(std::size_t source, double frac, bool on) noexcept;
   // The probe's input follows its switch only while it is powered.
   void probe_edge(double frac, bool on) noexcept {

@@ -66,6 +66,8 @@ struct ToolSetterSpec {
   double thickness = 5.0;
   double pre_travel = 0.0;
   double max_overtravel = 1.0;
+  // The disc as a vertical column (machine coordinates).
+  geo::Column disc() const noexcept { return geo::Column{x, y, radius, top - thickness, top}; }
 };
 
 // An in-process gauge: the diameter ground by a wheel whose face is at

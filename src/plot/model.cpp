@@ -346,6 +346,75 @@ std::string skip_var_name(const config::Dialect& d, int axis_index, char axis_na
   return std::string(1, axis_name);
 }
 
+namespace {
+
+// The extents the views are fitted to: `full_extent` everything (the path,
+// the skips, the scene), `extent` where the run worked (the feed, arc and
+// skip moves and the skip points, a margin around them). Rapids to and from
+// home, and the parts and tool setter away from the work, are drawn where
+// they fall in that frame (the page zooms out to them).
+void frame_views(const PlotInput& in, PlotModel& pm) {
+  for (const auto& s : pm.skips) {
+    pm.extent.add(s.latch);
+    pm.extent.add(s.rest);
+    if (s.has_target) pm.extent.add(s.target);
+  }
+  if (pm.extent.empty()) pm.extent.add(to3(in.result->final_machine, pm.xyz));
+  if (in.scene != nullptr) {
+    add_scene_extent(*in.scene, pm.extent);
+    // Planes of the scene widen the extent along their normal only.
+    const auto widen = [&](int axis, double at) {
+      for (int k = 0; k < 3; ++k) {
+        if (pm.xyz[static_cast<std::size_t>(k)] == axis) {
+          pm.extent.lo[k] = std::min(pm.extent.lo[k], at);
+          pm.extent.hi[k] = std::max(pm.extent.hi[k], at);
+        }
+      }
+    };
+    for (const auto& t : in.scene->triggers) widen(t.axis, t.at);
+    for (const auto& st : in.scene->stops) widen(st.axis, st.at);
+  }
+  // Every side of the extent at least 2 mm, so that a one-axis run (a
+  // probe going straight down) still has a frame around it.
+  const auto at_least_2mm = [](Box3& b) {
+    for (int k = 0; k < 3; ++k) {
+      const double span = b.hi[k] - b.lo[k];
+      if (span < 2.0) {
+        const double c = 0.5 * (b.hi[k] + b.lo[k]);
+        b.lo[k] = c - 1.0;
+        b.hi[k] = c + 1.0;
+      }
+    }
+  };
+  at_least_2mm(pm.extent);
+  pm.full_extent = pm.extent;
+  Box3 work;
+  for (const BlockView& b : pm.blocks) {
+    if (b.kind != MoveKind::kFeed && b.kind != MoveKind::kArc && b.kind != MoveKind::kSkip) {
+      continue;
+    }
+    for (std::size_t i = b.s0; i < b.s1 && i < pm.path.size(); ++i) work.add(pm.path[i]);
+    work.add(b.to);
+  }
+  for (const auto& sk : pm.skips) {
+    work.add(sk.start);
+    work.add(sk.latch);
+    work.add(sk.rest);
+    if (!sk.triggered && sk.has_target) work.add(sk.target);
+  }
+  if (!work.empty()) {
+    constexpr double kMarginMm = 5.0;
+    for (int k = 0; k < 3; ++k) {
+      work.lo[k] = std::max(work.lo[k] - kMarginMm, pm.full_extent.lo[k]);
+      work.hi[k] = std::min(work.hi[k] + kMarginMm, pm.full_extent.hi[k]);
+    }
+    at_least_2mm(work);
+    pm.extent = work;
+  }
+}
+
+}  // namespace
+
 PlotModel build_model(const PlotInput& in) {
   PlotModel pm;
   const auto& m = *in.machine;
@@ -418,73 +487,7 @@ PlotModel build_model(const PlotInput& in) {
     pm.blocks.push_back(v);
   }
   build_skips(in, pm);
-  for (const auto& s : pm.skips) {
-    pm.extent.add(s.latch);
-    pm.extent.add(s.rest);
-    if (s.has_target) pm.extent.add(s.target);
-  }
-  if (pm.extent.empty()) pm.extent.add(to3(r.final_machine, pm.xyz));
-  if (in.scene != nullptr) {
-    add_scene_extent(*in.scene, pm.extent);
-    // Planes of the scene widen the extent along their normal only.
-    for (const auto& t : in.scene->triggers) {
-      for (int k = 0; k < 3; ++k) {
-        if (pm.xyz[static_cast<std::size_t>(k)] == t.axis) {
-          pm.extent.lo[k] = std::min(pm.extent.lo[k], t.at);
-          pm.extent.hi[k] = std::max(pm.extent.hi[k], t.at);
-        }
-      }
-    }
-    for (const auto& s : in.scene->stops) {
-      for (int k = 0; k < 3; ++k) {
-        if (pm.xyz[static_cast<std::size_t>(k)] == s.axis) {
-          pm.extent.lo[k] = std::min(pm.extent.lo[k], s.at);
-          pm.extent.hi[k] = std::max(pm.extent.hi[k], s.at);
-        }
-      }
-    }
-  }
-  // Every side of the extent at least 2 mm, so that a one-axis run (a
-  // probe going straight down) still has a frame around it.
-  const auto at_least_2mm = [](Box3& b) {
-    for (int k = 0; k < 3; ++k) {
-      const double span = b.hi[k] - b.lo[k];
-      if (span < 2.0) {
-        const double c = 0.5 * (b.hi[k] + b.lo[k]);
-        b.lo[k] = c - 1.0;
-        b.hi[k] = c + 1.0;
-      }
-    }
-  };
-  at_least_2mm(pm.extent);
-  pm.full_extent = pm.extent;
-  // The views are framed on where the run worked: the feed, arc and skip
-  // moves and the skip points, a margin around them. Rapids to and from
-  // home, and the parts and tool setter away from the work, are drawn where
-  // they fall in that frame (the page zooms out to them).
-  Box3 work;
-  for (const BlockView& b : pm.blocks) {
-    if (b.kind != MoveKind::kFeed && b.kind != MoveKind::kArc && b.kind != MoveKind::kSkip) {
-      continue;
-    }
-    for (std::size_t i = b.s0; i < b.s1 && i < pm.path.size(); ++i) work.add(pm.path[i]);
-    work.add(b.to);
-  }
-  for (const auto& sk : pm.skips) {
-    work.add(sk.start);
-    work.add(sk.latch);
-    work.add(sk.rest);
-    if (!sk.triggered && sk.has_target) work.add(sk.target);
-  }
-  if (!work.empty()) {
-    constexpr double kMarginMm = 5.0;
-    for (int k = 0; k < 3; ++k) {
-      work.lo[k] = std::max(work.lo[k] - kMarginMm, pm.full_extent.lo[k]);
-      work.hi[k] = std::min(work.hi[k] + kMarginMm, pm.full_extent.hi[k]);
-    }
-    at_least_2mm(work);
-    pm.extent = work;
-  }
+  frame_views(in, pm);
   if (in.scene != nullptr) pm.shapes = scene_shapes(*in.scene, m, pm.xyz, pm.full_extent);
   build_channels(in, pm);
   return pm;
