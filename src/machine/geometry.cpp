@@ -10,6 +10,7 @@ namespace skipnc::machine::geo {
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr double kPi = 3.14159265358979323846;
 // A contact point is on a surface when its signed distance is within this.
 constexpr double kOnSurface = 1e-7;
 
@@ -818,19 +819,74 @@ double Material::distance(Vec3 p, double cap) const noexcept {
 
 double Material::depth(Vec3 p) const noexcept {
   double d = 0.0;
-  for (const Part& part : parts_) {
-    const Vec3 q = part.place.to_local(p);
-    if (!part.solids.empty()) d = std::max(d, -part_sdf(part, q));
-    for (const auto& mesh : part.meshes) {
-      if (mesh->inside(q)) d = std::max(d, mesh->surface_distance(q));
-    }
+  for (const Part& part : parts_) d = std::max(d, part_depth(part, part.place.to_local(p)));
+  return d;
+}
+
+// How deep a point of the part's frame is in the part (0 outside).
+double Material::part_depth(const Part& part, Vec3 q) const noexcept {
+  double d = part.solids.empty() ? 0.0 : std::max(0.0, -part_sdf(part, q));
+  for (const auto& mesh : part.meshes) {
+    if (mesh->inside(q)) d = std::max(d, mesh->surface_distance(q));
   }
   return d;
+}
+
+// A vertical column against a part tilted about X or Y: in the part's frame
+// the column leans, and no closed form here solves a leaning cylinder against
+// the features. Its volume is sampled instead: rings of points (centre, half
+// and full radius, 16 round) at most 0.25 mm apart along the axis, over the
+// length that the part's box can hold. Crash detection, not a latch: a
+// contact between two samples is found a little late, by at most
+// r (1 - cos(pi / 16)) = 0.019 r across and 0.25 mm along the axis.
+bool Material::leaning_column_hits(std::size_t p, const Column& world, double tol) const noexcept {
+  const Part& part = parts_[p];
+  const PartBounds& pb = bounds_[p];
+  const Placement& pl = part.place;
+  const double h = world.top - world.bottom;
+  // The part's box (solids and meshes) in machine coordinates limits the
+  // length to sample; a half-space leaves it whole.
+  double lo = 0.0, hi = h;
+  if (pb.bounded) {
+    double zmin = kInf, zmax = -kInf;
+    const auto span = [&](Vec3 blo, Vec3 bhi) {
+      if (blo.x > bhi.x) return;  // empty
+      for (int c = 0; c < 8; ++c) {
+        const Vec3 corner{(c & 1) != 0 ? bhi.x : blo.x, (c & 2) != 0 ? bhi.y : blo.y,
+                          (c & 4) != 0 ? bhi.z : blo.z};
+        const double z = pl.to_machine(corner).z;
+        zmin = std::min(zmin, z);
+        zmax = std::max(zmax, z);
+      }
+    };
+    span(pb.lo, pb.hi);
+    for (const auto& mesh : part.meshes) span(mesh->bounds().lo, mesh->bounds().hi);
+    lo = std::max(lo, zmin - world.bottom);
+    hi = std::min(hi, zmax - world.bottom);
+    if (lo > hi) return false;
+  }
+  const int steps = std::max(1, static_cast<int>(std::ceil((hi - lo) / 0.25)));
+  for (int i = 0; i <= steps; ++i) {
+    const double z = world.bottom + lo + (hi - lo) * i / steps;
+    if (part_depth(part, pl.to_local(Vec3{world.x, world.y, z})) > tol) return true;
+    for (const double rr : {0.5 * world.radius, world.radius}) {
+      for (int k = 0; k < 16; ++k) {
+        const double a = 2.0 * kPi * k / 16.0;
+        const Vec3 q{world.x + rr * std::cos(a), world.y + rr * std::sin(a), z};
+        if (part_depth(part, pl.to_local(q)) > tol) return true;
+      }
+    }
+  }
+  return false;
 }
 
 int Material::column_hits(const Column& world, double tol) const noexcept {
   for (std::size_t p = 0; p < parts_.size(); ++p) {
     const Part& part = parts_[p];
+    if (!part.place.upright()) {
+      if (leaning_column_hits(p, world, tol)) return static_cast<int>(p);
+      continue;
+    }
     // A vertical column stays vertical in a frame turned about Z.
     const Vec3 foot = part.place.to_local(Vec3{world.x, world.y, world.bottom});
     const Column c{foot.x, foot.y, world.radius, foot.z, foot.z + (world.top - world.bottom)};

@@ -69,29 +69,56 @@ Shape make_half_space(Vec3 point, Vec3 normal);  // normal need not be unit
 double signed_distance(const Shape& s, Vec3 p) noexcept;
 
 // Where a part stands: its shapes are given in a frame whose origin is
-// `origin` (machine coordinates) and whose X axis is turned by an angle about
-// Z (counter-clockwise seen from +Z). A rigid motion keeps distances, so
-// every contact is solved in the part's own frame, in the same closed form,
-// and turned back.
+// `origin` (machine coordinates) and whose axes are the machine's turned by
+// the rotation `r` (columns: the frame's X, Y, Z axes in machine
+// coordinates). A rigid motion keeps distances, so every contact is solved in
+// the part's own frame, in the same closed form, and turned back.
 struct Placement {
   Vec3 origin;
-  double cos_a = 1.0;
-  double sin_a = 0.0;
+  // Row-major; identity: not turned.
+  double r[3][3] = {{1.0, 0.0, 0.0}, {0.0, 1.0, 0.0}, {0.0, 0.0, 1.0}};
 
+  // The frame's X axis turned about Z, counter-clockwise seen from +Z.
   static Placement about_z(Vec3 origin, double angle_rad) noexcept {
-    return Placement{origin, std::cos(angle_rad), std::sin(angle_rad)};
+    return turned_by(origin, 0.0, 0.0, angle_rad);
+  }
+  // Turned about the base frame's X, then its Y, then its Z (each
+  // counter-clockwise seen from the axis' plus side): R = Rz Ry Rx.
+  static Placement turned_by(Vec3 origin, double ax, double ay, double az) noexcept {
+    const double cx = std::cos(ax), sx = std::sin(ax), cy = std::cos(ay), sy = std::sin(ay);
+    const double cz = std::cos(az), sz = std::sin(az);
+    return Placement{origin,
+                     {{cz * cy, cz * sy * sx - sz * cx, cz * sy * cx + sz * sx},
+                      {sz * cy, sz * sy * sx + cz * cx, sz * sy * cx - cz * sx},
+                      {-sy, cy * sx, cy * cx}}};
   }
   // This placement applied after `inner` (a frame given in this one).
   Placement then(const Placement& inner) const noexcept {
-    return Placement{to_machine(inner.origin), cos_a * inner.cos_a - sin_a * inner.sin_a,
-                     sin_a * inner.cos_a + cos_a * inner.sin_a};
+    Placement out{to_machine(inner.origin)};
+    for (int i = 0; i < 3; ++i) {
+      for (int j = 0; j < 3; ++j) {
+        out.r[i][j] = r[i][0] * inner.r[0][j] + r[i][1] * inner.r[1][j] + r[i][2] * inner.r[2][j];
+      }
+    }
+    return out;
   }
-  bool turned() const noexcept { return sin_a != 0.0 || cos_a != 1.0; }
+  bool turned() const noexcept {
+    return r[0][1] != 0.0 || r[0][2] != 0.0 || r[1][0] != 0.0 || r[1][2] != 0.0 ||
+           r[2][0] != 0.0 || r[2][1] != 0.0 || r[0][0] != 1.0 || r[1][1] != 1.0 || r[2][2] != 1.0;
+  }
+  // Z stays Z: turned about Z only, so a vertical column stays vertical.
+  bool upright() const noexcept {
+    return r[2][0] == 0.0 && r[2][1] == 0.0 && r[0][2] == 0.0 && r[1][2] == 0.0 && r[2][2] == 1.0;
+  }
   constexpr Vec3 turn(Vec3 v) const noexcept {
-    return {cos_a * v.x - sin_a * v.y, sin_a * v.x + cos_a * v.y, v.z};
+    return {r[0][0] * v.x + r[0][1] * v.y + r[0][2] * v.z,
+            r[1][0] * v.x + r[1][1] * v.y + r[1][2] * v.z,
+            r[2][0] * v.x + r[2][1] * v.y + r[2][2] * v.z};
   }
   constexpr Vec3 unturn(Vec3 v) const noexcept {
-    return {cos_a * v.x + sin_a * v.y, -sin_a * v.x + cos_a * v.y, v.z};
+    return {r[0][0] * v.x + r[1][0] * v.y + r[2][0] * v.z,
+            r[0][1] * v.x + r[1][1] * v.y + r[2][1] * v.z,
+            r[0][2] * v.x + r[1][2] * v.y + r[2][2] * v.z};
   }
   constexpr Vec3 to_local(Vec3 p) const noexcept { return unturn(p - origin); }
   constexpr Vec3 to_machine(Vec3 q) const noexcept { return origin + turn(q); }
@@ -204,6 +231,8 @@ class Material {
   bool valid(const Feature& f, Vec3 q) const noexcept;
   double feature_distance(const Feature& f, Vec3 p, Vec3& closest) const noexcept;
   double part_sdf(const Part& part, Vec3 p) const noexcept;
+  double part_depth(const Part& part, Vec3 q) const noexcept;
+  bool leaning_column_hits(std::size_t part, const Column& world, double tol) const noexcept;
 
   // Each part's features (a run of features_, in part order) and the box,
   // in the part's frame, that holds its solids (and so every feature): a

@@ -106,7 +106,7 @@ class Frames {
         const int i = m.axis_index("XYZ"[a]);
         if (i >= 0) *xyz[a] = m.work_offsets[0][i] + m.work_offsets[k + 1][i];
       }
-      frames_.emplace(std::string(kWork[k]), geo::Placement{o, 1.0, 0.0});
+      frames_.emplace(std::string(kWork[k]), geo::Placement{o});
     }
   }
 
@@ -132,11 +132,40 @@ class Frames {
         if (!v) return std::unexpected(v.error());
         o = {(*v)[0], (*v)[1], (*v)[2]};
       }
-      auto deg = rd.number(t, "rotation", -360.0, 360.0, 0.0);
-      if (!deg) return std::unexpected(deg.error());
-      frames_.emplace(*name, base->then(geo::Placement::about_z(o, *deg * kPi / 180.0)));
+      auto turn = rotation(t, rd.origin);
+      if (!turn) return std::unexpected(turn.error());
+      const auto& deg = *turn;
+      frames_.emplace(*name, base->then(geo::Placement::turned_by(o, deg[0] * kPi / 180.0,
+                                                                  deg[1] * kPi / 180.0,
+                                                                  deg[2] * kPi / 180.0)));
       return {};
     });
+  }
+
+  // `rotation`: degrees about Z, or [about X, about Y, about Z] turned in
+  // that order about the base frame's axes (a part tilted on an angle
+  // plate, a vise off square).
+  static Result<std::array<double, 3>> rotation(const toml::table& t, std::string_view origin) {
+    std::array<double, 3> deg{};
+    const auto* n = t.get("rotation");
+    if (n == nullptr) return deg;
+    const auto* arr = n->as_array();
+    if (arr == nullptr) {
+      auto z = get_number(*n, origin, "rotation", -360.0, 360.0);
+      if (!z) return std::unexpected(z.error());
+      deg[2] = *z;
+      return deg;
+    }
+    if (arr->size() != 3) {
+      return config_error(*n, origin,
+                          "rotation must be degrees about Z, or [about X, about Y, about Z]");
+    }
+    for (std::size_t i = 0; i < 3; ++i) {
+      auto v = get_number(*arr->get(i), origin, "rotation", -360.0, 360.0);
+      if (!v) return std::unexpected(v.error());
+      deg[i] = *v;
+    }
+    return deg;
   }
 
   // The frame `key` of table t names ("machine" when absent).

@@ -335,7 +335,10 @@ std::vector<Shape> scene_shapes(const machine::Scene& scene, const config::Machi
     if (part.place.turned() || !(part.place.origin == machine::geo::Vec3{})) {
       for (std::size_t i = first; i < out.size(); ++i) {
         for (auto& p : out[i].pts) p = v3(part.place.to_machine({p.x, p.y, p.z}));
-        if (part.place.turned() && out[i].normal_axis != 2) out[i].normal_axis = -1;
+        // A face keeps its machine axis only while the turn keeps that axis.
+        if (part.place.turned() && (out[i].normal_axis != 2 || !part.place.upright())) {
+          out[i].normal_axis = -1;
+        }
       }
     }
   }

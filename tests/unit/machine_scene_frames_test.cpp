@@ -1,6 +1,7 @@
 // Scenes as the setup sheet has them: parts and the tool setter placed in a
 // work frame of the machine file (G54..G59) or in a scene [[frame]] (an
-// origin and a turn about Z), and the probe's length kept in one place.
+// origin and a turn about Z, or about X, Y and Z), and the probe's length
+// kept in one place.
 // Expected contacts are worked out by hand from the geometry.
 #include <gtest/gtest.h>
 
@@ -111,6 +112,50 @@ max = [100, 1, 0]
   EXPECT_EQ(mat.column_hits({50, 0, 0.5, -5, 100}, 1e-9), -1);
 }
 
+TEST(SceneFrames, AFrameTurnedAboutXStandsAPlateOnItsEdge) {
+  auto s = load(R"([[frame]]
+name = "on_edge"
+rotation = [90.0, 0.0, 0.0]
+[[box]]
+frame = "on_edge"
+min = [0, 0, 0]
+max = [10, 5, 2]
+)");
+  ASSERT_TRUE(s) << s.error().detail;
+  const geo::Material mat(s->probing.parts);
+  // Turned 90 degrees about X, the frame's Y is machine Z and its Z is
+  // machine -Y: the plate stands X 0..10, Y -2..0, Z 0..5. A 1 mm ball coming
+  // down at (5, -1) touches its top edge face at centre Z6.
+  geo::Contact c;
+  ASSERT_TRUE(mat.first_contact({5, -1, 20}, {5, -1, 0}, 1.0, c));
+  EXPECT_NEAR(20.0 - 20.0 * c.t, 6.0, 1e-12);
+  EXPECT_NEAR(c.normal.z, 1.0, 1e-12);
+  // Its face toward -Y is at Y-2: a ball moving +Y at Z2.5 touches at Y-3.
+  ASSERT_TRUE(mat.first_contact({5, -10, 2.5}, {5, 0, 2.5}, 1.0, c));
+  EXPECT_NEAR(-10.0 + 10.0 * c.t, -3.0, 1e-12);
+  EXPECT_NEAR(c.normal.y, -1.0, 1e-12);
+}
+
+TEST(SceneFrames, AToolAboveAPartTiltedAboutYHitsItWhereItsRimDips) {
+  auto s = load(R"([[frame]]
+name = "tilted"
+rotation = [0.0, 30.0, 0.0]
+[[box]]
+frame = "tilted"
+min = [0, -5, -1]
+max = [50, 5, 0]
+)");
+  ASSERT_TRUE(s) << s.error().detail;
+  const geo::Material mat(s->probing.parts);
+  // Turned 30 degrees about Y, the top face is the plane Z = -X tan 30. A
+  // 2 mm tool at X20 sees it highest under its rim at X18: Z = -10.392. The
+  // column leans in the part's frame, so it is checked point by point
+  // (0.094 mm deep at Z-10.5, against a 0.05 mm tolerance).
+  EXPECT_EQ(mat.column_hits({20, 0, 2, -10.3, 100}, 0.05), -1);
+  EXPECT_EQ(mat.column_hits({20, 0, 2, -10.5, 100}, 0.05), 0);
+  EXPECT_EQ(mat.column_hits({20, 20, 2, -30, 100}, 0.05), -1);
+}
+
 TEST(SceneFrames, TheToolSetterIsPlacedInItsFrame) {
   auto s = load(R"([tool_setter]
 signal = "SKIP"
@@ -152,6 +197,13 @@ radius = 0.2
   auto turn = load("[[frame]]\nname = \"a\"\nrotation = 400.0\n");
   ASSERT_FALSE(turn);
   EXPECT_EQ(turn.error().loc.line, 3u);
+  auto two = load("[[frame]]\nname = \"a\"\nrotation = [1.0, 2.0]\n");
+  ASSERT_FALSE(two);
+  EXPECT_EQ(two.error().loc.line, 3u);
+  EXPECT_NE(two.error().detail.find("about X, about Y, about Z"), std::string::npos);
+  auto wide = load("[[frame]]\nname = \"a\"\nrotation = [0.0, -361.0, 0.0]\n");
+  ASSERT_FALSE(wide);
+  EXPECT_EQ(wide.error().loc.line, 3u);
 }
 
 TEST(ProbeLength, ComesFromTheMachineFilesToolOffsetWhenTheSceneLeavesItOut) {

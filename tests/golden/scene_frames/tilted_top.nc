@@ -1,0 +1,1 @@
+../../../examples/frames/sine_plate.nc
