@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Latch accuracy table: G31 Z-10 from Z0 against a trigger plane at Z-3, on the
-built-in mill3 (kp 30/s) and on an ideal-servo copy of it, in skipnc's exact,
+mill3_lowgain servo (kp 30/s, no feedforward) and on an ideal servo, in skipnc's exact,
 sampled (1 ms) and sampled-with-delay (1 ms + 1 ms) modes, over F10..F10000.
 LinuxCNC's figures (G38.2, 1 ms servo thread, ideal servo loop: the peer kit's
 `fb` variant, results-2026-11-22.txt) are printed beside them.
@@ -48,7 +48,7 @@ def run(tmp, feed, latch, extra, kp):
 def main():
     with tempfile.TemporaryDirectory() as tmp:
         for kp, title in ((0, "ideal servo (actual = command), like the LinuxCNC peer set-up"),
-                          (30, "built-in mill3 servo: kp 30/s, no feedforward")):
+                          (30, "mill3_lowgain servo: kp 30/s, no feedforward")):
             print(f"\n{title}: latch error / over-travel in um (SKF = 0: immediate stop; SKF = 1: deceleration)")
             head = f"{'F mm/min':>9}"
             for name, _, _ in MODES:

@@ -116,6 +116,7 @@ void Kernel::trigger(double frac, const TickInput& in, int input, bool torque) n
     skip_.latch_machine = in.actual;
     interp_.set_position(in.actual);
     cmd_ = in.actual;
+    followed_up_ = true;
     skip_stopping_ = true;
     handshake_.recorded = true;
     return;
@@ -302,6 +303,7 @@ double Kernel::advance_time_scale() noexcept {
 
 void Kernel::tick(const TickInput& in, TickOutput& out) noexcept {
   ++tick_;
+  followed_up_ = false;
   monitor_skip(in);
   for (int e = 0; e < in.edge_count; ++e) {
     const SignalEdge& edge = in.edges[static_cast<std::size_t>(e)];
@@ -354,6 +356,7 @@ void Kernel::tick(const TickInput& in, TickOutput& out) noexcept {
     out.torque_limited = skip_.spec.torque_limit_pct > 0.0;
   }
   out.time_scale = time_scale_;
+  out.followed_up = followed_up_;
 }
 
 }  // namespace skipnc::kernel

@@ -63,6 +63,11 @@ struct TickOutput {
   AxisVec torque_limit_pct;
   bool torque_limited = false;  // some axis of torque_limit_pct is set
   double time_scale = 1.0;      // feed override / feed hold as applied this period
+  // The command was moved to where the axes are held (the follow-up that
+  // ends a torque-limit skip): `commanded` jumped without motion, so the
+  // next period starts from it, not from the previous period's command. A
+  // servo with velocity feedforward must not take the jump as a velocity.
+  bool followed_up = false;
 };
 
 // What the operator does at the machine (scene [[operator]], see
@@ -185,6 +190,7 @@ class Kernel {
   SkipResult skip_;
   bool skip_started_ = false;
   bool skip_stopping_ = false;
+  bool followed_up_ = false;         // this tick moved the command to the actual position
   bool skip_latch_pending_ = false;  // sampled latch: waiting for the delay
   double skip_latch_due_s_ = 0.0;
   double torque_since_s_ = -1.0;

@@ -294,6 +294,7 @@ Result<RunResult> Simulator::run(const interp::Setup& setup, const RunOptions& o
     const AxisVec& cmd = tout.commanded;
     if (tout.torque_limited || plant.torque_limited())
       plant.set_torque_limit(tout.torque_limit_pct);
+    if (tout.followed_up) cmd_prev = cmd;  // a jump of the command, not motion
     plant.advance(k.now() + 1, cmd_prev, cmd, tin);
     cmd_prev = cmd;
     k.tick(tin, tout);

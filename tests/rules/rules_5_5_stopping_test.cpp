@@ -67,7 +67,7 @@ TEST(Rules, rule_28_nct_next_interpolation_starts_from_the_end_point_not_the_lat
 }
 
 TEST(Rules, rule_29_incremental_next_block_starts_where_motion_stopped) {
-  // mill3's servo lags v/kp = 0.56 mm at F1000: the axis comes to rest past
+  // mill3_lowgain's servo lags v/kp = 0.56 mm at F1000: the axis comes to rest past
   // the latch, and the increment counts from there.
   const Outcome o = Rig("fanuc")
                         .trigger("X0.4", 'Z', -3.0)

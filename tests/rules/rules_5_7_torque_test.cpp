@@ -1,9 +1,8 @@
 // skip-rules.md 5.7: torque limit skip G31 P98/P99 (rules 37-46).
 //
-// mill3: kp 30/s, no feedforward, torque = 100 %/mm of following error. At
-// F300 (5 mm/s) the free-running lag is 5/30 mm, 16.7 % torque. A [[stop]]
-// at Z-3 holds the axis; the command runs on and the torque grows by 500 %/s
-// until it reaches the limit Q.
+// mill3_lowgain (the rigs' machine): kp 30/s, no feedforward, torque = 100 %/mm of following error.
+// At F300 (5 mm/s) the free-running lag is 5/30 mm, 16.7 % torque. A [[stop]] at Z-3 holds the
+// axis; the command runs on and the torque grows by 500 %/s until it reaches the limit Q.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -181,7 +180,7 @@ TEST(Rules, rule_46_no_torque_limit_commanded_the_move_runs_on) {
 }
 
 TEST(Rules, rule_46_p99_ended_by_skip_stores_where_the_machine_stopped) {
-  // F1000 on mill3: the axis lags 0.56 mm and comes to rest past the signal.
+  // F1000 on mill3_lowgain: the axis lags 0.56 mm and comes to rest past the signal.
   const Outcome o =
       Rig().trigger("X0.4", 'Z', -3.0).run("G21 G90 G54 G31 P99 Z-10. F1000. Q100\nM30\n");
   ASSERT_TRUE(o.completed()) << o.alarm_code();

@@ -1,6 +1,6 @@
 // Issue 14: the in-position check between blocks, and the position
 // variables with or without the tool offsets, as the real control has them.
-// mill3's servo has no feedforward (kp 30/s): at the end of a rapid the
+// mill3_lowgain's servo (the rigs' machine) has no feedforward (kp 30/s): at the end of a rapid the
 // axes lag the command by millimetres, so every case here differs from a
 // run that does not wait for them.
 #include <gtest/gtest.h>

@@ -46,7 +46,7 @@ TEST(MachineExtends, AnAxisTableChangesOnlyTheKeysItHas) {
   auto m = parse_machine(R"(extends = "mill3"
 [[axis]]
 name = "Z"
-kp = 50.0
+kp = 70.0
 [[axis]]
 name = "A"
 min = -360.0
@@ -55,9 +55,9 @@ max = 360.0
                          "shop.toml");
   ASSERT_TRUE(m) << m.error().detail;
   ASSERT_EQ(m->axis_count(), 4);
-  EXPECT_EQ(m->axes[0].kp_per_s, 30.0);  // X as in mill3
+  EXPECT_EQ(m->axes[0].kp_per_s, 50.0);  // X as in mill3
   EXPECT_EQ(m->axes[2].name, 'Z');
-  EXPECT_EQ(m->axes[2].kp_per_s, 50.0);
+  EXPECT_EQ(m->axes[2].kp_per_s, 70.0);
   EXPECT_EQ(m->axes[2].min_mm, -500.0);  // the rest of Z as in mill3
   EXPECT_EQ(m->axes[2].accel_mm_s2, 2000.0);
   EXPECT_EQ(m->axes[3].name, 'A');  // a new axis goes last

@@ -29,7 +29,7 @@ struct ActualRows final : TraceSink {
 };
 
 struct ArcRig {
-  config::MachineConfig m = *config::builtin_machine("mill3");
+  config::MachineConfig m = *config::builtin_machine("mill3_lowgain");
   config::Dialect d = *config::builtin_dialect("fanuc");
   config::Parameters p{&d};
   Scene scene;
@@ -83,7 +83,7 @@ TEST(ArcContact, AnIdealServoTouchesTheWallWhereTheArcMeetsIt) {
 }
 
 TEST(ArcContact, TheContactIsOnTheLaggedActualPathNotOnTheCommandedArc) {
-  ArcRig r;  // mill3's servo: kp = 30/s, no feedforward
+  ArcRig r;  // mill3_lowgain's servo: kp = 30/s, no feedforward
   // Counter-clockwise from (0, -10) about the origin toward (10, 0).
   auto res = r.run("G21 G90 G17 G54\nG0 X0 Y-10. Z-50.\nG03 X10. Y0 I0 J10. F600.\nM30\n");
   ASSERT_TRUE(res);

@@ -19,7 +19,7 @@ namespace {
 using test::xyz;
 
 struct Rig {
-  config::MachineConfig m = *config::builtin_machine("mill3");
+  config::MachineConfig m = *config::builtin_machine("mill3_lowgain");
   config::Dialect d = *config::builtin_dialect("fanuc");
   config::Parameters p{&d};
   Scene scene;
