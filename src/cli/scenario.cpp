@@ -19,7 +19,12 @@ machine::Scene varied_scene(const machine::Scene& base, const config::MachineCon
   if (d != machine::geo::Vec3{}) {
     // A part's shapes are in its own frame (docs/scene.md, frames): moving
     // the part in machine coordinates moves the frame's origin.
-    for (auto& part : sc.probing.parts) part.place.origin = part.place.origin + d;
+    // On a rotary table the part moves on the table: by d at the table's zero.
+    for (auto& part : sc.probing.parts) {
+      part.place.origin = part.place.origin + d;
+      auto& r = part.rotary;
+      if (r.turns()) r.inner.origin = r.inner.origin + r.table.unturn(d);
+    }
     auto along = [&](int axis) {
       const char name = m.axes[static_cast<std::size_t>(axis)].name;
       return name == 'X' ? d.x : name == 'Y' ? d.y : name == 'Z' ? d.z : 0.0;

@@ -376,6 +376,10 @@ int polynomial_roots(const double* c, int n, double lo, double hi, double* roots
 // --- Material ---------------------------------------------------------------
 
 Material::Material(std::vector<Part> parts) : parts_(std::move(parts)) {
+  for (std::size_t p = 0; p < parts_.size(); ++p) {
+    start_.push_back(parts_[p].place);
+    if (parts_[p].rotary.turns()) turning_.push_back(p);
+  }
   for (int p = 0; p < static_cast<int>(parts_.size()); ++p) {
     const Part& part = parts_[static_cast<std::size_t>(p)];
     PartBounds b;
@@ -694,16 +698,35 @@ bool Material::contact_with(const Feature& f, Vec3 a, Vec3 b, double radius,
   return false;
 }
 
-bool Material::first_contact(Vec3 a, Vec3 b, double radius, Contact& out) const noexcept {
+void Material::set_turns(const double* before, const double* after) noexcept {
+  for (const std::size_t p : turning_) {
+    const Rotary& r = parts_[p].rotary;
+    start_[p] = r.at(before[r.axis]);
+    parts_[p].place = r.at(after[r.axis]);
+  }
+}
+
+bool Material::first_contact(Vec3 a, Vec3 b, double radius, Contact& out,
+                             bool backward) const noexcept {
   bool found = false;
   Contact c;
+  // A part on a turning table stands at start_ when the period starts and
+  // at place when it ends: each end of the ball's segment is moved into the
+  // part's frame at its own instant.
+  const auto local = [&](std::size_t p, Vec3& la, Vec3& lb) {
+    const Placement& end = parts_[p].place;
+    const Placement& start = start_[p];
+    la = (backward ? end : start).to_local(a);
+    lb = (backward ? start : end).to_local(b);
+  };
   for (std::size_t p = 0; p < parts_.size(); ++p) {
     const PartBounds& pb = bounds_[p];
     if (pb.begin == pb.end) continue;
     // Each feature in its part's frame: a and b are moved there, the contact
     // is moved back. A part whose box the swept ball cannot reach is passed.
     const Placement& pl = parts_[p].place;
-    const Vec3 la = pl.to_local(a), lb = pl.to_local(b);
+    Vec3 la, lb;
+    local(p, la, lb);
     const Vec3 r{radius, radius, radius};
     const Vec3 lo{std::fmin(la.x, lb.x), std::fmin(la.y, lb.y), std::fmin(la.z, lb.z)};
     const Vec3 hi{std::fmax(la.x, lb.x), std::fmax(la.y, lb.y), std::fmax(la.z, lb.z)};
@@ -720,12 +743,13 @@ bool Material::first_contact(Vec3 a, Vec3 b, double radius, Contact& out) const 
   }
   for (std::size_t p = 0; p < parts_.size(); ++p) {
     const Part& part = parts_[p];
+    if (part.meshes.empty()) continue;
+    Vec3 la, lb;
+    local(p, la, lb);
     for (const auto& mesh : part.meshes) {
       double t = 0.0;
       Vec3 point, normal;
-      if (mesh->first_contact(part.place.to_local(a), part.place.to_local(b), radius, t, point,
-                              normal) &&
-          (!found || t < out.t)) {
+      if (mesh->first_contact(la, lb, radius, t, point, normal) && (!found || t < out.t)) {
         out =
             Contact{t, part.place.to_machine(point), part.place.turn(normal), static_cast<int>(p)};
         found = true;

@@ -117,7 +117,7 @@ int TouchProbe::advance(geo::Vec3 a, geo::Vec3 b, SensorEdge* edges) noexcept {
     // the first contact met going backwards from b.
     geo::Contact c;
     double t = 1.0;
-    if (material_->first_contact(b, a, r - delta_, c)) t = 1.0 - c.t;
+    if (material_->first_contact(b, a, r - delta_, c, /*backward=*/true)) t = 1.0 - c.t;
     if (n > 0) t = std::max(t, edges[0].frac);
     edges[n++] = SensorEdge{edge_frac(t), false};
     state_ = raw_ >= 0.0 ? State::kTouching : State::kFree;

@@ -87,6 +87,7 @@ void ProbeScene::reset(const AxisVec& actual) noexcept {
   pending_tool_.reset();
   pending_power_.reset();
   powered_ = !(spec_.probe && spec_.probe->on_m != 0);
+  if (material_.turns()) material_.set_turns(actual.v.data(), actual.v.data());
   if (probe_) {
     const bool in = probe_in_spindle();
     if (in) probe_->reset(ball_at(actual));
@@ -136,6 +137,8 @@ void ProbeScene::apply_power() noexcept {
 }
 
 void ProbeScene::advance_sensors(const AxisVec& before, const AxisVec& after) noexcept {
+  // Parts on rotary tables turn with their axes over the period.
+  if (material_.turns()) material_.set_turns(before.v.data(), after.v.data());
   if (pending_tool_) change_tool(before);
   if (pending_power_ && probe_) apply_power();
   if (!senses_) return;

@@ -94,10 +94,17 @@ constexpr double kPi = 3.14159265358979323846;
 // frames G54..G59 of the machine file (EXT + G5x, no rotation), and the
 // scene's own [[frame]] tables, each an origin and a turn about Z in a frame
 // named before it.
+// A frame as the scene places things in it: where it stands (a rotary
+// table's frame at the table's zero) and, on a rotary table, how it turns.
+struct Frame {
+  geo::Placement place;
+  geo::Rotary rotary;
+};
+
 class Frames {
  public:
-  explicit Frames(const config::MachineConfig& m) {
-    frames_.emplace("machine", geo::Placement{});
+  explicit Frames(const config::MachineConfig& m) : m_(m) {
+    frames_.emplace("machine", Frame{});
     static constexpr std::string_view kWork[] = {"G54", "G55", "G56", "G57", "G58", "G59"};
     for (std::size_t k = 0; k < 6; ++k) {
       geo::Vec3 o;
@@ -106,13 +113,14 @@ class Frames {
         const int i = m.axis_index("XYZ"[a]);
         if (i >= 0) *xyz[a] = m.work_offsets[0][i] + m.work_offsets[k + 1][i];
       }
-      frames_.emplace(std::string(kWork[k]), geo::Placement{o});
+      frames_.emplace(std::string(kWork[k]), Frame{geo::Placement{o}, {}});
     }
   }
 
   Result<void> load(const toml::table& root, const Reader& rd) {
     return config::each_table(root, "frame", rd.origin, [&](const toml::table& t) -> Result<void> {
-      auto k = check_keys(t, {"name", "base", "origin", "rotation"}, rd.origin, "[[frame]]");
+      auto k = check_keys(t, {"name", "base", "origin", "rotation", "rotary", "rotary_sign"},
+                          rd.origin, "[[frame]]");
       if (!k) return k;
       const auto* n = t.get("name");
       if (n == nullptr) return config_error(t, rd.origin, "[[frame]] needs a name");
@@ -135,11 +143,58 @@ class Frames {
       auto turn = rotation(t, rd.origin);
       if (!turn) return std::unexpected(turn.error());
       const auto& deg = *turn;
-      frames_.emplace(*name, base->then(geo::Placement::turned_by(o, deg[0] * kPi / 180.0,
-                                                                  deg[1] * kPi / 180.0,
-                                                                  deg[2] * kPi / 180.0)));
+      const geo::Placement local = geo::Placement::turned_by(
+          o, deg[0] * kPi / 180.0, deg[1] * kPi / 180.0, deg[2] * kPi / 180.0);
+      Frame f{base->place.then(local), base->rotary};
+      if (f.rotary.turns()) f.rotary.inner = base->rotary.inner.then(local);
+      auto table = rotary(t, rd.origin, *base);
+      if (!table) return std::unexpected(table.error());
+      if (table->turns()) {
+        f.rotary = *table;
+        f.rotary.table = f.place;
+      }
+      frames_.emplace(*name, f);
       return {};
     });
+  }
+
+  // `rotary`: the frame is a rotary table's, turned about its own X, Y or Z
+  // by the machine's A, B or C axis (ISO 841); `rotary_sign`: -1 (a table
+  // axis: a positive move turns the table clockwise seen from the axis'
+  // plus side, so that the tool turns positive about the part) or 1.
+  Result<geo::Rotary> rotary(const toml::table& t, std::string_view origin,
+                             const Frame& base) const {
+    geo::Rotary r;
+    const auto* n = t.get("rotary");
+    if (n == nullptr) {
+      if (t.get("rotary_sign") != nullptr) {
+        return config_error(*t.get("rotary_sign"), origin, "rotary_sign needs rotary");
+      }
+      return r;
+    }
+    auto name = get_string(*n, origin, "rotary");
+    if (!name) return std::unexpected(name.error());
+    if (*name != "A" && *name != "B" && *name != "C") {
+      return config_error(*n, origin, "rotary must be \"A\", \"B\" or \"C\" (about X, Y, Z)");
+    }
+    r.axis = m_.axis_index((*name)[0]);
+    if (r.axis < 0) {
+      return config_error(*n, origin, "rotary axis " + *name + " is not an axis of this machine");
+    }
+    if (base.rotary.turns()) {
+      return config_error(*n, origin,
+                          "frame's base is on a rotary table already: one rotary axis per "
+                          "part (a table on a table is not modelled)");
+    }
+    r.about = (*name)[0] - 'A';
+    if (const auto* sn = t.get("rotary_sign")) {
+      const auto* i = sn->as_integer();
+      if (i == nullptr || (i->get() != 1 && i->get() != -1)) {
+        return config_error(*sn, origin, "rotary_sign must be -1 or 1");
+      }
+      r.sign = static_cast<double>(i->get());
+    }
+    return r;
   }
 
   // `rotation`: degrees about Z, or [about X, about Y, about Z] turned in
@@ -169,10 +224,10 @@ class Frames {
   }
 
   // The frame `key` of table t names ("machine" when absent).
-  Result<geo::Placement> resolve(const toml::table& t, std::string_view origin,
-                                 std::string_view key = "frame") const {
+  Result<Frame> resolve(const toml::table& t, std::string_view origin,
+                        std::string_view key = "frame") const {
     const auto* n = t.get(key);
-    if (n == nullptr) return geo::Placement{};
+    if (n == nullptr) return Frame{};
     auto name = get_string(*n, origin, key);
     if (!name) return std::unexpected(name.error());
     auto it = frames_.find(*name);
@@ -187,7 +242,8 @@ class Frames {
   }
 
  private:
-  std::map<std::string, geo::Placement> frames_;
+  const config::MachineConfig& m_;
+  std::map<std::string, Frame> frames_;
 };
 
 // Parts are grouped by name; a part's holes cut only its own solids. Every
@@ -216,7 +272,7 @@ class PartSet {
     auto it = index_.find(name);
     if (it == index_.end()) {
       it = index_.emplace(name, parts_.size()).first;
-      parts_.push_back(geo::Part{name, {}, {}, *place, {}});
+      parts_.push_back(geo::Part{name, {}, {}, place->place, {}, place->rotary});
       first_.push_back(&t);
       frame_.push_back(frame);
     } else if (frame_[it->second] != frame) {
@@ -529,7 +585,11 @@ Result<ToolSetterSpec> parse_setter(const toml::table& t, const Reader& rd, cons
   // A disc: only its centre and top move with the frame.
   auto place = frames.resolve(t, rd.origin);
   if (!place) return std::unexpected(place.error());
-  const geo::Vec3 c0 = place->to_machine({s.x, s.y, s.top});
+  if (place->rotary.turns()) {
+    return config_error(*t.get("frame"), rd.origin,
+                        "the tool setter cannot stand on a rotary table (its frame turns)");
+  }
+  const geo::Vec3 c0 = place->place.to_machine({s.x, s.y, s.top});
   s.x = c0.x;
   s.y = c0.y;
   s.top = c0.z;

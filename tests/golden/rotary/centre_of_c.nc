@@ -1,0 +1,1 @@
+../../../examples/rotary/centre_of_c.nc

@@ -1,0 +1,1 @@
+../../../examples/rotary/skip_on_c.nc
