@@ -9,9 +9,10 @@ namespace {
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
 // Cells per side: the fewest of at most `cell` mm (a side a hair over a
-// whole number of cells, by rounding, does not get one more).
-int cells_on(double side, double cell) noexcept {
-  return std::max(1, static_cast<int>(std::ceil(side / cell - 1e-9)));
+// whole number of cells, by rounding, does not get one more). A double: the
+// scene checks the count before a grid is made, whatever the numbers.
+double cells_on(double side, double cell) noexcept {
+  return std::max(1.0, std::ceil(side / cell - 1e-9));
 }
 
 double box_distance(Vec3 lo, Vec3 hi, Vec3 p) noexcept {
@@ -36,15 +37,14 @@ bool clip(double a, double b, double lo, double hi, double& t0, double& t1) noex
 }  // namespace
 
 double Stock::cell_count(Vec3 lo, Vec3 hi, double cell) noexcept {
-  return static_cast<double>(cells_on(hi.x - lo.x, cell)) *
-         static_cast<double>(cells_on(hi.y - lo.y, cell));
+  return cells_on(hi.x - lo.x, cell) * cells_on(hi.y - lo.y, cell);
 }
 
 Stock::Stock(Vec3 lo, Vec3 hi, double cell)
     : lo_(lo),
       hi_(hi),
-      nx_(cells_on(hi.x - lo.x, cell)),
-      ny_(cells_on(hi.y - lo.y, cell)),
+      nx_(static_cast<int>(std::min(cells_on(hi.x - lo.x, cell), 1e9))),
+      ny_(static_cast<int>(std::min(cells_on(hi.y - lo.y, cell), 1e9))),
       dx_((hi.x - lo.x) / nx_),
       dy_((hi.y - lo.y) / ny_),
       tops_(static_cast<std::size_t>(nx_) * static_cast<std::size_t>(ny_), hi.z) {}

@@ -32,7 +32,8 @@ class Stock {
   // number of cells on each side, so the grid ends on the box's faces).
   Stock(Vec3 lo, Vec3 hi, double cell);
 
-  // How many cells that grid has (what the scene checks before making it).
+  // How many cells that grid has (what the scene checks before making it:
+  // the constructor allocates them all).
   static double cell_count(Vec3 lo, Vec3 hi, double cell) noexcept;
 
   bool empty() const noexcept { return tops_.empty(); }

@@ -242,6 +242,7 @@ TEST(SceneStock, RefusesWhatCannotBe) {
       5, 9);
   // More than 4 million cells: at the resolution.
   expect_error("[stock]\nlo = [0, 0, -20]\nhi = [1000, 1000, 0]\nresolution = 0.1\n", 4, 14);
+  expect_error("[stock]\nlo = [-1e6, -1e6, -1]\nhi = [1e6, 1e6, 0]\nresolution = 0.001\n", 4);
   expect_error("[stock]\nlo = [0, 0, 0]\nhi = [10, 10, 0]\n", 3);                // no height
   expect_error("[stock]\nlo = [0, 0]\nhi = [10, 10, 5]\n", 2);                   // 2 numbers
   expect_error("[stock]\nlo = [0, 0, 0]\nhi = [1, 1, 1]\nresolution = 0\n", 4);  // too fine
