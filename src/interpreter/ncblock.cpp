@@ -510,7 +510,10 @@ Flow<Step> Interpreter::Impl::commit_call(const BlockPlan& plan) {
 // its own modes (G20/G21, G90/G91, G54...).
 void Interpreter::Impl::commit_modal(const Words& words, const BlockPlan& plan, CommandSink& out) {
   if (words.has('E')) last_e = words.at('E').value;
-  if (words.has('S') && !mc.lathe()) emit(out, canon::Spindle{plan.next.spindle, 0});
+  // A new speed keeps the direction: M03/M04/M05 of the block follow it.
+  if (words.has('S') && !mc.lathe()) {
+    emit(out, canon::Spindle{plan.next.spindle, modal.spindle_dir});
+  }
   if (words.has('T') && !mc.lathe()) emit(out, canon::ToolSelect{plan.next.tool});
   const int seq = modal.seq;
   modal = plan.next;

@@ -50,6 +50,44 @@ bool in_unit(double t) noexcept {
   return t >= 0.0 && t <= 1.0;
 }
 
+// The closed-form roots every contact below is made of, for a ball whose
+// centre moves from a to b (t in [0, 1]). Each gives the instant the ball
+// starts to touch (is entering), not the one it leaves.
+
+// The centre comes within `reach` of point p: the smaller root.
+bool point_root(Vec3 p, Vec3 a, Vec3 b, double reach, double& t) noexcept {
+  const Vec3 w = b - a, m = a - p;
+  double t1 = 0.0, t2 = 0.0;
+  if (!quadratic(dot(w, w), 2.0 * dot(m, w), dot(m, m) - reach * reach, t1, t2)) return false;
+  t = t1;
+  return in_unit(t1);
+}
+
+// The centre comes to `radius` in front of the plane through p with unit
+// normal n, from in front of it.
+bool plane_root(Vec3 p, Vec3 n, Vec3 a, Vec3 b, double radius, double& t) noexcept {
+  const double s0 = dot(a - p, n), s1 = dot(b - p, n);
+  if (!(s0 >= radius && s1 <= radius && s1 < s0)) return false;
+  t = (s0 - radius) / (s0 - s1);
+  return true;
+}
+
+// The centre comes within `radius` of the line through p along unit e, its
+// foot on the line at s in [0, len] from p (an edge without its ends).
+bool line_root(Vec3 p, Vec3 e, double len, Vec3 a, Vec3 b, double radius, double& t,
+               double& s) noexcept {
+  const Vec3 w = b - a, m = a - p;
+  const Vec3 mp = m - e * dot(m, e), wp = w - e * dot(w, e);
+  double t1 = 0.0, t2 = 0.0;
+  if (!quadratic(dot(wp, wp), 2.0 * dot(mp, wp), dot(mp, mp) - radius * radius, t1, t2) ||
+      !(dot(wp, wp) > 0.0) || !in_unit(t1)) {
+    return false;
+  }
+  t = t1;
+  s = dot(lerp(a, b, t1) - p, e);
+  return s >= 0.0 && s <= len;
+}
+
 // A 2-D curve of a vertical surface: a line n.p = d (n unit) or a circle.
 struct Curve2 {
   bool circle = false;
@@ -597,19 +635,10 @@ bool Material::contact_with(const Feature& f, Vec3 a, Vec3 b, double radius,
     c.part = f.part;
     return true;
   };
-  // A ball of radius `reach` about point p: the smaller root (entering).
-  auto ball_root = [&](Vec3 p, double reach, double& t) {
-    const Vec3 m = a - p;
-    double t1 = 0.0, t2 = 0.0;
-    if (!quadratic(dot(w, w), 2.0 * dot(m, w), dot(m, m) - reach * reach, t1, t2)) return false;
-    t = t1;
-    return in_unit(t1);
-  };
   switch (f.kind) {
     case FeatureKind::kPlane: {
-      const double s0 = dot(a - f.p, f.n), s1 = dot(b - f.p, f.n);
-      if (!(s0 >= radius && s1 <= radius && s1 < s0)) return false;
-      const double t = (s0 - radius) / (s0 - s1);
+      double t = 0.0;
+      if (!plane_root(f.p, f.n, a, b, radius, t)) return false;
       return accept(t, lerp(a, b, t) - f.n * radius);
     }
     case FeatureKind::kOuterWall:
@@ -636,22 +665,15 @@ bool Material::contact_with(const Feature& f, Vec3 a, Vec3 b, double radius,
       const double len = length(e0);
       if (len == 0.0) return false;
       const Vec3 e = e0 * (1.0 / len);
-      const Vec3 m = a - f.p;
-      const Vec3 mp = m - e * dot(m, e), wp = w - e * dot(w, e);
       double best = kInf;
       Contact bc;
-      double t1 = 0.0, t2 = 0.0;
-      if (quadratic(dot(wp, wp), 2.0 * dot(mp, wp), dot(mp, mp) - radius * radius, t1, t2) &&
-          dot(wp, wp) > 0.0 && in_unit(t1)) {
-        const double s = dot(lerp(a, b, t1) - f.p, e);
-        if (s >= 0.0 && s <= len && accept(t1, f.p + e * s)) {
-          best = t1;
-          bc = c;
-        }
+      double t = 0.0, s = 0.0;
+      if (line_root(f.p, e, len, a, b, radius, t, s) && accept(t, f.p + e * s)) {
+        best = t;
+        bc = c;
       }
       for (Vec3 end : {f.p, f.q}) {
-        double t = 0.0;
-        if (ball_root(end, radius, t) && t < best && accept(t, end)) {
+        if (point_root(end, a, b, radius, t) && t < best && accept(t, end)) {
           best = t;
           bc = c;
         }
@@ -662,7 +684,7 @@ bool Material::contact_with(const Feature& f, Vec3 a, Vec3 b, double radius,
     }
     case FeatureKind::kBall: {
       double t = 0.0;
-      if (!ball_root(f.p, f.r + radius, t)) return false;
+      if (!point_root(f.p, a, b, f.r + radius, t)) return false;
       const Vec3 centre = lerp(a, b, t);
       return accept(t, f.p + (centre - f.p) * (f.r / (f.r + radius)));
     }
@@ -925,6 +947,55 @@ int Material::column_hits(const Column& world, double tol) const noexcept {
     }
   }
   return -1;
+}
+
+bool box_first_contact(Vec3 lo, Vec3 hi, Vec3 a, Vec3 b, double radius, Contact& out) noexcept {
+  double best = kInf;
+  Vec3 at;
+  auto take = [&](double t, Vec3 point) {
+    if (t < best) {
+      best = t;
+      at = point;
+    }
+  };
+  auto coord = [](Vec3& v, int k) -> double& { return k == 0 ? v.x : k == 1 ? v.y : v.z; };
+  double t = 0.0, s = 0.0;
+  for (int k = 0; k < 3; ++k) {
+    // Faces: the contact point must lie on the face (its two other sides).
+    for (const bool high : {false, true}) {
+      Vec3 n;
+      coord(n, k) = high ? 1.0 : -1.0;
+      if (!plane_root(high ? hi : lo, n, a, b, radius, t)) continue;
+      Vec3 q = lerp(a, b, t) - n * radius;
+      bool on = true;
+      for (int j = 1; j < 3; ++j) {
+        const int o = (k + j) % 3;
+        on = on && coord(q, o) >= coord(lo, o) - kOnSurface &&
+             coord(q, o) <= coord(hi, o) + kOnSurface;
+      }
+      if (on) take(t, q);
+    }
+    // The four edges along axis k.
+    Vec3 e;
+    coord(e, k) = 1.0;
+    const double len = coord(hi, k) - coord(lo, k);
+    for (unsigned i = 0; i < 4; ++i) {
+      Vec3 p = lo;
+      coord(p, (k + 1) % 3) = (i & 1U) != 0U ? coord(hi, (k + 1) % 3) : coord(lo, (k + 1) % 3);
+      coord(p, (k + 2) % 3) = (i & 2U) != 0U ? coord(hi, (k + 2) % 3) : coord(lo, (k + 2) % 3);
+      if (line_root(p, e, len, a, b, radius, t, s)) take(t, p + e * s);
+    }
+  }
+  for (unsigned i = 0; i < 8; ++i) {
+    const Vec3 p{(i & 1U) != 0U ? hi.x : lo.x, (i & 2U) != 0U ? hi.y : lo.y,
+                 (i & 4U) != 0U ? hi.z : lo.z};
+    if (point_root(p, a, b, radius, t)) take(t, p);
+  }
+  if (best == kInf) return false;
+  Vec3 n = lerp(a, b, best) - at;
+  const double l = length(n);
+  out = Contact{best, at, l > 0.0 ? n * (1.0 / l) : Vec3{0, 0, 1}, -1};
+  return true;
 }
 
 }  // namespace skipnc::machine::geo

@@ -171,6 +171,12 @@ struct Column {
   double top = 0.0;
 };
 
+// The first contact of a ball of `radius` whose centre moves from a to b
+// with the axis-aligned box lo..hi: its faces, edges and corners, each in
+// closed form as for a part's box. part is -1. A ball that overlaps the box
+// at a does not touch it.
+bool box_first_contact(Vec3 lo, Vec3 hi, Vec3 a, Vec3 b, double radius, Contact& out) noexcept;
+
 // How far two columns overlap: the smaller of the radial and the vertical
 // overlap (the distance to push them apart along XY or Z); <= 0 when apart.
 double column_overlap(const Column& a, const Column& b) noexcept;

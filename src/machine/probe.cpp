@@ -42,8 +42,9 @@ double Scatter::normal() noexcept {
 
 // --- TouchProbe ---------------------------------------------------------------
 
-TouchProbe::TouchProbe(const ProbeSpec& spec, const geo::Material& material) noexcept
-    : spec_(spec), material_(&material), scatter_(spec.seed) {}
+TouchProbe::TouchProbe(const ProbeSpec& spec, const geo::Material& material,
+                       const geo::Stock* stock) noexcept
+    : spec_(spec), solids_(material, stock), scatter_(spec.seed) {}
 
 double TouchProbe::pre_travel_for(geo::Vec3 n) const noexcept {
   const double nxy = std::sqrt(n.x * n.x + n.y * n.y);
@@ -68,8 +69,8 @@ double TouchProbe::signed_deflection(geo::Vec3 p) const noexcept {
   // Only the sign and values up to the deflection matter: a ball farther
   // than its radius is clear, by however much (the distance search can stop
   // early; a mesh of a million triangles costs a few boxes then).
-  const double d = material_->distance(p, 2.0 * spec_.ball_radius);
-  return d > 0.0 ? spec_.ball_radius - d : spec_.ball_radius + material_->depth(p);
+  const double d = solids_.distance(p, 2.0 * spec_.ball_radius);
+  return d > 0.0 ? spec_.ball_radius - d : spec_.ball_radius + solids_.depth(p);
 }
 
 double TouchProbe::deflection_at(geo::Vec3 p) const noexcept {
@@ -92,7 +93,7 @@ int TouchProbe::advance(geo::Vec3 a, geo::Vec3 b, SensorEdge* edges) noexcept {
   double t_from = 0.0;
   if (state_ == State::kFree) {
     geo::Contact c;
-    if (material_->first_contact(a, b, r, c)) {
+    if (solids_.first_contact(a, b, r, c)) {
       contact_ = c;
       start_contact(c.normal);
       state_ = State::kTouching;
@@ -104,7 +105,7 @@ int TouchProbe::advance(geo::Vec3 a, geo::Vec3 b, SensorEdge* edges) noexcept {
     // Solved over the whole period (a ball of r - delta did not touch at
     // its start either), so that a zero pre-travel gives the touch itself.
     geo::Contact c;
-    if (material_->first_contact(a, b, r - delta_, c)) {
+    if (solids_.first_contact(a, b, r - delta_, c)) {
       state_ = State::kOn;
       edges[n++] = SensorEdge{edge_frac(std::max(c.t, t_from)), true};
     }
@@ -117,7 +118,7 @@ int TouchProbe::advance(geo::Vec3 a, geo::Vec3 b, SensorEdge* edges) noexcept {
     // the first contact met going backwards from b.
     geo::Contact c;
     double t = 1.0;
-    if (material_->first_contact(b, a, r - delta_, c, /*backward=*/true)) t = 1.0 - c.t;
+    if (solids_.first_contact(b, a, r - delta_, c, /*backward=*/true)) t = 1.0 - c.t;
     if (n > 0) t = std::max(t, edges[0].frac);
     edges[n++] = SensorEdge{edge_frac(t), false};
     state_ = raw_ >= 0.0 ? State::kTouching : State::kFree;

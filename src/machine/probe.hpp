@@ -11,6 +11,7 @@
 
 #include "machine/geometry.hpp"
 #include "machine/scene.hpp"
+#include "machine/stock.hpp"
 
 namespace skipnc::machine {
 
@@ -36,7 +37,9 @@ class Scatter {
 
 class TouchProbe {
  public:
-  TouchProbe(const ProbeSpec& spec, const geo::Material& material) noexcept;
+  // The ball touches the material's parts and, when given, the stock.
+  TouchProbe(const ProbeSpec& spec, const geo::Material& material,
+             const geo::Stock* stock = nullptr) noexcept;
 
   // State from a ball position with no motion (start-up).
   void reset(geo::Vec3 ball) noexcept;
@@ -67,7 +70,7 @@ class TouchProbe {
   void start_contact(geo::Vec3 normal) noexcept;
 
   ProbeSpec spec_;
-  const geo::Material* material_;
+  geo::Solids solids_;
   Scatter scatter_;
   State state_ = State::kFree;
   double delta_ = 0.0;

@@ -111,9 +111,9 @@ std::optional<bool> ProbeSafety::reachable(const canon::SignalAddr& input, const
     } else {
       const geo::Vec3 a = ps.ball_at(from);
       const double r = spec.probe->ball_radius;
+      const geo::Solids solids = ps.solids();
       geo::Contact c;
-      found(ps.material().distance(a) <= r ||
-            ps.material().first_contact(a, ps.ball_at(far), r, c));
+      found(solids.distance(a) <= r || solids.first_contact(a, ps.ball_at(far), r, c));
     }
   }
   if (spec.tool_setter && spec.tool_setter->signal == input) {
@@ -276,9 +276,11 @@ std::optional<SafetyAlarm> ProbeSafety::check_period(Plant& plant, const kernel:
       break;
     case PlantFault::Kind::kCollision: {
       const auto& parts = ps.spec().parts;
-      const std::string part = f.part >= 0 && !parts[static_cast<std::size_t>(f.part)].name.empty()
-                                   ? "part '" + parts[static_cast<std::size_t>(f.part)].name + "'"
-                                   : "a part";
+      const std::string part =
+          f.stock ? "the stock"
+          : f.part >= 0 && !parts[static_cast<std::size_t>(f.part)].name.empty()
+              ? "part '" + parts[static_cast<std::size_t>(f.part)].name + "'"
+              : "a part";
       const std::string who = f.tool >= 0 ? "tool T" + std::to_string(f.tool) : "the probe body";
       return SafetyAlarm{
           Error{AlarmId::kCollision,

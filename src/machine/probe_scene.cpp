@@ -27,12 +27,15 @@ double first_true(P&& pred) noexcept {
 }  // namespace
 
 ProbeScene::ProbeScene(const Probing& spec, const config::MachineConfig& m)
-    : spec_(spec), material_(spec_.parts) {
+    : spec_(spec),
+      material_(spec_.parts),
+      stock_(spec_.stock ? geo::Stock(spec_.stock->lo, spec_.stock->hi, spec_.stock->resolution)
+                         : geo::Stock()) {
   ix_ = m.axis_index('X');
   iy_ = m.axis_index('Y');
   iz_ = m.axis_index('Z');
   if (spec_.probe) {
-    probe_.emplace(*spec_.probe, material_);
+    probe_.emplace(*spec_.probe, material_, &stock_);
     probe_source_ = sources_.size();
     sources_.push_back(Source{Kind::kProbe, spec_.probe->signal, 0, 0, false});
   }
@@ -50,7 +53,7 @@ ProbeScene::ProbeScene(const Probing& spec, const config::MachineConfig& m)
   }
   edges_.resize(sources_.size() * 2 + 2);
   spindle_tool_ = spec_.spindle_tool;
-  senses_ = probe_ || setter_ || !gauges_.empty() || !material_.empty();
+  senses_ = probe_ || setter_ || !gauges_.empty() || !material_.empty() || !stock_.empty();
 }
 
 geo::Vec3 ProbeScene::point(const AxisVec& p) const noexcept {
@@ -82,6 +85,8 @@ void ProbeScene::push_edge(std::size_t source, double frac, bool on) noexcept {
 
 void ProbeScene::reset(const AxisVec& actual) noexcept {
   fault_ = PlantFault{};
+  stock_.reset();
+  cutting_ = settling_ = cuts_now_ = false;
   edge_count_ = 0;
   touch_on_ = false;
   pending_tool_.reset();
@@ -167,6 +172,7 @@ void ProbeScene::advance_sensors(const AxisVec& before, const AxisVec& after) no
     }
   }
   if (touch_on_) touch_at_ = lerp(before, after, touch_frac_);
+  cuts_now_ = cut_stock(before, after);
   check_crash(before, after);
   check_collision(before, after);
 }
@@ -214,8 +220,27 @@ void ProbeScene::check_crash(const AxisVec& before, const AxisVec& after) noexce
   fault_ = f;
 }
 
+bool ProbeScene::cut_stock(const AxisVec& before, const AxisVec& after) noexcept {
+  const ToolSpec* t = tool_in_spindle();
+  if (t == nullptr || stock_.empty()) return false;
+  if (!cutting_) {
+    if (!settling_) return false;
+    // Once the tool turns away from the cutting move's end it is the rapid
+    // (or skip) that moves it: no more cutting until the next cutting move.
+    settling_ = geo::dot(point(after) - point(before), point(cut_end_) - point(before)) > 0.0;
+    if (!settling_) return false;
+  }
+  // The tip's centre: the whole column below the gauge line cuts, so its
+  // lowest point is what lowers the stock.
+  const geo::Vec3 down{0.0, 0.0, t->length};
+  stock_.cut(point(before) - down, point(after) - down, t->radius);
+  return true;
+}
+
 void ProbeScene::check_collision(const AxisVec& before, const AxisVec& after) noexcept {
-  if (fault_.kind != PlantFault::Kind::kNone || material_.empty()) return;
+  if (fault_.kind != PlantFault::Kind::kNone || (material_.empty() && stock_.empty())) return;
+  // A cutting tool has just removed the stock in its way (cut_stock).
+  const bool stock_hits = !stock_.empty() && !cuts_now_;
   // The column that must not touch a part: the probe body or the tool.
   auto column_at = [&](const AxisVec& at, geo::Column& c) {
     if (probe_in_spindle()) {
@@ -230,18 +255,22 @@ void ProbeScene::check_collision(const AxisVec& before, const AxisVec& after) no
     c = tool_column(*t, at);
     return true;
   };
+  auto hits = [&](const geo::Column& col) {
+    return material_.column_hits(col, kCollisionTol) >= 0 ||
+           (stock_hits && stock_.column_hits(col, kCollisionTol));
+  };
   geo::Column c;
-  if (!column_at(after, c)) return;
+  if (!column_at(after, c) || !hits(c)) return;
   const int part = material_.column_hits(c, kCollisionTol);
-  if (part < 0) return;
   const double t = first_true([&](double s) {
     geo::Column cs;
-    return column_at(lerp(before, after, s), cs) && material_.column_hits(cs, kCollisionTol) >= 0;
+    return column_at(lerp(before, after, s), cs) && hits(cs);
   });
   fault_.kind = PlantFault::Kind::kCollision;
   fault_.at = lerp(before, after, t);
   fault_.latest = after;
   fault_.part = part;
+  fault_.stock = part < 0;
   const ToolSpec* tool = tool_in_spindle();
   fault_.tool = tool != nullptr ? tool->number : -1;
 }

@@ -3,7 +3,8 @@
 // on the actual axis motion (linear inside the period, as the kernel takes
 // it). It produces signal edges with their exact instant and detects what
 // would damage the machine: a stylus or setter pushed past its over-travel
-// (crash), the probe body or a tool touching a part (collision).
+// (crash), the probe body or a tool touching a part (collision). A tool
+// that cuts (set_cutting) removes the stock it passes through instead.
 //
 // Signal sources, in this order: the probe, the tool setter, each step of
 // each gauge. The plant ORs them with its other sources per address.
@@ -20,6 +21,7 @@
 #include "machine/geometry.hpp"
 #include "machine/probe.hpp"
 #include "machine/scene_parts.hpp"
+#include "machine/stock.hpp"
 
 namespace skipnc::machine {
 
@@ -33,6 +35,7 @@ struct PlantFault {
   double limit = 0.0;       // crash: deflection at which damage begins, mm
   double overshoot = 0.0;   // crash: largest deflection beyond the limit, mm
   int part = -1;            // collision: index into Probing::parts
+  bool stock = false;       // collision: with the stock (part is -1)
   int tool = -1;            // collision: the tool, or -1 for the probe body
 };
 
@@ -54,6 +57,19 @@ class ProbeScene {
     edge_count_ = 0;
     touch_on_ = false;
     if (pending_tool_ || senses_) advance_sensors(before, after);
+  }
+  // Whether the tool in the spindle cuts in the next periods: the spindle
+  // turns and the running command is a cutting move that ends at `end`
+  // (the simulator knows the command; docs/scene.md, [stock]). A tool that
+  // cuts lowers the stock it passes through; one that does not collides
+  // with it. After a cutting move the tool still cuts while it moves toward
+  // that move's end (the servo taking up its lag while a rapid has begun).
+  void set_cutting(bool on, const AxisVec& end) noexcept {
+    cutting_ = on;
+    if (on) {
+      settling_ = true;
+      cut_end_ = end;
+    }
   }
   // A switched probe (ProbeSpec::on_m): whether its input can come on.
   // Takes effect at the next period.
@@ -92,6 +108,9 @@ class ProbeScene {
   const PlantFault& fault() const noexcept { return fault_; }
   const Probing& spec() const noexcept { return spec_; }
   const geo::Material& material() const noexcept { return material_; }
+  const geo::Stock& stock() const noexcept { return stock_; }
+  // What the probe's ball can touch: the parts and the stock.
+  geo::Solids solids() const noexcept { return geo::Solids(material_, &stock_); }
   const TouchProbe* probe() const noexcept { return probe_ ? &*probe_ : nullptr; }
   const SetterSensor* setter() const noexcept { return setter_ ? &*setter_ : nullptr; }
   const std::vector<GaugeSensor>& gauges() const noexcept { return gauges_; }
@@ -122,10 +141,18 @@ class ProbeScene {
   void apply_power() noexcept;
   void change_tool(const AxisVec& at) noexcept;
   void check_collision(const AxisVec& before, const AxisVec& after) noexcept;
+  // Whether the tool cuts in this period; if so, the stock it passes through
+  // is removed.
+  bool cut_stock(const AxisVec& before, const AxisVec& after) noexcept;
   void check_crash(const AxisVec& before, const AxisVec& after) noexcept;
 
   Probing spec_;
   geo::Material material_;
+  geo::Stock stock_;       // empty without [stock]; cut in place, never reallocated
+  bool cutting_ = false;   // the running command cuts
+  bool settling_ = false;  // still moving toward the last cutting command's end
+  AxisVec cut_end_;
+  bool cuts_now_ = false;  // the tool cut in this period
   int ix_ = -1, iy_ = -1, iz_ = -1;
   std::optional<TouchProbe> probe_;
   std::optional<SetterSensor> setter_;

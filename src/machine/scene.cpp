@@ -54,7 +54,7 @@ Result<Scene> parse_scene(std::string_view text, std::string_view origin,
   auto keys = check_keys(
       root,
       {"trigger", "pulse", "stop", "load", "operator", "box", "cylinder", "sphere", "plane", "bore",
-       "pocket", "probe", "tool", "tool_setter", "gauge", "spindle_tool", "frame", "mesh"},
+       "pocket", "probe", "tool", "tool_setter", "gauge", "spindle_tool", "frame", "mesh", "stock"},
       origin, "a scene file");
   if (!keys) return std::unexpected(keys.error());
   Scene s;

@@ -3,6 +3,8 @@
 // file, line and column.
 #include "machine/scene_parts.hpp"
 
+#include <fmt/format.h>
+
 #include <array>
 #include <cmath>
 #include <filesystem>
@@ -13,6 +15,7 @@
 #include "config/skip_inputs.hpp"
 #include "config/toml_util.hpp"
 #include "machine/mesh.hpp"
+#include "machine/stock.hpp"
 
 namespace skipnc::machine {
 
@@ -596,6 +599,58 @@ Result<ToolSetterSpec> parse_setter(const toml::table& t, const Reader& rd, cons
   return s;
 }
 
+// The most cells a stock's grid may have: 4 million (32 MB of tops).
+constexpr double kMaxStockCells = 4e6;
+
+Result<StockSpec> parse_stock(const toml::table& t, const Reader& rd, const Frames& frames) {
+  const auto origin = rd.origin;
+  auto k = check_keys(t, {"frame", "lo", "hi", "resolution"}, origin, "[stock]");
+  if (!k) return std::unexpected(k.error());
+  auto lo = rd.vec<3>(t, "lo");
+  if (!lo) return std::unexpected(lo.error());
+  auto hi = rd.vec<3>(t, "hi");
+  if (!hi) return std::unexpected(hi.error());
+  for (std::size_t i = 0; i < 3; ++i) {
+    if (!((*hi)[i] > (*lo)[i])) {
+      return config_error(*t.get("hi"), origin, "[stock]: hi must exceed lo on every axis");
+    }
+  }
+  auto res = rd.number(t, "resolution", 1e-3, 100.0, 0.5);
+  if (!res) return std::unexpected(res.error());
+  // The cells are columns along the machine's Z on a grid along its X and
+  // Y: a frame may move the stock, not turn it.
+  auto frame = frames.resolve(t, origin);
+  if (!frame) return std::unexpected(frame.error());
+  if (frame->rotary.turns()) {
+    return config_error(*t.get("frame"), origin,
+                        "[stock]: the stock cannot stand on a rotary table (its frame turns)");
+  }
+  const geo::Placement& place = frame->place;
+  const geo::Vec3 o = place.to_machine({0.0, 0.0, 0.0});
+  for (const geo::Vec3 e : {geo::Vec3{1, 0, 0}, geo::Vec3{0, 1, 0}, geo::Vec3{0, 0, 1}}) {
+    if (geo::length(place.to_machine(e) - o - e) > 1e-12) {
+      return config_error(*t.get("frame"), origin,
+                          "[stock]: frame '" + *t.get("frame")->value<std::string>() +
+                              "' is turned; the stock's cells are axis-aligned, so it may only "
+                              "be moved (machine, G54..G59, or a [[frame]] without rotation)");
+    }
+  }
+  StockSpec s;
+  s.lo = geo::Vec3{(*lo)[0], (*lo)[1], (*lo)[2]} + o;
+  s.hi = geo::Vec3{(*hi)[0], (*hi)[1], (*hi)[2]} + o;
+  s.resolution = *res;
+  const double cells = geo::Stock::cell_count(s.lo, s.hi, s.resolution);
+  if (cells > kMaxStockCells) {
+    const auto* at = t.get("resolution");
+    return config_error(
+        at != nullptr ? *at : static_cast<const toml::node&>(t), origin,
+        fmt::format("[stock]: a {:g} mm grid over {:g} x {:g} mm is {:.0f} cells, "
+                    "more than {:.0f}: use a coarser resolution",
+                    s.resolution, s.hi.x - s.lo.x, s.hi.y - s.lo.y, cells, kMaxStockCells));
+  }
+  return s;
+}
+
 Result<GaugeSpec> parse_gauge(const toml::table& t, const Reader& rd) {
   const auto origin = rd.origin;
   auto k = check_keys(t, {"axis", "center", "raw_diameter", "steps"}, origin, "[[gauge]]");
@@ -672,7 +727,7 @@ Result<Probing> parse_probing(const toml::table& root, std::string_view origin,
   r = parts.check_solids(origin);
   if (!r) return std::unexpected(r.error());
   out.parts = parts.take();
-  for (const char* key : {"probe", "tool_setter"}) {
+  for (const char* key : {"probe", "tool_setter", "stock"}) {
     const auto* n = root.get(key);
     if (n != nullptr && n->as_table() == nullptr) {
       return config_error(*n, origin, "[" + std::string(key) + "] must be a table (one per scene)");
@@ -687,6 +742,11 @@ Result<Probing> parse_probing(const toml::table& root, std::string_view origin,
     auto setter = parse_setter(*t, rd, frames);
     if (!setter) return std::unexpected(setter.error());
     out.tool_setter = *setter;
+  }
+  if (const auto* t = single(root, "stock")) {
+    auto stock = parse_stock(*t, rd, frames);
+    if (!stock) return std::unexpected(stock.error());
+    out.stock = *stock;
   }
   r = config::each_table(root, "tool", origin, [&](const toml::table& t) -> Result<void> {
     auto k = check_keys(t, {"number", "length", "radius"}, origin, "[[tool]]");

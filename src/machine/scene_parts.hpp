@@ -1,5 +1,5 @@
 // Scene tables for probing (docs/scene.md): parts ([[box]], [[cylinder]],
-// [[sphere]], [[plane]], [[bore]], [[pocket]]), a spindle touch probe
+// [[sphere]], [[plane]], [[bore]], [[pocket]]), the stock ([stock]), a spindle touch probe
 // ([probe]), tools ([[tool]], spindle_tool), a tool setter ([tool_setter])
 // and in-process gauges ([[gauge]]). All positions are machine coordinates,
 // lengths in mm.
@@ -85,8 +85,17 @@ struct GaugeSpec {
   std::vector<GaugeStep> steps;
 };
 
+// The stock that cutting moves remove ([stock], machine/stock.hpp): an
+// axis-aligned box in machine coordinates and the size of its grid's cells.
+struct StockSpec {
+  geo::Vec3 lo;
+  geo::Vec3 hi;
+  double resolution = 0.5;  // mm, on X and Y
+};
+
 struct Probing {
   std::vector<geo::Part> parts;
+  std::optional<StockSpec> stock;
   std::optional<ProbeSpec> probe;
   std::optional<ToolSetterSpec> tool_setter;
   std::vector<ToolSpec> tools;
@@ -100,14 +109,14 @@ struct Probing {
     return nullptr;
   }
   bool empty() const noexcept {
-    return parts.empty() && !probe && !tool_setter && tools.empty() && gauges.empty();
+    return parts.empty() && !stock && !probe && !tool_setter && tools.empty() && gauges.empty();
   }
 };
 
 // The top-level keys these tables use, for the scene's key check.
 inline constexpr std::string_view kProbingKeys[] = {
     "box",  "cylinder",    "sphere", "plane",        "bore",  "pocket", "probe",
-    "tool", "tool_setter", "gauge",  "spindle_tool", "frame", "mesh"};
+    "tool", "tool_setter", "gauge",  "spindle_tool", "frame", "mesh",   "stock"};
 
 // The `signal` key of a scene table ("X0.4", "SKIP", "SKIP1".."SKIP12"): its
 // address, and its text in `name`. Errors name the table or the key.

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <deque>
@@ -77,32 +78,46 @@ class BlockClock {
   std::vector<BlockTime> places_;
 };
 
-// The work frame of each command pushed to the kernel, kept only where it
-// changes and dropped once the kernel has passed it: read back by the
-// running command's tag (tags grow in push order).
-class FrameLog {
+// What goes with each command pushed to the kernel (its work frame, whether
+// it cuts), kept only where it changes and dropped once the kernel has
+// passed it: read back by the running command's tag (tags grow in push
+// order).
+template <class T>
+class TagLog {
  public:
-  void note(std::uint32_t tag, const interp::WorkFrame& f) {
-    if (!log_.empty() && log_.back().second == f) return;
-    log_.emplace_back(tag, f);
+  void note(std::uint32_t tag, const T& v) {
+    if (!log_.empty() && log_.back().second == v) return;
+    log_.emplace_back(tag, v);
   }
-  const interp::WorkFrame& at(std::uint32_t tag) {
+  const T& at(std::uint32_t tag) {
     while (log_.size() > 1 && log_[1].first <= tag) log_.pop_front();
     return log_.front().second;
   }
 
  private:
-  std::deque<std::pair<std::uint32_t, interp::WorkFrame>> log_;
+  std::deque<std::pair<std::uint32_t, T>> log_;
+};
+using FrameLog = TagLog<interp::WorkFrame>;
+
+// Whether a motion command cuts the stock, and where a cutting one ends.
+struct CutNote {
+  bool cuts = false;
+  AxisVec end;
+  friend bool operator==(const CutNote&, const CutNote&) = default;
 };
 
 // Routes the interpreter's commands: motion to the kernel, the rest recorded.
 // With a frame log, each motion command's work frame is noted (the trace's
-// work columns).
+// work columns). With a cut log, whether each motion command cuts: the
+// spindle turns (as the commands before it left it) and it is a feed, an
+// arc or a dwell (a spinning tool at rest in the stock cuts where it
+// settles); a rapid or a skip move never cuts. A cutting command's end
+// point goes with it (ProbeScene::set_cutting).
 class Router final : public interp::CommandSink {
  public:
   Router(kernel::Kernel& k, interp::CommandSink* tap, const interp::Interpreter* in = nullptr,
-         FrameLog* frames = nullptr)
-      : k_(k), tap_(tap), in_(in), frames_(frames) {}
+         FrameLog* frames = nullptr, TagLog<CutNote>* cuts = nullptr)
+      : k_(k), tap_(tap), in_(in), frames_(frames), cuts_(cuts) {}
   void emit(const canon::Stamped& c) override {
     if (tap_ != nullptr) tap_->emit(c);
     std::visit(
@@ -112,7 +127,17 @@ class Router final : public interp::CommandSink {
                         std::is_same_v<T, canon::Arc> || std::is_same_v<T, canon::Dwell> ||
                         std::is_same_v<T, canon::Skip>) {
             if (frames_ != nullptr) frames_->note(k_.next_tag(), in_->work_frame());
+            if constexpr (!std::is_same_v<T, canon::Dwell>) target_ = cmd.target;
+            if (cuts_ != nullptr) {
+              constexpr bool kCutting = std::is_same_v<T, canon::Feed> ||
+                                        std::is_same_v<T, canon::Arc> ||
+                                        std::is_same_v<T, canon::Dwell>;
+              const bool cuts = kCutting && spindle_dir_ != 0;
+              cuts_->note(k_.next_tag(), CutNote{cuts, cuts ? target_ : AxisVec{}});
+            }
             k_.push(c);
+          } else if constexpr (std::is_same_v<T, canon::Spindle>) {
+            spindle_dir_ = cmd.direction;
           } else if constexpr (std::is_same_v<T, canon::Message>) {
             messages.push_back(cmd.text);
           }
@@ -126,6 +151,9 @@ class Router final : public interp::CommandSink {
   interp::CommandSink* tap_;
   const interp::Interpreter* in_;
   FrameLog* frames_;
+  TagLog<CutNote>* cuts_;
+  int spindle_dir_ = 0;
+  AxisVec target_;  // where the motion pushed so far ends
 };
 
 Error stroke_alarm(const config::MachineConfig& m, int axis, double pos, std::string_view file,
@@ -162,6 +190,24 @@ interp::SkipRecord cut_short_skip(const interp::SkipRecord& pending, const kerne
   return rec;
 }
 
+StockResult stock_result(const geo::Stock& st) {
+  StockResult r;
+  r.removed_mm3 = st.removed_volume();
+  for (int i = 0; i <= st.nx(); ++i) r.x_edges.push_back(i < st.nx() ? st.x0(i) : st.hi().x);
+  for (int j = 0; j <= st.ny(); ++j) r.y_edges.push_back(j < st.ny() ? st.y0(j) : st.hi().y);
+  r.lowest_along_x.assign(static_cast<std::size_t>(st.nx()), st.hi().z);
+  r.lowest_along_y.assign(static_cast<std::size_t>(st.ny()), st.hi().z);
+  for (int j = 0; j < st.ny(); ++j) {
+    for (int i = 0; i < st.nx(); ++i) {
+      double& x = r.lowest_along_x[static_cast<std::size_t>(i)];
+      double& y = r.lowest_along_y[static_cast<std::size_t>(j)];
+      x = std::min(x, st.top(i, j));
+      y = std::min(y, st.top(i, j));
+    }
+  }
+  return r;
+}
+
 }  // namespace
 
 Simulator::Simulator(const config::MachineConfig& m, const config::Dialect& d,
@@ -189,7 +235,12 @@ Result<RunResult> Simulator::run(const interp::Setup& setup, const RunOptions& o
   ProbeSafety safety(m_, p_, plant, opts.commands);
   FrameLog frames;
   frames.note(0, in.work_frame());
-  Router router(k, &safety, &in, opts.trace != nullptr ? &frames : nullptr);
+  // Whether the running command cuts, for a scene with stock.
+  const bool has_stock = !plant.probing().stock().empty();
+  TagLog<CutNote> cuts;
+  cuts.note(0, CutNote{});
+  Router router(k, &safety, &in, opts.trace != nullptr ? &frames : nullptr,
+                has_stock ? &cuts : nullptr);
   AxisVec work_now;
   // Machine lock and Z-axis cancel (operator switches kept as parameters):
   // the locked axes do not move, the command does.
@@ -295,6 +346,12 @@ Result<RunResult> Simulator::run(const interp::Setup& setup, const RunOptions& o
     if (tout.torque_limited || plant.torque_limited())
       plant.set_torque_limit(tout.torque_limit_pct);
     if (tout.followed_up) cmd_prev = cmd;  // a jump of the command, not motion
+    // The period follows the command of the last tick: that command says
+    // whether the tool cuts in it.
+    if (has_stock) {
+      const CutNote& cut = cuts.at(tout.tag);
+      plant.probing().set_cutting(cut.cuts, cut.end);
+    }
     plant.advance(k.now() + 1, cmd_prev, cmd, tin);
     cmd_prev = cmd;
     k.tick(tin, tout);
@@ -452,6 +509,7 @@ Result<RunResult> Simulator::run(const interp::Setup& setup, const RunOptions& o
     res.skips.push_back(cut_short_skip(*p, k.skip(), res.alarm_position, in));
     res.skips.back().end_position = res.final_work;  // where the alarm stopped the axes
   }
+  if (has_stock) res.stock = stock_result(plant.probing().stock());
   res.contexts = in.contexts();
   res.program_inch = in.modal().units == interp::Units::kInch;
   res.messages = in.messages();

@@ -57,6 +57,17 @@ struct BlockTime {
   std::int64_t ticks = 0;  // periods in it, in all
 };
 
+// The stock at the end of a run (scene [stock]): the volume cutting removed
+// and, for the plot's side views, the deepest cut of each column of cells
+// along X (the lowest top over Y) and along Y (over X).
+struct StockResult {
+  double removed_mm3 = 0.0;
+  std::vector<double> x_edges;  // cell edges on X (one more than cells)
+  std::vector<double> lowest_along_x;
+  std::vector<double> y_edges;
+  std::vector<double> lowest_along_y;
+};
+
 struct RunResult {
   RunStatus status = RunStatus::kCompleted;
   std::optional<Error> alarm;
@@ -76,6 +87,7 @@ struct RunResult {
   std::vector<BlockTime> block_times;     // in the order the places first ran
   double period_s = 0.0;                  // servo period: ticks to seconds
   std::vector<std::pair<std::string, std::optional<double>>> variables;  // filled by the caller
+  std::optional<StockResult> stock;  // with a [stock] in the scene
 };
 
 struct RunOptions {

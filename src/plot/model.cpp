@@ -31,6 +31,7 @@ constexpr std::array<InkStyle, static_cast<std::size_t>(Ink::kCount)> kInks{{
     {"part", "#6b6b6b", "#9a9a9a", 1.2, "", "part"},
     {"hole", "#6b6b6b", "none", 1.0, "4 3", "bore or pocket in a part"},
     {"setter", "#7a4fa3", "#7a4fa3", 1.2, "", "tool setter"},
+    {"stock", "#b07a2a", "none", 1.4, "", "stock: its box, and the deepest cut in the side views"},
     {"latch", "#e0007a", "#e0007a", 1.5, "", "latch: position stored by the skip"},
     {"miss", "#e0007a", "#ffffff", 2.0, "", "skip without a signal: end point stored"},
     {"rest", "#111111", "#ffffff", 1.8, "", "rest: where the axes stopped"},
@@ -488,7 +489,12 @@ PlotModel build_model(const PlotInput& in) {
   }
   build_skips(in, pm);
   frame_views(in, pm);
-  if (in.scene != nullptr) pm.shapes = scene_shapes(*in.scene, m, pm.xyz, pm.full_extent);
+  if (in.scene != nullptr) {
+    pm.shapes = scene_shapes(*in.scene, m, pm.xyz, pm.full_extent);
+    if (in.result != nullptr && in.result->stock) {
+      add_stock_cut(*in.result->stock, *in.scene, pm.shapes);
+    }
+  }
   build_channels(in, pm);
   return pm;
 }

@@ -50,6 +50,7 @@ enum class Ink : std::uint8_t {
   kPart,
   kHole,
   kSetter,
+  kStock,
   kLatch,
   kMiss,
   kRest,
@@ -216,6 +217,10 @@ struct PlotInput {
 // The scene as shapes, sized to `extent` (shapes.cpp).
 std::vector<Shape> scene_shapes(const machine::Scene& scene, const config::MachineConfig& m,
                                 const std::array<int, 3>& xyz, const Box3& extent);
+// The stock's deepest cut at the end of the run, in the side views: along X
+// on its front face, along Y on its left face (shapes.cpp).
+void add_stock_cut(const machine::StockResult& st, const machine::Scene& scene,
+                   std::vector<Shape>& out);
 // What of the scene has a size of its own (parts, tool setter): the views
 // show all of it.
 void add_scene_extent(const machine::Scene& scene, Box3& extent);

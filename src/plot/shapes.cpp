@@ -1,7 +1,8 @@
 // The scene as generic shapes (polygons and polylines in machine
 // coordinates) that every renderer draws without knowing what they are:
 // trigger and stop planes, parts (boxes, vertical cylinders, spheres,
-// half-spaces; bores and pockets as dashed outlines) and the tool setter.
+// half-spaces; bores and pockets as dashed outlines), the stock (its box,
+// and after a run its deepest cut) and the tool setter.
 //
 // To draw a new kind of scene object (a part, a gauge, a stylus), add one
 // function here that turns it into shapes with an Ink of its own (add the
@@ -316,10 +317,40 @@ void add_scene_extent(const machine::Scene& scene, Box3& extent) {
       }
     }
   }
+  if (const auto& st = scene.probing.stock) {
+    extent.add(v3(st->lo));
+    extent.add(v3(st->hi));
+  }
   if (const auto& ts = scene.probing.tool_setter) {
     extent.add(Vec3{ts->x - ts->radius, ts->y - ts->radius, ts->top - ts->thickness});
     extent.add(Vec3{ts->x + ts->radius, ts->y + ts->radius, ts->top});
   }
+}
+
+void add_stock_cut(const machine::StockResult& st, const machine::Scene& scene,
+                   std::vector<Shape>& out) {
+  if (!scene.probing.stock) return;
+  const auto& spec = *scene.probing.stock;
+  // A staircase per side view: each column of cells at its lowest top. Seen
+  // from above it lies on the box's edge, so only the side views show it.
+  auto profile = [&](const std::vector<double>& edges, const std::vector<double>& lowest,
+                     bool along_x) {
+    Shape s;
+    s.kind = Shape::Kind::kPolyline;
+    s.ink = Ink::kStock;
+    s.in_iso = false;
+    auto at = [&](double u, double z) {
+      return along_x ? Vec3{u, spec.lo.y, z} : Vec3{spec.lo.x, u, z};
+    };
+    for (std::size_t i = 0; i < lowest.size(); ++i) {
+      s.pts.push_back(at(edges[i], lowest[i]));
+      s.pts.push_back(at(edges[i + 1], lowest[i]));
+    }
+    out.push_back(std::move(s));
+  };
+  if (st.removed_mm3 <= 0.0) return;
+  profile(st.x_edges, st.lowest_along_x, true);
+  profile(st.y_edges, st.lowest_along_y, false);
 }
 
 std::vector<Shape> scene_shapes(const machine::Scene& scene, const config::MachineConfig& m,
@@ -341,6 +372,10 @@ std::vector<Shape> scene_shapes(const machine::Scene& scene, const config::Machi
         }
       }
     }
+  }
+  if (const auto& st = scene.probing.stock) {
+    // Its ink has no fill: an outline, with the cut drawn over it.
+    add_box(v3(st->lo), v3(st->hi), Ink::kStock, "stock", out);
   }
   if (const auto& ts = scene.probing.tool_setter) {
     add_cylinder(ts->x, ts->y, ts->radius, ts->top - ts->thickness, ts->top, Ink::kSetter,

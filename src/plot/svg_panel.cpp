@@ -65,6 +65,7 @@ void legend_item(Svg& o, Ink i, double x, double y) {
     case Ink::kPart:
     case Ink::kHole:
     case Ink::kSetter:
+    case Ink::kStock:
       o.add(
           "<rect x=\"{}\" y=\"{}\" width=\"28\" height=\"8\" stroke=\"{}\" fill=\"{}\" "
           "fill-opacity=\"0.15\"{}/>",
@@ -90,7 +91,8 @@ double draw_legend(Svg& o, const PlotModel& m, double x, double y, double w) {
   if (miss) used.push_back(Ink::kMiss);
   if (!m.skips.empty()) used.push_back(Ink::kRest);
   used.push_back(Ink::kStart);
-  for (const Ink i : {Ink::kTrigger, Ink::kStop, Ink::kPart, Ink::kHole, Ink::kSetter}) {
+  for (const Ink i :
+       {Ink::kTrigger, Ink::kStop, Ink::kPart, Ink::kHole, Ink::kSetter, Ink::kStock}) {
     if (std::any_of(m.shapes.begin(), m.shapes.end(), [&](const Shape& s) { return s.ink == i; })) {
       used.push_back(i);
     }
@@ -270,8 +272,9 @@ double draw_skip_card(Svg& o, const PlotModel& m, const SkipMark& s, double x, d
                   : fmt::format("no signal: ran to its end point, stored {}", vars);
   const std::string stop =
       s.ended_by_alarm
-          ? fmt::format("cut short by the alarm: stopped at {} (work) at {} s, {} mm past the latch",
-                        rest, num(s.stop_t, 4), num(s.overtravel_mm))
+          ? fmt::format(
+                "cut short by the alarm: stopped at {} (work) at {} s, {} mm past the latch", rest,
+                num(s.stop_t, 4), num(s.overtravel_mm))
           : fmt::format("rest {} (work) at {} s, {} mm past the latch", rest, num(s.stop_t, 4),
                         num(s.overtravel_mm));
   o.add("<g class=\"skip-card\" data-skip=\"{}\">\n", s.index);

@@ -271,6 +271,12 @@ std::string to_json(const ReportInput& in) {
   j["messages"] = r.messages;
   j["warnings"] = warnings_json(r, in.program);
   j["block_times"] = block_times_json(r, in.program);
+  if (r.stock) {
+    // Only with a [stock] in the scene: what the cutting moves removed.
+    ordered_json st;
+    st["removed_volume_mm3"] = clean(r.stock->removed_mm3);
+    j["stock"] = st;
+  }
   if (in.machine != nullptr) j["machine"] = in.machine->name;
   // Units of the numbers above: work positions and stored variables in the
   // program's units (G20/G21 at the end), machine positions in mm, times in s.

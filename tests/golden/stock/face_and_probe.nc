@@ -1,0 +1,1 @@
+../../../examples/stock/face_and_probe.nc
