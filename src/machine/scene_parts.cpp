@@ -604,15 +604,15 @@ constexpr double kMaxStockCells = 4e6;
 
 Result<StockSpec> parse_stock(const toml::table& t, const Reader& rd, const Frames& frames) {
   const auto origin = rd.origin;
-  auto k = check_keys(t, {"frame", "lo", "hi", "resolution"}, origin, "[stock]");
+  auto k = check_keys(t, {"frame", "min", "max", "resolution"}, origin, "[stock]");
   if (!k) return std::unexpected(k.error());
-  auto lo = rd.vec<3>(t, "lo");
+  auto lo = rd.vec<3>(t, "min");
   if (!lo) return std::unexpected(lo.error());
-  auto hi = rd.vec<3>(t, "hi");
+  auto hi = rd.vec<3>(t, "max");
   if (!hi) return std::unexpected(hi.error());
   for (std::size_t i = 0; i < 3; ++i) {
     if (!((*hi)[i] > (*lo)[i])) {
-      return config_error(*t.get("hi"), origin, "[stock]: hi must exceed lo on every axis");
+      return config_error(*t.get("max"), origin, "[stock]: max must exceed min on every axis");
     }
   }
   auto res = rd.number(t, "resolution", 1e-3, 100.0, 0.5);

@@ -208,7 +208,7 @@ Result<Scene> load(const std::string& text) {
 }
 
 TEST(SceneStock, LoadsInAWorkFrame) {
-  auto s = load("[stock]\nframe = \"G54\"\nlo = [0, 0, -20]\nhi = [60, 40, 0]\n");
+  auto s = load("[stock]\nframe = \"G54\"\nmin = [0, 0, -20]\nmax = [60, 40, 0]\n");
   ASSERT_TRUE(s) << s.error().detail;
   ASSERT_TRUE(s->probing.stock);
   EXPECT_EQ(s->probing.stock->lo, (Vec3{100, 50, -220}));
@@ -217,7 +217,7 @@ TEST(SceneStock, LoadsInAWorkFrame) {
   // A frame that only moves it is accepted as well.
   auto moved = load(
       "[[frame]]\nname = \"vise\"\nbase = \"G54\"\norigin = [5, 0, 0]\n"
-      "[stock]\nframe = \"vise\"\nlo = [0, 0, -20]\nhi = [60, 40, 0]\nresolution = 0.25\n");
+      "[stock]\nframe = \"vise\"\nmin = [0, 0, -20]\nmax = [60, 40, 0]\nresolution = 0.25\n");
   ASSERT_TRUE(moved) << moved.error().detail;
   EXPECT_EQ(moved->probing.stock->lo, (Vec3{105, 50, -220}));
   EXPECT_EQ(moved->probing.stock->resolution, 0.25);
@@ -238,17 +238,17 @@ TEST(SceneStock, RefusesWhatCannotBe) {
   // A turned frame: the cells are axis-aligned (at the frame key).
   expect_error(
       "[[frame]]\nname = \"vise\"\nrotation = 2\n"
-      "[stock]\nframe = \"vise\"\nlo = [0, 0, -20]\nhi = [60, 40, 0]\n",
+      "[stock]\nframe = \"vise\"\nmin = [0, 0, -20]\nmax = [60, 40, 0]\n",
       5, 9);
   // More than 4 million cells: at the resolution.
-  expect_error("[stock]\nlo = [0, 0, -20]\nhi = [1000, 1000, 0]\nresolution = 0.1\n", 4, 14);
-  expect_error("[stock]\nlo = [-1e6, -1e6, -1]\nhi = [1e6, 1e6, 0]\nresolution = 0.001\n", 4);
-  expect_error("[stock]\nlo = [0, 0, 0]\nhi = [10, 10, 0]\n", 3);                // no height
-  expect_error("[stock]\nlo = [0, 0]\nhi = [10, 10, 5]\n", 2);                   // 2 numbers
-  expect_error("[stock]\nlo = [0, 0, 0]\nhi = [1, 1, 1]\nresolution = 0\n", 4);  // too fine
-  expect_error("[stock]\nlo = [0, 0, 0]\nhi = [1, 1, 1]\nmaterial = \"steel\"\n", 4);
-  expect_error("[stock]\nhi = [1, 1, 1]\n", 1);                    // no lo
-  expect_error("[[stock]]\nlo = [0, 0, 0]\nhi = [1, 1, 1]\n", 1);  // one table, not an array
+  expect_error("[stock]\nmin = [0, 0, -20]\nmax = [1000, 1000, 0]\nresolution = 0.1\n", 4, 14);
+  expect_error("[stock]\nmin = [-1e6, -1e6, -1]\nmax = [1e6, 1e6, 0]\nresolution = 0.001\n", 4);
+  expect_error("[stock]\nmin = [0, 0, 0]\nmax = [10, 10, 0]\n", 3);                // no height
+  expect_error("[stock]\nmin = [0, 0]\nmax = [10, 10, 5]\n", 2);                   // 2 numbers
+  expect_error("[stock]\nmin = [0, 0, 0]\nmax = [1, 1, 1]\nresolution = 0\n", 4);  // too fine
+  expect_error("[stock]\nmin = [0, 0, 0]\nmax = [1, 1, 1]\nmaterial = \"steel\"\n", 4);
+  expect_error("[stock]\nmax = [1, 1, 1]\n", 1);                     // no min
+  expect_error("[[stock]]\nmin = [0, 0, 0]\nmax = [1, 1, 1]\n", 1);  // one table, not an array
 }
 
 }  // namespace
