@@ -11,7 +11,7 @@
 #include "interpreter/interpreter.hpp"
 #include "kernel/kernel.hpp"
 #include "machine/plant.hpp"
-#include "machine/simulator.hpp"
+#include "sim/simulator.hpp"
 
 namespace {
 
@@ -23,7 +23,7 @@ struct World {
   config::Parameters params{&dialect};
 };
 
-class NullSink final : public interp::CommandSink {
+class NullSink final : public canon::CommandSink {
  public:
   void emit(const canon::Stamped& c) override {
     benchmark::DoNotOptimize(&c);
@@ -96,7 +96,7 @@ void BM_KernelTick(benchmark::State& state) {
   t.axis = 2;
   t.at = -1e5;
   scene.triggers.push_back(t);
-  kernel::Kernel k(machine::kernel_config(w.machine));
+  kernel::Kernel k(kernel::kernel_config(w.machine));
   machine::Plant plant(w.machine, scene, k.clock());
   k.set_position(AxisVec{});
   plant.reset(AxisVec{});
@@ -129,7 +129,7 @@ void BM_Simulate(benchmark::State& state) {
   machine::Scene scene;
   long ticks = 0;
   for (auto _ : state) {
-    machine::Simulator sim(w.machine, w.dialect, w.params, scene);
+    sim::Simulator sim(w.machine, w.dialect, w.params, scene);
     interp::Setup setup;
     setup.machine = &w.machine;
     setup.dialect = &w.dialect;

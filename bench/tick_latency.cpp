@@ -11,7 +11,7 @@
 #include "config/machine_config.hpp"
 #include "kernel/kernel.hpp"
 #include "machine/plant.hpp"
-#include "machine/simulator.hpp"
+#include "kernel/kernel_config.hpp"
 
 int main(int argc, char** argv) {
   using namespace skipnc;
@@ -19,7 +19,7 @@ int main(int argc, char** argv) {
   auto m = config::builtin_machine("mill3");
   if (!m) return 2;
   machine::Scene scene;
-  kernel::Kernel k(machine::kernel_config(*m));
+  kernel::Kernel k(kernel::kernel_config(*m));
   machine::Plant plant(*m, scene, k.clock());
   k.set_position(AxisVec{});
   plant.reset(AxisVec{});

@@ -34,10 +34,10 @@ class StartError : public std::runtime_error {
 }
 
 // The trace as columns, named as the CSV trace's header.
-class ColumnTrace final : public machine::TraceSink {
+class ColumnTrace final : public sim::TraceSink {
  public:
   explicit ColumnTrace(const config::MachineConfig& m) : m_(m) {}
-  void row(const machine::TraceRow& r) override {
+  void row(const sim::TraceRow& r) override {
     const int n = m_.axis_count();
     if (cols_.empty()) {
       names_ = {"time_s", "line", "feed_mm_min"};

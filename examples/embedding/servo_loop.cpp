@@ -17,22 +17,16 @@
 #include "config/machine_config.hpp"
 #include "interpreter/interpreter.hpp"
 #include "kernel/kernel.hpp"
-#include "machine/simulator.hpp"  // kernel_config(): limits from a machine file
+#include "kernel/kernel_config.hpp"  // kernel_config(): limits from a machine file
 
 namespace {
 
 // Routes the interpreter's motion commands to the kernel.
-class ToKernel final : public skipnc::interp::CommandSink {
+class ToKernel final : public skipnc::canon::CommandSink {
  public:
   explicit ToKernel(skipnc::kernel::Kernel& k) : k_(k) {}
   void emit(const skipnc::canon::Stamped& c) override {
-    if (std::holds_alternative<skipnc::canon::Rapid>(c.cmd) ||
-        std::holds_alternative<skipnc::canon::Feed>(c.cmd) ||
-        std::holds_alternative<skipnc::canon::Arc>(c.cmd) ||
-        std::holds_alternative<skipnc::canon::Dwell>(c.cmd) ||
-        std::holds_alternative<skipnc::canon::Skip>(c.cmd)) {
-      k_.push(c);
-    }
+    if (skipnc::canon::is_motion(c.cmd)) k_.push(c);
   }
 
  private:
@@ -64,7 +58,7 @@ int main() {
   if (!interpreter) return 2;
   interp::Interpreter& in = **interpreter;
 
-  kernel::Kernel k(machine::kernel_config(*machine));
+  kernel::Kernel k(kernel::kernel_config(*machine));
   k.set_position(AxisVec{});
   ToKernel sink(k);
 

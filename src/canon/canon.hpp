@@ -130,4 +130,20 @@ struct Stamped {
   std::int32_t n = -1;  // the block's N number, -1 when it has none
 };
 
+// Whether a command moves the axes (and so goes to the motion kernel): the
+// moves, dwells (timed in the kernel) and skip blocks.
+constexpr bool is_motion(const Command& c) noexcept {
+  return std::holds_alternative<Rapid>(c) || std::holds_alternative<Feed>(c) ||
+         std::holds_alternative<Arc>(c) || std::holds_alternative<Dwell>(c) ||
+         std::holds_alternative<Skip>(c);
+}
+
+// Where canonical commands go: the motion kernel's feeder, a printer, a
+// plot recorder, a safety check in front of another sink.
+class CommandSink {
+ public:
+  virtual ~CommandSink() = default;
+  virtual void emit(const Stamped& cmd) = 0;
+};
+
 }  // namespace skipnc::canon

@@ -16,7 +16,7 @@
 #include "cli/session.hpp"
 #include "config/skip_inputs.hpp"
 #include "core/embedded.hpp"
-#include "machine/simulator.hpp"
+#include "sim/simulator.hpp"
 #include "report/report.hpp"
 
 namespace skipnc::cli {
@@ -47,7 +47,7 @@ std::string shorten(const std::string& text, std::size_t width) {
 }
 
 // One line per warning: `warning (code): file:line: text`.
-void print_warnings(std::FILE* f, const machine::RunResult& r) {
+void print_warnings(std::FILE* f, const sim::RunResult& r) {
   for (const auto& w : r.warnings) {
     fmt::print(f, "  warning ({}): {}: {}{}\n", w.code,
                report::where(r.contexts, w.context, w.line), w.text,
@@ -55,18 +55,18 @@ void print_warnings(std::FILE* f, const machine::RunResult& r) {
   }
 }
 
-void print_summary(std::FILE* f, const machine::RunResult& r, const Session& s,
+void print_summary(std::FILE* f, const sim::RunResult& r, const Session& s,
                    const std::string& program) {
   const auto& m = s.machine;
   fmt::print(f, "{} on {} ({}): ", program, m.name, s.dialect.name);
   switch (r.status) {
-    case machine::RunStatus::kCompleted:
+    case sim::RunStatus::kCompleted:
       fmt::print(f, "completed");
       break;
-    case machine::RunStatus::kAlarm:
+    case sim::RunStatus::kAlarm:
       fmt::print(f, "ALARM");
       break;
-    case machine::RunStatus::kInterrupted:
+    case sim::RunStatus::kInterrupted:
       fmt::print(f, "interrupted");
       break;
   }
@@ -108,7 +108,7 @@ void print_summary(std::FILE* f, const machine::RunResult& r, const Session& s,
 
 struct Outcome {
   int code = 0;
-  machine::RunResult result;
+  sim::RunResult result;
 };
 
 // Runs a loaded session; writes report and trace. Returns the exit code.
@@ -143,8 +143,8 @@ int execute(const RunArgs& a, Session& s, interp::Setup setup, bool explain) {
     // limit) stops the run.
     trace->on_stop([] { run_stop().request(StopReason::kOutput); });
   }
-  machine::Simulator sim(s.machine, s.dialect, *s.params, s.scene);
-  machine::RunOptions opts;
+  sim::Simulator sim(s.machine, s.dialect, *s.params, s.scene);
+  sim::RunOptions opts;
   opts.trace = trace.get();
   opts.interrupt = &run_stop().flag;
   std::unique_ptr<PlotCapture> plot;
@@ -176,8 +176,8 @@ int execute(const RunArgs& a, Session& s, interp::Setup setup, bool explain) {
   auto output_error = [&](const Error& e) {
     std::cerr << "skipnc: " << e.detail << "\n";
     output_failed = true;
-    if (in.result.status == machine::RunStatus::kCompleted) {
-      in.result.status = machine::RunStatus::kAlarm;
+    if (in.result.status == sim::RunStatus::kCompleted) {
+      in.result.status = sim::RunStatus::kAlarm;
       in.result.alarm = e;
     }
   };
@@ -191,13 +191,13 @@ int execute(const RunArgs& a, Session& s, interp::Setup setup, bool explain) {
       output_error(w.error());
     }
   }
-  int rc = in.result.status == machine::RunStatus::kCompleted && !output_failed ? 0 : 1;
+  int rc = in.result.status == sim::RunStatus::kCompleted && !output_failed ? 0 : 1;
   // --expect: checked on the run's outcome; variables as the control holds them.
   std::vector<std::string> failed;
   if (!expects.empty()) {
     ObservedRun got;
-    got.status = in.result.status == machine::RunStatus::kCompleted     ? "completed"
-                 : in.result.status == machine::RunStatus::kInterrupted ? "interrupted"
+    got.status = in.result.status == sim::RunStatus::kCompleted     ? "completed"
+                 : in.result.status == sim::RunStatus::kInterrupted ? "interrupted"
                                                                         : "alarm";
     if (in.result.alarm) got.alarm = report::view_alarm(*in.result.alarm, &s.dialect).number;
     for (const auto& v : expect_vars) {
@@ -243,7 +243,7 @@ interp::Setup make_setup(const RunArgs& a, Session& s) {
   return setup;
 }
 
-class PrintSink final : public interp::CommandSink {
+class PrintSink final : public canon::CommandSink {
  public:
   explicit PrintSink(const config::MachineConfig& m) {
     axes_.count = m.axis_count();
@@ -472,7 +472,7 @@ int demo_command(const RunArgs& args) {
   setup.program_path.clear();
   setup.program_text = std::string(prog->content);
   a.vars = {"100", "101", "102", "5223"};
-  machine::Simulator sim(s.machine, s.dialect, *s.params, s.scene);
+  sim::Simulator sim(s.machine, s.dialect, *s.params, s.scene);
   std::cout
       << "skipnc demo: a touch probe finds the top of a part on the built-in mill3 (fanuc).\n"
       << "The scene puts the part's top face at Z-23.8 (machine); the probe is wired to X0.4.\n\n"
@@ -495,7 +495,7 @@ int demo_command(const RunArgs& args) {
     if (!t) return start_failure(a, t.error(), &s);
     trace->on_stop([] { run_stop().request(StopReason::kOutput); });
   }
-  machine::RunOptions opts;
+  sim::RunOptions opts;
   opts.trace = trace.get();
   opts.interrupt = &run_stop().flag;
   std::unique_ptr<PlotCapture> plot;
@@ -531,7 +531,7 @@ int demo_command(const RunArgs& args) {
   print_warnings(stdout, r);
   for (const auto& m : r.messages) fmt::print("  message: {}\n", m);
   fmt::print("\n{} after {:.3f} s of machine time; final position {}\n",
-             r.status == machine::RunStatus::kCompleted ? "Completed" : "Stopped by an alarm",
+             r.status == sim::RunStatus::kCompleted ? "Completed" : "Stopped by an alarm",
              r.time_s, fmt_axes(r.final_work, s.machine));
   if (r.alarm) std::cout << "  " << describe(*r.alarm, &s.dialect) << "\n";
   if (!a.report.empty()) {
@@ -555,7 +555,7 @@ int demo_command(const RunArgs& args) {
   }
   std::cout
       << "\nTry it yourself: skipnc run PROGRAM --scene SCENE --report report.json --var 5063\n";
-  return r.status == machine::RunStatus::kCompleted && !output_failed ? 0 : 1;
+  return r.status == sim::RunStatus::kCompleted && !output_failed ? 0 : 1;
 }
 
 }  // namespace skipnc::cli

@@ -89,7 +89,7 @@ int internal_failure(const RunArgs* a, std::string_view what) noexcept {
       in.program = a->program;
       in.dialect = a->dialect;
       in.dialect_table = report_dialect(*a, nullptr);
-      in.result.status = machine::RunStatus::kAlarm;
+      in.result.status = sim::RunStatus::kAlarm;
       in.result.alarm = e;
       (void)write_report(*a, report::to_json(in));
     }
@@ -147,20 +147,20 @@ Result<void> check_outputs(const RunArgs& a, const Session& s) {
   return {};
 }
 
-void explain_stop(machine::RunResult& r, const report::CsvTrace* trace,
+void explain_stop(sim::RunResult& r, const report::CsvTrace* trace,
                   const config::MachineConfig& m) {
-  if (r.status != machine::RunStatus::kInterrupted || !r.alarm) return;
+  if (r.status != sim::RunStatus::kInterrupted || !r.alarm) return;
   const RunStop& stop = run_stop();
   switch (stop.why()) {
     case StopReason::kCpuLimit:
-      r.status = machine::RunStatus::kAlarm;
+      r.status = sim::RunStatus::kAlarm;
       r.alarm->id = AlarmId::kCpuLimit;
       r.alarm->detail = "the run used more than limits.max_cpu_s (" +
                         std::to_string(m.limits.max_cpu_s) + " s) of processor time";
       break;
     case StopReason::kOutput:
       if (trace != nullptr && trace->error()) {
-        r.status = machine::RunStatus::kAlarm;
+        r.status = sim::RunStatus::kAlarm;
         const SourceLoc where = r.alarm->loc;
         r.alarm = *trace->error();
         r.alarm->loc = where;

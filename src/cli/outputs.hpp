@@ -10,7 +10,7 @@
 #include "cli/commands.hpp"
 #include "cli/guard.hpp"
 #include "cli/session.hpp"
-#include "machine/simulator.hpp"
+#include "sim/simulator.hpp"
 #include "report/report.hpp"
 
 namespace skipnc::cli {
@@ -44,7 +44,7 @@ int internal_failure(const RunArgs* a, std::string_view what) noexcept;
 // (run_stop()): the alarm that says why. The processor-time limit is
 // cpu_limit, an output that failed is its own error (file_access,
 // trace_limit), a signal stays `interrupted` and names the signal.
-void explain_stop(machine::RunResult& r, const report::CsvTrace* trace,
+void explain_stop(sim::RunResult& r, const report::CsvTrace* trace,
                   const config::MachineConfig& m);
 
 // Flushes standard output; an error when anything written to it was lost

@@ -35,14 +35,14 @@ Result<void> check_plot_files(const std::vector<std::string>& files) {
   return {};
 }
 
-PlotCapture::PlotCapture(const config::MachineConfig& m, machine::RunOptions& opts)
+PlotCapture::PlotCapture(const config::MachineConfig& m, sim::RunOptions& opts)
     : rec_(m), tee_(opts.trace, &rec_) {
   opts.trace = &tee_;
   opts.commands = &rec_;
 }
 
 Result<void> PlotCapture::write(const std::vector<std::string>& files, const Session& s,
-                                const machine::RunResult& r, const Output& out) {
+                                const sim::RunResult& r, const Output& out) {
   rec_.finish();
   plot::PlotInput in;
   in.program = out.program;

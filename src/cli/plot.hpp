@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "cli/session.hpp"
-#include "machine/simulator.hpp"
+#include "sim/simulator.hpp"
 #include "plot/recorder.hpp"
 
 namespace skipnc::cli {
@@ -24,7 +24,7 @@ struct RunArgs;
 // and writes the pictures after the run.
 class PlotCapture {
  public:
-  PlotCapture(const config::MachineConfig& m, machine::RunOptions& opts);
+  PlotCapture(const config::MachineConfig& m, sim::RunOptions& opts);
   PlotCapture(const PlotCapture&) = delete;
   PlotCapture& operator=(const PlotCapture&) = delete;
 
@@ -34,7 +34,7 @@ class PlotCapture {
     std::vector<std::pair<std::string, std::optional<double>>> variables;
   };
   [[nodiscard]] Result<void> write(const std::vector<std::string>& files, const Session& s,
-                                   const machine::RunResult& r, const Output& out);
+                                   const sim::RunResult& r, const Output& out);
 
  private:
   plot::Recorder rec_;

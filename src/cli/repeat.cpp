@@ -17,7 +17,7 @@
 #include "cli/session.hpp"
 #include "core/utf8.hpp"
 #include "interpreter/variables.hpp"
-#include "machine/simulator.hpp"
+#include "sim/simulator.hpp"
 #include "report/report.hpp"
 
 namespace skipnc::cli {
@@ -172,7 +172,7 @@ int repeat_command(const RunArgs& a) {
   // finished, says "interrupted", and the exit status is 1 (was: the signal
   // was not heard until every run had ended).
   bool interrupted = false;
-  machine::RunOptions opts;
+  sim::RunOptions opts;
   opts.interrupt = &run_stop().flag;
   for (int run = 0; run <= runs; ++run) {
     if (run_stop().flag.load(std::memory_order_relaxed)) {
@@ -189,15 +189,15 @@ int repeat_command(const RunArgs& a) {
         scene.probing.probe->seed = seed0 + static_cast<std::uint64_t>(run - 1);
       }
     }
-    machine::Simulator sim(s.machine, s.dialect, *s.params, scene);
+    sim::Simulator sim(s.machine, s.dialect, *s.params, scene);
     auto res = sim.run(setup, opts);
     if (!res) return start_failure(a, res.error(), &s);
-    if (res->status == machine::RunStatus::kInterrupted) {
+    if (res->status == sim::RunStatus::kInterrupted) {
       interrupted = true;
       runs = run > 0 ? run - 1 : 0;  // this run is cut short: not counted
       break;
     }
-    if (res->status != machine::RunStatus::kCompleted) {
+    if (res->status != sim::RunStatus::kCompleted) {
       if (!nominal) ++alarms;
       if (first_alarm.empty() && res->alarm) {
         first_alarm = fmt::format("run {}: {}", run, describe(*res->alarm, &s.dialect));

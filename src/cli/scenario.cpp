@@ -76,7 +76,7 @@ Result<void> apply_offsets(config::MachineConfig& m, const Variation& v) {
 }  // namespace
 
 Result<RunOutcome> run_variation(const Session& s, const RunRequest& rq, const Variation& v,
-                                 machine::TraceSink* trace, const std::atomic<bool>* interrupt) {
+                                 sim::TraceSink* trace, const std::atomic<bool>* interrupt) {
   config::MachineConfig m = s.machine;
   if (auto r = apply_offsets(m, v); !r) return std::unexpected(r.error());
   config::Parameters params = *s.params;
@@ -112,8 +112,8 @@ Result<RunOutcome> run_variation(const Session& s, const RunRequest& rq, const V
   if (setup.program_name.empty()) setup.program_name = "program";
   setup.include_dirs = rq.include_dirs;
 
-  machine::Simulator sim(m, s.dialect, params, scene);
-  machine::RunOptions opts;
+  sim::Simulator sim(m, s.dialect, params, scene);
+  sim::RunOptions opts;
   opts.trace = trace;
   opts.interrupt = interrupt;
   auto res = sim.run(setup, opts);
@@ -140,7 +140,7 @@ Result<RunOutcome> run_variation(const Session& s, const RunRequest& rq, const V
     out.alarm_text = describe(*in.result.alarm, &s.dialect);
   }
   out.variables = std::move(in.variables);
-  out.exit_code = in.result.status == machine::RunStatus::kCompleted ? 0 : 1;
+  out.exit_code = in.result.status == sim::RunStatus::kCompleted ? 0 : 1;
   return out;
 }
 

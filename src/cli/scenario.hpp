@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "cli/session.hpp"
-#include "machine/simulator.hpp"
+#include "sim/simulator.hpp"
 #include "report/report.hpp"
 
 namespace skipnc::cli {
@@ -55,7 +55,7 @@ struct RunRequest {
 // the simulator's program store, so everything that shows it is written here.
 struct RunOutcome {
   std::string report_json;  // report::to_json, as `skipnc run --report`
-  machine::RunStatus status = machine::RunStatus::kCompleted;
+  sim::RunStatus status = sim::RunStatus::kCompleted;
   int alarm = 0;           // the dialect's number, 0 without an alarm
   std::string alarm_text;  // describe(): "file:line:column: alarm CODE (N): message"
   double time_s = 0.0;     // simulated
@@ -68,7 +68,7 @@ struct RunOutcome {
 // (no persistent variables, no DPRNT file).
 [[nodiscard]] Result<RunOutcome> run_variation(const Session& s, const RunRequest& rq,
                                                const Variation& v,
-                                               machine::TraceSink* trace = nullptr,
+                                               sim::TraceSink* trace = nullptr,
                                                const std::atomic<bool>* interrupt = nullptr);
 
 // Reads a variable file: one "#<n> = <value>" per line, ';' comments (the

@@ -187,13 +187,13 @@ std::string relative_to(const fs::path& dir, const std::string& p) {
   return (dir / p).lexically_normal().string();
 }
 
-std::string status_name(machine::RunStatus s) {
+std::string status_name(sim::RunStatus s) {
   switch (s) {
-    case machine::RunStatus::kCompleted:
+    case sim::RunStatus::kCompleted:
       return "completed";
-    case machine::RunStatus::kAlarm:
+    case sim::RunStatus::kAlarm:
       return "alarm";
-    case machine::RunStatus::kInterrupted:
+    case sim::RunStatus::kInterrupted:
       return "interrupted";
   }
   return "alarm";

@@ -59,11 +59,8 @@ struct Warning {
 inline constexpr std::size_t kMaxWarnings = 1000;
 void add_warning(std::vector<Warning>& list, Warning w);
 
-class CommandSink {
- public:
-  virtual ~CommandSink() = default;
-  virtual void emit(const canon::Stamped& cmd) = 0;
-};
+// The interpreter emits canonical commands into a canon::CommandSink.
+using canon::CommandSink;
 
 // What the motion side reports at a synchronisation point.
 struct SyncState {

@@ -427,13 +427,13 @@ PlotModel build_model(const PlotInput& in) {
   pm.time_s = r.time_s;
   pm.periods = rec.periods_seen();
   switch (r.status) {
-    case machine::RunStatus::kCompleted:
+    case sim::RunStatus::kCompleted:
       pm.status = "completed";
       break;
-    case machine::RunStatus::kAlarm:
+    case sim::RunStatus::kAlarm:
       pm.status = "alarm";
       break;
-    case machine::RunStatus::kInterrupted:
+    case sim::RunStatus::kInterrupted:
       pm.status = "interrupted";
       break;
   }

@@ -18,7 +18,7 @@
 #include "config/dialect.hpp"
 #include "config/machine_config.hpp"
 #include "machine/scene.hpp"
-#include "machine/simulator.hpp"
+#include "sim/simulator.hpp"
 #include "plot/recorder.hpp"
 
 namespace skipnc::plot {
@@ -206,7 +206,7 @@ struct PlotInput {
   const config::MachineConfig* machine = nullptr;
   const config::Dialect* dialect = nullptr;
   const machine::Scene* scene = nullptr;
-  const machine::RunResult* result = nullptr;
+  const sim::RunResult* result = nullptr;
   const Recorder* recorder = nullptr;
   std::vector<std::pair<std::string, std::optional<double>>> variables;
   bool x_in_diameter = false;  // a lathe's X programmed in diameter (1006#3)
@@ -219,7 +219,7 @@ std::vector<Shape> scene_shapes(const machine::Scene& scene, const config::Machi
                                 const std::array<int, 3>& xyz, const Box3& extent);
 // The stock's deepest cut at the end of the run, in the side views: along X
 // on its front face, along Y on its left face (shapes.cpp).
-void add_stock_cut(const machine::StockResult& st, const machine::Scene& scene,
+void add_stock_cut(const sim::StockResult& st, const machine::Scene& scene,
                    std::vector<Shape>& out);
 // What of the scene has a size of its own (parts, tool setter): the views
 // show all of it.

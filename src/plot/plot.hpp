@@ -2,8 +2,8 @@
 // from one PlotModel (model.hpp), which is built from the run's result, the
 // scene, the machine and a Recorder that watched the run (recorder.hpp).
 //
-//   plot::Recorder rec(machine);                // a machine::TraceSink and a command tap
-//   opts.trace = &rec; opts.commands = &rec;    // machine::RunOptions
+//   plot::Recorder rec(machine);                // a sim::TraceSink and a command tap
+//   opts.trace = &rec; opts.commands = &rec;    // sim::RunOptions
 //   ... run ...; rec.finish();
 //   auto model = plot::build_model({...});
 //   std::string svg = plot::to_svg(model), html = plot::to_html(model);

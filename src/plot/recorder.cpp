@@ -197,7 +197,7 @@ void Recorder::thin() {
   reset_sleeve(kept_.back());
 }
 
-void Recorder::row(const machine::TraceRow& r) {
+void Recorder::row(const sim::TraceRow& r) {
   ++rows_;
   Sample cur;
   cur.t = r.time_s;

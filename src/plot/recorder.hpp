@@ -21,7 +21,7 @@
 #include "config/machine_config.hpp"
 #include "core/axes.hpp"
 #include "interpreter/interpreter.hpp"
-#include "machine/simulator.hpp"
+#include "sim/simulator.hpp"
 
 namespace skipnc::plot {
 
@@ -81,11 +81,11 @@ struct Decimation {
   int keep_around_edge = 6;         // periods kept whole before and after a signal edge
 };
 
-class Recorder final : public machine::TraceSink, public interp::CommandSink {
+class Recorder final : public sim::TraceSink, public canon::CommandSink {
  public:
   explicit Recorder(const config::MachineConfig& m, Decimation d = {});
 
-  void row(const machine::TraceRow& r) override;
+  void row(const sim::TraceRow& r) override;
   void emit(const canon::Stamped& c) override;
   // Keeps the last period seen (call once the run has ended).
   void finish();
@@ -138,17 +138,17 @@ class Recorder final : public machine::TraceSink, public interp::CommandSink {
 };
 
 // Sends each period to two sinks (the CSV trace and a plot recorder).
-class TeeTrace final : public machine::TraceSink {
+class TeeTrace final : public sim::TraceSink {
  public:
-  TeeTrace(machine::TraceSink* a, machine::TraceSink* b) : a_(a), b_(b) {}
-  void row(const machine::TraceRow& r) override {
+  TeeTrace(sim::TraceSink* a, sim::TraceSink* b) : a_(a), b_(b) {}
+  void row(const sim::TraceRow& r) override {
     if (a_ != nullptr) a_->row(r);
     if (b_ != nullptr) b_->row(r);
   }
 
  private:
-  machine::TraceSink* a_;
-  machine::TraceSink* b_;
+  sim::TraceSink* a_;
+  sim::TraceSink* b_;
 };
 
 }  // namespace skipnc::plot

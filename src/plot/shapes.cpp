@@ -327,7 +327,7 @@ void add_scene_extent(const machine::Scene& scene, Box3& extent) {
   }
 }
 
-void add_stock_cut(const machine::StockResult& st, const machine::Scene& scene,
+void add_stock_cut(const sim::StockResult& st, const machine::Scene& scene,
                    std::vector<Shape>& out) {
   if (!scene.probing.stock) return;
   const auto& spec = *scene.probing.stock;

@@ -126,7 +126,7 @@ void place_json(ordered_json& o, const std::vector<interp::CallContext>& cs,
 
 // Structured warnings (docs/cli.md): what the run did that is not an alarm
 // but may not be what the program meant.
-ordered_json warnings_json(const machine::RunResult& r, const std::string& program) {
+ordered_json warnings_json(const sim::RunResult& r, const std::string& program) {
   ordered_json out = ordered_json::array();
   for (const auto& w : r.warnings) {
     ordered_json o;
@@ -143,7 +143,7 @@ ordered_json warnings_json(const machine::RunResult& r, const std::string& progr
 // order the places first ran; a loop's block adds its runs. At most
 // kMaxBlockTimes places are listed (a CAM program of 100 000 lines still has
 // its cycle time and its first places).
-ordered_json block_times_json(const machine::RunResult& r, const std::string& program) {
+ordered_json block_times_json(const sim::RunResult& r, const std::string& program) {
   constexpr std::size_t kMaxBlockTimes = 10000;
   ordered_json times;
   times["cycle_time"] = clean(r.time_s);
@@ -152,7 +152,7 @@ ordered_json block_times_json(const machine::RunResult& r, const std::string& pr
   times["listed"] = listed;
   ordered_json blocks = ordered_json::array();
   for (std::size_t i = 0; i < listed; ++i) {
-    const machine::BlockTime& b = r.block_times[i];
+    const sim::BlockTime& b = r.block_times[i];
     ordered_json o;
     place_json(o, r.contexts, program, b.context, b.line, -1, false);
     o["runs"] = b.runs;
@@ -190,11 +190,11 @@ std::string to_json(const ReportInput& in) {
   j["format"] = "skipnc-report/1";
   j["program"] = in.program;
   j["dialect"] = in.dialect;
-  const machine::RunResult& r = in.result;
+  const sim::RunResult& r = in.result;
   const Error* err = in.start_error ? &*in.start_error : (r.alarm ? &*r.alarm : nullptr);
   j["status"] = in.start_error                                 ? "alarm"
-                : r.status == machine::RunStatus::kCompleted   ? "completed"
-                : r.status == machine::RunStatus::kInterrupted ? "interrupted"
+                : r.status == sim::RunStatus::kCompleted   ? "completed"
+                : r.status == sim::RunStatus::kInterrupted ? "interrupted"
                                                                : "alarm";
   if (err != nullptr) {
     const AlarmView v = view_alarm(*err, in.dialect_table);
@@ -334,7 +334,7 @@ void CsvTrace::flush_buffer() {
   }
 }
 
-void CsvTrace::header(const machine::TraceRow& r) {
+void CsvTrace::header(const sim::TraceRow& r) {
   buf_ += "time_s,line,file,feed_mm_min";
   for (const char* kind : {"cmd", "act", "ferr", "torque"}) {
     for (const auto& a : m_.axes) {
@@ -405,7 +405,7 @@ char* trace_number(char* p, double v) noexcept {
 
 }  // namespace
 
-void CsvTrace::row(const machine::TraceRow& r) {
+void CsvTrace::row(const sim::TraceRow& r) {
   if (!opened_ || error_) return;
   if (every_ > 1 && r.tick % every_ != 0) return;
   if (!header_done_) {

@@ -12,7 +12,7 @@
 #include "config/dialect.hpp"
 #include "config/machine_config.hpp"
 #include "core/file.hpp"
-#include "machine/simulator.hpp"
+#include "sim/simulator.hpp"
 
 namespace skipnc::report {
 
@@ -21,7 +21,7 @@ struct ReportInput {
   std::string dialect;
   const config::MachineConfig* machine = nullptr;  // null when the run could not start
   const config::Dialect* dialect_table = nullptr;  // for alarm numbers
-  machine::RunResult result;
+  sim::RunResult result;
   std::optional<Error> start_error;  // the run could not start
   std::vector<std::pair<std::string, std::optional<double>>> variables;
 };
@@ -56,12 +56,12 @@ double clean(double v) noexcept;
 // `limits.max_trace_bytes` ends the trace: no more rows are written, the
 // stop callback is called once (the run should stop), and finish() returns
 // the error (kFileAccess, or kTraceLimit with the rows up to the limit kept).
-class CsvTrace final : public machine::TraceSink {
+class CsvTrace final : public sim::TraceSink {
  public:
   CsvTrace(std::string path, const config::MachineConfig& m, const machine::Plant* plant_hint);
   ~CsvTrace() override;
   [[nodiscard]] Result<void> open();
-  void row(const machine::TraceRow& r) override;
+  void row(const sim::TraceRow& r) override;
   [[nodiscard]] Result<void> finish();
   void on_stop(std::function<void()> stop) { stop_ = std::move(stop); }
   // --trace-every N: one row for every N servo periods (the periods whose
@@ -71,7 +71,7 @@ class CsvTrace final : public machine::TraceSink {
   const std::optional<Error>& error() const noexcept { return error_; }
 
  private:
-  void header(const machine::TraceRow& r);
+  void header(const sim::TraceRow& r);
   void flush_buffer();
   void fail_with(Error e);
   std::string path_;

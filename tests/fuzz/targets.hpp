@@ -28,7 +28,7 @@
 #include "gcode/source.hpp"
 #include "interpreter/interpreter.hpp"
 #include "machine/scene.hpp"
-#include "machine/simulator.hpp"
+#include "sim/simulator.hpp"
 #include "report/report.hpp"
 
 namespace skipnc::fuzz {
@@ -316,7 +316,7 @@ inline std::string check_parser(std::string_view data) {
 // ---------------------------------------------------------------------------
 // The interpreter alone (as `skipnc canon`), with the statement budget
 
-class NullSink final : public interp::CommandSink {
+class NullSink final : public canon::CommandSink {
  public:
   void emit(const canon::Stamped& c) override {
     ++count;
@@ -405,10 +405,10 @@ inline std::pair<const DialectEnv*, std::string_view> pick_dialect(std::string_v
 inline std::string check_run(const config::MachineConfig& m, const config::Dialect& d,
                              const config::Parameters& p, const machine::Scene& scene,
                              const interp::Setup& setup) {
-  machine::Simulator sim(m, d, p, scene);
+  sim::Simulator sim(m, d, p, scene);
   auto r = sim.run(setup, {});
   if (!r) return {};  // could not start: an error value, nothing ran
-  const machine::RunResult& res = *r;
+  const sim::RunResult& res = *r;
   // The report, as `skipnc run --report` writes it (issue 21: the JSON path
   // is fuzzed too): whatever the program held, valid JSON.
   {
@@ -426,7 +426,7 @@ inline std::string check_run(const config::MachineConfig& m, const config::Diale
     if (!nlohmann::json::accept(report::to_json(in))) return "the report is not valid JSON";
   }
   if (res.ticks > m.limits.max_ticks + 1) return "the run passed its tick budget";
-  if (res.status == machine::RunStatus::kAlarm) {
+  if (res.status == sim::RunStatus::kAlarm) {
     if (!res.alarm) return "alarm status without an alarm";
     if (res.alarm->id == AlarmId::kInternal) return "internal error: " + show_error(*res.alarm);
   }

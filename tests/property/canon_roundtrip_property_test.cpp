@@ -83,16 +83,10 @@ std::string compare(const canon::Command& a, const canon::Command& b, int n) {
   return {};
 }
 
-bool is_motion(const canon::Command& c) {
-  return std::holds_alternative<canon::Rapid>(c) || std::holds_alternative<canon::Feed>(c) ||
-         std::holds_alternative<canon::Arc>(c) || std::holds_alternative<canon::Dwell>(c) ||
-         std::holds_alternative<canon::Skip>(c);
-}
-
 std::vector<canon::Stamped> motion_of(const std::vector<canon::Stamped>& all) {
   std::vector<canon::Stamped> out;
   for (const auto& c : all) {
-    if (is_motion(c.cmd)) out.push_back(c);
+    if (canon::is_motion(c.cmd)) out.push_back(c);
   }
   return out;
 }

@@ -170,7 +170,7 @@ struct Machine {
   }
 };
 
-class Collect final : public interp::CommandSink {
+class Collect final : public canon::CommandSink {
  public:
   void emit(const canon::Stamped& c) override { cmds.push_back(c); }
   std::vector<canon::Stamped> cmds;

@@ -33,7 +33,7 @@
 
 #include "config/skip_inputs.hpp"
 #include "machine/scene.hpp"
-#include "machine/simulator.hpp"
+#include "sim/simulator.hpp"
 #include "property/program_gen.hpp"
 
 namespace skipnc::property {
@@ -85,10 +85,10 @@ RC_GTEST_PROP(SkipStop, StopsWithinTheBrakingDistanceForItsFeed, ()) {
                               num(target[1], 4) + " Z" + num(target[2], 4) + " F" + num(feed, 1) +
                               "\nM30\n";
 
-  machine::Simulator sim(mc, m.dialect, *m.params, *scene);
+  sim::Simulator sim(mc, m.dialect, *m.params, *scene);
   auto run = sim.run(m.setup(program), {});
   RC_ASSERT(run.has_value());
-  RC_ASSERT(run->status == machine::RunStatus::kCompleted);
+  RC_ASSERT(run->status == sim::RunStatus::kCompleted);
   RC_ASSERT(run->skips.size() == 1u);
   const interp::SkipRecord& sk = run->skips.front();
   RC_ASSERT(sk.triggered);

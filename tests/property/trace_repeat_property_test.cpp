@@ -15,16 +15,16 @@
 #include <vector>
 
 #include "machine/scene.hpp"
-#include "machine/simulator.hpp"
+#include "sim/simulator.hpp"
 #include "property/program_gen.hpp"
 
 namespace skipnc::property {
 namespace {
 
 // Every value of every period, as raw bytes.
-class RawTrace final : public machine::TraceSink {
+class RawTrace final : public sim::TraceSink {
  public:
-  void row(const machine::TraceRow& r) override {
+  void row(const sim::TraceRow& r) override {
     put(r.tick);
     put(r.time_s);
     put(*r.commanded);
@@ -64,9 +64,9 @@ void put(std::vector<unsigned char>& out, const T& v) {
 
 Outcome run(const Machine& m, const machine::Scene& scene, const std::string& program) {
   Outcome o;
-  machine::Simulator sim(m.machine, m.dialect, *m.params, scene);
+  sim::Simulator sim(m.machine, m.dialect, *m.params, scene);
   RawTrace trace;
-  machine::RunOptions opts;
+  sim::RunOptions opts;
   opts.trace = &trace;
   auto r = sim.run(m.setup(program), opts);
   if (!r) return o;

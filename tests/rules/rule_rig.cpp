@@ -64,7 +64,7 @@ Outcome Rig::run(const std::string& program) const {
   auto sc = machine::parse_scene(scene_, "rig.scene.toml", *o.machine, *o.dialect, *o.params);
   EXPECT_TRUE(sc) << (sc ? "" : sc.error().detail);
   o.scene = std::make_unique<machine::Scene>(sc ? std::move(*sc) : machine::Scene{});
-  o.sim = std::make_unique<machine::Simulator>(*o.machine, *o.dialect, *o.params, *o.scene);
+  o.sim = std::make_unique<sim::Simulator>(*o.machine, *o.dialect, *o.params, *o.scene);
   interp::Setup setup;
   setup.machine = o.machine.get();
   setup.dialect = o.dialect.get();
@@ -72,7 +72,7 @@ Outcome Rig::run(const std::string& program) const {
   setup.program_text = program;
   setup.program_name = "rule.nc";
   TraceCapture cap;
-  machine::RunOptions opts;
+  sim::RunOptions opts;
   if (trace_) opts.trace = &cap;
   auto r = o.sim->run(setup, opts);
   EXPECT_TRUE(r) << (r ? "" : r.error().detail);

@@ -16,7 +16,7 @@
 #include "config/dialect.hpp"
 #include "config/machine_config.hpp"
 #include "machine/scene.hpp"
-#include "machine/simulator.hpp"
+#include "sim/simulator.hpp"
 
 namespace skipnc::rules {
 
@@ -30,9 +30,9 @@ struct Sample {
   std::vector<bool> signals;
 };
 
-class TraceCapture final : public machine::TraceSink {
+class TraceCapture final : public sim::TraceSink {
  public:
-  void row(const machine::TraceRow& r) override {
+  void row(const sim::TraceRow& r) override {
     Sample s;
     s.t = r.time_s;
     s.line = r.line;
@@ -52,15 +52,15 @@ class TraceCapture final : public machine::TraceSink {
 };
 
 struct Outcome {
-  machine::RunResult r;
+  sim::RunResult r;
   std::unique_ptr<config::Dialect> dialect;  // owned here: the simulator keeps references
   std::unique_ptr<config::MachineConfig> machine;
   std::unique_ptr<config::Parameters> params;
   std::unique_ptr<machine::Scene> scene;
-  std::unique_ptr<machine::Simulator> sim;
+  std::unique_ptr<sim::Simulator> sim;
   std::vector<Sample> trace;
 
-  bool completed() const { return r.status == machine::RunStatus::kCompleted; }
+  bool completed() const { return r.status == sim::RunStatus::kCompleted; }
   // The alarm as the report shows it: number and code of the dialect.
   int alarm_number() const { return r.alarm ? dialect->alarm(r.alarm->id).number : 0; }
   std::string alarm_code() const { return r.alarm ? dialect->alarm(r.alarm->id).code : ""; }

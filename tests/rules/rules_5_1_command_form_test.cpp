@@ -114,7 +114,7 @@ TEST_P(CutterComp, rule_06_g31_in_g41_g42_is_refused_with_the_dialects_alarm) {
       "G41 D1 G1 X10. F100.\n"
       "G31 Z-10. F100.\n"
       "M30\n");
-  EXPECT_EQ(o.r.status, machine::RunStatus::kAlarm);
+  EXPECT_EQ(o.r.status, sim::RunStatus::kAlarm);
   EXPECT_EQ(o.alarm_id(), AlarmId::kSkipInCutterComp);
   EXPECT_EQ(o.alarm_number(), c.number);
   EXPECT_EQ(o.alarm_code(), c.code);

@@ -60,7 +60,7 @@ TEST(Rules, rule_07_mitsubishi_no_f_uses_parameter_1174_skip_f) {
 
 TEST(Rules, rule_08_mitsubishi_no_f_and_skip_f_zero_is_p603) {
   const Outcome o = Rig("mitsubishi").run("G21 G90 G54 G1 X1. F300.\nG31 X20.\nM30\n");
-  EXPECT_EQ(o.r.status, machine::RunStatus::kAlarm);
+  EXPECT_EQ(o.r.status, sim::RunStatus::kAlarm);
   EXPECT_EQ(o.alarm_number(), 603);
   EXPECT_EQ(o.alarm_code(), "P603");
   EXPECT_EQ(o.alarm_line(), 2U);
@@ -190,7 +190,7 @@ TEST(Rules, rule_12_mitsubishi_override_zero_stops_g31) {
 
 TEST(Rules, rule_12_mitsubishi_stroke_end_still_stops_g31) {
   const Outcome o = Rig("mitsubishi").run("G21 G90 G54 G31 X600. F3000.\nM30\n");
-  EXPECT_EQ(o.r.status, machine::RunStatus::kAlarm);
+  EXPECT_EQ(o.r.status, sim::RunStatus::kAlarm);
   EXPECT_EQ(o.alarm_id(), AlarmId::kStrokeLimit);
   EXPECT_LE(o.r.final_machine[0], 500.0 + 0.05 + kUm) << "stopped at the +X stroke end";
 }

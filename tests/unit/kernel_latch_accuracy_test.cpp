@@ -8,7 +8,7 @@
 
 #include "config/dialect.hpp"
 #include "config/machine_config.hpp"
-#include "machine/simulator.hpp"
+#include "sim/simulator.hpp"
 
 namespace skipnc {
 namespace {
@@ -32,7 +32,7 @@ Outcome probe_at(double feed, canon::SkipLatch mode, double delay_s, double plan
   t.axis = 2;
   t.at = plane;
   scene.triggers.push_back(t);
-  machine::Simulator sim(*m, *d, p, scene);
+  sim::Simulator sim(*m, *d, p, scene);
   interp::Setup setup;
   setup.machine = &*m;
   setup.dialect = &*d;

@@ -9,8 +9,9 @@
 #include <new>
 
 #include "kernel/kernel.hpp"
+#include "kernel/kernel_config.hpp"
 #include "machine/plant.hpp"
-#include "machine/simulator.hpp"
+#include "sim/simulator.hpp"
 
 namespace {
 std::atomic<bool> g_counting{false};
@@ -72,7 +73,7 @@ TEST(KernelRealtime, TickAndPlantDoNotAllocate) {
   t.axis = 2;
   t.at = -3.0;
   scene.triggers.push_back(t);
-  kernel::Kernel k(machine::kernel_config(m));
+  kernel::Kernel k(kernel::kernel_config(m));
   machine::Plant plant(m, scene, k.clock());
   k.set_position(AxisVec{});
   plant.reset(AxisVec{});
@@ -153,7 +154,7 @@ TEST(KernelRealtime, ProbingPlantDoesNotAllocate) {
   gauge.steps.push_back(machine::GaugeStep{canon::SignalAddr{'X', 0, 1}, "SKIP2", 90});
   scene.probing.gauges.push_back(gauge);
   scene.probing.tools.push_back(machine::ToolSpec{1, 5.0, 3.0});
-  kernel::Kernel k(machine::kernel_config(m));
+  kernel::Kernel k(kernel::kernel_config(m));
   machine::Plant plant(m, scene, k.clock());
   auto at = [](double x, double y, double z) {
     AxisVec v;

@@ -8,7 +8,8 @@
 
 #include "config/machine_config.hpp"
 #include "kernel/kernel.hpp"
-#include "machine/simulator.hpp"
+#include "kernel/kernel_config.hpp"
+#include "sim/simulator.hpp"
 
 namespace skipnc {
 namespace {
@@ -45,7 +46,7 @@ class Bench {
  private:
   static kernel::KernelConfig make_config() {
     auto m = config::builtin_machine("mill3");
-    return machine::kernel_config(*m);
+    return kernel::kernel_config(*m);
   }
   kernel::Kernel k_;
   kernel::TickInput in_;
@@ -212,7 +213,7 @@ TEST(KernelSkip, OverrideActsOnASkipWhoseFeedIsNotFixed) {
 
 TEST(KernelSkip, LockedAxesAreInPositionWhateverTheirActualPosition) {
   auto m = config::builtin_machine("mill3");
-  kernel::Kernel k(machine::kernel_config(*m));
+  kernel::Kernel k(kernel::kernel_config(*m));
   k.set_position(AxisVec{});
   AxisMask all;
   for (int i = 0; i < 3; ++i) all.set(i);

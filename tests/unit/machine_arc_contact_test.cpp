@@ -12,7 +12,7 @@
 
 #include "config/dialect.hpp"
 #include "config/machine_config.hpp"
-#include "machine/simulator.hpp"
+#include "sim/simulator.hpp"
 
 namespace skipnc::machine {
 namespace {
@@ -23,9 +23,9 @@ constexpr double kWall = 8.0;
 constexpr double kBall = 1.0;
 constexpr double kArcRadius = 10.0;
 
-struct ActualRows final : TraceSink {
+struct ActualRows final : sim::TraceSink {
   std::vector<AxisVec> actual;
-  void row(const TraceRow& r) override { actual.push_back(*r.actual); }
+  void row(const sim::TraceRow& r) override { actual.push_back(*r.actual); }
 };
 
 struct ArcRig {
@@ -46,14 +46,14 @@ struct ArcRig {
     probe.max_overtravel = 2.0;
     scene.probing.probe = probe;  // length 0: the ball centre is the machine position
   }
-  Result<RunResult> run(const std::string& program) {
-    Simulator sim(m, d, p, scene);
+  Result<sim::RunResult> run(const std::string& program) {
+    sim::Simulator sim(m, d, p, scene);
     interp::Setup setup;
     setup.machine = &m;
     setup.dialect = &d;
     setup.params = &p;
     setup.program_text = program;
-    RunOptions opts;
+    sim::RunOptions opts;
     opts.trace = &rows;
     return sim.run(setup, opts);
   }

@@ -11,7 +11,7 @@
 
 #include "config/dialect.hpp"
 #include "config/machine_config.hpp"
-#include "machine/simulator.hpp"
+#include "sim/simulator.hpp"
 
 namespace skipnc {
 namespace {
@@ -64,7 +64,7 @@ BoreRun run_bore(double feed, canon::SkipLatch mode, double delay_s, double ball
       fmt::arg("x0", num(x0)), fmt::arg("y0", num(y0)), fmt::arg("xp", num(x0 + 20)),
       fmt::arg("xm", num(x0 - 20)), fmt::arg("yp", num(y0 + 20)), fmt::arg("ym", num(y0 - 20)),
       fmt::arg("f", f), fmt::arg("r", num(ball - pre)));
-  machine::Simulator sim(*m, *d, p, scene);
+  sim::Simulator sim(*m, *d, p, scene);
   interp::Setup setup;
   setup.machine = &*m;
   setup.dialect = &*d;
@@ -73,7 +73,7 @@ BoreRun run_bore(double feed, canon::SkipLatch mode, double delay_s, double ball
   auto r = sim.run(setup, {});
   BoreRun out;
   out.start_y = y0;
-  if (!r || r->status != machine::RunStatus::kCompleted || r->skips.size() != 4) {
+  if (!r || r->status != sim::RunStatus::kCompleted || r->skips.size() != 4) {
     ADD_FAILURE() << "the cycle did not complete: "
                   << (r && r->alarm ? r->alarm->detail : std::string("no result"));
     return out;

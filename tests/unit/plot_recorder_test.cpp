@@ -10,7 +10,7 @@
 
 #include "config/dialect.hpp"
 #include "config/machine_config.hpp"
-#include "machine/simulator.hpp"
+#include "sim/simulator.hpp"
 #include "plot/recorder.hpp"
 
 namespace skipnc {
@@ -26,7 +26,7 @@ config::MachineConfig mill3() {
 void feed_row(plot::Recorder& rec, std::int64_t k, const AxisVec& cmd, const AxisVec& act,
               double feed, std::uint32_t line) {
   AxisVec torque;
-  machine::TraceRow r;
+  sim::TraceRow r;
   r.tick = k;
   r.time_s = static_cast<double>(k) * 0.001;
   r.commanded = &cmd;
@@ -178,7 +178,7 @@ TEST(PlotRecorder, SignalEdgesAndLatchesSurviveThinningOfARealRun) {
   plot::Decimation d;
   d.max_samples = 300;  // a tight budget forces thinning
   plot::Recorder rec(m, d);
-  machine::Simulator sim(m, *dl, p, scene);
+  sim::Simulator sim(m, *dl, p, scene);
   interp::Setup setup;
   setup.machine = &m;
   setup.dialect = &*dl;
@@ -186,7 +186,7 @@ TEST(PlotRecorder, SignalEdgesAndLatchesSurviveThinningOfARealRun) {
   setup.program_text =
       "G21 G90 G54\nG0 X0 Y0 Z0\nG31 Z-40. F600.\nG91 G0 Z2.\nG90 G31 Z-40. F60.\nG0 Z0\n"
       "G1 X100. F3000.\nG1 X0 Y50.\nG1 Y0\nM30\n";
-  machine::RunOptions opts;
+  sim::RunOptions opts;
   opts.trace = &rec;
   opts.commands = &rec;
   auto r = sim.run(setup, opts);

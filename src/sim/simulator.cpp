@@ -1,4 +1,4 @@
-#include "machine/simulator.hpp"
+#include "sim/simulator.hpp"
 
 #include <fmt/format.h>
 
@@ -10,28 +10,17 @@
 #include <unordered_map>
 
 #include "config/skip_inputs.hpp"
-#include "machine/probe_safety.hpp"
+#include "kernel/kernel_config.hpp"
+#include "sim/probe_safety.hpp"
 
-namespace skipnc::machine {
+namespace skipnc::sim {
 
-kernel::KernelConfig kernel_config(const config::MachineConfig& m) {
-  kernel::KernelConfig k;
-  k.clock.period_ns = m.period_ns;
-  k.limits.axis_count = m.axis_count();
-  k.limits.period_s = k.clock.period_s();
-  double max_feed = 0.0;
-  for (int i = 0; i < m.axis_count(); ++i) {
-    const auto& a = m.axes[static_cast<std::size_t>(i)];
-    auto& l = k.limits.axes[static_cast<std::size_t>(i)];
-    l.max_velocity_mm_s = a.max_feed_mm_min / 60.0;
-    l.rapid_mm_s = a.rapid_mm_min / 60.0;
-    l.max_accel_mm_s2 = a.accel_mm_s2;
-    max_feed = std::fmax(max_feed, a.max_feed_mm_min);
-  }
-  k.limits.max_feed_mm_s = max_feed / 60.0;
-  k.in_position_mm = m.in_position_mm;
-  return k;
-}
+using machine::Plant;
+using machine::PlantFault;
+using machine::ProbeScene;
+using machine::OperatorAction;
+using machine::Scene;
+namespace geo = machine::geo;
 
 namespace {
 
@@ -113,9 +102,9 @@ struct CutNote {
 // arc or a dwell (a spinning tool at rest in the stock cuts where it
 // settles); a rapid or a skip move never cuts. A cutting command's end
 // point goes with it (ProbeScene::set_cutting).
-class Router final : public interp::CommandSink {
+class Router final : public canon::CommandSink {
  public:
-  Router(kernel::Kernel& k, interp::CommandSink* tap, const interp::Interpreter* in = nullptr,
+  Router(kernel::Kernel& k, canon::CommandSink* tap, const interp::Interpreter* in = nullptr,
          FrameLog* frames = nullptr, TagLog<CutNote>* cuts = nullptr)
       : k_(k), tap_(tap), in_(in), frames_(frames), cuts_(cuts) {}
   void emit(const canon::Stamped& c) override {
@@ -148,7 +137,7 @@ class Router final : public interp::CommandSink {
 
  private:
   kernel::Kernel& k_;
-  interp::CommandSink* tap_;
+  canon::CommandSink* tap_;
   const interp::Interpreter* in_;
   FrameLog* frames_;
   TagLog<CutNote>* cuts_;
@@ -222,7 +211,7 @@ Result<RunResult> Simulator::run(const interp::Setup& setup, const RunOptions& o
   interp_ = std::move(*created);
   interp::Interpreter& in = *interp_;
 
-  kernel::KernelConfig kc = kernel_config(m_);
+  kernel::KernelConfig kc = kernel::kernel_config(m_);
   // The in-position check at the end of a rapid, unless the dialect's bit
   // turns it off (Fanuc 1601#5 NCI).
   kc.rapid_in_position = d_.sw.rapid_no_in_position_param == 0 ||
@@ -533,4 +522,4 @@ Result<RunResult> Simulator::run(const interp::Setup& setup, const RunOptions& o
   return res;
 }
 
-}  // namespace skipnc::machine
+}  // namespace skipnc::sim

@@ -9,8 +9,8 @@
 #include "config/dialect.hpp"
 #include "config/machine_config.hpp"
 #include "machine/plant.hpp"
-#include "machine/probe_safety.hpp"
-#include "machine/simulator.hpp"
+#include "sim/probe_safety.hpp"
+#include "sim/simulator.hpp"
 #include "support/motion.hpp"
 
 namespace skipnc::machine {
@@ -35,8 +35,8 @@ struct Rig {
     probe.max_overtravel = 0.5;
     scene.probing.probe = probe;
   }
-  Result<RunResult> run(const std::string& program) {
-    Simulator sim(m, d, p, scene);
+  Result<sim::RunResult> run(const std::string& program) {
+    sim::Simulator sim(m, d, p, scene);
     interp::Setup setup;
     setup.machine = &m;
     setup.dialect = &d;
@@ -49,7 +49,7 @@ struct Rig {
 TEST(ProbeSafety, BrakingDistanceOfBothStops) {
   Rig r;
   Plant plant(r.m, r.scene, ServoClock{});
-  ProbeSafety safety(r.m, r.p, plant, nullptr);
+  sim::ProbeSafety safety(r.m, r.p, plant, nullptr);
   canon::Skip s;
   s.feed_mm_per_min = 600.0;  // 10 mm/s
   s.target = xyz(50, 0, 0);
@@ -69,7 +69,7 @@ TEST(ProbeSafety, WarnsBeforeASkipMoveThatCannotStopInTheOverTravel) {
   // F3000: 50/30 + 0.05 mm to stop, more than 0.5. F100: 0.057 mm, less.
   auto res = r.run("G21 G90 G54\nG0 Z-30.\nG31 Z-45. F100.\nG0 Z-30.\nG31 Z-38. F3000.\nM30\n");
   ASSERT_TRUE(res);
-  EXPECT_EQ(res->status, RunStatus::kCompleted);
+  EXPECT_EQ(res->status, sim::RunStatus::kCompleted);
   ASSERT_EQ(res->warnings.size(), 1U);
   EXPECT_EQ(res->warnings[0].code, "skip_braking");
   EXPECT_EQ(res->warnings[0].line, 5U);
@@ -137,7 +137,7 @@ TEST(ProbeSafety, ToolSetterSwitchedByARapidIsProbeProtection) {
   EXPECT_EQ(res->alarm->id, AlarmId::kProbeProtection);
   EXPECT_NEAR((*res->alarm_position)[2], -50.0 - 1e-6, 1e-9);  // the tip 1 nm into the disc
   // With protection off the rapid goes on and crushes the setter past 3 mm.
-  ASSERT_TRUE(r.p.apply(config::ParamSetting{kProbeProtectionParam, -1, 0.0, {}}));
+  ASSERT_TRUE(r.p.apply(config::ParamSetting{sim::kProbeProtectionParam, -1, 0.0, {}}));
   auto off = r.run("G21 G90 G54\nG0 Z150.\nT1 M06\nG0 X200. Y0\nG0 Z-55.\nM30\n");
   ASSERT_TRUE(off && off->alarm);
   EXPECT_EQ(off->alarm->id, AlarmId::kProbeCrash);

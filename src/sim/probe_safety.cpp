@@ -1,4 +1,4 @@
-#include "machine/probe_safety.hpp"
+#include "sim/probe_safety.hpp"
 
 #include <fmt/format.h>
 
@@ -11,10 +11,23 @@
 #include "machine/geometry.hpp"
 #include "machine/scene.hpp"
 
-namespace skipnc::machine {
+namespace skipnc::sim {
+
+using machine::Plant;
+using machine::PlantFault;
+using machine::ProbeScene;
+using machine::GaugeSpec;
+using machine::GaugeStep;
+using machine::Probing;
+using machine::Pulse;
+using machine::Scene;
+using machine::ToolSpec;
+using machine::TouchProbe;
+using machine::Trigger;
+namespace geo = machine::geo;
 
 ProbeSafety::ProbeSafety(const config::MachineConfig& m, const config::Parameters& p,
-                         const Plant& plant, interp::CommandSink* next)
+                         const Plant& plant, canon::CommandSink* next)
     : m_(m), plant_(plant), next_(next), protection_(p.get(kProbeProtectionParam) != 0.0) {
   const auto& probe = plant.probing().spec().probe;
   switched_on_ = !(probe && probe->on_m != 0);
@@ -318,4 +331,4 @@ std::optional<SafetyAlarm> ProbeSafety::check_period(Plant& plant, const kernel:
   return std::nullopt;
 }
 
-}  // namespace skipnc::machine
+}  // namespace skipnc::sim

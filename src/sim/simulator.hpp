@@ -16,7 +16,8 @@
 #include "machine/plant.hpp"
 #include "machine/scene.hpp"
 
-namespace skipnc::machine {
+namespace skipnc::sim {
+
 
 // One servo period as the trace shows it.
 struct TraceRow {
@@ -32,7 +33,7 @@ struct TraceRow {
   // units, as #5041.. reads it); null when not computed.
   const AxisVec* work = nullptr;
   std::string_view file;            // file of the active block (valid during the call)
-  const Plant* plant = nullptr;     // signal levels
+  const machine::Plant* plant = nullptr;     // signal levels
   kernel::SkipHandshake handshake;  // the skip block's handshake
   const config::SkipHandshakeNames* handshake_names = nullptr;  // null: not shown
 };
@@ -93,7 +94,7 @@ struct RunResult {
 struct RunOptions {
   TraceSink* trace = nullptr;
   // Sees every command the interpreter emits, in order (plots: move kinds).
-  interp::CommandSink* commands = nullptr;
+  canon::CommandSink* commands = nullptr;
   const std::atomic<bool>* interrupt = nullptr;
   // Called about every simulated second with (simulated seconds, line).
   std::function<void(double, std::uint32_t)> progress;
@@ -102,7 +103,7 @@ struct RunOptions {
 class Simulator {
  public:
   Simulator(const config::MachineConfig& m, const config::Dialect& d, const config::Parameters& p,
-            const Scene& scene);
+            const machine::Scene& scene);
 
   // Runs the program. Errors that stop the run are in the result (alarm);
   // the returned error is for a run that could not start.
@@ -114,10 +115,8 @@ class Simulator {
   const config::MachineConfig& m_;
   const config::Dialect& d_;
   const config::Parameters& p_;
-  const Scene& scene_;
+  const machine::Scene& scene_;
   std::unique_ptr<interp::Interpreter> interp_;
 };
 
-kernel::KernelConfig kernel_config(const config::MachineConfig& m);
-
-}  // namespace skipnc::machine
+}  // namespace skipnc::sim

@@ -18,7 +18,7 @@
 #include "kernel/kernel.hpp"
 #include "machine/plant.hpp"
 
-namespace skipnc::machine {
+namespace skipnc::sim {
 
 // Parameter of every dialect (data/dialects/base.toml): probe protection,
 // an alarm when a probe or tool-setter input switches on outside a skip
@@ -30,10 +30,10 @@ struct SafetyAlarm {
   AxisVec machine_position;  // where it happened
 };
 
-class ProbeSafety final : public interp::CommandSink {
+class ProbeSafety final : public canon::CommandSink {
  public:
-  ProbeSafety(const config::MachineConfig& m, const config::Parameters& p, const Plant& plant,
-              interp::CommandSink* next);
+  ProbeSafety(const config::MachineConfig& m, const config::Parameters& p, const machine::Plant& plant,
+              canon::CommandSink* next);
 
   // The command stream (forwarded to `next`).
   void emit(const canon::Stamped& c) override;
@@ -43,11 +43,11 @@ class ProbeSafety final : public interp::CommandSink {
     return tool_change_.has_value() || power_change_.has_value();
   }
   // After each kernel tick. `line` is the line the kernel shows now.
-  [[nodiscard]] std::optional<SafetyAlarm> after_period(Plant& plant, const kernel::Kernel& k,
+  [[nodiscard]] std::optional<SafetyAlarm> after_period(machine::Plant& plant, const kernel::Kernel& k,
                                                         std::uint32_t line, std::string_view file) {
-    const ProbeScene& ps = plant.probing();
+    const machine::ProbeScene& ps = plant.probing();
     if (!tool_change_ && !power_change_ && power_on_at_s_ < 0.0 &&
-        ps.fault().kind == PlantFault::Kind::kNone && !(protection_ && ps.touch_switched_on())) {
+        ps.fault().kind == machine::PlantFault::Kind::kNone && !(protection_ && ps.touch_switched_on())) {
       period_line_ = line;  // nothing to do (most periods)
       return std::nullopt;
     }
@@ -63,7 +63,7 @@ class ProbeSafety final : public interp::CommandSink {
   double braking_distance(const canon::Skip& s, const AxisVec& from) const noexcept;
 
  private:
-  std::optional<SafetyAlarm> check_period(Plant& plant, const kernel::Kernel& k, std::uint32_t line,
+  std::optional<SafetyAlarm> check_period(machine::Plant& plant, const kernel::Kernel& k, std::uint32_t line,
                                           std::string_view file);
   std::string where(const AxisVec& machine) const;
   void warn_braking(const canon::Skip& s, const canon::Stamped& at);
@@ -78,8 +78,8 @@ class ProbeSafety final : public interp::CommandSink {
                                 const AxisVec& dir) const;
 
   const config::MachineConfig& m_;
-  const Plant& plant_;
-  interp::CommandSink* next_;
+  const machine::Plant& plant_;
+  canon::CommandSink* next_;
   bool protection_ = true;
   AxisVec last_target_;
   int selected_tool_ = -1;
@@ -99,4 +99,4 @@ class ProbeSafety final : public interp::CommandSink {
   std::vector<interp::Warning> warnings_;
 };
 
-}  // namespace skipnc::machine
+}  // namespace skipnc::sim
