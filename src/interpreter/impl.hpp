@@ -7,6 +7,7 @@
 //   ncblock.cpp      address words, modal groups, offsets, data setting
 //   motion.cpp       rapid, feed, arc, dwell commands
 //   skip.cpp         the skip family (G31): dialect rules in, results out
+//   skip_rules.cpp   the skip block's decisions as pure functions
 //   mill_codes.cpp   the mill's codes beside the core table: canned cycles,
 //                    G68/G16/G51/G51.1 frames, codes without effect, codes
 //                    not simulated (pure parts in cycles.cpp, transform.cpp),
@@ -32,6 +33,7 @@
 #include "interpreter/cutter_comp.hpp"
 #include "interpreter/cycles.hpp"
 #include "interpreter/interpreter.hpp"
+#include "interpreter/skip_rules.hpp"
 #include "interpreter/transform.hpp"
 
 namespace skipnc::interp {
@@ -442,7 +444,7 @@ struct Interpreter::Impl {
   // The G31.n of the block being executed (0: G31 or no skip), for skip_block.
   int skip_step = 0;
   // Parameters of G31.n: the skip condition; the feed is the next number.
-  static constexpr int kSkipStepParam = 1175;
+  static constexpr int kSkipStepParam = skip_rules::kStepParam;
   // G37: a dialect has it when it defines epsilon (mill_codes.cpp).
   static constexpr int kG37EpsilonParam = 6254;
   Flow<bool> mill_code(int code, SourceLoc at, MillRequest& req) const;

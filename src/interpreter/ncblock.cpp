@@ -434,7 +434,7 @@ Flow<void> Interpreter::Impl::plan_modal(const Words& words, BlockPlan& plan) {
     const double f = words.at('F').value;
     if (f < 0) return fail(AlarmId::kBadValue, "negative F", loc(words.at('F').column));
     const bool block_only =
-        plan.action == Action::kSkip && dialect.sw.skip_feed == config::SkipFeedRule::kBlockOrParam;
+        plan.action == Action::kSkip && !skip_rules::block_f_is_modal(dialect.sw);
     if (!block_only) next.feed = f;
   }
   plan.spindle_changed = next.spindle_mode != modal.spindle_mode;
