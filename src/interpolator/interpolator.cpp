@@ -6,17 +6,17 @@
 #include <algorithm>
 #include <cmath>
 
-namespace skipnc::interp {
+namespace skipnc::interpolator {
 
 namespace {
-// The planner's idea of the active segment may change under us only through
-// Planner::reset (called by us, or by the caller before set_position).
-bool still_front(planner::Planner& q, const planner::Segment* seg) noexcept {
+// The queue's idea of the active segment may change under us only through
+// SegmentQueue::reset (called by us, or by the caller before set_position).
+bool still_front(planner::SegmentQueue& q, const planner::Segment* seg) noexcept {
   return seg != nullptr && q.front() == seg && seg->started;
 }
 }  // namespace
 
-Interpolator::Interpolator(planner::Planner& queue) noexcept
+Interpolator::Interpolator(planner::SegmentQueue& queue) noexcept
     : queue_(queue), pos_(queue.tail_position()) {}
 
 bool Interpolator::idle() const noexcept {
@@ -155,4 +155,4 @@ void Interpolator::set_position(const AxisVec& pos) noexcept {
   stop_now();
 }
 
-}  // namespace skipnc::interp
+}  // namespace skipnc::interpolator

@@ -8,11 +8,11 @@
 #include "core/axes.hpp"
 #include "planner/planner.hpp"
 
-namespace skipnc::interp {
+namespace skipnc::interpolator {
 
 class Interpolator {
  public:
-  explicit Interpolator(planner::Planner& queue) noexcept;
+  explicit Interpolator(planner::SegmentQueue& queue) noexcept;
 
   // Advances the command by one servo period and returns the commanded
   // position at the end of it. Segments end and begin inside a period; the
@@ -66,7 +66,7 @@ class Interpolator {
   AxisVec segment_start() const noexcept;
 
  private:
-  planner::Planner& queue_;
+  planner::SegmentQueue& queue_;
   planner::Segment* seg_ = nullptr;
   double seg_time_ = 0.0;  // time inside the active segment, s
   AxisVec pos_;
@@ -87,4 +87,4 @@ class Interpolator {
   double ramp_t_ = 0.0;
 };
 
-}  // namespace skipnc::interp
+}  // namespace skipnc::interpolator

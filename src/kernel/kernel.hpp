@@ -115,7 +115,7 @@ class Kernel {
   // --- outside the tick -------------------------------------------------
   // Room for one more block (a block may queue a few moves, e.g. G28).
   bool can_accept() const noexcept {
-    return planner_.size() + 4 <= cfg_.queue_capacity && !skip_.active;
+    return queue_.size() + 4 <= cfg_.queue_capacity && !skip_.active;
   }
   // Queues a motion or dwell command (other commands are not the kernel's).
   void push(const canon::Stamped& cmd);
@@ -149,7 +149,7 @@ class Kernel {
   // Periods the command has been at rest (idle or at an in-position hold)
   // with some axis outside the width: an axis held away from its command.
   std::int64_t in_position_wait() const noexcept { return inpos_wait_; }
-  bool motion_idle() const noexcept { return interp_.idle(); }
+  bool motion_idle() const noexcept { return interpolator_.idle(); }
   const SkipResult& skip() const noexcept { return skip_; }
   void clear_skip() noexcept { skip_ = SkipResult{}; }
   const AxisVec& command() const noexcept { return cmd_; }
@@ -176,8 +176,8 @@ class Kernel {
   }
 
   KernelConfig cfg_;
-  planner::Planner planner_;
-  interp::Interpolator interp_;
+  planner::SegmentQueue queue_;
+  interpolator::Interpolator interpolator_;
   SignalImage signals_;
   Tick tick_ = 0;
   AxisVec cmd_;       // command for t_k (output at tick k-1)

@@ -458,19 +458,19 @@ void Segment::sample(double t, int axis_count, AxisVec& position, AxisVec& veloc
 }
 
 // ---------------------------------------------------------------------------
-// Planner
+// SegmentQueue
 
-Planner::Planner(const Limits& limits, std::size_t capacity)
+SegmentQueue::SegmentQueue(const Limits& limits, std::size_t capacity)
     : limits_(limits), ring_(std::max<std::size_t>(capacity, 1)) {}
 
-void Planner::reset(const AxisVec& position) noexcept {
+void SegmentQueue::reset(const AxisVec& position) noexcept {
   head_ = 0;
   count_ = 0;
   tail_ = position;
   front_entry_ = 0.0;
 }
 
-void Planner::pop_front() noexcept {
+void SegmentQueue::pop_front() noexcept {
   if (count_ == 0) return;
   const Segment& s = ring_[head_];
   front_entry_ = s.no_accel ? 0.0 : s.v_exit;
@@ -479,7 +479,7 @@ void Planner::pop_front() noexcept {
   if (count_ == 0) front_entry_ = 0.0;
 }
 
-void Planner::push(const Move& move) {
+void SegmentQueue::push(const Move& move) {
   assert(!full());
   if (full()) return;
   Segment s;
@@ -539,7 +539,7 @@ void Planner::push(const Move& move) {
   replan();
 }
 
-void Planner::replan() noexcept {
+void SegmentQueue::replan() noexcept {
   const std::size_t n = count_;
   std::size_t first = 0;
   while (first < n && at(first).started) ++first;

@@ -11,12 +11,12 @@
 
 #include "support/motion.hpp"
 
-namespace skipnc::interp {
+namespace skipnc::interpolator {
 namespace {
 
 using planner::Limits;
 using planner::Move;
-using planner::Planner;
+using planner::SegmentQueue;
 using Kind = Move::Kind;
 
 using test::mill_limits;
@@ -110,7 +110,7 @@ Ratios ratios(const Trace& tr, const Limits& lim, RapidTag rapid_tag) {
 
 TEST(Interpolator, LineEndsExactlyOnTargetInTheTrapezoidTime) {
   const Limits lim = mill_limits();
-  Planner q(lim);
+  SegmentQueue q(lim);
   Interpolator ip(q);
   const AxisVec target = xyz(100.000123, 0, 0);
   q.push(line(target, 100.0));
@@ -126,7 +126,7 @@ TEST(Interpolator, LineEndsExactlyOnTargetInTheTrapezoidTime) {
 
 TEST(Interpolator, SegmentsCarryTheRestOfThePeriod) {
   const Limits lim = mill_limits();
-  Planner q(lim);
+  SegmentQueue q(lim);
   Interpolator ip(q);
   Move d;
   d.kind = Kind::kDwell;
@@ -145,7 +145,7 @@ TEST(Interpolator, SegmentsCarryTheRestOfThePeriod) {
 
 TEST(Interpolator, MixedProgramStaysWithinLimits) {
   const Limits lim = mill_limits();
-  Planner q(lim);
+  SegmentQueue q(lim);
   Interpolator ip(q);
   // Tags: 100+ rapids, others feed moves.
   q.push(rapid(xyz(10, 0, 5), true, 100));
@@ -171,7 +171,7 @@ TEST(Interpolator, MixedProgramStaysWithinLimits) {
 
 TEST(Interpolator, CollinearShortSegmentsDoNotStop) {
   const Limits lim = mill_limits();
-  Planner q(lim);
+  SegmentQueue q(lim);
   Interpolator ip(q);
   for (std::uint32_t k = 1; k <= 10; ++k) {
     const double x = 2.0 * k;
@@ -191,7 +191,7 @@ TEST(Interpolator, CollinearShortSegmentsDoNotStop) {
 
 TEST(Interpolator, RightAngleCornerIsNearlyAStop) {
   const Limits lim = mill_limits();
-  Planner q(lim);
+  SegmentQueue q(lim);
   Interpolator ip(q);
   q.push(line(xyz(20, 0, 0), 200.0, 1));
   q.push(line(xyz(20, 20, 0), 200.0, 2));
@@ -210,7 +210,7 @@ TEST(Interpolator, RightAngleCornerIsNearlyAStop) {
 
 TEST(Interpolator, NonLinearRapidShortAxisArrivesFirst) {
   const Limits lim = mill_limits();
-  Planner q(lim);
+  SegmentQueue q(lim);
   Interpolator ip(q);
   q.push(rapid(xyz(100, 10, -3), false, 7));
   const Trace tr = run_to_idle(ip);
@@ -237,7 +237,7 @@ TEST(Interpolator, NonLinearRapidShortAxisArrivesFirst) {
 
 TEST(Interpolator, ArcSamplesLieOnTheCircle) {
   const Limits lim = mill_limits();
-  Planner q(lim);
+  SegmentQueue q(lim);
   q.reset(xyz(15, 5, 0));
   Interpolator ip(q);
   q.push(arc(xyz(5, 15, 0), 5.0, 5.0, true, 150.0));
@@ -254,7 +254,7 @@ TEST(Interpolator, ArcSamplesLieOnTheCircle) {
 
 TEST(Interpolator, FullCircle) {
   const Limits lim = mill_limits();
-  Planner q(lim);
+  SegmentQueue q(lim);
   q.reset(xyz(10, 0, 0));
   Interpolator ip(q);
   q.push(arc(xyz(10, 0, 0), 0.0, 0.0, false, 100.0));
@@ -274,7 +274,7 @@ TEST(Interpolator, FullCircle) {
 
 TEST(Interpolator, Helix) {
   const Limits lim = mill_limits();
-  Planner q(lim);
+  SegmentQueue q(lim);
   q.reset(xyz(0, 0, 0));
   Interpolator ip(q);
   Move m = arc(xyz(0, 0, -6), 0.0, 5.0, true, 100.0);  // G17: centre (0, 5), r = 5
@@ -296,7 +296,7 @@ TEST(Interpolator, Helix) {
 
 TEST(Interpolator, StopNowFreezes) {
   const Limits lim = mill_limits();
-  Planner q(lim);
+  SegmentQueue q(lim);
   Interpolator ip(q);
   q.push(line(xyz(100, 0, 0), 200.0, 1));
   q.push(line(xyz(100, 50, 0), 200.0, 2));
@@ -317,7 +317,7 @@ TEST(Interpolator, StopNowFreezes) {
 
 TEST(Interpolator, DecelerateStopsAfterTheBrakingDistance) {
   const Limits lim = mill_limits();
-  Planner q(lim);
+  SegmentQueue q(lim);
   Interpolator ip(q);
   q.push(line(xyz(30, 40, 0), 100.0, 1));
   for (int k = 0; k < 300; ++k) ip.tick();  // cruising at 100 mm/s
@@ -342,7 +342,7 @@ TEST(Interpolator, DecelerateStopsAfterTheBrakingDistance) {
 }
 
 TEST(Interpolator, DecelerateAtRestIsAStop) {
-  Planner q(mill_limits());
+  SegmentQueue q(mill_limits());
   Interpolator ip(q);
   ip.decelerate(500.0);
   EXPECT_TRUE(ip.idle());
@@ -350,7 +350,7 @@ TEST(Interpolator, DecelerateAtRestIsAStop) {
 
 TEST(Interpolator, DwellLastsItsTime) {
   const Limits lim = mill_limits();
-  Planner q(lim);
+  SegmentQueue q(lim);
   Interpolator ip(q);
   q.push(line(xyz(1, 0, 0), 100.0, 1));
   Move d;
@@ -368,7 +368,7 @@ TEST(Interpolator, DwellLastsItsTime) {
 }
 
 TEST(Interpolator, TimeScaleZeroHolds) {
-  Planner q(mill_limits());
+  SegmentQueue q(mill_limits());
   Interpolator ip(q);
   q.push(line(xyz(10, 0, 0), 100.0));
   for (int k = 0; k < 50; ++k) ip.tick();
@@ -382,7 +382,7 @@ TEST(Interpolator, TimeScaleZeroHolds) {
 }
 
 TEST(Interpolator, VelocityIsReported) {
-  Planner q(mill_limits());
+  SegmentQueue q(mill_limits());
   Interpolator ip(q);
   q.push(line(xyz(30, 40, 0), 100.0, 9));
   for (int k = 0; k < 300; ++k) ip.tick();
@@ -392,7 +392,7 @@ TEST(Interpolator, VelocityIsReported) {
 }
 
 TEST(Interpolator, SetPositionResetsEverything) {
-  Planner q(mill_limits());
+  SegmentQueue q(mill_limits());
   Interpolator ip(q);
   q.push(line(xyz(30, 40, 0), 100.0));
   for (int k = 0; k < 10; ++k) ip.tick();
@@ -405,7 +405,7 @@ TEST(Interpolator, SetPositionResetsEverything) {
 
 TEST(Interpolator, NoAccelSkipMoveRunsAtTheFeedFromTheFirstTick) {
   const Limits lim = mill_limits();
-  Planner q(lim);
+  SegmentQueue q(lim);
   Interpolator ip(q);
   Move m = line(xyz(5, 0, 0), 20.0);
   m.no_accel = true;
@@ -419,4 +419,4 @@ TEST(Interpolator, NoAccelSkipMoveRunsAtTheFeedFromTheFirstTick) {
 }
 
 }  // namespace
-}  // namespace skipnc::interp
+}  // namespace skipnc::interpolator

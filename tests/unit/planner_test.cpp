@@ -44,7 +44,7 @@ double trapezoid_time(double len, double v, double a) {
 }
 
 TEST(Planner, SingleLineDurationIsTheTrapezoidTime) {
-  Planner p(mill_limits());
+  SegmentQueue p(mill_limits());
   p.push(line(xyz(100, 0, 0), 100.0));
   ASSERT_EQ(p.size(), 1u);
   const Segment& s = *p.front();
@@ -55,7 +55,7 @@ TEST(Planner, SingleLineDurationIsTheTrapezoidTime) {
 }
 
 TEST(Planner, ShortLineIsATriangle) {
-  Planner p(mill_limits());
+  SegmentQueue p(mill_limits());
   p.push(line(xyz(1, 0, 0), 100.0));
   const Segment& s = *p.front();
   EXPECT_NEAR(s.duration, trapezoid_time(1.0, 100.0, 2000.0), 1e-12);
@@ -67,7 +67,7 @@ TEST(Planner, DiagonalLineClampedByAxisLimits) {
   Limits lim = mill_limits();
   lim.axes[0].max_velocity_mm_s = 50.0;
   lim.axes[0].max_accel_mm_s2 = 500.0;
-  Planner p(lim);
+  SegmentQueue p(lim);
   p.push(line(xyz(30, 40, 0), 300.0));  // u = (0.6, 0.8)
   const Segment& s = *p.front();
   EXPECT_NEAR(s.v_max, 50.0 / 0.6, 1e-9);
@@ -78,7 +78,7 @@ TEST(Planner, DiagonalLineClampedByAxisLimits) {
 TEST(Planner, FeedClampedByPathLimit) {
   Limits lim = mill_limits();
   lim.max_feed_mm_s = 100.0;
-  Planner p(lim);
+  SegmentQueue p(lim);
   p.push(line(xyz(0, 0, 50), 1000.0));
   EXPECT_DOUBLE_EQ(p.front()->v_max, 100.0);
 }
@@ -86,7 +86,7 @@ TEST(Planner, FeedClampedByPathLimit) {
 TEST(Planner, RapidUsesRapidRatesAndEndsAtRest) {
   Limits lim = mill_limits();
   lim.axes[1].rapid_mm_s = 200.0;
-  Planner p(lim);
+  SegmentQueue p(lim);
   Move m;
   m.kind = Kind::kRapid;
   m.target = xyz(100, 100, 0);
@@ -98,7 +98,7 @@ TEST(Planner, RapidUsesRapidRatesAndEndsAtRest) {
 }
 
 TEST(Planner, ZeroLengthMovesAndZeroDwellsAreDropped) {
-  Planner p(mill_limits());
+  SegmentQueue p(mill_limits());
   p.push(line(xyz(0, 0, 0), 100.0));
   Move d;
   d.kind = Kind::kDwell;
@@ -108,7 +108,7 @@ TEST(Planner, ZeroLengthMovesAndZeroDwellsAreDropped) {
 }
 
 TEST(Planner, PositionAtDurationIsTheTargetBitExact) {
-  Planner p(mill_limits());
+  SegmentQueue p(mill_limits());
   const AxisVec target = xyz(12.3456789, -0.1, 7.77777777);
   p.push(line(target, 123.4));
   const Segment& s = *p.front();
@@ -119,7 +119,7 @@ TEST(Planner, PositionAtDurationIsTheTargetBitExact) {
 }
 
 TEST(Planner, ProfileIsContinuous) {
-  Planner p(mill_limits());
+  SegmentQueue p(mill_limits());
   p.push(line(xyz(10, 0, 0), 150.0));
   p.push(line(xyz(20, 0, 0), 150.0));
   const Segment& s = *p.front();
@@ -132,7 +132,7 @@ TEST(Planner, ProfileIsContinuous) {
 }
 
 TEST(Planner, CollinearSegmentsBlendAtFullSpeed) {
-  Planner p(mill_limits());
+  SegmentQueue p(mill_limits());
   p.push(line(xyz(10, 10, 0), 100.0));
   p.push(line(xyz(20, 20, 0), 100.0));
   p.push(line(xyz(30, 30, 0), 100.0));
@@ -142,7 +142,7 @@ TEST(Planner, CollinearSegmentsBlendAtFullSpeed) {
 }
 
 TEST(Planner, LookaheadLimitsExitSoTheQueueCanStop) {
-  Planner p(mill_limits());
+  SegmentQueue p(mill_limits());
   p.push(line(xyz(100, 0, 0), 300.0));
   p.push(line(xyz(100.5, 0, 0), 300.0));  // 0.5 mm: can stop from sqrt(2 a 0.5)
   EXPECT_NEAR(p.front()->v_exit, std::sqrt(2.0 * 2000.0 * 0.5), 1e-9);
@@ -150,7 +150,7 @@ TEST(Planner, LookaheadLimitsExitSoTheQueueCanStop) {
 
 TEST(Planner, RightAngleCornerIsNearlyAStop) {
   const Limits lim = mill_limits();
-  Planner p(lim);
+  SegmentQueue p(lim);
   p.push(line(xyz(10, 0, 0), 100.0));
   p.push(line(xyz(10, 10, 0), 100.0));
   const double v = p.front()->v_exit;
@@ -159,14 +159,14 @@ TEST(Planner, RightAngleCornerIsNearlyAStop) {
 }
 
 TEST(Planner, ExactStopEndsAtRest) {
-  Planner p(mill_limits());
+  SegmentQueue p(mill_limits());
   p.push(line(xyz(10, 0, 0), 100.0, /*exact_stop=*/true));
   p.push(line(xyz(20, 0, 0), 100.0));
   EXPECT_EQ(p.front()->v_exit, 0.0);
 }
 
 TEST(Planner, DwellForcesRest) {
-  Planner p(mill_limits());
+  SegmentQueue p(mill_limits());
   p.push(line(xyz(10, 0, 0), 100.0));
   Move d;
   d.kind = Kind::kDwell;
@@ -178,7 +178,7 @@ TEST(Planner, DwellForcesRest) {
 }
 
 TEST(Planner, StartedSegmentKeepsItsProfile) {
-  Planner p(mill_limits());
+  SegmentQueue p(mill_limits());
   p.push(line(xyz(10, 0, 0), 100.0));
   Segment* s = p.front();
   s->started = true;
@@ -189,7 +189,7 @@ TEST(Planner, StartedSegmentKeepsItsProfile) {
 }
 
 TEST(Planner, NoAccelMoveStepsToTheFeed) {
-  Planner p(mill_limits());
+  SegmentQueue p(mill_limits());
   Move m = line(xyz(5, 0, 0), 10.0);
   m.no_accel = true;
   p.push(m);
@@ -201,7 +201,7 @@ TEST(Planner, NoAccelMoveStepsToTheFeed) {
 }
 
 TEST(Planner, NonLinearRapidShortAxisArrivesFirst) {
-  Planner p(mill_limits());
+  SegmentQueue p(mill_limits());
   Move m;
   m.kind = Kind::kRapidNonLinear;
   m.target = xyz(100, 10, 0);
@@ -217,7 +217,7 @@ TEST(Planner, NonLinearRapidShortAxisArrivesFirst) {
 }
 
 TEST(Planner, QuarterArcGeometry) {
-  Planner p(mill_limits());
+  SegmentQueue p(mill_limits());
   p.reset(xyz(10, 0, 0));
   p.push(arc(xyz(0, 10, 0), 0.0, 0.0, /*ccw=*/true, 50.0));
   const Segment& s = *p.front();
@@ -230,14 +230,14 @@ TEST(Planner, QuarterArcGeometry) {
 }
 
 TEST(Planner, ClockwiseArcSweepsTheLongWay) {
-  Planner p(mill_limits());
+  SegmentQueue p(mill_limits());
   p.reset(xyz(10, 0, 0));
   p.push(arc(xyz(0, 10, 0), 0.0, 0.0, /*ccw=*/false, 50.0));
   EXPECT_NEAR(p.front()->sweep, -1.5 * std::numbers::pi, 1e-12);
 }
 
 TEST(Planner, CoincidentArcEndsMakeAFullTurnPlusExtraTurns) {
-  Planner p(mill_limits());
+  SegmentQueue p(mill_limits());
   p.reset(xyz(10, 0, 0));
   p.push(arc(xyz(10, 0, 0), 0.0, 0.0, true, 50.0));
   EXPECT_NEAR(p.front()->sweep, 2.0 * std::numbers::pi, 1e-15);
@@ -248,7 +248,7 @@ TEST(Planner, CoincidentArcEndsMakeAFullTurnPlusExtraTurns) {
 
 TEST(Planner, ArcSpeedLimitedByCentripetalAcceleration) {
   const Limits lim = mill_limits();
-  Planner p(lim);
+  SegmentQueue p(lim);
   p.reset(xyz(1, 0, 0));
   p.push(arc(xyz(-1, 0, 0), 0.0, 0.0, true, 300.0));  // r = 1 mm
   const Segment& s = *p.front();
@@ -257,7 +257,7 @@ TEST(Planner, ArcSpeedLimitedByCentripetalAcceleration) {
 }
 
 TEST(Planner, ArcWithUnequalRadiiEndsOnTarget) {
-  Planner p(mill_limits());
+  SegmentQueue p(mill_limits());
   p.reset(xyz(10, 0, 0));
   const AxisVec target = xyz(0, 10.002, 0);
   p.push(arc(target, 0.0, 0.0, true, 50.0));
@@ -277,7 +277,7 @@ TEST(Planner, ArcWithUnequalRadiiEndsOnTarget) {
 }
 
 TEST(Planner, ArcTangentMatchesMotion) {
-  Planner p(mill_limits());
+  SegmentQueue p(mill_limits());
   p.reset(xyz(10, 0, 0));
   p.push(arc(xyz(10, 0, 5), 0.0, 0.0, true, 50.0));  // one helical turn
   const Segment& s = *p.front();
@@ -290,7 +290,7 @@ TEST(Planner, ArcTangentMatchesMotion) {
 }
 
 TEST(Planner, ResetForgetsTheQueue) {
-  Planner p(mill_limits());
+  SegmentQueue p(mill_limits());
   p.push(line(xyz(10, 0, 0), 100.0));
   p.reset(xyz(1, 2, 3));
   EXPECT_TRUE(p.empty());
@@ -300,7 +300,7 @@ TEST(Planner, ResetForgetsTheQueue) {
 }
 
 TEST(Planner, RingWrapsAround) {
-  Planner p(mill_limits(), 4);
+  SegmentQueue p(mill_limits(), 4);
   double x = 0.0;
   for (int k = 0; k < 20; ++k) {
     while (!p.full()) {
