@@ -12,6 +12,7 @@
 // Build: part of the project (target skipnc_embedding_example).
 #include <cmath>
 #include <cstdio>
+#include <deque>
 
 #include "config/dialect.hpp"
 #include "config/machine_config.hpp"
@@ -21,7 +22,11 @@
 
 namespace {
 
-// Routes the interpreter's motion commands to the kernel.
+// Routes the interpreter's motion commands to the kernel. Kernel::push
+// refuses a command when the queue is full, and one block may make more
+// moves than the queue holds (a canned cycle with many pecks), so what does
+// not fit waits here, in order, and feed() hands it over as the ticks make
+// room. Read the next block only once everything is handed over (drained()).
 class ToKernel final : public skipnc::interp::CommandSink {
  public:
   explicit ToKernel(skipnc::kernel::Kernel& k) : k_(k) {}
@@ -31,12 +36,18 @@ class ToKernel final : public skipnc::interp::CommandSink {
         std::holds_alternative<skipnc::canon::Arc>(c.cmd) ||
         std::holds_alternative<skipnc::canon::Dwell>(c.cmd) ||
         std::holds_alternative<skipnc::canon::Skip>(c.cmd)) {
-      k_.push(c);
+      waiting_.push_back(c);
+      feed();
     }
   }
+  void feed() {
+    while (!waiting_.empty() && k_.push(waiting_.front())) waiting_.pop_front();
+  }
+  bool drained() const { return waiting_.empty(); }
 
  private:
   skipnc::kernel::Kernel& k_;
+  std::deque<skipnc::canon::Stamped> waiting_;
 };
 
 }  // namespace
@@ -78,7 +89,8 @@ int main() {
 
   for (int period = 0; period < 1'000'000; ++period) {
     // Outside the tick: keep the queue full.
-    while (!waiting && !ending && k.can_accept()) {
+    sink.feed();
+    while (!waiting && !ending && sink.drained() && k.can_accept()) {
       auto st = in.step(sink);
       if (!st) {
         std::fprintf(stderr, "alarm at line %u: %s\n", st.error().loc.line,
@@ -107,7 +119,7 @@ int main() {
     drive = tick_out.commanded;
 
     // Outside the tick again: complete a skip.
-    if (waiting && k.idle() && (!k.skip().active || k.skip().done)) {
+    if (waiting && sink.drained() && k.idle() && (!k.skip().active || k.skip().done)) {
       interp::SyncState s;
       s.machine_position = k.skip().active ? k.skip().stop_position : k.command();
       s.actual_position = drive;
@@ -120,7 +132,7 @@ int main() {
       waiting = false;
       if (auto r = in.sync(s); !r) return 1;
     }
-    if (ending && k.idle()) break;
+    if (ending && sink.drained() && k.idle()) break;
   }
   auto z = in.read_variable(100);
   std::printf("probe touched at Z %.6f (#100); final Z %.6f after %lld periods\n", z ? z->v : 0.0,

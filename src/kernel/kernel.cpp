@@ -1,5 +1,6 @@
 #include "kernel/kernel.hpp"
 
+#include <cassert>
 #include <cmath>
 #include <type_traits>
 
@@ -23,7 +24,10 @@ void Kernel::set_position(const AxisVec& machine) noexcept {
   in_position_ = true;  // at rest there
 }
 
-void Kernel::push(const canon::Stamped& stamped) {
+bool Kernel::push(const canon::Stamped& stamped) {
+  // Refused before anything changes: a skip command below resets the skip
+  // block's state, and the tag is the command's for good once given.
+  if (queue_.full()) return false;
   planner::Move m;
   m.line = stamped.line;
   m.source = stamped.source;
@@ -85,7 +89,10 @@ void Kernel::push(const canon::Stamped& stamped) {
         }
       },
       stamped.cmd);
-  queue_.push(m);
+  // The queue had room (checked above), so it takes the move.
+  const bool taken = queue_.push(m);
+  assert(taken);
+  return taken;
 }
 
 bool Kernel::axes_in_position(const AxisVec& actual) const noexcept {

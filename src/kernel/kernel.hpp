@@ -113,12 +113,22 @@ class Kernel {
   explicit Kernel(const KernelConfig& cfg);
 
   // --- outside the tick -------------------------------------------------
-  // Room for one more block (a block may queue a few moves, e.g. G28).
+  // Room for one more block of the usual kind (a block may queue a few
+  // moves, e.g. G28), and no skip block pending. A hint for when to read the
+  // next block, not a promise: a canned cycle's block may queue hundreds of
+  // moves, more than the queue holds. push() is what says whether a command
+  // was taken.
   bool can_accept() const noexcept {
     return queue_.size() + 4 <= cfg_.queue_capacity && !skip_.active;
   }
+  // Room for one more command: the next push() takes it.
+  bool can_push() const noexcept { return !queue_.full(); }
   // Queues a motion or dwell command (other commands are not the kernel's).
-  void push(const canon::Stamped& cmd);
+  // Returns false when the queue is full, and then changes nothing (the
+  // queue, the skip block's state and next_tag() are as they were): the
+  // command was not taken, and the caller keeps it and pushes it again after
+  // a tick has made room (can_push()).
+  [[nodiscard]] bool push(const canon::Stamped& cmd);
   // The number the next pushed command gets (1, 2, ...; TickOutput::tag
   // names the running one), for callers that keep data per command.
   std::uint32_t next_tag() const noexcept { return next_tag_; }

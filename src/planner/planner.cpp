@@ -20,7 +20,6 @@
 #include "planner/planner.hpp"
 
 #include <algorithm>
-#include <cassert>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -479,9 +478,8 @@ void SegmentQueue::pop_front() noexcept {
   if (count_ == 0) front_entry_ = 0.0;
 }
 
-void SegmentQueue::push(const Move& move) {
-  assert(!full());
-  if (full()) return;
+bool SegmentQueue::push(const Move& move) {
+  if (full()) return false;
   Segment s;
   s.kind = move.kind;
   s.start = tail_;
@@ -496,7 +494,7 @@ void SegmentQueue::push(const Move& move) {
 
   switch (move.kind) {
     case Kind::kDwell:
-      if (!(move.dwell_s > 0.0)) return;
+      if (!(move.dwell_s > 0.0)) return true;
       s.end = tail_;
       s.exact_stop = true;
       s.no_accel = false;
@@ -504,12 +502,12 @@ void SegmentQueue::push(const Move& move) {
       s.t_cruise = move.dwell_s;
       break;
     case Kind::kRapidNonLinear:
-      if (s.end == s.start) return;
+      if (s.end == s.start) return true;
       s.exact_stop = true;
       build_rapid_nonlinear(s, limits_);
       break;
     case Kind::kRapid:
-      if (s.end == s.start) return;
+      if (s.end == s.start) return true;
       s.exact_stop = true;
       build_linear(s, move, limits_);
       break;
@@ -518,7 +516,7 @@ void SegmentQueue::push(const Move& move) {
       s.kind = Kind::kLine;
       [[fallthrough]];
     case Kind::kLine:
-      if (s.end == s.start) return;
+      if (s.end == s.start) return true;
       build_linear(s, move, limits_);
       break;
   }
@@ -537,6 +535,7 @@ void SegmentQueue::push(const Move& move) {
   ++count_;
   tail_ = s.end;
   replan();
+  return true;
 }
 
 void SegmentQueue::replan() noexcept {

@@ -129,8 +129,10 @@ class SegmentQueue {
 
   // Appends a move that starts where the previous one ends (or at `start`
   // for the first one / after reset). Zero-length moves are dropped (a zero
-  // dwell likewise). Precondition: !full().
-  void push(const Move& move);
+  // dwell likewise); that is not a refusal. Returns false when the ring is
+  // full, and then changes nothing: the move was not taken, and the caller
+  // offers it again once the interpolator has popped a segment.
+  [[nodiscard]] bool push(const Move& move);
   // The position the next pushed move starts from.
   const AxisVec& tail_position() const noexcept { return tail_; }
   // Forgets all queued segments and sets the start of the next move.

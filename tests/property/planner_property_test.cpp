@@ -131,7 +131,9 @@ RC_GTEST_PROP(PlannerProperty, RandomProgramsStayWithinLimitsAndEndOnTarget, ())
 
   std::size_t next = 0;
   auto refill = [&] {
-    while (next < prog.moves.size() && !q.full()) q.push(prog.moves[next++]);
+    while (next < prog.moves.size() && !q.full()) {
+      RC_ASSERT(q.push(prog.moves[next++]));
+    }
   };
   refill();
 

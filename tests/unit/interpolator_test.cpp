@@ -113,7 +113,7 @@ TEST(Interpolator, LineEndsExactlyOnTargetInTheTrapezoidTime) {
   SegmentQueue q(lim);
   Interpolator ip(q);
   const AxisVec target = xyz(100.000123, 0, 0);
-  q.push(line(target, 100.0));
+  ASSERT_TRUE(q.push(line(target, 100.0)));
   const double duration = q.front()->duration;
   const Trace tr = run_to_idle(ip);
   EXPECT_EQ(tr.pos.back(), target);
@@ -131,9 +131,9 @@ TEST(Interpolator, SegmentsCarryTheRestOfThePeriod) {
   Move d;
   d.kind = Kind::kDwell;
   d.dwell_s = 0.0104;
-  q.push(line(xyz(1.23, 0, 0), 100.0));
-  q.push(d);
-  q.push(line(xyz(2.5, 0, 0), 100.0));
+  ASSERT_TRUE(q.push(line(xyz(1.23, 0, 0), 100.0)));
+  ASSERT_TRUE(q.push(d));
+  ASSERT_TRUE(q.push(line(xyz(2.5, 0, 0), 100.0)));
   double total = 0.0;
   for (std::size_t k = 0; k < q.size(); ++k) {
     total += q.front()[k].duration;  // contiguous: nothing has wrapped
@@ -148,17 +148,18 @@ TEST(Interpolator, MixedProgramStaysWithinLimits) {
   SegmentQueue q(lim);
   Interpolator ip(q);
   // Tags: 100+ rapids, others feed moves.
-  q.push(rapid(xyz(10, 0, 5), true, 100));
-  q.push(line(xyz(10, 0, 0), 50.0, 1));
-  q.push(line(xyz(40, 0, 0), 300.0, 2));
-  q.push(arc(xyz(50, 10, 0), 40.0, 10.0, true, 300.0, 3));  // tangent quarter
-  q.push(line(xyz(50, 30, 0), 300.0, 4));
-  q.push(line(xyz(30, 40, 0), 300.0, 5));                     // corner
-  q.push(arc(xyz(20, 30, -2), 30.0, 30.0, true, 200.0, 6));   // helical, not tangent
-  q.push(arc(xyz(22, 30, -2), 21.0, 30.0, false, 300.0, 7));  // r = 1: centripetal limit
-  q.push(line(xyz(25, 33, -1), 300.0, 8));
-  q.push(rapid(xyz(0, 0, 10), false, 101));
-  q.push(rapid(xyz(-5, 20, 10), true, 102));
+  ASSERT_TRUE(q.push(rapid(xyz(10, 0, 5), true, 100)));
+  ASSERT_TRUE(q.push(line(xyz(10, 0, 0), 50.0, 1)));
+  ASSERT_TRUE(q.push(line(xyz(40, 0, 0), 300.0, 2)));
+  ASSERT_TRUE(q.push(arc(xyz(50, 10, 0), 40.0, 10.0, true, 300.0, 3)));  // tangent quarter
+  ASSERT_TRUE(q.push(line(xyz(50, 30, 0), 300.0, 4)));
+  ASSERT_TRUE(q.push(line(xyz(30, 40, 0), 300.0, 5)));                    // corner
+  ASSERT_TRUE(q.push(arc(xyz(20, 30, -2), 30.0, 30.0, true, 200.0, 6)));  // helical, not tangent
+  ASSERT_TRUE(
+      q.push(arc(xyz(22, 30, -2), 21.0, 30.0, false, 300.0, 7)));  // r = 1: centripetal limit
+  ASSERT_TRUE(q.push(line(xyz(25, 33, -1), 300.0, 8)));
+  ASSERT_TRUE(q.push(rapid(xyz(0, 0, 10), false, 101)));
+  ASSERT_TRUE(q.push(rapid(xyz(-5, 20, 10), true, 102)));
   const Trace tr = run_to_idle(ip);
   EXPECT_EQ(tr.pos.back(), xyz(-5, 20, 10));
   const Ratios r = ratios(tr, lim, [](std::uint32_t tag) { return tag >= 100; });
@@ -175,7 +176,7 @@ TEST(Interpolator, CollinearShortSegmentsDoNotStop) {
   Interpolator ip(q);
   for (std::uint32_t k = 1; k <= 10; ++k) {
     const double x = 2.0 * k;
-    q.push(line(xyz(x, x, 0), 100.0, k));
+    ASSERT_TRUE(q.push(line(xyz(x, x, 0), 100.0, k)));
   }
   const Trace tr = run_to_idle(ip);
   std::size_t first_moving = 0;
@@ -193,8 +194,8 @@ TEST(Interpolator, RightAngleCornerIsNearlyAStop) {
   const Limits lim = mill_limits();
   SegmentQueue q(lim);
   Interpolator ip(q);
-  q.push(line(xyz(20, 0, 0), 200.0, 1));
-  q.push(line(xyz(20, 20, 0), 200.0, 2));
+  ASSERT_TRUE(q.push(line(xyz(20, 0, 0), 200.0, 1)));
+  ASSERT_TRUE(q.push(line(xyz(20, 20, 0), 200.0, 2)));
   const Trace tr = run_to_idle(ip);
   double corner_speed = 1e9;
   for (std::size_t k = 1; k < tr.pos.size(); ++k) {
@@ -212,7 +213,7 @@ TEST(Interpolator, NonLinearRapidShortAxisArrivesFirst) {
   const Limits lim = mill_limits();
   SegmentQueue q(lim);
   Interpolator ip(q);
-  q.push(rapid(xyz(100, 10, -3), false, 7));
+  ASSERT_TRUE(q.push(rapid(xyz(100, 10, -3), false, 7)));
   const Trace tr = run_to_idle(ip);
   std::size_t y_done = 0, z_done = 0;
   for (std::size_t k = tr.pos.size(); k-- > 0;) {
@@ -240,7 +241,7 @@ TEST(Interpolator, ArcSamplesLieOnTheCircle) {
   SegmentQueue q(lim);
   q.reset(xyz(15, 5, 0));
   Interpolator ip(q);
-  q.push(arc(xyz(5, 15, 0), 5.0, 5.0, true, 150.0));
+  ASSERT_TRUE(q.push(arc(xyz(5, 15, 0), 5.0, 5.0, true, 150.0)));
   const Trace tr = run_to_idle(ip);
   for (const AxisVec& p : tr.pos) {
     EXPECT_NEAR(std::hypot(p[0] - 5.0, p[1] - 5.0), 10.0, 1e-9);
@@ -257,7 +258,7 @@ TEST(Interpolator, FullCircle) {
   SegmentQueue q(lim);
   q.reset(xyz(10, 0, 0));
   Interpolator ip(q);
-  q.push(arc(xyz(10, 0, 0), 0.0, 0.0, false, 100.0));
+  ASSERT_TRUE(q.push(arc(xyz(10, 0, 0), 0.0, 0.0, false, 100.0)));
   const double duration = q.front()->duration;
   EXPECT_NEAR(duration, 2.0 * std::numbers::pi * 10.0 / 100.0 + 100.0 / q.front()->accel, 1e-9);
   const Trace tr = run_to_idle(ip);
@@ -279,7 +280,7 @@ TEST(Interpolator, Helix) {
   Interpolator ip(q);
   Move m = arc(xyz(0, 0, -6), 0.0, 5.0, true, 100.0);  // G17: centre (0, 5), r = 5
   m.extra_turns = 1;                                   // two turns: 4 pi, 3 mm per turn
-  q.push(m);
+  ASSERT_TRUE(q.push(m));
   const Trace tr = run_to_idle(ip);
   // z is linear in the unwrapped angle: -6 mm over 4 pi.
   const double start_angle = -std::numbers::pi / 2.0;
@@ -298,8 +299,8 @@ TEST(Interpolator, StopNowFreezes) {
   const Limits lim = mill_limits();
   SegmentQueue q(lim);
   Interpolator ip(q);
-  q.push(line(xyz(100, 0, 0), 200.0, 1));
-  q.push(line(xyz(100, 50, 0), 200.0, 2));
+  ASSERT_TRUE(q.push(line(xyz(100, 0, 0), 200.0, 1)));
+  ASSERT_TRUE(q.push(line(xyz(100, 50, 0), 200.0, 2)));
   for (int k = 0; k < 100; ++k) ip.tick();
   const AxisVec here = ip.position();
   ip.stop_now();
@@ -310,7 +311,7 @@ TEST(Interpolator, StopNowFreezes) {
   for (int k = 0; k < 10; ++k) EXPECT_EQ(ip.tick(), here);
   EXPECT_EQ(ip.velocity(), AxisVec{});
   // The queue continues from where it stopped.
-  q.push(line(xyz(0, 0, 0), 200.0, 3));
+  ASSERT_TRUE(q.push(line(xyz(0, 0, 0), 200.0, 3)));
   const Trace tr = run_to_idle(ip);
   EXPECT_EQ(tr.pos.back(), xyz(0, 0, 0));
 }
@@ -319,7 +320,7 @@ TEST(Interpolator, DecelerateStopsAfterTheBrakingDistance) {
   const Limits lim = mill_limits();
   SegmentQueue q(lim);
   Interpolator ip(q);
-  q.push(line(xyz(30, 40, 0), 100.0, 1));
+  ASSERT_TRUE(q.push(line(xyz(30, 40, 0), 100.0, 1)));
   for (int k = 0; k < 300; ++k) ip.tick();  // cruising at 100 mm/s
   ASSERT_NEAR(ip.path_speed(), 100.0, 1e-9);
   const AxisVec here = ip.position();
@@ -352,13 +353,13 @@ TEST(Interpolator, DwellLastsItsTime) {
   const Limits lim = mill_limits();
   SegmentQueue q(lim);
   Interpolator ip(q);
-  q.push(line(xyz(1, 0, 0), 100.0, 1));
+  ASSERT_TRUE(q.push(line(xyz(1, 0, 0), 100.0, 1)));
   Move d;
   d.kind = Kind::kDwell;
   d.dwell_s = 0.5;
   d.tag = 2;
-  q.push(d);
-  q.push(line(xyz(2, 0, 0), 100.0, 3));
+  ASSERT_TRUE(q.push(d));
+  ASSERT_TRUE(q.push(line(xyz(2, 0, 0), 100.0, 3)));
   const Trace tr = run_to_idle(ip);
   int still = 0;
   for (std::size_t k = 1; k < tr.pos.size(); ++k) {
@@ -370,7 +371,7 @@ TEST(Interpolator, DwellLastsItsTime) {
 TEST(Interpolator, TimeScaleZeroHolds) {
   SegmentQueue q(mill_limits());
   Interpolator ip(q);
-  q.push(line(xyz(10, 0, 0), 100.0));
+  ASSERT_TRUE(q.push(line(xyz(10, 0, 0), 100.0)));
   for (int k = 0; k < 50; ++k) ip.tick();
   const AxisVec here = ip.position();
   ip.set_time_scale(0.0);
@@ -384,7 +385,7 @@ TEST(Interpolator, TimeScaleZeroHolds) {
 TEST(Interpolator, VelocityIsReported) {
   SegmentQueue q(mill_limits());
   Interpolator ip(q);
-  q.push(line(xyz(30, 40, 0), 100.0, 9));
+  ASSERT_TRUE(q.push(line(xyz(30, 40, 0), 100.0, 9)));
   for (int k = 0; k < 300; ++k) ip.tick();
   EXPECT_NEAR(ip.velocity()[0], 60.0, 1e-9);
   EXPECT_NEAR(ip.velocity()[1], 80.0, 1e-9);
@@ -394,7 +395,7 @@ TEST(Interpolator, VelocityIsReported) {
 TEST(Interpolator, SetPositionResetsEverything) {
   SegmentQueue q(mill_limits());
   Interpolator ip(q);
-  q.push(line(xyz(30, 40, 0), 100.0));
+  ASSERT_TRUE(q.push(line(xyz(30, 40, 0), 100.0)));
   for (int k = 0; k < 10; ++k) ip.tick();
   ip.set_position(xyz(1, 1, 1));
   EXPECT_TRUE(ip.idle());
@@ -409,7 +410,7 @@ TEST(Interpolator, NoAccelSkipMoveRunsAtTheFeedFromTheFirstTick) {
   Interpolator ip(q);
   Move m = line(xyz(5, 0, 0), 20.0);
   m.no_accel = true;
-  q.push(m);
+  ASSERT_TRUE(q.push(m));
   ip.tick();
   EXPECT_NEAR(ip.position()[0], 20.0 * lim.period_s, 1e-15);
   EXPECT_EQ(ip.path_speed(), 20.0);
