@@ -368,6 +368,52 @@ TEST(Interpolator, DwellLastsItsTime) {
   EXPECT_NEAR(still * lim.period_s, 0.5, lim.period_s + 1e-12);
 }
 
+// Time inside a segment is a count of periods, not a sum: over hours at
+// 1 ms a sum of 0.001 s runs ahead by about 1.7 us (a 0.0017 fraction of a
+// period), which ended this dwell one period early.
+TEST(Interpolator, ThreeHourDwellEndsAtTheTickItsDurationSays) {
+  const Limits lim = mill_limits();
+  SegmentQueue q(lim);
+  Interpolator ip(q);
+  Move d;
+  d.kind = Kind::kDwell;
+  d.dwell_s = 3 * 3600.0 + 1e-6;  // a thousandth of a period past a boundary
+  ASSERT_TRUE(q.push(d));
+  const auto expected = static_cast<std::int64_t>(std::ceil(d.dwell_s / lim.period_s - 1e-6));
+  ASSERT_EQ(expected, 10'800'001);
+  std::int64_t ticks = 0;
+  while (!ip.idle() && ticks < expected + 10) {
+    ip.tick();
+    ++ticks;
+  }
+  EXPECT_EQ(ticks, expected);
+}
+
+// A line of three hours: each sample is the closed-form position at k
+// periods, and the end point comes at the tick the duration says.
+TEST(Interpolator, LongLineSamplesTheClosedFormAtWholePeriods) {
+  const Limits lim = mill_limits();
+  SegmentQueue q(lim);
+  Interpolator ip(q);
+  ASSERT_TRUE(q.push(line(xyz(1080.0, 0, 0), 0.1)));  // 10,800 s at 0.1 mm/s
+  const planner::Segment seg = *q.front();
+  const auto expected = static_cast<std::int64_t>(std::ceil(seg.duration / lim.period_s - 1e-6));
+  ASSERT_GT(expected, 10'800'000);
+  for (std::int64_t k = 1; k < expected; ++k) {
+    ip.tick();
+    if (k % 1'000'000 == 0) {
+      // Drift of the summed time here was about 1.6e-7 mm at 0.1 mm/s.
+      const double x = seg.position_at(static_cast<double>(k) * lim.period_s)[0];
+      ASSERT_NEAR(ip.position()[0], x, 1e-10) << "tick " << k;
+    }
+  }
+  EXPECT_LT(ip.position()[0], 1080.0);
+  EXPECT_FALSE(ip.idle());
+  ip.tick();
+  EXPECT_EQ(ip.position(), xyz(1080.0, 0, 0));
+  EXPECT_TRUE(ip.idle());
+}
+
 TEST(Interpolator, TimeScaleZeroHolds) {
   SegmentQueue q(mill_limits());
   Interpolator ip(q);
