@@ -8,6 +8,26 @@
 //   outputs: the commanded position for t_{k+1}.
 // Between samples the kernel takes actual and commanded positions as linear
 // in time, so a latch is placed at the edge's instant inside the period.
+//
+// Threading contract: a Kernel is used from one thread. push(), tick() and
+// every other call run on the same thread, or the caller synchronises them
+// so that no two overlap (and each sees the effects of the one before). The
+// kernel has no lock and no atomic, because:
+//   - push() and tick() share the segment queue: push writes a new segment
+//     and replans the profiles of every segment not yet started, while tick
+//     starts the front one (marks it started, reads its profile) and pops
+//     it. Overlapping, a tick could start a segment whose profile is half
+//     rewritten: a data race, undefined behaviour.
+//   - a skip command's push resets the skip block's state that tick()
+//     monitors and writes; set_operator() and set_position() change what
+//     the next tick reads.
+//   - a lock inside would make the real-time tick wait for a push, which
+//     replans up to the whole queue: the tick's budget would depend on the
+//     producer. The caller knows its loop and chooses where to push.
+// The simulator and examples/embedding push between ticks in one loop. A
+// servo loop on its own thread takes the commands from its producer (a
+// single-producer queue of canon::Stamped, say) and pushes them itself
+// between ticks (docs/embedding.md).
 #pragma once
 
 #include <array>
