@@ -110,7 +110,10 @@ void BM_KernelTick(benchmark::State& state) {
       target[0] = forward ? 400.0 : -400.0;
       target[1] = forward ? 300.0 : -300.0;
       forward = !forward;
-      k.push({canon::Feed{target, 6000.0, false}, 1});
+      if (!k.push({canon::Feed{target, 6000.0, false}, 1})) {
+        state.SkipWithError("the kernel refused a move at rest");
+        break;
+      }
     }
     plant.advance(k.now() + 1, prev, out.commanded, in);
     prev = out.commanded;

@@ -39,9 +39,9 @@ int main(int argc, char** argv) {
         a.center0 = (k.command()[0] + t[0]) / 2.0;
         a.center1 = (k.command()[1] + t[1]) / 2.0;
         a.feed_mm_per_min = 5000.0;
-        k.push({a, 1});
+        if (!k.push({a, 1})) return 2;  // not reached: can_accept() leaves room
       } else {
-        k.push({canon::Feed{t, 8000.0, false}, 1});
+        if (!k.push({canon::Feed{t, 8000.0, false}, 1})) return 2;
       }
       ++step;
     }

@@ -12,6 +12,7 @@
 // Build: part of the project (target skipnc_embedding_example).
 #include <cmath>
 #include <cstdio>
+#include <deque>
 
 #include "config/dialect.hpp"
 #include "config/machine_config.hpp"
@@ -21,16 +22,28 @@
 
 namespace {
 
-// Routes the interpreter's motion commands to the kernel.
+// Routes the interpreter's motion commands to the kernel. Kernel::push
+// refuses a command when the queue is full, and one block may make more
+// moves than the queue holds (a canned cycle with many pecks), so what does
+// not fit waits here, in order, and feed() hands it over as the ticks make
+// room. Read the next block only once everything is handed over (drained()).
 class ToKernel final : public skipnc::canon::CommandSink {
  public:
   explicit ToKernel(skipnc::kernel::Kernel& k) : k_(k) {}
   void emit(const skipnc::canon::Stamped& c) override {
-    if (skipnc::canon::is_motion(c.cmd)) k_.push(c);
+    if (skipnc::canon::is_motion(c.cmd)) {
+      waiting_.push_back(c);
+      feed();
+    }
   }
+  void feed() {
+    while (!waiting_.empty() && k_.push(waiting_.front())) waiting_.pop_front();
+  }
+  bool drained() const { return waiting_.empty(); }
 
  private:
   skipnc::kernel::Kernel& k_;
+  std::deque<skipnc::canon::Stamped> waiting_;
 };
 
 }  // namespace
@@ -72,7 +85,8 @@ int main() {
 
   for (int period = 0; period < 1'000'000; ++period) {
     // Outside the tick: keep the queue full.
-    while (!waiting && !ending && k.can_accept()) {
+    sink.feed();
+    while (!waiting && !ending && sink.drained() && k.can_accept()) {
       auto st = in.step(sink);
       if (!st) {
         std::fprintf(stderr, "alarm at line %u: %s\n", st.error().loc.line,
@@ -101,7 +115,7 @@ int main() {
     drive = tick_out.commanded;
 
     // Outside the tick again: complete a skip.
-    if (waiting && k.idle() && (!k.skip().active || k.skip().done)) {
+    if (waiting && sink.drained() && k.idle() && (!k.skip().active || k.skip().done)) {
       interp::SyncState s;
       s.machine_position = k.skip().active ? k.skip().stop_position : k.command();
       s.actual_position = drive;
@@ -114,7 +128,7 @@ int main() {
       waiting = false;
       if (auto r = in.sync(s); !r) return 1;
     }
-    if (ending && k.idle()) break;
+    if (ending && sink.drained() && k.idle()) break;
   }
   auto z = in.read_variable(100);
   std::printf("probe touched at Z %.6f (#100); final Z %.6f after %lld periods\n", z ? z->v : 0.0,

@@ -1,22 +1,23 @@
 // Per-tick sampler (see interpolator.hpp). Nothing here allocates or throws;
 // the only state carried from tick to tick is the time inside the active
-// segment (or ramp), never an absolute time.
+// segment (or ramp), never an absolute time, and that time is an integer
+// count of periods with a fixed offset, never a running sum.
 #include "interpolator/interpolator.hpp"
 
 #include <algorithm>
 #include <cmath>
 
-namespace skipnc::interp {
+namespace skipnc::interpolator {
 
 namespace {
-// The planner's idea of the active segment may change under us only through
-// Planner::reset (called by us, or by the caller before set_position).
-bool still_front(planner::Planner& q, const planner::Segment* seg) noexcept {
+// The queue's idea of the active segment may change under us only through
+// SegmentQueue::reset (called by us, or by the caller before set_position).
+bool still_front(planner::SegmentQueue& q, const planner::Segment* seg) noexcept {
   return seg != nullptr && q.front() == seg && seg->started;
 }
 }  // namespace
 
-Interpolator::Interpolator(planner::Planner& queue) noexcept
+Interpolator::Interpolator(planner::SegmentQueue& queue) noexcept
     : queue_(queue), pos_(queue.tail_position()) {}
 
 bool Interpolator::idle() const noexcept {
@@ -27,10 +28,11 @@ const AxisVec& Interpolator::tick() noexcept {
   const double period = queue_.limits().period_s;
 
   if (ramp_) {
-    ramp_t_ += period;
+    ++ramp_ticks_;
+    const double t = static_cast<double>(ramp_ticks_) * period;
     const double t_stop = ramp_v0_ / ramp_decel_;
     const double stop_dist = ramp_v0_ * ramp_v0_ / (2.0 * ramp_decel_);
-    if (ramp_t_ >= t_stop) {
+    if (t >= t_stop) {
       pos_ = ramp_start_ + ramp_dir_ * stop_dist;
       vel_ = AxisVec{};
       speed_ = 0.0;
@@ -39,7 +41,6 @@ const AxisVec& Interpolator::tick() noexcept {
       // caller queued since then already starts here.
       if (queue_.empty()) queue_.reset(pos_);
     } else {
-      const double t = ramp_t_;
       pos_ = ramp_start_ + ramp_dir_ * ((ramp_v0_ - 0.5 * ramp_decel_ * t) * t);
       speed_ = ramp_v0_ - ramp_decel_ * t;
       vel_ = ramp_dir_ * speed_;
@@ -63,24 +64,33 @@ const AxisVec& Interpolator::tick() noexcept {
     }
     if (f != nullptr) released_ = false;
     seg_ = f;
-    seg_time_ = 0.0;
+    seg_ticks_ = 0;  // starts at this period's start
+    seg_offset_s_ = 0.0;
     if (seg_ != nullptr) seg_->started = true;
   }
 
-  double remaining = scale_ > 0.0 ? period * scale_ : 0.0;
-  // Time inside a segment is a sum of periods, so it drifts by rounding (a
-  // 1.05 s dwell was 1050 periods plus 2e-13 s, and took 1051): a segment
-  // that ends within a millionth of a period after this one ends here.
+  const double step = scale_ > 0.0 ? period * scale_ : 0.0;
+  if (step != seg_step_s_) {
+    // A new time scale (override, feed hold): count again from the time
+    // reached, so the periods before the change keep the step they had.
+    seg_offset_s_ = -seg_time();
+    seg_ticks_ = 0;
+    seg_step_s_ = step;
+  }
+  // The duration is a closed-form real and the count times the period is
+  // rounded once, so a segment meant to end on a period boundary may miss
+  // it by a rounding either way: a segment that ends within a millionth of a
+  // period after this one ends here.
   const double slack = period * 1e-6;
   while (seg_ != nullptr) {
-    const double left = seg_->duration - seg_time_;
-    if (remaining < left - slack) {
-      seg_time_ += remaining;
+    const double t_end = static_cast<double>(seg_ticks_ + 1) * seg_step_s_ - seg_offset_s_;
+    if (t_end < seg_->duration - slack) {
+      ++seg_ticks_;
       break;
     }
     // The segment ends inside this period: land exactly on its end point and
     // carry the rest of the period into the next one.
-    remaining = std::max(0.0, remaining - left);
+    const double rest = std::max(0.0, t_end - seg_->duration);
     pos_ = seg_->end;
     line_ = seg_->line;
     source_ = seg_->source;
@@ -88,7 +98,10 @@ const AxisVec& Interpolator::tick() noexcept {
     const bool check = seg_->in_position;
     queue_.pop_front();
     seg_ = nullptr;
-    seg_time_ = 0.0;
+    // The next segment began `rest` before the end of this period: its
+    // first period is the one that is ending, less what this one took.
+    seg_ticks_ = 0;
+    seg_offset_s_ = seg_step_s_ - rest;
     const planner::Segment* next = queue_.front();
     if (check || (next != nullptr && next->wait_in_position)) {
       // The in-position check: the next segment waits for release.
@@ -101,7 +114,7 @@ const AxisVec& Interpolator::tick() noexcept {
   }
 
   if (seg_ != nullptr) {
-    seg_->sample(seg_time_, queue_.limits().axis_count, pos_, vel_, speed_);
+    seg_->sample(seg_time(), queue_.limits().axis_count, pos_, vel_, speed_);
     if (scale_ != 1.0) {
       vel_ = vel_ * scale_;
       speed_ *= scale_;
@@ -120,7 +133,8 @@ void Interpolator::stop_now() noexcept {
   hold_ = false;
   released_ = false;
   seg_ = nullptr;
-  seg_time_ = 0.0;
+  seg_ticks_ = 0;
+  seg_offset_s_ = 0.0;
   ramp_ = false;
   vel_ = AxisVec{};
   speed_ = 0.0;
@@ -139,9 +153,10 @@ void Interpolator::decelerate(double decel_mm_s2) noexcept {
   ramp_dir_ = vel_ * (1.0 / v0);
   ramp_v0_ = v0;
   ramp_decel_ = decel_mm_s2;
-  ramp_t_ = 0.0;
+  ramp_ticks_ = 0;
   seg_ = nullptr;
-  seg_time_ = 0.0;
+  seg_ticks_ = 0;
+  seg_offset_s_ = 0.0;
   speed_ = v0;
   queue_.reset(ramp_start_ + ramp_dir_ * (v0 * v0 / (2.0 * decel_mm_s2)));
 }
@@ -155,4 +170,4 @@ void Interpolator::set_position(const AxisVec& pos) noexcept {
   stop_now();
 }
 
-}  // namespace skipnc::interp
+}  // namespace skipnc::interpolator

@@ -8,11 +8,11 @@
 #include "core/axes.hpp"
 #include "planner/planner.hpp"
 
-namespace skipnc::interp {
+namespace skipnc::interpolator {
 
 class Interpolator {
  public:
-  explicit Interpolator(planner::Planner& queue) noexcept;
+  explicit Interpolator(planner::SegmentQueue& queue) noexcept;
 
   // Advances the command by one servo period and returns the commanded
   // position at the end of it. Segments end and begin inside a period; the
@@ -66,9 +66,19 @@ class Interpolator {
   AxisVec segment_start() const noexcept;
 
  private:
-  planner::Planner& queue_;
+  planner::SegmentQueue& queue_;
+  // Time inside the active segment, s: seg_time(). Kept as a count of
+  // periods, never as a sum of them (t += dt rounds at every period, and
+  // over hours at 1 ms the error reaches a thousandth of a period, enough
+  // to end a segment a period early or late).
+  double seg_time() const noexcept {
+    return static_cast<double>(seg_ticks_) * seg_step_s_ - seg_offset_s_;
+  }
   planner::Segment* seg_ = nullptr;
-  double seg_time_ = 0.0;  // time inside the active segment, s
+  std::int64_t seg_ticks_ = 0;  // periods counted since the segment started (or rebased)
+  double seg_step_s_ = 0.0;     // profile time per period: period * time scale
+  double seg_offset_s_ = 0.0;   // the part of its first period the segments before it took
+                                // (minus the time reached, after a change of time scale)
   AxisVec pos_;
   AxisVec vel_;
   double speed_ = 0.0;
@@ -84,7 +94,7 @@ class Interpolator {
   AxisVec ramp_dir_;
   double ramp_v0_ = 0.0;
   double ramp_decel_ = 0.0;
-  double ramp_t_ = 0.0;
+  std::int64_t ramp_ticks_ = 0;  // periods since the ramp began: t = ramp_ticks_ * period
 };
 
-}  // namespace skipnc::interp
+}  // namespace skipnc::interpolator

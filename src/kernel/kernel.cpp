@@ -1,12 +1,13 @@
 #include "kernel/kernel.hpp"
 
+#include <cassert>
 #include <cmath>
 #include <type_traits>
 
 namespace skipnc::kernel {
 
 Kernel::Kernel(const KernelConfig& cfg)
-    : cfg_(cfg), planner_(cfg.limits, cfg.queue_capacity), interp_(planner_) {
+    : cfg_(cfg), queue_(cfg.limits, cfg.queue_capacity), interpolator_(queue_) {
   all_axes_ = (1U << cfg_.limits.axis_count) - 1U;
   min_accel_mm_s2_ = 1e300;
   for (int i = 0; i < cfg_.limits.axis_count; ++i) {
@@ -16,14 +17,17 @@ Kernel::Kernel(const KernelConfig& cfg)
 }
 
 void Kernel::set_position(const AxisVec& machine) noexcept {
-  interp_.set_position(machine);
+  interpolator_.set_position(machine);
   cmd_ = machine;
   cmd_prev_ = machine;
   actual_prev_ = machine;
   in_position_ = true;  // at rest there
 }
 
-void Kernel::push(const canon::Stamped& stamped) {
+bool Kernel::push(const canon::Stamped& stamped) {
+  // Refused before anything changes: a skip command below resets the skip
+  // block's state, and the tag is the command's for good once given.
+  if (queue_.full()) return false;
   planner::Move m;
   m.line = stamped.line;
   m.source = stamped.source;
@@ -56,7 +60,7 @@ void Kernel::push(const canon::Stamped& stamped) {
           m.in_position = c.exact_stop;
         } else if constexpr (std::is_same_v<T, canon::Dwell>) {
           m.kind = planner::Move::Kind::kDwell;
-          m.target = planner_.tail_position();
+          m.target = queue_.tail_position();
           m.dwell_s = c.seconds;
           m.wait_in_position = true;
         } else if constexpr (std::is_same_v<T, canon::Skip>) {
@@ -81,11 +85,14 @@ void Kernel::push(const canon::Stamped& stamped) {
         } else {
           m.kind = planner::Move::Kind::kDwell;  // not reached: other commands are not queued
           m.dwell_s = 0.0;
-          m.target = planner_.tail_position();
+          m.target = queue_.tail_position();
         }
       },
       stamped.cmd);
-  planner_.push(m);
+  // The queue had room (checked above), so it takes the move.
+  const bool taken = queue_.push(m);
+  assert(taken);
+  return taken;
 }
 
 bool Kernel::axes_in_position(const AxisVec& actual) const noexcept {
@@ -114,7 +121,7 @@ void Kernel::trigger(double frac, const TickInput& in, int input, bool torque) n
     // The block ends from the mechanical stop position: the command follows
     // up to where the axis is held, and that is what is stored.
     skip_.latch_machine = in.actual;
-    interp_.set_position(in.actual);
+    interpolator_.set_position(in.actual);
     cmd_ = in.actual;
     followed_up_ = true;
     skip_stopping_ = true;
@@ -156,11 +163,11 @@ AxisVec Kernel::stored_latch() const noexcept {
 
 void Kernel::begin_stop() noexcept {
   if (skip_.spec.stop == canon::SkipStop::kImmediate) {
-    interp_.stop_now();
+    interpolator_.stop_now();
   } else {
     // Linear deceleration at the path's acceleration limit (the smallest
     // a_i / |u_i| over the moving axes).
-    const AxisVec& v = interp_.velocity();
+    const AxisVec& v = interpolator_.velocity();
     const double speed = norm(v, cfg_.limits.axis_count);
     double a = 0.0;
     if (speed > 0.0) {
@@ -172,9 +179,9 @@ void Kernel::begin_stop() noexcept {
       }
     }
     if (a > 0.0 && a < 1e300) {
-      interp_.decelerate(a);
+      interpolator_.decelerate(a);
     } else {
-      interp_.stop_now();
+      interpolator_.stop_now();
     }
   }
   skip_stopping_ = true;
@@ -192,8 +199,8 @@ void Kernel::start_skip_block(const TickInput& in) noexcept {
   if (spec.ignore_inputs || spec.edge || !spec.active_at_start_ends) return;
   for (int i = 0; i < spec.input_count; ++i) {
     if (!input_active(i, signals_.get(spec.inputs[i]))) continue;
-    const AxisVec start = interp_.segment_start();
-    interp_.set_position(start);
+    const AxisVec start = interpolator_.segment_start();
+    interpolator_.set_position(start);
     cmd_ = start;
     skip_.triggered = true;
     skip_.input_index = i;
@@ -212,7 +219,7 @@ void Kernel::monitor_skip(const TickInput& in) noexcept {
   if (!skip_.active || skip_.done) return;
   const canon::SkipSpec& spec = skip_.spec;
   if (!skip_started_) {
-    if (interp_.idle()) {
+    if (interpolator_.idle()) {
       // The skip move had no length: it ends at once, without a signal.
       skip_started_ = true;
       handshake_ = SkipHandshake{true, false, false, false};
@@ -271,7 +278,7 @@ void Kernel::monitor_skip(const TickInput& in) noexcept {
 // skip block with a fixed feed runs at 100 % whatever the override says.
 double Kernel::advance_time_scale() noexcept {
   if (full_rate_) return 1.0;
-  const planner::Segment* seg = planner_.front();
+  const planner::Segment* seg = queue_.front();
   const bool cutting = seg != nullptr && (seg->kind == planner::Move::Kind::kLine ||
                                           seg->kind == planner::Move::Kind::kArc);
   const bool fixed =
@@ -312,24 +319,25 @@ void Kernel::tick(const TickInput& in, TickOutput& out) noexcept {
   const double scale = advance_time_scale();
   if (scale != time_scale_) {
     time_scale_ = scale;
-    interp_.set_time_scale(time_scale_);
+    interpolator_.set_time_scale(time_scale_);
   }
   // The in-position check between blocks (G00, G09, G61, before a dwell or
   // a skip): the next segment starts in the first period that finds every
   // axis within the width of the command.
-  if (interp_.needs_in_position() && axes_in_position(in.actual)) interp_.release_in_position();
+  if (interpolator_.needs_in_position() && axes_in_position(in.actual))
+    interpolator_.release_in_position();
   cmd_prev_ = cmd_;
-  cmd_ = interp_.tick();
-  if (skip_.active && !skip_.done && !skip_started_ && interp_.tag() == skip_tag_) {
+  cmd_ = interpolator_.tick();
+  if (skip_.active && !skip_.done && !skip_started_ && interpolator_.tag() == skip_tag_) {
     start_skip_block(in);
   }
   actual_prev_ = in.actual;
   // In position: every axis within the width, or locked (one bit per axis,
   // no branch per axis). It matters only once the motion has ended (idle(),
   // the end of a skip block), so it is not looked at before.
-  const bool at_rest = interp_.idle() || interp_.holding();
+  const bool at_rest = interpolator_.idle() || interpolator_.holding();
   const bool inpos = at_rest && axes_in_position(in.actual);
-  in_position_ = inpos && interp_.idle();
+  in_position_ = inpos && interpolator_.idle();
   inpos_wait_ = at_rest && !inpos ? inpos_wait_ + 1 : 0;
   if (skip_.active && !skip_.done && skip_started_ && !skip_latch_pending_ && in_position_) {
     skip_.done = true;
@@ -342,11 +350,11 @@ void Kernel::tick(const TickInput& in, TickOutput& out) noexcept {
     handshake_.done = true;
   }
   out.commanded = cmd_;
-  out.velocity = interp_.velocity();
-  out.path_speed = interp_.path_speed();
-  out.line = interp_.line();
-  out.source = interp_.source();
-  out.tag = interp_.tag();
+  out.velocity = interpolator_.velocity();
+  out.path_speed = interpolator_.path_speed();
+  out.line = interpolator_.line();
+  out.source = interpolator_.source();
+  out.tag = interpolator_.tag();
   out.skip_active = skip_.active && !skip_.done;
   out.handshake = handshake_;
   out.torque_limit_pct = AxisVec{};

@@ -8,6 +8,26 @@
 //   outputs: the commanded position for t_{k+1}.
 // Between samples the kernel takes actual and commanded positions as linear
 // in time, so a latch is placed at the edge's instant inside the period.
+//
+// Threading contract: a Kernel is used from one thread. push(), tick() and
+// every other call run on the same thread, or the caller synchronises them
+// so that no two overlap (and each sees the effects of the one before). The
+// kernel has no lock and no atomic, because:
+//   - push() and tick() share the segment queue: push writes a new segment
+//     and replans the profiles of every segment not yet started, while tick
+//     starts the front one (marks it started, reads its profile) and pops
+//     it. Overlapping, a tick could start a segment whose profile is half
+//     rewritten: a data race, undefined behaviour.
+//   - a skip command's push resets the skip block's state that tick()
+//     monitors and writes; set_operator() and set_position() change what
+//     the next tick reads.
+//   - a lock inside would make the real-time tick wait for a push, which
+//     replans up to the whole queue: the tick's budget would depend on the
+//     producer. The caller knows its loop and chooses where to push.
+// The simulator and examples/embedding push between ticks in one loop. A
+// servo loop on its own thread takes the commands from its producer (a
+// single-producer queue of canon::Stamped, say) and pushes them itself
+// between ticks (docs/embedding.md).
 #pragma once
 
 #include <array>
@@ -113,12 +133,22 @@ class Kernel {
   explicit Kernel(const KernelConfig& cfg);
 
   // --- outside the tick -------------------------------------------------
-  // Room for one more block (a block may queue a few moves, e.g. G28).
+  // Room for one more block of the usual kind (a block may queue a few
+  // moves, e.g. G28), and no skip block pending. A hint for when to read the
+  // next block, not a promise: a canned cycle's block may queue hundreds of
+  // moves, more than the queue holds. push() is what says whether a command
+  // was taken.
   bool can_accept() const noexcept {
-    return planner_.size() + 4 <= cfg_.queue_capacity && !skip_.active;
+    return queue_.size() + 4 <= cfg_.queue_capacity && !skip_.active;
   }
+  // Room for one more command: the next push() takes it.
+  bool can_push() const noexcept { return !queue_.full(); }
   // Queues a motion or dwell command (other commands are not the kernel's).
-  void push(const canon::Stamped& cmd);
+  // Returns false when the queue is full, and then changes nothing (the
+  // queue, the skip block's state and next_tag() are as they were): the
+  // command was not taken, and the caller keeps it and pushes it again after
+  // a tick has made room (can_push()).
+  [[nodiscard]] bool push(const canon::Stamped& cmd);
   // The number the next pushed command gets (1, 2, ...; TickOutput::tag
   // names the running one), for callers that keep data per command.
   std::uint32_t next_tag() const noexcept { return next_tag_; }
@@ -149,7 +179,7 @@ class Kernel {
   // Periods the command has been at rest (idle or at an in-position hold)
   // with some axis outside the width: an axis held away from its command.
   std::int64_t in_position_wait() const noexcept { return inpos_wait_; }
-  bool motion_idle() const noexcept { return interp_.idle(); }
+  bool motion_idle() const noexcept { return interpolator_.idle(); }
   const SkipResult& skip() const noexcept { return skip_; }
   void clear_skip() noexcept { skip_ = SkipResult{}; }
   const AxisVec& command() const noexcept { return cmd_; }
@@ -176,8 +206,8 @@ class Kernel {
   }
 
   KernelConfig cfg_;
-  planner::Planner planner_;
-  interp::Interpolator interp_;
+  planner::SegmentQueue queue_;
+  interpolator::Interpolator interpolator_;
   SignalImage signals_;
   Tick tick_ = 0;
   AxisVec cmd_;       // command for t_k (output at tick k-1)

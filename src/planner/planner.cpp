@@ -20,7 +20,6 @@
 #include "planner/planner.hpp"
 
 #include <algorithm>
-#include <cassert>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -458,19 +457,19 @@ void Segment::sample(double t, int axis_count, AxisVec& position, AxisVec& veloc
 }
 
 // ---------------------------------------------------------------------------
-// Planner
+// SegmentQueue
 
-Planner::Planner(const Limits& limits, std::size_t capacity)
+SegmentQueue::SegmentQueue(const Limits& limits, std::size_t capacity)
     : limits_(limits), ring_(std::max<std::size_t>(capacity, 1)) {}
 
-void Planner::reset(const AxisVec& position) noexcept {
+void SegmentQueue::reset(const AxisVec& position) noexcept {
   head_ = 0;
   count_ = 0;
   tail_ = position;
   front_entry_ = 0.0;
 }
 
-void Planner::pop_front() noexcept {
+void SegmentQueue::pop_front() noexcept {
   if (count_ == 0) return;
   const Segment& s = ring_[head_];
   front_entry_ = s.no_accel ? 0.0 : s.v_exit;
@@ -479,9 +478,8 @@ void Planner::pop_front() noexcept {
   if (count_ == 0) front_entry_ = 0.0;
 }
 
-void Planner::push(const Move& move) {
-  assert(!full());
-  if (full()) return;
+bool SegmentQueue::push(const Move& move) {
+  if (full()) return false;
   Segment s;
   s.kind = move.kind;
   s.start = tail_;
@@ -496,7 +494,7 @@ void Planner::push(const Move& move) {
 
   switch (move.kind) {
     case Kind::kDwell:
-      if (!(move.dwell_s > 0.0)) return;
+      if (!(move.dwell_s > 0.0)) return true;
       s.end = tail_;
       s.exact_stop = true;
       s.no_accel = false;
@@ -504,12 +502,12 @@ void Planner::push(const Move& move) {
       s.t_cruise = move.dwell_s;
       break;
     case Kind::kRapidNonLinear:
-      if (s.end == s.start) return;
+      if (s.end == s.start) return true;
       s.exact_stop = true;
       build_rapid_nonlinear(s, limits_);
       break;
     case Kind::kRapid:
-      if (s.end == s.start) return;
+      if (s.end == s.start) return true;
       s.exact_stop = true;
       build_linear(s, move, limits_);
       break;
@@ -518,7 +516,7 @@ void Planner::push(const Move& move) {
       s.kind = Kind::kLine;
       [[fallthrough]];
     case Kind::kLine:
-      if (s.end == s.start) return;
+      if (s.end == s.start) return true;
       build_linear(s, move, limits_);
       break;
   }
@@ -537,9 +535,10 @@ void Planner::push(const Move& move) {
   ++count_;
   tail_ = s.end;
   replan();
+  return true;
 }
 
-void Planner::replan() noexcept {
+void SegmentQueue::replan() noexcept {
   const std::size_t n = count_;
   std::size_t first = 0;
   while (first < n && at(first).started) ++first;

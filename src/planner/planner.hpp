@@ -113,11 +113,14 @@ struct Segment {
               double& speed) const noexcept;
 };
 
-// A fixed-capacity ring of segments shared by the planner (producer, outside
-// the tick) and the interpolator (consumer, inside the tick).
-class Planner {
+// The queue of planned segments: a fixed-capacity ring with lookahead. A push
+// (producer, outside the tick) plans the new segment and replans the ones not
+// yet started; the interpolator (consumer, inside the tick) takes segments
+// from the front. Not the whole planning stage, which is the free functions
+// above it and in planner.cpp, so it is named for what it holds.
+class SegmentQueue {
  public:
-  Planner(const Limits& limits, std::size_t capacity = 256);
+  SegmentQueue(const Limits& limits, std::size_t capacity = 256);
 
   const Limits& limits() const noexcept { return limits_; }
   bool full() const noexcept { return count_ == ring_.size(); }
@@ -126,8 +129,10 @@ class Planner {
 
   // Appends a move that starts where the previous one ends (or at `start`
   // for the first one / after reset). Zero-length moves are dropped (a zero
-  // dwell likewise). Precondition: !full().
-  void push(const Move& move);
+  // dwell likewise); that is not a refusal. Returns false when the ring is
+  // full, and then changes nothing: the move was not taken, and the caller
+  // offers it again once the interpolator has popped a segment.
+  [[nodiscard]] bool push(const Move& move);
   // The position the next pushed move starts from.
   const AxisVec& tail_position() const noexcept { return tail_; }
   // Forgets all queued segments and sets the start of the next move.

@@ -6,6 +6,7 @@
 #include <array>
 #include <cmath>
 #include <deque>
+#include <optional>
 #include <type_traits>
 #include <unordered_map>
 
@@ -102,6 +103,16 @@ struct CutNote {
 // arc or a dwell (a spinning tool at rest in the stock cuts where it
 // settles); a rapid or a skip move never cuts. A cutting command's end
 // point goes with it (ProbeScene::set_cutting).
+//
+// The simulator reads a block only while Kernel::can_accept() says there is
+// room for a few moves, but one block may queue more than the whole queue
+// holds (a G83 with a small Q makes three moves a peck; K repeats the hole).
+// The motion that does not fit waits here, in order, with the frame and the
+// cut note it had when it was emitted, and goes to the kernel as the ticks
+// make room (drain()); no block is read meanwhile. So a push is offered only
+// when the kernel has room, and a refusal cannot happen: if it does, it is
+// kept (refused()) and the run ends in an internal alarm, never in a move
+// lost without a word.
 class Router final : public canon::CommandSink {
  public:
   Router(kernel::Kernel& k, canon::CommandSink* tap, const interp::Interpreter* in = nullptr,
@@ -115,16 +126,21 @@ class Router final : public canon::CommandSink {
           if constexpr (std::is_same_v<T, canon::Rapid> || std::is_same_v<T, canon::Feed> ||
                         std::is_same_v<T, canon::Arc> || std::is_same_v<T, canon::Dwell> ||
                         std::is_same_v<T, canon::Skip>) {
-            if (frames_ != nullptr) frames_->note(k_.next_tag(), in_->work_frame());
+            Pending p{c, {}, {}};
+            if (frames_ != nullptr) p.frame = in_->work_frame();
             if constexpr (!std::is_same_v<T, canon::Dwell>) target_ = cmd.target;
             if (cuts_ != nullptr) {
               constexpr bool kCutting = std::is_same_v<T, canon::Feed> ||
                                         std::is_same_v<T, canon::Arc> ||
                                         std::is_same_v<T, canon::Dwell>;
               const bool cuts = kCutting && spindle_dir_ != 0;
-              cuts_->note(k_.next_tag(), CutNote{cuts, cuts ? target_ : AxisVec{}});
+              p.cut = CutNote{cuts, cuts ? target_ : AxisVec{}};
             }
-            k_.push(c);
+            if (backlog_.empty() && k_.can_push()) {
+              push(p);
+            } else {
+              backlog_.push_back(std::move(p));
+            }
           } else if constexpr (std::is_same_v<T, canon::Spindle>) {
             spindle_dir_ = cmd.direction;
           } else if constexpr (std::is_same_v<T, canon::Message>) {
@@ -133,16 +149,40 @@ class Router final : public canon::CommandSink {
         },
         c.cmd);
   }
+  // Moves the waiting motion to the kernel while it has room.
+  void drain() {
+    while (!backlog_.empty() && k_.can_push() && !refused_) {
+      push(backlog_.front());
+      backlog_.pop_front();
+    }
+  }
+  // Every motion command emitted so far is in the kernel.
+  bool drained() const noexcept { return backlog_.empty(); }
+  // The command the kernel refused, if one was.
+  const std::optional<canon::Stamped>& refused() const noexcept { return refused_; }
   std::vector<std::string> messages;
 
  private:
+  struct Pending {
+    canon::Stamped cmd;
+    interp::WorkFrame frame;  // with a frame log
+    CutNote cut;              // with a cut log
+  };
+  void push(const Pending& p) {
+    if (frames_ != nullptr) frames_->note(k_.next_tag(), p.frame);
+    if (cuts_ != nullptr) cuts_->note(k_.next_tag(), p.cut);
+    if (!k_.push(p.cmd)) refused_ = p.cmd;
+  }
+
   kernel::Kernel& k_;
   canon::CommandSink* tap_;
   const interp::Interpreter* in_;
   FrameLog* frames_;
   TagLog<CutNote>* cuts_;
   int spindle_dir_ = 0;
-  AxisVec target_;  // where the motion pushed so far ends
+  AxisVec target_;  // where the motion emitted so far ends
+  std::deque<Pending> backlog_;
+  std::optional<canon::Stamped> refused_;
 };
 
 Error stroke_alarm(const config::MachineConfig& m, int axis, double pos, std::string_view file,
@@ -285,10 +325,12 @@ Result<RunResult> Simulator::run(const interp::Setup& setup, const RunOptions& o
   std::uint32_t program_alarm_context = 0;
 
   for (;;) {
-    // Feed the kernel until it is full or the interpreter must wait.
+    // Feed the kernel until it is full or the interpreter must wait: first
+    // the motion of the last block that did not fit, then new blocks.
     // A signal is heard between blocks too: a macro loop without motion
     // runs many blocks within one period.
-    while (!waiting && !ending && k.can_accept() && !safety.holds_reading() &&
+    router.drain();
+    while (!waiting && !ending && router.drained() && k.can_accept() && !safety.holds_reading() &&
            !(opts.interrupt != nullptr && opts.interrupt->load(std::memory_order_relaxed))) {
       auto st = in.step(router);
       if (!st) {
@@ -312,6 +354,13 @@ Result<RunResult> Simulator::run(const interp::Setup& setup, const RunOptions& o
       }
     }
     if (res.status != RunStatus::kCompleted) break;
+    if (const auto& r = router.refused()) {
+      alarm(Error{AlarmId::kInternal,
+                  "the kernel's motion queue refused a command although it had room",
+                  SourceLoc{file_of(r->source), r->line, 1}, -1},
+            r->source);
+      break;
+    }
 
     // The operator's actions due by the start of this period.
     if (next_action < scene_.operator_actions.size()) {
@@ -433,7 +482,7 @@ Result<RunResult> Simulator::run(const interp::Setup& setup, const RunOptions& o
       break;
     }
 
-    if (waiting && k.idle() && (!k.skip().active || k.skip().done)) {
+    if (waiting && router.drained() && k.idle() && (!k.skip().active || k.skip().done)) {
       interp::SyncState s;
       s.machine_position = k.command();
       s.actual_position = plant.actual();
@@ -456,7 +505,7 @@ Result<RunResult> Simulator::run(const interp::Setup& setup, const RunOptions& o
         break;
       }
     }
-    if (ending && k.idle()) {
+    if (ending && router.drained() && k.idle()) {
       if (program_alarm) alarm(*program_alarm, program_alarm_context);
       break;
     }

@@ -125,13 +125,15 @@ RC_GTEST_PROP(PlannerProperty, RandomProgramsStayWithinLimitsAndEndOnTarget, ())
   const Limits lim = gen_limits();
   const Program prog = gen_program();
   const auto capacity = static_cast<std::size_t>(*rc::gen::inRange(2, 10));
-  Planner q(lim, capacity);
-  interp::Interpolator ip(q);
+  SegmentQueue q(lim, capacity);
+  interpolator::Interpolator ip(q);
   const double T = lim.period_s;
 
   std::size_t next = 0;
   auto refill = [&] {
-    while (next < prog.moves.size() && !q.full()) q.push(prog.moves[next++]);
+    while (next < prog.moves.size() && !q.full()) {
+      RC_ASSERT(q.push(prog.moves[next++]));
+    }
   };
   refill();
 

@@ -11,12 +11,12 @@
 
 #include "support/motion.hpp"
 
-namespace skipnc::interp {
+namespace skipnc::interpolator {
 namespace {
 
 using planner::Limits;
 using planner::Move;
-using planner::Planner;
+using planner::SegmentQueue;
 using Kind = Move::Kind;
 
 using test::mill_limits;
@@ -110,10 +110,10 @@ Ratios ratios(const Trace& tr, const Limits& lim, RapidTag rapid_tag) {
 
 TEST(Interpolator, LineEndsExactlyOnTargetInTheTrapezoidTime) {
   const Limits lim = mill_limits();
-  Planner q(lim);
+  SegmentQueue q(lim);
   Interpolator ip(q);
   const AxisVec target = xyz(100.000123, 0, 0);
-  q.push(line(target, 100.0));
+  ASSERT_TRUE(q.push(line(target, 100.0)));
   const double duration = q.front()->duration;
   const Trace tr = run_to_idle(ip);
   EXPECT_EQ(tr.pos.back(), target);
@@ -126,14 +126,14 @@ TEST(Interpolator, LineEndsExactlyOnTargetInTheTrapezoidTime) {
 
 TEST(Interpolator, SegmentsCarryTheRestOfThePeriod) {
   const Limits lim = mill_limits();
-  Planner q(lim);
+  SegmentQueue q(lim);
   Interpolator ip(q);
   Move d;
   d.kind = Kind::kDwell;
   d.dwell_s = 0.0104;
-  q.push(line(xyz(1.23, 0, 0), 100.0));
-  q.push(d);
-  q.push(line(xyz(2.5, 0, 0), 100.0));
+  ASSERT_TRUE(q.push(line(xyz(1.23, 0, 0), 100.0)));
+  ASSERT_TRUE(q.push(d));
+  ASSERT_TRUE(q.push(line(xyz(2.5, 0, 0), 100.0)));
   double total = 0.0;
   for (std::size_t k = 0; k < q.size(); ++k) {
     total += q.front()[k].duration;  // contiguous: nothing has wrapped
@@ -145,20 +145,21 @@ TEST(Interpolator, SegmentsCarryTheRestOfThePeriod) {
 
 TEST(Interpolator, MixedProgramStaysWithinLimits) {
   const Limits lim = mill_limits();
-  Planner q(lim);
+  SegmentQueue q(lim);
   Interpolator ip(q);
   // Tags: 100+ rapids, others feed moves.
-  q.push(rapid(xyz(10, 0, 5), true, 100));
-  q.push(line(xyz(10, 0, 0), 50.0, 1));
-  q.push(line(xyz(40, 0, 0), 300.0, 2));
-  q.push(arc(xyz(50, 10, 0), 40.0, 10.0, true, 300.0, 3));  // tangent quarter
-  q.push(line(xyz(50, 30, 0), 300.0, 4));
-  q.push(line(xyz(30, 40, 0), 300.0, 5));                     // corner
-  q.push(arc(xyz(20, 30, -2), 30.0, 30.0, true, 200.0, 6));   // helical, not tangent
-  q.push(arc(xyz(22, 30, -2), 21.0, 30.0, false, 300.0, 7));  // r = 1: centripetal limit
-  q.push(line(xyz(25, 33, -1), 300.0, 8));
-  q.push(rapid(xyz(0, 0, 10), false, 101));
-  q.push(rapid(xyz(-5, 20, 10), true, 102));
+  ASSERT_TRUE(q.push(rapid(xyz(10, 0, 5), true, 100)));
+  ASSERT_TRUE(q.push(line(xyz(10, 0, 0), 50.0, 1)));
+  ASSERT_TRUE(q.push(line(xyz(40, 0, 0), 300.0, 2)));
+  ASSERT_TRUE(q.push(arc(xyz(50, 10, 0), 40.0, 10.0, true, 300.0, 3)));  // tangent quarter
+  ASSERT_TRUE(q.push(line(xyz(50, 30, 0), 300.0, 4)));
+  ASSERT_TRUE(q.push(line(xyz(30, 40, 0), 300.0, 5)));                    // corner
+  ASSERT_TRUE(q.push(arc(xyz(20, 30, -2), 30.0, 30.0, true, 200.0, 6)));  // helical, not tangent
+  ASSERT_TRUE(
+      q.push(arc(xyz(22, 30, -2), 21.0, 30.0, false, 300.0, 7)));  // r = 1: centripetal limit
+  ASSERT_TRUE(q.push(line(xyz(25, 33, -1), 300.0, 8)));
+  ASSERT_TRUE(q.push(rapid(xyz(0, 0, 10), false, 101)));
+  ASSERT_TRUE(q.push(rapid(xyz(-5, 20, 10), true, 102)));
   const Trace tr = run_to_idle(ip);
   EXPECT_EQ(tr.pos.back(), xyz(-5, 20, 10));
   const Ratios r = ratios(tr, lim, [](std::uint32_t tag) { return tag >= 100; });
@@ -171,11 +172,11 @@ TEST(Interpolator, MixedProgramStaysWithinLimits) {
 
 TEST(Interpolator, CollinearShortSegmentsDoNotStop) {
   const Limits lim = mill_limits();
-  Planner q(lim);
+  SegmentQueue q(lim);
   Interpolator ip(q);
   for (std::uint32_t k = 1; k <= 10; ++k) {
     const double x = 2.0 * k;
-    q.push(line(xyz(x, x, 0), 100.0, k));
+    ASSERT_TRUE(q.push(line(xyz(x, x, 0), 100.0, k)));
   }
   const Trace tr = run_to_idle(ip);
   std::size_t first_moving = 0;
@@ -191,10 +192,10 @@ TEST(Interpolator, CollinearShortSegmentsDoNotStop) {
 
 TEST(Interpolator, RightAngleCornerIsNearlyAStop) {
   const Limits lim = mill_limits();
-  Planner q(lim);
+  SegmentQueue q(lim);
   Interpolator ip(q);
-  q.push(line(xyz(20, 0, 0), 200.0, 1));
-  q.push(line(xyz(20, 20, 0), 200.0, 2));
+  ASSERT_TRUE(q.push(line(xyz(20, 0, 0), 200.0, 1)));
+  ASSERT_TRUE(q.push(line(xyz(20, 20, 0), 200.0, 2)));
   const Trace tr = run_to_idle(ip);
   double corner_speed = 1e9;
   for (std::size_t k = 1; k < tr.pos.size(); ++k) {
@@ -210,9 +211,9 @@ TEST(Interpolator, RightAngleCornerIsNearlyAStop) {
 
 TEST(Interpolator, NonLinearRapidShortAxisArrivesFirst) {
   const Limits lim = mill_limits();
-  Planner q(lim);
+  SegmentQueue q(lim);
   Interpolator ip(q);
-  q.push(rapid(xyz(100, 10, -3), false, 7));
+  ASSERT_TRUE(q.push(rapid(xyz(100, 10, -3), false, 7)));
   const Trace tr = run_to_idle(ip);
   std::size_t y_done = 0, z_done = 0;
   for (std::size_t k = tr.pos.size(); k-- > 0;) {
@@ -237,10 +238,10 @@ TEST(Interpolator, NonLinearRapidShortAxisArrivesFirst) {
 
 TEST(Interpolator, ArcSamplesLieOnTheCircle) {
   const Limits lim = mill_limits();
-  Planner q(lim);
+  SegmentQueue q(lim);
   q.reset(xyz(15, 5, 0));
   Interpolator ip(q);
-  q.push(arc(xyz(5, 15, 0), 5.0, 5.0, true, 150.0));
+  ASSERT_TRUE(q.push(arc(xyz(5, 15, 0), 5.0, 5.0, true, 150.0)));
   const Trace tr = run_to_idle(ip);
   for (const AxisVec& p : tr.pos) {
     EXPECT_NEAR(std::hypot(p[0] - 5.0, p[1] - 5.0), 10.0, 1e-9);
@@ -254,10 +255,10 @@ TEST(Interpolator, ArcSamplesLieOnTheCircle) {
 
 TEST(Interpolator, FullCircle) {
   const Limits lim = mill_limits();
-  Planner q(lim);
+  SegmentQueue q(lim);
   q.reset(xyz(10, 0, 0));
   Interpolator ip(q);
-  q.push(arc(xyz(10, 0, 0), 0.0, 0.0, false, 100.0));
+  ASSERT_TRUE(q.push(arc(xyz(10, 0, 0), 0.0, 0.0, false, 100.0)));
   const double duration = q.front()->duration;
   EXPECT_NEAR(duration, 2.0 * std::numbers::pi * 10.0 / 100.0 + 100.0 / q.front()->accel, 1e-9);
   const Trace tr = run_to_idle(ip);
@@ -274,12 +275,12 @@ TEST(Interpolator, FullCircle) {
 
 TEST(Interpolator, Helix) {
   const Limits lim = mill_limits();
-  Planner q(lim);
+  SegmentQueue q(lim);
   q.reset(xyz(0, 0, 0));
   Interpolator ip(q);
   Move m = arc(xyz(0, 0, -6), 0.0, 5.0, true, 100.0);  // G17: centre (0, 5), r = 5
   m.extra_turns = 1;                                   // two turns: 4 pi, 3 mm per turn
-  q.push(m);
+  ASSERT_TRUE(q.push(m));
   const Trace tr = run_to_idle(ip);
   // z is linear in the unwrapped angle: -6 mm over 4 pi.
   const double start_angle = -std::numbers::pi / 2.0;
@@ -296,10 +297,10 @@ TEST(Interpolator, Helix) {
 
 TEST(Interpolator, StopNowFreezes) {
   const Limits lim = mill_limits();
-  Planner q(lim);
+  SegmentQueue q(lim);
   Interpolator ip(q);
-  q.push(line(xyz(100, 0, 0), 200.0, 1));
-  q.push(line(xyz(100, 50, 0), 200.0, 2));
+  ASSERT_TRUE(q.push(line(xyz(100, 0, 0), 200.0, 1)));
+  ASSERT_TRUE(q.push(line(xyz(100, 50, 0), 200.0, 2)));
   for (int k = 0; k < 100; ++k) ip.tick();
   const AxisVec here = ip.position();
   ip.stop_now();
@@ -310,16 +311,16 @@ TEST(Interpolator, StopNowFreezes) {
   for (int k = 0; k < 10; ++k) EXPECT_EQ(ip.tick(), here);
   EXPECT_EQ(ip.velocity(), AxisVec{});
   // The queue continues from where it stopped.
-  q.push(line(xyz(0, 0, 0), 200.0, 3));
+  ASSERT_TRUE(q.push(line(xyz(0, 0, 0), 200.0, 3)));
   const Trace tr = run_to_idle(ip);
   EXPECT_EQ(tr.pos.back(), xyz(0, 0, 0));
 }
 
 TEST(Interpolator, DecelerateStopsAfterTheBrakingDistance) {
   const Limits lim = mill_limits();
-  Planner q(lim);
+  SegmentQueue q(lim);
   Interpolator ip(q);
-  q.push(line(xyz(30, 40, 0), 100.0, 1));
+  ASSERT_TRUE(q.push(line(xyz(30, 40, 0), 100.0, 1)));
   for (int k = 0; k < 300; ++k) ip.tick();  // cruising at 100 mm/s
   ASSERT_NEAR(ip.path_speed(), 100.0, 1e-9);
   const AxisVec here = ip.position();
@@ -342,7 +343,7 @@ TEST(Interpolator, DecelerateStopsAfterTheBrakingDistance) {
 }
 
 TEST(Interpolator, DecelerateAtRestIsAStop) {
-  Planner q(mill_limits());
+  SegmentQueue q(mill_limits());
   Interpolator ip(q);
   ip.decelerate(500.0);
   EXPECT_TRUE(ip.idle());
@@ -350,15 +351,15 @@ TEST(Interpolator, DecelerateAtRestIsAStop) {
 
 TEST(Interpolator, DwellLastsItsTime) {
   const Limits lim = mill_limits();
-  Planner q(lim);
+  SegmentQueue q(lim);
   Interpolator ip(q);
-  q.push(line(xyz(1, 0, 0), 100.0, 1));
+  ASSERT_TRUE(q.push(line(xyz(1, 0, 0), 100.0, 1)));
   Move d;
   d.kind = Kind::kDwell;
   d.dwell_s = 0.5;
   d.tag = 2;
-  q.push(d);
-  q.push(line(xyz(2, 0, 0), 100.0, 3));
+  ASSERT_TRUE(q.push(d));
+  ASSERT_TRUE(q.push(line(xyz(2, 0, 0), 100.0, 3)));
   const Trace tr = run_to_idle(ip);
   int still = 0;
   for (std::size_t k = 1; k < tr.pos.size(); ++k) {
@@ -367,10 +368,56 @@ TEST(Interpolator, DwellLastsItsTime) {
   EXPECT_NEAR(still * lim.period_s, 0.5, lim.period_s + 1e-12);
 }
 
-TEST(Interpolator, TimeScaleZeroHolds) {
-  Planner q(mill_limits());
+// Time inside a segment is a count of periods, not a sum: over hours at
+// 1 ms a sum of 0.001 s runs ahead by about 1.7 us (a 0.0017 fraction of a
+// period), which ended this dwell one period early.
+TEST(Interpolator, ThreeHourDwellEndsAtTheTickItsDurationSays) {
+  const Limits lim = mill_limits();
+  SegmentQueue q(lim);
   Interpolator ip(q);
-  q.push(line(xyz(10, 0, 0), 100.0));
+  Move d;
+  d.kind = Kind::kDwell;
+  d.dwell_s = 3 * 3600.0 + 1e-6;  // a thousandth of a period past a boundary
+  ASSERT_TRUE(q.push(d));
+  const auto expected = static_cast<std::int64_t>(std::ceil(d.dwell_s / lim.period_s - 1e-6));
+  ASSERT_EQ(expected, 10'800'001);
+  std::int64_t ticks = 0;
+  while (!ip.idle() && ticks < expected + 10) {
+    ip.tick();
+    ++ticks;
+  }
+  EXPECT_EQ(ticks, expected);
+}
+
+// A line of three hours: each sample is the closed-form position at k
+// periods, and the end point comes at the tick the duration says.
+TEST(Interpolator, LongLineSamplesTheClosedFormAtWholePeriods) {
+  const Limits lim = mill_limits();
+  SegmentQueue q(lim);
+  Interpolator ip(q);
+  ASSERT_TRUE(q.push(line(xyz(1080.0, 0, 0), 0.1)));  // 10,800 s at 0.1 mm/s
+  const planner::Segment seg = *q.front();
+  const auto expected = static_cast<std::int64_t>(std::ceil(seg.duration / lim.period_s - 1e-6));
+  ASSERT_GT(expected, 10'800'000);
+  for (std::int64_t k = 1; k < expected; ++k) {
+    ip.tick();
+    if (k % 1'000'000 == 0) {
+      // Drift of the summed time here was about 1.6e-7 mm at 0.1 mm/s.
+      const double x = seg.position_at(static_cast<double>(k) * lim.period_s)[0];
+      ASSERT_NEAR(ip.position()[0], x, 1e-10) << "tick " << k;
+    }
+  }
+  EXPECT_LT(ip.position()[0], 1080.0);
+  EXPECT_FALSE(ip.idle());
+  ip.tick();
+  EXPECT_EQ(ip.position(), xyz(1080.0, 0, 0));
+  EXPECT_TRUE(ip.idle());
+}
+
+TEST(Interpolator, TimeScaleZeroHolds) {
+  SegmentQueue q(mill_limits());
+  Interpolator ip(q);
+  ASSERT_TRUE(q.push(line(xyz(10, 0, 0), 100.0)));
   for (int k = 0; k < 50; ++k) ip.tick();
   const AxisVec here = ip.position();
   ip.set_time_scale(0.0);
@@ -382,9 +429,9 @@ TEST(Interpolator, TimeScaleZeroHolds) {
 }
 
 TEST(Interpolator, VelocityIsReported) {
-  Planner q(mill_limits());
+  SegmentQueue q(mill_limits());
   Interpolator ip(q);
-  q.push(line(xyz(30, 40, 0), 100.0, 9));
+  ASSERT_TRUE(q.push(line(xyz(30, 40, 0), 100.0, 9)));
   for (int k = 0; k < 300; ++k) ip.tick();
   EXPECT_NEAR(ip.velocity()[0], 60.0, 1e-9);
   EXPECT_NEAR(ip.velocity()[1], 80.0, 1e-9);
@@ -392,9 +439,9 @@ TEST(Interpolator, VelocityIsReported) {
 }
 
 TEST(Interpolator, SetPositionResetsEverything) {
-  Planner q(mill_limits());
+  SegmentQueue q(mill_limits());
   Interpolator ip(q);
-  q.push(line(xyz(30, 40, 0), 100.0));
+  ASSERT_TRUE(q.push(line(xyz(30, 40, 0), 100.0)));
   for (int k = 0; k < 10; ++k) ip.tick();
   ip.set_position(xyz(1, 1, 1));
   EXPECT_TRUE(ip.idle());
@@ -405,11 +452,11 @@ TEST(Interpolator, SetPositionResetsEverything) {
 
 TEST(Interpolator, NoAccelSkipMoveRunsAtTheFeedFromTheFirstTick) {
   const Limits lim = mill_limits();
-  Planner q(lim);
+  SegmentQueue q(lim);
   Interpolator ip(q);
   Move m = line(xyz(5, 0, 0), 20.0);
   m.no_accel = true;
-  q.push(m);
+  ASSERT_TRUE(q.push(m));
   ip.tick();
   EXPECT_NEAR(ip.position()[0], 20.0 * lim.period_s, 1e-15);
   EXPECT_EQ(ip.path_speed(), 20.0);
@@ -419,4 +466,4 @@ TEST(Interpolator, NoAccelSkipMoveRunsAtTheFeedFromTheFirstTick) {
 }
 
 }  // namespace
-}  // namespace skipnc::interp
+}  // namespace skipnc::interpolator

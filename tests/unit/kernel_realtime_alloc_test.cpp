@@ -87,21 +87,21 @@ TEST(KernelRealtime, TickAndPlantDoNotAllocate) {
     v[2] = z;
     return v;
   };
-  k.push({canon::Rapid{at(10, 10, 0), true}, 1});
-  k.push({canon::Feed{at(20, 10, 0), 3000.0, false}, 2});
+  ASSERT_TRUE(k.push({canon::Rapid{at(10, 10, 0), true}, 1}));
+  ASSERT_TRUE(k.push({canon::Feed{at(20, 10, 0), 3000.0, false}, 2}));
   canon::Arc arc;
   arc.target = at(30, 10, 0);
   arc.center0 = 25;
   arc.center1 = 10;
   arc.feed_mm_per_min = 3000.0;
-  k.push({arc, 3});
-  k.push({canon::Dwell{0.05}, 4});
+  ASSERT_TRUE(k.push({arc, 3}));
+  ASSERT_TRUE(k.push({canon::Dwell{0.05}, 4}));
   canon::Skip sk;
   sk.target = at(30, 10, -10);
   sk.feed_mm_per_min = 100.0;
   sk.spec.input_count = 1;
   sk.spec.inputs[0] = canon::SignalAddr{'X', 0, 4};
-  k.push({sk, 5});
+  ASSERT_TRUE(k.push({sk, 5}));
 
   kernel::TickInput in;
   kernel::TickOutput out;
@@ -166,15 +166,16 @@ TEST(KernelRealtime, ProbingPlantDoesNotAllocate) {
   k.set_position(at(0, 0, -20));
   plant.reset(at(0, 0, -20));
   for (int i = 0; i < 3; ++i) {
-    k.push({canon::Feed{at(16, 0, -20), 3000.0, true}, 1});  // into the wall: 2 mm deflection
-    k.push({canon::Feed{at(0, 0, -20), 3000.0, true}, 2});
+    ASSERT_TRUE(
+        k.push({canon::Feed{at(16, 0, -20), 3000.0, true}, 1}));  // into the wall: 2 mm deflection
+    ASSERT_TRUE(k.push({canon::Feed{at(0, 0, -20), 3000.0, true}, 2}));
   }
   canon::Arc arc;
   arc.target = at(0, 0, -20);
   arc.center0 = 5;
   arc.center1 = 0;
   arc.feed_mm_per_min = 3000.0;
-  k.push({arc, 3});
+  ASSERT_TRUE(k.push({arc, 3}));
   kernel::TickInput in;
   kernel::TickOutput out;
   AxisVec prev = at(0, 0, -20);

@@ -28,7 +28,7 @@ class Bench {
     spec.input_count = 1;
     spec.inputs[0] = kSkip;
     s.spec = spec;
-    k_.push(canon::Stamped{s, 1});
+    ASSERT_TRUE(k_.push(canon::Stamped{s, 1}));
   }
   // One period; `edges` happen inside it; the torque of X is `torque_x`.
   const kernel::TickOutput& tick(std::vector<kernel::SignalEdge> edges = {},
@@ -224,7 +224,7 @@ TEST(KernelSkip, LockedAxesAreInPositionWhateverTheirActualPosition) {
   s.spec.input_count = 1;
   s.spec.inputs[0] = kSkip;
   s.spec.ignore_inputs = true;
-  k.push(canon::Stamped{s, 1});
+  ASSERT_TRUE(k.push(canon::Stamped{s, 1}));
   kernel::TickInput in;  // the axes never move
   kernel::TickOutput out;
   for (int i = 0; i < 1000 && !k.skip().done; ++i) {

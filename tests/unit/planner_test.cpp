@@ -44,8 +44,8 @@ double trapezoid_time(double len, double v, double a) {
 }
 
 TEST(Planner, SingleLineDurationIsTheTrapezoidTime) {
-  Planner p(mill_limits());
-  p.push(line(xyz(100, 0, 0), 100.0));
+  SegmentQueue p(mill_limits());
+  ASSERT_TRUE(p.push(line(xyz(100, 0, 0), 100.0)));
   ASSERT_EQ(p.size(), 1u);
   const Segment& s = *p.front();
   EXPECT_NEAR(s.duration, trapezoid_time(100.0, 100.0, 2000.0), 1e-12);
@@ -55,8 +55,8 @@ TEST(Planner, SingleLineDurationIsTheTrapezoidTime) {
 }
 
 TEST(Planner, ShortLineIsATriangle) {
-  Planner p(mill_limits());
-  p.push(line(xyz(1, 0, 0), 100.0));
+  SegmentQueue p(mill_limits());
+  ASSERT_TRUE(p.push(line(xyz(1, 0, 0), 100.0)));
   const Segment& s = *p.front();
   EXPECT_NEAR(s.duration, trapezoid_time(1.0, 100.0, 2000.0), 1e-12);
   EXPECT_NEAR(s.v_cruise, std::sqrt(2000.0 * 1.0), 1e-9);
@@ -67,8 +67,8 @@ TEST(Planner, DiagonalLineClampedByAxisLimits) {
   Limits lim = mill_limits();
   lim.axes[0].max_velocity_mm_s = 50.0;
   lim.axes[0].max_accel_mm_s2 = 500.0;
-  Planner p(lim);
-  p.push(line(xyz(30, 40, 0), 300.0));  // u = (0.6, 0.8)
+  SegmentQueue p(lim);
+  ASSERT_TRUE(p.push(line(xyz(30, 40, 0), 300.0)));  // u = (0.6, 0.8)
   const Segment& s = *p.front();
   EXPECT_NEAR(s.v_max, 50.0 / 0.6, 1e-9);
   EXPECT_NEAR(s.accel, 500.0 / 0.6, 1e-9);
@@ -78,39 +78,39 @@ TEST(Planner, DiagonalLineClampedByAxisLimits) {
 TEST(Planner, FeedClampedByPathLimit) {
   Limits lim = mill_limits();
   lim.max_feed_mm_s = 100.0;
-  Planner p(lim);
-  p.push(line(xyz(0, 0, 50), 1000.0));
+  SegmentQueue p(lim);
+  ASSERT_TRUE(p.push(line(xyz(0, 0, 50), 1000.0)));
   EXPECT_DOUBLE_EQ(p.front()->v_max, 100.0);
 }
 
 TEST(Planner, RapidUsesRapidRatesAndEndsAtRest) {
   Limits lim = mill_limits();
   lim.axes[1].rapid_mm_s = 200.0;
-  Planner p(lim);
+  SegmentQueue p(lim);
   Move m;
   m.kind = Kind::kRapid;
   m.target = xyz(100, 100, 0);
-  p.push(m);
-  p.push(line(xyz(200, 100, 0), 100.0));
+  ASSERT_TRUE(p.push(m));
+  ASSERT_TRUE(p.push(line(xyz(200, 100, 0), 100.0)));
   const Segment& s = *p.front();
   EXPECT_NEAR(s.v_max, 200.0 * std::numbers::sqrt2, 1e-9);
   EXPECT_EQ(s.v_exit, 0.0);
 }
 
 TEST(Planner, ZeroLengthMovesAndZeroDwellsAreDropped) {
-  Planner p(mill_limits());
-  p.push(line(xyz(0, 0, 0), 100.0));
+  SegmentQueue p(mill_limits());
+  ASSERT_TRUE(p.push(line(xyz(0, 0, 0), 100.0)));
   Move d;
   d.kind = Kind::kDwell;
   d.dwell_s = 0.0;
-  p.push(d);
+  ASSERT_TRUE(p.push(d));
   EXPECT_TRUE(p.empty());
 }
 
 TEST(Planner, PositionAtDurationIsTheTargetBitExact) {
-  Planner p(mill_limits());
+  SegmentQueue p(mill_limits());
   const AxisVec target = xyz(12.3456789, -0.1, 7.77777777);
-  p.push(line(target, 123.4));
+  ASSERT_TRUE(p.push(line(target, 123.4)));
   const Segment& s = *p.front();
   EXPECT_EQ(s.position_at(s.duration), target);
   EXPECT_EQ(s.position_at(s.duration + 1.0), target);
@@ -119,9 +119,9 @@ TEST(Planner, PositionAtDurationIsTheTargetBitExact) {
 }
 
 TEST(Planner, ProfileIsContinuous) {
-  Planner p(mill_limits());
-  p.push(line(xyz(10, 0, 0), 150.0));
-  p.push(line(xyz(20, 0, 0), 150.0));
+  SegmentQueue p(mill_limits());
+  ASSERT_TRUE(p.push(line(xyz(10, 0, 0), 150.0)));
+  ASSERT_TRUE(p.push(line(xyz(20, 0, 0), 150.0)));
   const Segment& s = *p.front();
   const double eps = 1e-9;
   for (const double t : {s.t_acc, s.t_acc + s.t_cruise}) {
@@ -132,67 +132,67 @@ TEST(Planner, ProfileIsContinuous) {
 }
 
 TEST(Planner, CollinearSegmentsBlendAtFullSpeed) {
-  Planner p(mill_limits());
-  p.push(line(xyz(10, 10, 0), 100.0));
-  p.push(line(xyz(20, 20, 0), 100.0));
-  p.push(line(xyz(30, 30, 0), 100.0));
+  SegmentQueue p(mill_limits());
+  ASSERT_TRUE(p.push(line(xyz(10, 10, 0), 100.0)));
+  ASSERT_TRUE(p.push(line(xyz(20, 20, 0), 100.0)));
+  ASSERT_TRUE(p.push(line(xyz(30, 30, 0), 100.0)));
   const Segment& s = *p.front();
   EXPECT_NEAR(s.v_exit, 100.0, 1e-9);
   EXPECT_NEAR(s.v_entry, 0.0, 1e-12);
 }
 
 TEST(Planner, LookaheadLimitsExitSoTheQueueCanStop) {
-  Planner p(mill_limits());
-  p.push(line(xyz(100, 0, 0), 300.0));
-  p.push(line(xyz(100.5, 0, 0), 300.0));  // 0.5 mm: can stop from sqrt(2 a 0.5)
+  SegmentQueue p(mill_limits());
+  ASSERT_TRUE(p.push(line(xyz(100, 0, 0), 300.0)));
+  ASSERT_TRUE(p.push(line(xyz(100.5, 0, 0), 300.0)));  // 0.5 mm: can stop from sqrt(2 a 0.5)
   EXPECT_NEAR(p.front()->v_exit, std::sqrt(2.0 * 2000.0 * 0.5), 1e-9);
 }
 
 TEST(Planner, RightAngleCornerIsNearlyAStop) {
   const Limits lim = mill_limits();
-  Planner p(lim);
-  p.push(line(xyz(10, 0, 0), 100.0));
-  p.push(line(xyz(10, 10, 0), 100.0));
+  SegmentQueue p(lim);
+  ASSERT_TRUE(p.push(line(xyz(10, 0, 0), 100.0)));
+  ASSERT_TRUE(p.push(line(xyz(10, 10, 0), 100.0)));
   const double v = p.front()->v_exit;
   EXPECT_GT(v, 0.0);
   EXPECT_LE(v, lim.axes[0].max_accel_mm_s2 * lim.period_s);
 }
 
 TEST(Planner, ExactStopEndsAtRest) {
-  Planner p(mill_limits());
-  p.push(line(xyz(10, 0, 0), 100.0, /*exact_stop=*/true));
-  p.push(line(xyz(20, 0, 0), 100.0));
+  SegmentQueue p(mill_limits());
+  ASSERT_TRUE(p.push(line(xyz(10, 0, 0), 100.0, /*exact_stop=*/true)));
+  ASSERT_TRUE(p.push(line(xyz(20, 0, 0), 100.0)));
   EXPECT_EQ(p.front()->v_exit, 0.0);
 }
 
 TEST(Planner, DwellForcesRest) {
-  Planner p(mill_limits());
-  p.push(line(xyz(10, 0, 0), 100.0));
+  SegmentQueue p(mill_limits());
+  ASSERT_TRUE(p.push(line(xyz(10, 0, 0), 100.0)));
   Move d;
   d.kind = Kind::kDwell;
   d.dwell_s = 0.25;
-  p.push(d);
-  p.push(line(xyz(20, 0, 0), 100.0));
+  ASSERT_TRUE(p.push(d));
+  ASSERT_TRUE(p.push(line(xyz(20, 0, 0), 100.0)));
   EXPECT_EQ(p.front()->v_exit, 0.0);
   EXPECT_EQ(p.size(), 3u);
 }
 
 TEST(Planner, StartedSegmentKeepsItsProfile) {
-  Planner p(mill_limits());
-  p.push(line(xyz(10, 0, 0), 100.0));
+  SegmentQueue p(mill_limits());
+  ASSERT_TRUE(p.push(line(xyz(10, 0, 0), 100.0)));
   Segment* s = p.front();
   s->started = true;
   const double duration = s->duration;
-  p.push(line(xyz(20, 0, 0), 100.0));
+  ASSERT_TRUE(p.push(line(xyz(20, 0, 0), 100.0)));
   EXPECT_EQ(s->v_exit, 0.0);
   EXPECT_EQ(s->duration, duration);
 }
 
 TEST(Planner, NoAccelMoveStepsToTheFeed) {
-  Planner p(mill_limits());
+  SegmentQueue p(mill_limits());
   Move m = line(xyz(5, 0, 0), 10.0);
   m.no_accel = true;
-  p.push(m);
+  ASSERT_TRUE(p.push(m));
   const Segment& s = *p.front();
   EXPECT_EQ(s.speed_at(0.0), 10.0);
   EXPECT_EQ(s.speed_at(s.duration), 10.0);
@@ -201,11 +201,11 @@ TEST(Planner, NoAccelMoveStepsToTheFeed) {
 }
 
 TEST(Planner, NonLinearRapidShortAxisArrivesFirst) {
-  Planner p(mill_limits());
+  SegmentQueue p(mill_limits());
   Move m;
   m.kind = Kind::kRapidNonLinear;
   m.target = xyz(100, 10, 0);
-  p.push(m);
+  ASSERT_TRUE(p.push(m));
   const Segment& s = *p.front();
   EXPECT_EQ(s.basis_axis, 0);
   EXPECT_NEAR(s.duration, trapezoid_time(100.0, 500.0, 2000.0), 1e-12);
@@ -217,9 +217,9 @@ TEST(Planner, NonLinearRapidShortAxisArrivesFirst) {
 }
 
 TEST(Planner, QuarterArcGeometry) {
-  Planner p(mill_limits());
+  SegmentQueue p(mill_limits());
   p.reset(xyz(10, 0, 0));
-  p.push(arc(xyz(0, 10, 0), 0.0, 0.0, /*ccw=*/true, 50.0));
+  ASSERT_TRUE(p.push(arc(xyz(0, 10, 0), 0.0, 0.0, /*ccw=*/true, 50.0)));
   const Segment& s = *p.front();
   EXPECT_NEAR(s.sweep, std::numbers::pi / 2.0, 1e-15);
   EXPECT_NEAR(s.length, 10.0 * std::numbers::pi / 2.0, 1e-12);
@@ -230,37 +230,37 @@ TEST(Planner, QuarterArcGeometry) {
 }
 
 TEST(Planner, ClockwiseArcSweepsTheLongWay) {
-  Planner p(mill_limits());
+  SegmentQueue p(mill_limits());
   p.reset(xyz(10, 0, 0));
-  p.push(arc(xyz(0, 10, 0), 0.0, 0.0, /*ccw=*/false, 50.0));
+  ASSERT_TRUE(p.push(arc(xyz(0, 10, 0), 0.0, 0.0, /*ccw=*/false, 50.0)));
   EXPECT_NEAR(p.front()->sweep, -1.5 * std::numbers::pi, 1e-12);
 }
 
 TEST(Planner, CoincidentArcEndsMakeAFullTurnPlusExtraTurns) {
-  Planner p(mill_limits());
+  SegmentQueue p(mill_limits());
   p.reset(xyz(10, 0, 0));
-  p.push(arc(xyz(10, 0, 0), 0.0, 0.0, true, 50.0));
+  ASSERT_TRUE(p.push(arc(xyz(10, 0, 0), 0.0, 0.0, true, 50.0)));
   EXPECT_NEAR(p.front()->sweep, 2.0 * std::numbers::pi, 1e-15);
   p.pop_front();
-  p.push(arc(xyz(10, 0, 0), 0.0, 0.0, false, 50.0, /*extra_turns=*/2));
+  ASSERT_TRUE(p.push(arc(xyz(10, 0, 0), 0.0, 0.0, false, 50.0, /*extra_turns=*/2)));
   EXPECT_NEAR(p.front()->sweep, -6.0 * std::numbers::pi, 1e-12);
 }
 
 TEST(Planner, ArcSpeedLimitedByCentripetalAcceleration) {
   const Limits lim = mill_limits();
-  Planner p(lim);
+  SegmentQueue p(lim);
   p.reset(xyz(1, 0, 0));
-  p.push(arc(xyz(-1, 0, 0), 0.0, 0.0, true, 300.0));  // r = 1 mm
+  ASSERT_TRUE(p.push(arc(xyz(-1, 0, 0), 0.0, 0.0, true, 300.0)));  // r = 1 mm
   const Segment& s = *p.front();
   EXPECT_LE(s.v_max * s.v_max / 1.0, 2000.0 + 1e-9);
   EXPECT_LT(s.v_max, 300.0);
 }
 
 TEST(Planner, ArcWithUnequalRadiiEndsOnTarget) {
-  Planner p(mill_limits());
+  SegmentQueue p(mill_limits());
   p.reset(xyz(10, 0, 0));
   const AxisVec target = xyz(0, 10.002, 0);
-  p.push(arc(target, 0.0, 0.0, true, 50.0));
+  ASSERT_TRUE(p.push(arc(target, 0.0, 0.0, true, 50.0)));
   const Segment& s = *p.front();
   EXPECT_EQ(s.position_at(s.duration), target);
   double prev = 10.0;
@@ -277,9 +277,9 @@ TEST(Planner, ArcWithUnequalRadiiEndsOnTarget) {
 }
 
 TEST(Planner, ArcTangentMatchesMotion) {
-  Planner p(mill_limits());
+  SegmentQueue p(mill_limits());
   p.reset(xyz(10, 0, 0));
-  p.push(arc(xyz(10, 0, 5), 0.0, 0.0, true, 50.0));  // one helical turn
+  ASSERT_TRUE(p.push(arc(xyz(10, 0, 5), 0.0, 0.0, true, 50.0)));  // one helical turn
   const Segment& s = *p.front();
   const double t = s.duration * 0.4;
   const double h = 1e-6;
@@ -290,22 +290,22 @@ TEST(Planner, ArcTangentMatchesMotion) {
 }
 
 TEST(Planner, ResetForgetsTheQueue) {
-  Planner p(mill_limits());
-  p.push(line(xyz(10, 0, 0), 100.0));
+  SegmentQueue p(mill_limits());
+  ASSERT_TRUE(p.push(line(xyz(10, 0, 0), 100.0)));
   p.reset(xyz(1, 2, 3));
   EXPECT_TRUE(p.empty());
   EXPECT_EQ(p.tail_position(), xyz(1, 2, 3));
-  p.push(line(xyz(2, 2, 3), 100.0));
+  ASSERT_TRUE(p.push(line(xyz(2, 2, 3), 100.0)));
   EXPECT_EQ(p.front()->start, xyz(1, 2, 3));
 }
 
 TEST(Planner, RingWrapsAround) {
-  Planner p(mill_limits(), 4);
+  SegmentQueue p(mill_limits(), 4);
   double x = 0.0;
   for (int k = 0; k < 20; ++k) {
     while (!p.full()) {
       x += 1.0;
-      p.push(line(xyz(x, 0, 0), 100.0));
+      ASSERT_TRUE(p.push(line(xyz(x, 0, 0), 100.0)));
     }
     p.front()->started = true;
     p.pop_front();
