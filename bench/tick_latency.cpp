@@ -10,8 +10,8 @@
 
 #include "config/machine_config.hpp"
 #include "kernel/kernel.hpp"
-#include "machine/plant.hpp"
 #include "kernel/kernel_config.hpp"
+#include "machine/plant.hpp"
 
 int main(int argc, char** argv) {
   using namespace skipnc;
