@@ -9,6 +9,8 @@
 //
 // Here the "drives" are ideal (the axis is where it was commanded one period
 // ago) and the "probe" is a surface at Z = -2.5 mm seen by the loop itself.
+// Then a rapid beyond the Z stroke end shows the kernel's own fault check:
+// the command stops inside the stroke and TickOutput::fault says why.
 // Build: part of the project (target skipnc_embedding_example).
 #include <cmath>
 #include <cstdio>
@@ -113,6 +115,10 @@ int main() {
     k.tick(tick_in, tick_out);
     // ...and write the command to the drives (they reach it by the next period).
     drive = tick_out.commanded;
+    if (tick_out.fault) {
+      std::fprintf(stderr, "kernel fault on axis %d\n", tick_out.fault.axis);
+      return 1;
+    }
 
     // Outside the tick again: complete a skip.
     if (waiting && sink.drained() && k.idle() && (!k.skip().active || k.skip().done)) {
@@ -133,5 +139,23 @@ int main() {
   auto z = in.read_variable(100);
   std::printf("probe touched at Z %.6f (#100); final Z %.6f after %lld periods\n", z ? z->v : 0.0,
               in.position()[2], static_cast<long long>(k.now()));
-  return z && std::abs(z->v - surface_z) < 1e-9 ? 0 : 1;
+  if (!z || std::abs(z->v - surface_z) >= 1e-9) return 1;
+
+  // The kernel's own protection: a rapid to Z600, beyond mill3's +500 mm
+  // stroke end. The kernel stops giving commands at the last one inside the
+  // stroke and reports the fault in TickOutput; no simulator is involved.
+  AxisVec beyond = drive;
+  beyond[2] = 600.0;
+  if (!k.push(canon::Stamped{canon::Rapid{beyond}, 0})) return 1;
+  for (int period = 0; period < 100'000 && !tick_out.fault; ++period) {
+    tick_in.actual = drive;
+    tick_in.edge_count = 0;
+    k.tick(tick_in, tick_out);
+    drive = tick_out.commanded;
+  }
+  const kernel::Fault& f = tick_out.fault;
+  if (f.kind != kernel::Fault::Kind::kStrokeLimit || f.axis != 2) return 1;
+  std::printf("stroke limit: Z commanded to %.4f, beyond %.4f; the kernel holds Z at %.4f\n",
+              f.value, f.limit, drive[2]);
+  return drive[2] <= 500.0 + 1e-9 ? 0 : 1;
 }

@@ -22,6 +22,60 @@ void Kernel::set_position(const AxisVec& machine) noexcept {
   cmd_prev_ = machine;
   actual_prev_ = machine;
   in_position_ = true;  // at rest there
+  inpos_wait_ = 0;
+  fault_ = Fault{};
+}
+
+// The servo's faults, on the period that just ended: the axes followed cmd_.
+// A locked axis does not move, so it has no following error to check.
+bool Kernel::check_servo(const TickInput& in) noexcept {
+  const FaultLimits& f = cfg_.faults;
+  const int n = cfg_.limits.axis_count;
+  for (int i = 0; i < n; ++i) {
+    const double fe = cmd_prev_[i] - in.actual[i];
+    if (!locked_.has(i) && std::fabs(fe) > f.excess_error[static_cast<std::size_t>(i)]) {
+      fault_ = Fault{Fault::Kind::kExcessError, i, fe, f.excess_error[static_cast<std::size_t>(i)]};
+      return true;
+    }
+  }
+  if (static_cast<double>(inpos_wait_) * cfg_.clock.period_s() > f.in_position_timeout_s) {
+    int worst = 0;
+    double worst_fe = 0.0;
+    for (int i = 0; i < n; ++i) {
+      const double fe = cmd_prev_[i] - in.actual[i];
+      if (std::fabs(fe) > std::fabs(worst_fe)) {
+        worst = i;
+        worst_fe = fe;
+      }
+    }
+    fault_ = Fault{Fault::Kind::kInPositionTimeout, worst, worst_fe, f.in_position_timeout_s};
+    return true;
+  }
+  return false;
+}
+
+// The stroke limits on the command for the next period, over all axes
+// without a branch; the axis is looked for only when one is out. The command
+// beyond the end is not given: the kernel holds the one before.
+bool Kernel::check_stroke() noexcept {
+  const FaultLimits& f = cfg_.faults;
+  const int n = cfg_.limits.axis_count;
+  bool beyond = false;
+  for (int i = 0; i < n; ++i) {
+    const auto k = static_cast<std::size_t>(i);
+    beyond |= (cmd_[i] > f.stroke_max[k]) | (cmd_[i] < f.stroke_min[k]);
+  }
+  if (!beyond) return false;
+  for (int i = 0; i < n; ++i) {
+    const auto k = static_cast<std::size_t>(i);
+    if (cmd_[i] > f.stroke_max[k] || cmd_[i] < f.stroke_min[k]) {
+      fault_ = Fault{Fault::Kind::kStrokeLimit, i, cmd_[i],
+                     cmd_[i] > f.stroke_max[k] ? f.stroke_max[k] : f.stroke_min[k]};
+      break;
+    }
+  }
+  cmd_ = cmd_prev_;
+  return true;
 }
 
 bool Kernel::push(const canon::Stamped& stamped) {
@@ -311,6 +365,15 @@ double Kernel::advance_time_scale() noexcept {
 void Kernel::tick(const TickInput& in, TickOutput& out) noexcept {
   ++tick_;
   followed_up_ = false;
+  if (fault_) {
+    // Faulted: the command stays where it was.
+    out.commanded = cmd_;
+    out.velocity = AxisVec{};
+    out.path_speed = 0.0;
+    out.followed_up = false;
+    out.fault = fault_;
+    return;
+  }
   monitor_skip(in);
   for (int e = 0; e < in.edge_count; ++e) {
     const SignalEdge& edge = in.edges[static_cast<std::size_t>(e)];
@@ -365,6 +428,10 @@ void Kernel::tick(const TickInput& in, TickOutput& out) noexcept {
   }
   out.time_scale = time_scale_;
   out.followed_up = followed_up_;
+  // Faults last: the servo's on the period that ended, then the stroke on
+  // the command for the next one.
+  if (check_servo(in) || check_stroke()) out.commanded = cmd_;
+  out.fault = fault_;
 }
 
 }  // namespace skipnc::kernel

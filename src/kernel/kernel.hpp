@@ -33,6 +33,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 
 #include "canon/canon.hpp"
 #include "core/axes.hpp"
@@ -69,6 +70,37 @@ struct SkipHandshake {
   bool done = false;
 };
 
+// What the kernel watches in its own tick, so that a caller driving it from
+// its own servo loop gets the same protection as the simulator
+// (docs/embedding.md, "Faults"). Infinite limits are not checked.
+struct FaultLimits {
+  static constexpr double kNone = std::numeric_limits<double>::infinity();
+  static constexpr std::array<double, kMaxAxes> filled(double v) noexcept {
+    std::array<double, kMaxAxes> a{};
+    for (auto& x : a) x = v;
+    return a;
+  }
+  // Stroke limits on the command, machine coordinates, mm.
+  std::array<double, kMaxAxes> stroke_min = filled(-kNone);
+  std::array<double, kMaxAxes> stroke_max = filled(kNone);
+  // Excess following error (command - actual), mm, per axis.
+  std::array<double, kMaxAxes> excess_error = filled(kNone);
+  // At rest away from the command (held by a stop): the wait, s.
+  double in_position_timeout_s = kNone;
+};
+
+// The first fault the kernel found. From then on the kernel holds its
+// command where it was (the command beyond a stroke end is never output)
+// until set_position() starts it again.
+struct Fault {
+  enum class Kind : std::uint8_t { kNone, kStrokeLimit, kExcessError, kInPositionTimeout };
+  Kind kind = Kind::kNone;
+  int axis = -1;
+  double value = 0.0;  // the command beyond the stroke end; the following error
+  double limit = 0.0;  // the stroke end or the excess limit crossed; the timeout, s
+  explicit operator bool() const noexcept { return kind != Kind::kNone; }
+};
+
 struct TickOutput {
   AxisVec commanded;  // position for the next period
   AxisVec velocity;   // commanded velocity, mm/s
@@ -88,6 +120,9 @@ struct TickOutput {
   // next period starts from it, not from the previous period's command. A
   // servo with velocity feedforward must not take the jump as a velocity.
   bool followed_up = false;
+  // The kernel's first fault (kind kNone while there is none); set in the
+  // tick that found it and in every tick after, while the command is held.
+  Fault fault;
 };
 
 // What the operator does at the machine (scene [[operator]], see
@@ -122,6 +157,7 @@ struct KernelConfig {
   ServoClock clock;
   std::size_t queue_capacity = 256;
   double in_position_mm = 0.0005;
+  FaultLimits faults;
   // In-position check at the end of a rapid (Fanuc 1601#5 NCI = 0). G09,
   // G61 and skip blocks always check; a dwell and a skip block start only
   // with the axes in position.
@@ -167,6 +203,7 @@ class Kernel {
   // Axes that do not move (machine lock, Z-axis cancel): their actual
   // position is not compared with the command.
   void set_locked_axes(AxisMask axes) noexcept { locked_ = axes; }
+  const Fault& fault() const noexcept { return fault_; }
 
   // --- the tick -----------------------------------------------------------
   void tick(const TickInput& in, TickOutput& out) noexcept;
@@ -220,7 +257,11 @@ class Kernel {
   SkipResult skip_;
   bool skip_started_ = false;
   bool skip_stopping_ = false;
-  bool followed_up_ = false;         // this tick moved the command to the actual position
+  bool followed_up_ = false;  // this tick moved the command to the actual position
+  Fault fault_;
+  // The fault checks of tick(): true when one was found (fault_ set).
+  bool check_servo(const TickInput& in) noexcept;
+  bool check_stroke() noexcept;
   bool skip_latch_pending_ = false;  // sampled latch: waiting for the delay
   double skip_latch_due_s_ = 0.0;
   double torque_since_s_ = -1.0;

@@ -20,6 +20,19 @@ KernelConfig kernel_config(const config::MachineConfig& m) {
   }
   k.limits.max_feed_mm_s = max_feed / 60.0;
   k.in_position_mm = m.in_position_mm;
+  // The faults the kernel checks in its tick: the stroke ends (a command
+  // exactly on an end is inside), an excess following error beyond any lag
+  // the axis shows at its rapid rate (1.5 v / kp + 1 mm; an ideal servo has
+  // none), and the in-position timeout.
+  for (int i = 0; i < m.axis_count(); ++i) {
+    const auto& a = m.axes[static_cast<std::size_t>(i)];
+    const auto k_i = static_cast<std::size_t>(i);
+    k.faults.stroke_min[k_i] = a.min_mm - 1e-9;
+    k.faults.stroke_max[k_i] = a.max_mm + 1e-9;
+    k.faults.excess_error[k_i] =
+        a.kp_per_s > 0.0 ? 1.5 * a.rapid_mm_min / 60.0 / a.kp_per_s + 1.0 : FaultLimits::kNone;
+  }
+  k.faults.in_position_timeout_s = m.in_position_timeout_s;
   return k;
 }
 

@@ -43,16 +43,6 @@ Plant::Plant(const config::MachineConfig& m, const Scene& scene, ServoClock cloc
   events_.reserve(sources_.size() * 2 + 4);
 }
 
-void Plant::set_locked(AxisMask axes) noexcept {
-  locked_ = axes;
-  for (int i = 0; i < n_; ++i) {
-    const auto& a = m_.axes[static_cast<std::size_t>(i)];
-    excess_limit_[static_cast<std::size_t>(i)] =
-        a.kp_per_s <= 0.0 || locked_.has(i) ? std::numeric_limits<double>::infinity()
-                                            : 1.5 * a.rapid_mm_min / 60.0 / a.kp_per_s + 1.0;
-  }
-}
-
 void Plant::reset(const AxisVec& position) {
   actual_ = position;
   torque_ = AxisVec{};
@@ -77,7 +67,6 @@ void Plant::reset(const AxisVec& position) {
 void Plant::advance(Tick k, const AxisVec& from, const AxisVec& to,
                     kernel::TickInput& in) noexcept {
   const AxisVec before = actual_;
-  bool excess = false;
   if (plain_servo_ && locked_.empty() && !limited_) {
     // The common case, the same arithmetic as the loop below without its
     // stops, loads, locked axes and torque limits.
@@ -89,14 +78,12 @@ void Plant::advance(Tick k, const AxisVec& from, const AxisVec& to,
       const double a1 = to[i] - e1;
       actual_[i] = a1;
       const double fe = to[i] - a1;
-      excess |= std::fabs(fe) > excess_limit_[k_i];
       const double limit = torque_max_[k_i];
       torque_[i] = std::clamp(torque_per_mm_[k_i] * fe + 0.0, -limit, limit);
     }
   } else {
-    excess = advance_servo(k, before, from, to);
+    advance_servo(k, before, from, to);
   }
-  excess_ = excess;
   in.actual = actual_;
   in.torque_pct = torque_;
   in.edge_count = 0;
@@ -105,10 +92,9 @@ void Plant::advance(Tick k, const AxisVec& from, const AxisVec& to,
   source_edges(k, before, in);
 }
 
-bool Plant::advance_servo(Tick k, const AxisVec& before, const AxisVec& from,
+void Plant::advance_servo(Tick k, const AxisVec& before, const AxisVec& from,
                           const AxisVec& to) noexcept {
   const double t_now = scene_.loads.empty() ? 0.0 : clock_.seconds(k);  // only loads need it
-  bool excess = false;
   for (int i = 0; i < n_; ++i) {
     const auto& ax = m_.axes[static_cast<std::size_t>(i)];
     if (locked_.has(i)) {
@@ -135,7 +121,6 @@ bool Plant::advance_servo(Tick k, const AxisVec& before, const AxisVec& from,
     }
     actual_[i] = a1;
     const double fe = to[i] - a1;
-    excess |= std::fabs(fe) > excess_limit_[static_cast<std::size_t>(i)];
     double load = 0.0;
     for (const Load& l : scene_.loads) {
       if (l.axis == i && t_now >= l.at_time_s && t_now < l.at_time_s + l.duration_s) {
@@ -146,7 +131,6 @@ bool Plant::advance_servo(Tick k, const AxisVec& before, const AxisVec& from,
     if (torque_limit_[i] > 0.0) limit = std::fmin(limit, torque_limit_[i]);
     torque_[i] = std::clamp(ax.torque_pct_per_mm * fe + load, -limit, limit);
   }
-  return excess;
 }
 
 void Plant::source_edges(Tick k, const AxisVec& before, kernel::TickInput& in) noexcept {

@@ -51,14 +51,8 @@ class Plant {
   }
   bool torque_limited() const noexcept { return limited_; }
   // Axes that do not move (machine lock, Z-axis cancel).
-  void set_locked(AxisMask axes) noexcept;
-  // Excess following error: the servo alarm's limit per axis, mm (infinite
-  // on a locked axis or an ideal servo), 1.5 times the lag at the axis's
-  // rapid rate plus 1 mm; and whether some axis passed it in the last period.
-  double excess_error_limit(int axis) const noexcept {
-    return excess_limit_[static_cast<std::size_t>(axis)];
-  }
-  bool excess_error() const noexcept { return excess_; }
+  // (The excess following error is the kernel's check: kernel::Fault.)
+  void set_locked(AxisMask axes) noexcept { locked_ = axes; }
   // Is the signal at `index` (scene order of distinct signals) on?
   std::size_t signal_count() const noexcept { return signals_.size(); }
   const canon::SignalAddr& signal_addr(std::size_t i) const noexcept { return signals_[i].addr; }
@@ -81,8 +75,7 @@ class Plant {
     std::vector<std::size_t> sources;  // indices into sources_
   };
   // The servo update with stops, loads, locked axes and torque limits.
-  // Returns true when some axis's following error passed its excess limit.
-  bool advance_servo(Tick k, const AxisVec& before, const AxisVec& from,
+  void advance_servo(Tick k, const AxisVec& before, const AxisVec& from,
                      const AxisVec& to) noexcept;
   // The scene's signal sources: their edges inside the period into `in`.
   void source_edges(Tick k, const AxisVec& before, kernel::TickInput& in) noexcept;
@@ -104,8 +97,6 @@ class Plant {
   std::array<double, kMaxAxes> lag_gain_{};       // (1 - feedforward) / (kp * T)
   std::array<double, kMaxAxes> torque_per_mm_{};  // torque_pct_per_mm
   std::array<double, kMaxAxes> torque_max_{};     // torque_max_pct
-  std::array<double, kMaxAxes> excess_limit_{};   // see excess_error_limit
-  bool excess_ = false;
   // No stops and no loads in the scene and no ideal servo (kp = 0): the
   // servo update is the same arithmetic on every axis (advance's fast loop).
   bool plain_servo_ = false;

@@ -13,11 +13,11 @@
 
 namespace skipnc::sim {
 
+using machine::GaugeSpec;
+using machine::GaugeStep;
 using machine::Plant;
 using machine::PlantFault;
 using machine::ProbeScene;
-using machine::GaugeSpec;
-using machine::GaugeStep;
 using machine::Probing;
 using machine::Pulse;
 using machine::Scene;

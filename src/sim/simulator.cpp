@@ -16,10 +16,10 @@
 
 namespace skipnc::sim {
 
+using machine::OperatorAction;
 using machine::Plant;
 using machine::PlantFault;
 using machine::ProbeScene;
-using machine::OperatorAction;
 using machine::Scene;
 namespace geo = machine::geo;
 
@@ -185,15 +185,34 @@ class Router final : public canon::CommandSink {
   std::optional<canon::Stamped> refused_;
 };
 
-Error stroke_alarm(const config::MachineConfig& m, int axis, double pos, std::string_view file,
-                   std::uint32_t line) {
-  const auto& a = m.axes[static_cast<std::size_t>(axis)];
-  const bool plus = pos > a.max_mm;
+Error fault_alarm(const config::MachineConfig& m, const kernel::Fault& f, std::string_view file,
+                  std::uint32_t line) {
+  const auto& a = m.axes[static_cast<std::size_t>(f.axis)];
   Error e;
-  e.id = AlarmId::kStrokeLimit;
-  e.detail = std::string(plus ? "+" : "-") + a.name + " at " + std::to_string(pos) +
-             " mm, beyond the stroke limit " + std::to_string(plus ? a.max_mm : a.min_mm) + " mm";
   e.loc = SourceLoc{file, line, 1};
+  switch (f.kind) {
+    case kernel::Fault::Kind::kStrokeLimit: {
+      const bool plus = f.value > a.max_mm;
+      e.id = AlarmId::kStrokeLimit;
+      e.detail = std::string(plus ? "+" : "-") + a.name + " at " + std::to_string(f.value) +
+                 " mm, beyond the stroke limit " + std::to_string(plus ? a.max_mm : a.min_mm) +
+                 " mm";
+      break;
+    }
+    case kernel::Fault::Kind::kExcessError:
+      e.id = AlarmId::kServoExcessError;
+      e.detail = std::string("axis ") + a.name + ": following error " + std::to_string(f.value) +
+                 " mm exceeds " + std::to_string(f.limit) + " mm";
+      break;
+    case kernel::Fault::Kind::kInPositionTimeout:
+    case kernel::Fault::Kind::kNone:
+      e.id = AlarmId::kInPositionTimeout;
+      e.detail = fmt::format(
+          "axis {}: {:.4f} mm from its command after {:g} s at rest (in-position width {:g} mm); "
+          "a stop holds it",
+          a.name, f.value, m.in_position_timeout_s, m.in_position_mm);
+      break;
+  }
   return e;
 }
 
@@ -288,15 +307,6 @@ Result<RunResult> Simulator::run(const interp::Setup& setup, const RunOptions& o
                                : 0.0;
   std::size_t next_action = 0;  // scene [[operator]] actions not yet applied
 
-  const int n = m_.axis_count();
-  // Per axis, fixed for the run: the stroke limits.
-  std::array<double, kMaxAxes> stroke_lo{}, stroke_hi{};
-  for (int i = 0; i < n; ++i) {
-    const auto k_i = static_cast<std::size_t>(i);
-    const auto& a = m_.axes[k_i];
-    stroke_lo[k_i] = a.min_mm - 1e-9;
-    stroke_hi[k_i] = a.max_mm + 1e-9;
-  }
   kernel::TickInput tin;
   kernel::TickOutput tout;
   tout.commanded = home;
@@ -418,67 +428,14 @@ Result<RunResult> Simulator::run(const interp::Setup& setup, const RunOptions& o
       res.alarm_position = s->machine_position;
       break;
     }
-    // Excess following error: an axis held by a stop while the command runs
-    // on (a torque limit skip with no torque limit commanded) ends in a servo
-    // alarm, beyond any lag the axis shows at its rapid rate.
-    if (plant.excess_error()) {
-      for (int i = 0; i < n; ++i) {
-        const double limit = plant.excess_error_limit(i);
-        const double fe = cmd_prev[i] - plant.actual()[i];
-        if (std::fabs(fe) > limit) {
-          alarm(Error{AlarmId::kServoExcessError,
-                      std::string("axis ") + m_.axes[static_cast<std::size_t>(i)].name +
-                          ": following error " + std::to_string(fe) + " mm exceeds " +
-                          std::to_string(limit) + " mm",
-                      SourceLoc{file_of(tout.source), tout.line, 1}, -1},
-                tout.source);
-          break;
-        }
-      }
-      held = true;
-      break;
-    }
-    // An axis that never reaches its command at rest (held by a stop short
-    // of it): the control would wait for the in-position check for ever.
-    if (static_cast<double>(k.in_position_wait()) * k.clock().period_s() >
-        m_.in_position_timeout_s) {
-      int worst = 0;
-      double worst_fe = 0.0;
-      for (int i = 0; i < n; ++i) {
-        const double fe = cmd_prev[i] - plant.actual()[i];
-        if (std::fabs(fe) > std::fabs(worst_fe)) {
-          worst = i;
-          worst_fe = fe;
-        }
-      }
-      alarm(
-          Error{AlarmId::kInPositionTimeout,
-                fmt::format("axis {}: {:.4f} mm from its command after {:g} s at rest (in-position "
-                            "width {:g} mm); a stop holds it",
-                            m_.axes[static_cast<std::size_t>(worst)].name, worst_fe,
-                            m_.in_position_timeout_s, m_.in_position_mm),
-                SourceLoc{file_of(tout.source), tout.line, 1}, -1},
-          tout.source);
-      held = true;
-      break;
-    }
-    // The stroke limits, on the command for the next period (checked over
-    // all axes without a branch; the axis is looked for only when one is out).
-    bool beyond = false;
-    for (int i = 0; i < n; ++i) {
-      const double c = tout.commanded[i];
-      beyond |= (c > stroke_hi[static_cast<std::size_t>(i)]) |
-                (c < stroke_lo[static_cast<std::size_t>(i)]);
-    }
-    if (beyond) {
-      for (int i = 0; i < n; ++i) {
-        const double c = tout.commanded[i];
-        if (c > stroke_hi[static_cast<std::size_t>(i)] ||
-            c < stroke_lo[static_cast<std::size_t>(i)]) {
-          alarm(stroke_alarm(m_, i, c, file_of(tout.source), tout.line), tout.source);
-          break;
-        }
-      }
+    // The kernel's faults: an excess following error (an axis held by a
+    // stop while the command runs on, as a torque limit skip with no torque
+    // limit commanded), an axis that never reaches its command at rest (held
+    // by a stop short of it: the control would wait for ever), a command
+    // beyond a stroke end (not given to the servo).
+    if (const kernel::Fault& f = tout.fault) {
+      alarm(fault_alarm(m_, f, file_of(tout.source), tout.line), tout.source);
+      held = f.kind != kernel::Fault::Kind::kStrokeLimit;
       break;
     }
 

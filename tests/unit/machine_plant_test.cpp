@@ -66,7 +66,6 @@ TEST(Plant, FollowsARampWithTheLagOfAFirstOrderLoop) {
   EXPECT_NEAR(fe, v / 30.0, 1e-9);
   EXPECT_NEAR(plant.torque()[0], 100.0 * fe, 1e-9);
   EXPECT_EQ(plant.actual()[1], 0.0);
-  EXPECT_FALSE(plant.excess_error());
 }
 
 TEST(Plant, FeedforwardShrinksTheLag) {
@@ -101,29 +100,7 @@ TEST(Plant, TheCommonCaseLoopAgreesWithTheGeneralOneToTheBit) {
       ASSERT_EQ(fast.actual()[ax], general.actual()[ax]) << "period " << i << " axis " << ax;
       ASSERT_EQ(fast.torque()[ax], general.torque()[ax]) << "period " << i << " axis " << ax;
     }
-    ASSERT_EQ(fast.excess_error(), general.excess_error()) << "period " << i;
   }
-}
-
-TEST(Plant, FlagsAnExcessFollowingErrorPastItsLimit) {
-  const auto m = mill();
-  Plant plant(m, Scene{}, clock_1ms());
-  plant.reset(AxisVec{});
-  // 1.5 times the lag at the rapid rate (500 mm/s / 30) plus 1 mm.
-  const double limit = 1.5 * 500.0 / 30.0 + 1.0;
-  EXPECT_DOUBLE_EQ(plant.excess_error_limit(0), limit);
-  Drive d(plant);
-  d.to(xyz(limit - 0.5, 0, 0));  // a step the axis cannot follow in one period
-  EXPECT_FALSE(plant.excess_error());
-  d.to(xyz(limit + 5.0, 0, 0));
-  EXPECT_TRUE(plant.excess_error());
-  // A locked axis is never checked.
-  AxisMask x;
-  x.set(0);
-  plant.set_locked(x);
-  EXPECT_TRUE(std::isinf(plant.excess_error_limit(0)));
-  d.to(xyz(limit + 50.0, 0, 0));
-  EXPECT_FALSE(plant.excess_error());
 }
 
 TEST(Plant, ALockedAxisStaysAndAnIdealServoIsWhereItIsCommanded) {
