@@ -4,7 +4,8 @@
 #   release  (default) build/, RelWithDebInfo, with the tests
 #   asan     build-asan/, Debug with AddressSanitizer + UndefinedBehaviorSanitizer
 #   demo     build/, only the skipnc binary (no tests)
-# Usage: scripts/build.sh [release|asan|demo]
+#   tsan     build-tsan/, ThreadSanitizer, only the thread tests (tests/threads/)
+# Usage: scripts/build.sh [release|asan|demo|tsan]
 set -euo pipefail
 cd "$(dirname "$0")/.."
 flavour=${1:-release}
@@ -13,7 +14,8 @@ case $flavour in
   release) dir=build; flags=(-DCMAKE_BUILD_TYPE=RelWithDebInfo -DSKIPNC_TESTS=ON) ;;
   asan) dir=build-asan; flags=(-DCMAKE_BUILD_TYPE=Debug -DSKIPNC_SANITIZE=ON -DSKIPNC_TESTS=ON) ;;
   demo) dir=build; flags=(-DCMAKE_BUILD_TYPE=RelWithDebInfo -DSKIPNC_TESTS=OFF); targets=(--target skipnc) ;;
-  *) echo "build.sh: unknown flavour '$flavour' (release, asan, demo)" >&2; exit 2 ;;
+  tsan) dir=build-tsan; flags=(-DCMAKE_BUILD_TYPE=RelWithDebInfo -DSKIPNC_TSAN=ON -DSKIPNC_TESTS=ON -DSKIPNC_PYTHON=OFF); targets=(--target skipnc_thread_tests) ;;
+  *) echo "build.sh: unknown flavour '$flavour' (release, asan, demo, tsan)" >&2; exit 2 ;;
 esac
 generator=()
 command -v ninja >/dev/null && [ ! -f "$dir/CMakeCache.txt" ] && generator=(-G Ninja)

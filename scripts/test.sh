@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Quick start 2: set up, build, and run every test: once in the release build,
 # once under AddressSanitizer + UndefinedBehaviorSanitizer.
-# SKIPNC_SKIP_ASAN=1 leaves out the sanitizer pass (faster local runs).
+# SKIPNC_SKIP_ASAN=1 leaves out the sanitizer pass (faster local runs);
+# SKIPNC_SKIP_TSAN=1 the ThreadSanitizer run of the thread tests.
 # The fuzz stage (scripts/fuzz.sh: every libFuzzer harness for a bounded
 # time under ASan + UBSan) runs in CI (CI=true) or when SKIPNC_FUZZ=1;
 # SKIPNC_FUZZ_SECONDS sets the time of each harness (default 40: with two
@@ -18,6 +19,11 @@ if [ "${SKIPNC_SKIP_ASAN:-0}" != 1 ]; then
   scripts/build.sh asan
   (cd build-asan && ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
      ctest --output-on-failure -j"$(nproc)")
+fi
+if [ "${SKIPNC_SKIP_TSAN:-0}" != 1 ]; then
+  echo "== ThreadSanitizer (two simulators in two threads)"
+  scripts/build.sh tsan
+  TSAN_OPTIONS=halt_on_error=1 build-tsan/tests/skipnc_thread_tests
 fi
 if [ "${SKIPNC_FUZZ:-}" = 1 ] || { [ "${CI:-}" = true ] && [ "${SKIPNC_FUZZ:-}" != 0 ]; }; then
   echo "== fuzz"
