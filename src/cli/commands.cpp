@@ -558,4 +558,19 @@ int demo_command(const RunArgs& args) {
   return r.status == sim::RunStatus::kCompleted && !output_failed ? 0 : 1;
 }
 
+int plot_command(RunArgs a) {
+  if (a.plot.empty()) {
+    const std::string stem = std::filesystem::path(a.program).stem().string();
+    a.plot = {stem + ".html", stem + ".svg"};
+  }
+  const int rc = run_command(a);
+  if (rc != 2 && !a.quiet) {
+    for (const auto& f : a.plot) {
+      std::error_code ec;
+      if (std::filesystem::is_regular_file(f, ec)) fmt::print("wrote {}\n", f);
+    }
+  }
+  return rc;
+}
+
 }  // namespace skipnc::cli

@@ -30,5 +30,8 @@ int run_command(const RunArgs& a);
 int canon_command(const RunArgs& a);
 int demo_command(const RunArgs& a);
 int dialects_command();
+// `skipnc plot`: a run whose pictures go to the -o files (default
+// <program>.html and <program>.svg in the current folder).
+int plot_command(RunArgs a);
 
 }  // namespace skipnc::cli

@@ -6,7 +6,6 @@
 #include <fstream>
 #include <sstream>
 
-#include "cli/commands.hpp"
 #include "plot/plot.hpp"
 #include "report/report.hpp"
 
@@ -73,19 +72,5 @@ std::string read_program_text(const std::string& path) {
   return ss.str();
 }
 
-int plot_command(RunArgs a) {
-  if (a.plot.empty()) {
-    const std::string stem = std::filesystem::path(a.program).stem().string();
-    a.plot = {stem + ".html", stem + ".svg"};
-  }
-  const int rc = run_command(a);
-  if (rc != 2 && !a.quiet) {
-    for (const auto& f : a.plot) {
-      std::error_code ec;
-      if (std::filesystem::is_regular_file(f, ec)) fmt::print("wrote {}\n", f);
-    }
-  }
-  return rc;
-}
 
 }  // namespace skipnc::cli

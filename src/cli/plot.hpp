@@ -15,8 +15,6 @@
 
 namespace skipnc::cli {
 
-struct RunArgs;
-
 // Every FILE must end in .svg, .html or .htm.
 [[nodiscard]] Result<void> check_plot_files(const std::vector<std::string>& files);
 
@@ -43,9 +41,5 @@ class PlotCapture {
 
 // The program's text (for the page's block list); "" when it cannot be read.
 std::string read_program_text(const std::string& path);
-
-// `skipnc plot`: a run whose pictures go to the -o files (default
-// <program>.html and <program>.svg in the current folder).
-int plot_command(RunArgs a);
 
 }  // namespace skipnc::cli
