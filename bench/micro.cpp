@@ -10,6 +10,7 @@
 #include "gcode/parser.hpp"
 #include "interpreter/interpreter.hpp"
 #include "kernel/kernel.hpp"
+#include "kernel/kernel_config.hpp"
 #include "machine/plant.hpp"
 #include "sim/simulator.hpp"
 
