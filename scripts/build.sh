@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Configures and builds one flavour, warnings as errors (SKIPNC_WERROR=ON; a
 # plain `cmake` build leaves them warnings):
-#   release  (default) build/, RelWithDebInfo, with the tests
+#   release  (default) build/, RelWithDebInfo, with the tests and the benchmarks (built, not run)
 #   asan     build-asan/, Debug with AddressSanitizer + UndefinedBehaviorSanitizer
 #   demo     build/, only the skipnc binary (no tests)
 #   tsan     build-tsan/, ThreadSanitizer, only the thread tests (tests/threads/)
@@ -11,7 +11,7 @@ cd "$(dirname "$0")/.."
 flavour=${1:-release}
 targets=()
 case $flavour in
-  release) dir=build; flags=(-DCMAKE_BUILD_TYPE=RelWithDebInfo -DSKIPNC_TESTS=ON) ;;
+  release) dir=build; flags=(-DCMAKE_BUILD_TYPE=RelWithDebInfo -DSKIPNC_TESTS=ON -DSKIPNC_BENCH=ON) ;;
   asan) dir=build-asan; flags=(-DCMAKE_BUILD_TYPE=Debug -DSKIPNC_SANITIZE=ON -DSKIPNC_TESTS=ON) ;;
   demo) dir=build; flags=(-DCMAKE_BUILD_TYPE=RelWithDebInfo -DSKIPNC_TESTS=OFF); targets=(--target skipnc) ;;
   tsan) dir=build-tsan; flags=(-DCMAKE_BUILD_TYPE=RelWithDebInfo -DSKIPNC_TSAN=ON -DSKIPNC_TESTS=ON -DSKIPNC_PYTHON=OFF); targets=(--target skipnc_thread_tests) ;;

@@ -5,4 +5,6 @@
 #include "kernel/kernel.hpp"
 #include "planner/planner.hpp"
 
-int main() { return 0; }
+int main() {
+  return 0;
+}

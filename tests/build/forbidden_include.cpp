@@ -4,4 +4,6 @@
 #include "kernel/kernel.hpp"
 #include "machine/plant.hpp"
 
-int main() { return 0; }
+int main() {
+  return 0;
+}
