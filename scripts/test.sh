@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Quick start 2: set up, build, and run every test: once in the release build,
-# once under AddressSanitizer + UndefinedBehaviorSanitizer.
+# once under AddressSanitizer + UndefinedBehaviorSanitizer; and build skipnc as a
+# user would (plain Release, warnings not errors) and install it.
 # SKIPNC_SKIP_ASAN=1 leaves out the sanitizer pass (faster local runs);
 # SKIPNC_SKIP_TSAN=1 the ThreadSanitizer run of the thread tests.
 # The fuzz stage (scripts/fuzz.sh: every libFuzzer harness for a bounded
@@ -14,6 +15,11 @@ scripts/setup.sh
 echo "== release build"
 scripts/build.sh release
 (cd build && ctest --output-on-failure -j"$(nproc)")
+echo "== a user's plain Release build (no -DSKIPNC_WERROR: warnings stay warnings), then install"
+cmake -S . -B build-user -DCMAKE_BUILD_TYPE=Release -DSKIPNC_TESTS=OFF -DSKIPNC_PYTHON=OFF >/dev/null
+cmake --build build-user -j"$(nproc)" --target skipnc
+cmake --install build-user --prefix build-user/installed >/dev/null
+build-user/installed/bin/skipnc dialects >/dev/null
 if [ "${SKIPNC_SKIP_ASAN:-0}" != 1 ]; then
   echo "== ASan + UBSan build"
   scripts/build.sh asan
