@@ -81,6 +81,23 @@ struct Reader {
     return out;
   }
 
+  // `min` and `max` of a box-shaped table, max above min on every axis;
+  // otherwise the error names `what` and stands at `at`.
+  Result<std::pair<geo::Vec3, geo::Vec3>> corners(const toml::table& t, std::string_view what,
+                                                  const toml::node& at) const {
+    auto lo = vec<3>(t, "min");
+    if (!lo) return std::unexpected(lo.error());
+    auto hi = vec<3>(t, "max");
+    if (!hi) return std::unexpected(hi.error());
+    for (std::size_t i = 0; i < 3; ++i) {
+      if (!((*hi)[i] > (*lo)[i])) {
+        return config_error(at, origin, std::string(what) + ": max must exceed min on every axis");
+      }
+    }
+    return std::pair{geo::Vec3{(*lo)[0], (*lo)[1], (*lo)[2]},
+                     geo::Vec3{(*hi)[0], (*hi)[1], (*hi)[2]}};
+  }
+
   Result<canon::SignalAddr> signal(const toml::table& t, std::string& name) const {
     return scene_signal(t, origin, d, p, name);
   }
@@ -318,21 +335,12 @@ Result<void> parse_parts(const toml::table& root, const Reader& rd, PartSet& par
       auto k =
           check_keys(t, {"part", "frame", "min", "max"}, origin, "[[" + std::string(key) + "]]");
       if (!k) return k;
-      auto lo = rd.vec<3>(t, "min");
-      if (!lo) return std::unexpected(lo.error());
-      auto hi = rd.vec<3>(t, "max");
-      if (!hi) return std::unexpected(hi.error());
-      for (std::size_t i = 0; i < 3; ++i) {
-        if (!((*hi)[i] > (*lo)[i])) {
-          return config_error(t, origin,
-                              "[[" + std::string(key) + "]]: max must exceed min on every axis");
-        }
-      }
+      auto box = rd.corners(t, "[[" + std::string(key) + "]]", t);
+      if (!box) return std::unexpected(box.error());
       Result<void> err;
       geo::Part& part = parts.get(t, origin, err);
       if (!err) return err;
-      const geo::Shape s =
-          geo::make_box({(*lo)[0], (*lo)[1], (*lo)[2]}, {(*hi)[0], (*hi)[1], (*hi)[2]});
+      const geo::Shape s = geo::make_box(box->first, box->second);
       (hole ? part.holes : part.solids).push_back(s);
       return {};
     });
@@ -606,15 +614,9 @@ Result<StockSpec> parse_stock(const toml::table& t, const Reader& rd, const Fram
   const auto origin = rd.origin;
   auto k = check_keys(t, {"frame", "min", "max", "resolution"}, origin, "[stock]");
   if (!k) return std::unexpected(k.error());
-  auto lo = rd.vec<3>(t, "min");
-  if (!lo) return std::unexpected(lo.error());
-  auto hi = rd.vec<3>(t, "max");
-  if (!hi) return std::unexpected(hi.error());
-  for (std::size_t i = 0; i < 3; ++i) {
-    if (!((*hi)[i] > (*lo)[i])) {
-      return config_error(*t.get("max"), origin, "[stock]: max must exceed min on every axis");
-    }
-  }
+  const toml::node* at_max = t.get("max");
+  auto box = rd.corners(t, "[stock]", at_max != nullptr ? *at_max : t);
+  if (!box) return std::unexpected(box.error());
   auto res = rd.number(t, "resolution", 1e-3, 100.0, 0.5);
   if (!res) return std::unexpected(res.error());
   // The cells are columns along the machine's Z on a grid along its X and
@@ -636,8 +638,8 @@ Result<StockSpec> parse_stock(const toml::table& t, const Reader& rd, const Fram
     }
   }
   StockSpec s;
-  s.lo = geo::Vec3{(*lo)[0], (*lo)[1], (*lo)[2]} + o;
-  s.hi = geo::Vec3{(*hi)[0], (*hi)[1], (*hi)[2]} + o;
+  s.lo = box->first + o;
+  s.hi = box->second + o;
   s.resolution = *res;
   const double cells = geo::Stock::cell_count(s.lo, s.hi, s.resolution);
   if (cells > kMaxStockCells) {
