@@ -18,10 +18,8 @@ namespace skipnc::sim {
 
 using machine::OperatorAction;
 using machine::Plant;
-using machine::PlantFault;
 using machine::ProbeScene;
 using machine::Scene;
-namespace geo = machine::geo;
 
 namespace {
 
@@ -238,7 +236,7 @@ interp::SkipRecord cut_short_skip(const interp::SkipRecord& pending, const kerne
   return rec;
 }
 
-StockResult stock_result(const geo::Stock& st) {
+StockResult stock_result(const machine::geo::Stock& st) {
   StockResult r;
   r.removed_mm3 = st.removed_volume();
   for (int i = 0; i <= st.nx(); ++i) r.x_edges.push_back(i < st.nx() ? st.x0(i) : st.hi().x);
