@@ -54,7 +54,8 @@ struct SignalAddr {
   friend bool operator==(const SignalAddr&, const SignalAddr&) = default;
 };
 
-enum class SkipKind : std::uint8_t { kSkip, kMultiStep, kTorque };
+// kProbe: G38.2-G38.5 (LinuxCNC, grbl), a skip in the other controls' terms.
+enum class SkipKind : std::uint8_t { kSkip, kMultiStep, kTorque, kProbe };
 enum class SkipStop : std::uint8_t { kImmediate, kDecelerate };
 enum class SkipLatch : std::uint8_t {
   kExact,    // the instant of the edge, inside the servo cycle (high-speed skip)
@@ -72,8 +73,12 @@ struct SkipSpec {
   bool active_low = false;           // SK0: input active at 0
   bool edge = false;                 // TSG: a new active edge is required
   bool active_at_start_ends = true;  // level input already active at block start ends it
-  bool ignore_inputs = false;        // machine lock / Z-axis cancel: run to the end point
-  bool torque_ends = false;          // P98 / P99
+  // An input already active when the block starts is an error: the block
+  // ends at once, no motion, no latch (LinuxCNC and grbl G38: the probe must
+  // not be in the target state already). Before active_at_start_ends.
+  bool active_at_start_fails = false;
+  bool ignore_inputs = false;  // machine lock / Z-axis cancel: run to the end point
+  bool torque_ends = false;    // P98 / P99
   int torque_axis = -1;
   double torque_limit_pct = 0.0;
   double torque_delay_s = 0.0;

@@ -153,6 +153,7 @@ void format_to(fmt::memory_buffer& out, const Stamped& s, const AxisNames& axes)
           fmt::format_to(it, " F{} KIND={}", c.feed_mm_per_min,
                          sp.kind == SkipKind::kSkip        ? "skip"
                          : sp.kind == SkipKind::kMultiStep ? "multi_step"
+                         : sp.kind == SkipKind::kProbe     ? "probe"
                                                            : "torque");
           if (sp.p >= 0) fmt::format_to(it, " P{}", sp.p);
           for (int i = 0; i < sp.input_count; ++i) {

@@ -16,8 +16,8 @@
 #include "cli/session.hpp"
 #include "config/skip_inputs.hpp"
 #include "core/embedded.hpp"
-#include "sim/simulator.hpp"
 #include "report/report.hpp"
+#include "sim/simulator.hpp"
 
 namespace skipnc::cli {
 namespace {
@@ -198,7 +198,7 @@ int execute(const RunArgs& a, Session& s, interp::Setup setup, bool explain) {
     ObservedRun got;
     got.status = in.result.status == sim::RunStatus::kCompleted     ? "completed"
                  : in.result.status == sim::RunStatus::kInterrupted ? "interrupted"
-                                                                        : "alarm";
+                                                                    : "alarm";
     if (in.result.alarm) got.alarm = report::view_alarm(*in.result.alarm, &s.dialect).number;
     for (const auto& v : expect_vars) {
       Result<interp::Value> val = v.name.empty() ? sim.interpreter()->read_variable(v.number)
@@ -339,7 +339,8 @@ int canon_command(const RunArgs& a) {
       sync.skip_done = true;
       sync.latch_machine = sync.machine_position;
       auto r = (*in)->sync(sync);
-      if (!r && r.error().id != AlarmId::kSkipMiss) {
+      if (!r && r.error().id != AlarmId::kSkipMiss && r.error().id != AlarmId::kProbeNoContact &&
+          r.error().id != AlarmId::kProbeNoBreak) {
         sink.flush();
         std::cerr << "skipnc: " << describe(r.error(), &s.dialect) << "\n";
         return 1;
@@ -531,8 +532,8 @@ int demo_command(const RunArgs& args) {
   print_warnings(stdout, r);
   for (const auto& m : r.messages) fmt::print("  message: {}\n", m);
   fmt::print("\n{} after {:.3f} s of machine time; final position {}\n",
-             r.status == sim::RunStatus::kCompleted ? "Completed" : "Stopped by an alarm",
-             r.time_s, fmt_axes(r.final_work, s.machine));
+             r.status == sim::RunStatus::kCompleted ? "Completed" : "Stopped by an alarm", r.time_s,
+             fmt_axes(r.final_work, s.machine));
   if (r.alarm) std::cout << "  " << describe(*r.alarm, &s.dialect) << "\n";
   if (!a.report.empty()) {
     report::ReportInput in;

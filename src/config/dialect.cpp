@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <charconv>
+#include <cmath>
 
 #include "config/toml_util.hpp"
 #include "core/embedded.hpp"
@@ -82,6 +83,8 @@ Result<void> load_switches(const toml::table& t, std::string_view origin, Switch
       {"rapid_no_in_position_param", &sw.rapid_no_in_position_param, 0, 99999},
       {"skip_signal_param_inputs", &sw.skip_signal_param_inputs, 0, canon::SkipSpec::kMaxInputs},
       {"rapid_no_in_position_bit", &sw.rapid_no_in_position_bit, 0, 7},
+      {"probe_invert_param", &sw.probe_invert_param, 0, 99999},
+      {"call_levels", &sw.call_levels, 0, 1000},
   };
   const BoolKey bools[] = {
       {"skip_k_word", &sw.skip_k_word},
@@ -98,7 +101,15 @@ Result<void> load_switches(const toml::table& t, std::string_view origin, Switch
       {"block_end_tool_offsets", &sw.block_end_tool_offsets},
       {"current_tool_offsets", &sw.current_tool_offsets},
       {"skip_tool_offsets", &sw.skip_tool_offsets},
+      {"skip_g31", &sw.skip_g31},
+      {"probe_g38", &sw.probe_g38},
+      {"probe_report_line", &sw.probe_report_line},
+      {"probe_latch_sampled", &sw.probe_latch_sampled},
+      {"probe_latch_actual", &sw.probe_latch_actual},
+      {"probe_same_point_all", &sw.probe_same_point_all},
   };
+  static constexpr Choice<Language> kLanguages[] = {
+      {"macro_b", Language::kMacroB}, {"rs274ngc", Language::kRs274ngc}, {"grbl", Language::kGrbl}};
   static constexpr Choice<SkipPMode> kPModes[] = {{"multi_step", SkipPMode::kMultiStep},
                                                   {"select", SkipPMode::kSelect},
                                                   {"bitmask", SkipPMode::kBitmask},
@@ -146,8 +157,10 @@ Result<void> load_switches(const toml::table& t, std::string_view origin, Switch
       r = choose(node, origin, k, kOverrides, sw.skip_override);
     else if (k == "skip_accel")
       r = choose(node, origin, k, kAccels, sw.skip_accel);
+    else if (k == "language")
+      r = choose(node, origin, k, kLanguages, sw.language);
     else if (!known) {
-      std::string list = "skip_p_mode, skip_stop, skip_feed, skip_override, skip_accel";
+      std::string list = "skip_p_mode, skip_stop, skip_feed, skip_override, skip_accel, language";
       for (const auto& e : ints) list += ", " + std::string(e.key);
       for (const auto& e : bools) list += ", " + std::string(e.key);
       return config_error(
@@ -287,13 +300,34 @@ Result<void> load_alarms(const toml::table& t, std::string_view origin, Dialect&
   return {};
 }
 
+// [codes]: G codes of skipnc's table the control does not have (absent_g)
+// or has with another meaning that skipnc does not simulate (other_g).
+Result<void> load_codes(const toml::table& t, std::string_view origin, Dialect& d) {
+  auto keys = check_keys(t, {"absent_g", "other_g"}, origin, "[codes]");
+  if (!keys) return keys;
+  for (const auto& [key, node] : t) {
+    const auto* arr = node.as_array();
+    if (!arr) return config_error(node, origin, std::string(key.str()) + " must be an array");
+    std::vector<int>& out = key.str() == "absent_g" ? d.absent_g : d.other_g;
+    out.clear();
+    for (const auto& e : *arr) {
+      const auto v = e.value<double>();
+      if (!v || *v < 0 || *v > 999 || std::round(*v * 10) != *v * 10) {
+        return config_error(e, origin, "a G code such as 54 or 54.1");
+      }
+      out.push_back(static_cast<int>(std::lround(*v * 10)));
+    }
+  }
+  return {};
+}
+
 Result<void> load_into(std::string_view text, std::string_view origin, Dialect& d, int depth) {
   auto parsed = parse_toml(text, origin);
   if (!parsed) return std::unexpected(parsed.error());
   const toml::table& t = *parsed;
   auto keys = check_keys(t,
                          {"name", "title", "inherits", "fixed_skip_inputs", "switches",
-                          "skip_variables", "skip_handshake", "parameters", "alarms"},
+                          "skip_variables", "skip_handshake", "parameters", "alarms", "codes"},
                          origin, "a dialect file");
   if (!keys) return keys;
   if (const auto* inh = t.get("inherits")) {
@@ -332,6 +366,8 @@ Result<void> load_into(std::string_view text, std::string_view origin, Dialect& 
         r = load_handshake(*tab, origin, d.handshake);
       else if (k == "parameters")
         r = load_params(*tab, origin, d.params);
+      else if (k == "codes")
+        r = load_codes(*tab, origin, d);
       else
         r = load_alarms(*tab, origin, d);
     }

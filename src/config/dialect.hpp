@@ -80,8 +80,38 @@ struct SkipHandshakeNames {
   bool empty() const noexcept { return active.empty(); }
 };
 
+// The language of the programs (docs/languages.md).
+enum class Language : std::uint8_t {
+  kMacroB,    // Fanuc Custom Macro B: #1-#33 locals, IF/GOTO/WHILE/DO/END, G65
+  kRs274ngc,  // LinuxCNC RS274NGC: O-word subroutines and control flow, named parameters
+  kGrbl,      // grbl: G code only, no parameters or expressions
+};
+
 struct Switches {
+  Language language = Language::kMacroB;
   int macro_bracket_depth = 5;  // [ ] nesting in a macro expression (Fanuc: 5, PS0118)
+  // Subroutine calls an O-word call may nest (0: the machine's
+  // limits.max_macro_levels); LinuxCNC: 9 (INTERP_SUB_ROUTINE_LEVELS 10 with the main).
+  int call_levels = 0;
+  // G31 and its family exist (false: LinuxCNC, grbl probe with G38 only).
+  bool skip_g31 = true;
+  // G38.2-G38.5 straight probe, in motion group 01 (LinuxCNC, grbl).
+  bool probe_g38 = false;
+  // After a G38 probe the control prints "[PRB:x,y,z:1]" (grbl: machine
+  // coordinates, 1 = contact).
+  bool probe_report_line = false;
+  // Parameter whose bit 0 inverts the probe input (grbl $6); 0: none.
+  int probe_invert_param = 0;
+  // How a G38 probe latches: at the first servo sample that sees the input
+  // (LinuxCNC's motion controller, once per servo period) or at the edge's
+  // instant; the actual (feedback) position or the command (grbl's step
+  // count: a stepper control has no feedback).
+  bool probe_latch_sampled = false;
+  bool probe_latch_actual = true;
+  // A G38 move whose end point is its start point is refused for every
+  // G38 (grbl: error 33) or only for G38.2 and G38.4 (LinuxCNC: "Start
+  // point too close to probe point"; G38.3/G38.5 run and end at once).
+  bool probe_same_point_all = false;
   SkipPMode skip_p_mode = SkipPMode::kMultiStep;
   int skip_p_first = 1;   // P value of the first skip input (Fanuc 1, NCT 0)
   int skip_p_count = 12;  // number of selectable inputs
@@ -142,6 +172,11 @@ struct Dialect {
   SkipHandshakeNames handshake;
   // Fixed skip-input addresses, index 0 = first selectable input (P first).
   std::vector<canon::SignalAddr> fixed_skip_inputs;
+  // [codes] (x10, G54.1 = 541): codes of skipnc's table this control does not
+  // have (unknown_g_code), and codes it has with another meaning, not
+  // simulated (not_simulated).
+  std::vector<int> absent_g;
+  std::vector<int> other_g;
 
   const ParamDef* param(int number) const noexcept;
   const AlarmText& alarm(AlarmId id) const noexcept { return alarms[static_cast<std::size_t>(id)]; }

@@ -24,6 +24,7 @@ enum class Op : std::uint8_t {
   kNamedVar,  // #<name> or #_NAME   (name: index into Block::names)
   kNeg,       // -a
   kAdd, kSub, kMul, kDiv, kMod, kAnd, kOr, kXor,  // a op b
+  kPow,                                           // a ** b (RS274NGC)
   kEq, kNe, kGt, kGe, kLt, kLe,                   // a op b (conditions)
   kFunc,      // fn(a) or fn(a, b)
 };
@@ -31,6 +32,18 @@ enum class Op : std::uint8_t {
 enum class Func : std::uint8_t {
   kNone, kSin, kCos, kTan, kAsin, kAcos, kAtan, kSqrt, kAbs, kRound, kFix, kFup,
   kLn, kExp, kPow, kBin, kBcd, kAdp,
+  kExists,    // EXISTS[#<name>] (RS274NGC): a is the kNamedVar node
+};
+
+// The language a block is read in: Fanuc Custom Macro B (and the
+// Fanuc-compatible controls), LinuxCNC's RS274NGC with O-word control flow,
+// or grbl's plain G code (no parameters, no expressions).
+enum class Syntax : std::uint8_t { kMacroB, kRs274ngc, kGrbl };
+
+// An O-word statement (RS274NGC): `o<label> <keyword> [...]`.
+enum class OKind : std::uint8_t {
+  kNone, kSub, kEndsub, kCall, kReturn, kIf, kElseif, kElse, kEndif,
+  kWhile, kEndwhile, kDo, kRepeat, kEndrepeat, kBreak, kContinue,
 };
 // clang-format on
 
@@ -106,6 +119,7 @@ enum class StmtKind : std::uint8_t {
   kPclos,   // PCLOS
   kDprnt,   // DPRNT[...]  (items in Block::print_items)
   kBprnt,   // BPRNT[...]
+  kOword,   // o<label> keyword [args] (RS274NGC; okind, label, Block::args)
 };
 
 // One item of DPRNT/BPRNT: text to print, or a variable with a format.
@@ -125,6 +139,15 @@ struct Stmt {
   ExprId target = kNoExpr;  // GOTO target expression
   int loop = 0;             // DO/END identifier as written (1..3 on Fanuc)
   std::uint32_t column = 0;
+  OKind okind = OKind::kNone;
+  std::int32_t label = -1;  // kOword: index into Block::names ("100", "<NAME>")
+};
+
+// A parameter setting of an RS274NGC line ("#1 = 2 #<a> = #1 G1 X#a"):
+// every value on the line is read before any setting takes effect.
+struct Assignment {
+  ExprId lhs = kNoExpr;
+  ExprId rhs = kNoExpr;
 };
 
 struct Comment {
@@ -147,6 +170,8 @@ struct Block {
   std::vector<std::string> names;  // named variables, comment texts, print texts
   std::vector<Comment> comments;
   std::vector<PrintItem> print_items;
+  std::vector<ExprId> args;         // kOword: the [expr] arguments / condition
+  std::vector<Assignment> assigns;  // RS274NGC parameter settings
 
   void clear() noexcept {
     loc = {};
@@ -163,10 +188,12 @@ struct Block {
     names.clear();
     comments.clear();
     print_items.clear();
+    args.clear();
+    assigns.clear();
   }
   // True when the block has neither words nor a statement (only comments or nothing).
   bool empty() const noexcept {
-    return words.empty() && stmt.kind == StmtKind::kNone && !percent && !has_o;
+    return words.empty() && stmt.kind == StmtKind::kNone && !percent && !has_o && assigns.empty();
   }
 };
 

@@ -197,6 +197,119 @@ bool Parser::parse_head() {
   return true;
 }
 
+// Head of an RS274NGC or grbl block: '%', '/', 'N' sequence number, then an
+// O-word (RS274NGC: `o100 sub`, `o<name> call [1] [2]`, ...).
+bool Parser::parse_head_ngc() {
+  int c = peek();
+  if (c == '%') {
+    out_.percent = true;
+    ++p_;
+    return true;
+  }
+  if (c == '/') {
+    ++p_;
+    out_.block_delete = 1;
+    c = peek();
+    if (is_digit(c) && c != '0') {
+      out_.block_delete = c - '0';
+      ++p_;
+      c = peek();
+    }
+  }
+  if (c == 'N') {
+    const char* at = p_;
+    ++p_;
+    bool any = false;
+    if (!parse_uint(out_.n, "line number", any)) return false;
+    if (!any) return error(AlarmId::kNoValue, "'N' has no value", at);
+    out_.has_n = true;
+    c = peek();
+  }
+  if (c == 'O') {
+    if (grbl_) return error(AlarmId::kIllegalAddress, "'O' is not a word of this control", p_);
+    return parse_oword(p_);
+  }
+  return true;
+}
+
+// p_ at 'O': o<label> keyword [expr]... The label is a number ("o100",
+// leading zeros dropped) or a name ("o<probe_x>", upper-cased, spaces dropped).
+bool Parser::parse_oword(const char* at) {
+  ++p_;
+  std::string label;
+  const int c = peek();
+  if (c == '<') {
+    std::string name;
+    if (!parse_named(name, false)) return false;
+    label = "<" + name + ">";
+  } else if (is_digit(c)) {
+    std::int64_t v = 0;
+    bool any = false;
+    if (!parse_uint(v, "O-word number", any)) return false;
+    label = std::to_string(v);
+  } else {
+    return unexpected("a number or <name> after 'o'", p_);
+  }
+  struct Kw {
+    std::string_view kw;
+    OKind kind;
+  };
+  // Longer keywords before their prefixes.
+  static constexpr Kw kKeywords[] = {
+      {"ENDSUB", OKind::kEndsub}, {"SUB", OKind::kSub},       {"CALL", OKind::kCall},
+      {"RETURN", OKind::kReturn}, {"ELSEIF", OKind::kElseif}, {"ELSE", OKind::kElse},
+      {"ENDIF", OKind::kEndif},   {"IF", OKind::kIf},         {"ENDWHILE", OKind::kEndwhile},
+      {"WHILE", OKind::kWhile},   {"DO", OKind::kDo},         {"ENDREPEAT", OKind::kEndrepeat},
+      {"REPEAT", OKind::kRepeat}, {"BREAK", OKind::kBreak},   {"CONTINUE", OKind::kContinue},
+  };
+  (void)peek();
+  OKind kind = OKind::kNone;
+  for (const Kw& k : kKeywords) {
+    if (match_kw(k.kw)) {
+      kind = k.kind;
+      break;
+    }
+  }
+  if (kind == OKind::kNone) {
+    return unexpected(
+        "an O-word keyword (sub, endsub, call, return, if, elseif, else, endif, "
+        "while, endwhile, do, repeat, endrepeat, break, continue)",
+        p_);
+  }
+  if (!begin_stmt(StmtKind::kOword, at)) return false;
+  out_.stmt.okind = kind;
+  out_.stmt.label = add_name(std::move(label));
+  const bool needs_one = kind == OKind::kIf || kind == OKind::kElseif || kind == OKind::kWhile ||
+                         kind == OKind::kRepeat;
+  const bool takes_many = kind == OKind::kCall;
+  const bool takes_one = needs_one || kind == OKind::kReturn || kind == OKind::kEndsub;
+  while (peek() == '[') {
+    if (!takes_many && !(takes_one && out_.args.empty())) {
+      return error(AlarmId::kMacroFormat, "this O-word statement takes no more arguments", p_);
+    }
+    const ExprId e = parse_bracket();
+    if (e == kFail) return false;
+    out_.args.push_back(e);
+  }
+  if (needs_one && out_.args.empty()) {
+    return unexpected("a [condition] or [count] after the O-word keyword", p_);
+  }
+  return true;
+}
+
+// p_ at '#': one parameter setting of an RS274NGC line.
+bool Parser::parse_ngc_assign(const char* at) {
+  const ExprId lhs = parse_var(false);
+  if (lhs == kFail) return false;
+  if (peek() != '=') return unexpected("'=' after the parameter", p_);
+  ++p_;
+  const ExprId rhs = parse_expr();
+  if (rhs == kFail) return false;
+  (void)at;
+  out_.assigns.push_back(Assignment{lhs, rhs});
+  return true;
+}
+
 // Address word at p_ (a letter): X10, X-.5, X#1, X-#2, X[#1+2], X-[#1].
 inline bool Parser::parse_word() {
   const char* const at = p_;
@@ -216,7 +329,7 @@ inline bool Parser::parse_word() {
   if (is_digit(c) || c == '.') {
     if (!parse_number(value, point)) return false;
     if (negative) value = -value;
-  } else if (c == '#' || c == '[') {
+  } else if ((c == '#' || c == '[') && !grbl_) {
     e = c == '#' ? parse_var(false) : parse_bracket();
     if (e == kFail) return false;
     if (negative) e = add_node(Op::kNeg, col(sign_at), e);
@@ -284,7 +397,11 @@ inline bool Parser::try_keyword(int c, const char* at, bool& handled) {
 inline Result<void> Parser::run() {
   // Head: '%', '/', 'O', ':' or 'N' first.
   const int first = peek();
-  if (first == '%' || first == '/' || first == 'O' || first == ':' || first == 'N') {
+  if (ngc_ || grbl_) [[unlikely]] {
+    if (first == '%' || first == '/' || first == 'O' || first == 'N') {
+      if (!parse_head_ngc()) return std::unexpected(std::move(*err_));
+    }
+  } else if (first == '%' || first == '/' || first == 'O' || first == ':' || first == 'N') {
     if (!parse_head()) return std::unexpected(std::move(*err_));
   }
   if (out_.percent) {
@@ -304,6 +421,27 @@ inline Result<void> Parser::run() {
     if (at == end_) break;
     const int c = static_cast<unsigned char>(to_upper(*at));
     bool ok = true;
+    if (ngc_ || grbl_) [[unlikely]] {
+      if (c == ';') break;  // a comment to the end of the line
+      if (c == '(') {
+        ok = parse_comment();
+      } else if (out_.stmt.kind == StmtKind::kOword) {
+        ok = error(AlarmId::kMacroFormat, "only a comment may follow an O-word statement", at);
+      } else if (is_upper(c)) {
+        ok = parse_word();
+      } else if (c == '#' && ngc_) {
+        ok = parse_ngc_assign(at);
+      } else if (c == '#' || c == '[') {
+        ok = error(AlarmId::kIllegalChar,
+                   std::string("this control has no ") +
+                       (c == '#' ? "parameters ('#')" : "expressions ('[')"),
+                   at);
+      } else {
+        ok = bad_block_char(at);
+      }
+      if (!ok) return std::unexpected(std::move(*err_));
+      continue;
+    }
     if (is_upper(c)) {
       bool handled = false;
       ok = try_keyword(c, at, handled);

@@ -11,6 +11,7 @@ namespace skipnc::gcode {
 struct ParseLimits {
   int max_bracket_depth = 64;  // nesting of [ ] (the dialect may refuse deeper)
   int max_digits = 15;         // significant digits in one number
+  Syntax syntax = Syntax::kMacroB;
 };
 
 // Parses the text of exactly one block (no end-of-block character inside,

@@ -15,12 +15,14 @@ namespace skipnc::gcode::detail {
 namespace {
 
 // Longer names before their prefixes (SQRT before SQR).
-constexpr std::array<FuncName, 20> kFuncs = {{
-    {"SIN", Func::kSin},   {"COS", Func::kCos},   {"TAN", Func::kTan},     {"ASIN", Func::kAsin},
-    {"ACOS", Func::kAcos}, {"ATAN", Func::kAtan}, {"ATN", Func::kAtan},    {"SQRT", Func::kSqrt},
-    {"SQR", Func::kSqrt},  {"ABS", Func::kAbs},   {"ROUND", Func::kRound}, {"RND", Func::kRound},
-    {"FIX", Func::kFix},   {"FUP", Func::kFup},   {"LN", Func::kLn},       {"EXP", Func::kExp},
-    {"POW", Func::kPow},   {"BIN", Func::kBin},   {"BCD", Func::kBcd},     {"ADP", Func::kAdp},
+constexpr std::array<FuncName, 21> kFuncs = {{
+    {"SIN", Func::kSin},   {"COS", Func::kCos},     {"TAN", Func::kTan},
+    {"ASIN", Func::kAsin}, {"ACOS", Func::kAcos},   {"ATAN", Func::kAtan},
+    {"ATN", Func::kAtan},  {"SQRT", Func::kSqrt},   {"SQR", Func::kSqrt},
+    {"ABS", Func::kAbs},   {"ROUND", Func::kRound}, {"RND", Func::kRound},
+    {"FIX", Func::kFix},   {"FUP", Func::kFup},     {"LN", Func::kLn},
+    {"EXP", Func::kExp},   {"POW", Func::kPow},     {"BIN", Func::kBin},
+    {"BCD", Func::kBcd},   {"ADP", Func::kAdp},     {"EXISTS", Func::kExists},
 }};
 
 constexpr std::array<FuncGroup, 26> make_func_groups() {
@@ -41,7 +43,7 @@ constexpr std::uint64_t name_key(std::string_view name) {
   }
   return k;
 }
-constexpr std::size_t kMaxFuncName = 5;  // ROUND
+constexpr std::size_t kMaxFuncName = 6;  // EXISTS
 constexpr std::array<std::uint64_t, kFuncs.size()> make_func_keys() {
   std::array<std::uint64_t, kFuncs.size()> k{};
   for (std::size_t i = 0; i < kFuncs.size(); ++i) k[i] = name_key(kFuncs[i].name);
@@ -70,6 +72,49 @@ static_assert(kMaxExprDepth >= 2);
 // there is none.
 inline int Parser::binary_op(Op& op) {
   if (p_ == end_) return 0;
+  if (ngc_) [[unlikely]] {
+    if (*p_ == '*' && p_ + 1 < end_ && p_[1] == '*') {
+      op = Op::kPow;
+      p_ += 2;
+      return 5;
+    }
+    if (*p_ == ']' || *p_ == ',') return 0;
+    const char* was = p_;
+    Op o = Op::kNumber;
+    const int fanuc = binary_op_fanuc(o);
+    if (fanuc == 0) {
+      p_ = was;
+      return 0;
+    }
+    op = o;
+    return ngc_precedence(o);
+  }
+  return binary_op_fanuc(op);
+}
+
+// RS274NGC precedence (LinuxCNC, "G-code overview", binary operators):
+// ** highest, then * / MOD, then + -, then the comparisons, then AND OR XOR.
+int Parser::ngc_precedence(Op op) const noexcept {
+  switch (op) {
+    case Op::kPow:
+      return 5;
+    case Op::kMul:
+    case Op::kDiv:
+    case Op::kMod:
+      return 4;
+    case Op::kAdd:
+    case Op::kSub:
+      return 3;
+    case Op::kAnd:
+    case Op::kOr:
+    case Op::kXor:
+      return 1;
+    default:
+      return 2;
+  }
+}
+
+inline int Parser::binary_op_fanuc(Op& op) {
   switch (*p_) {
     case '*':
       op = Op::kMul;
@@ -144,7 +189,7 @@ ExprId Parser::parse_expr() {
     Op op;
     std::uint8_t prec;
   };
-  std::array<Pending, 3> stack;
+  std::array<Pending, 5> stack;
   std::size_t n = 0;
   for (;;) {
     // An operand; p_ then at the next significant character.

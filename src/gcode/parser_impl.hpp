@@ -154,7 +154,9 @@ class Parser {
         max_digits_(std::max(1, limits.max_digits)),
         uint_digits_(std::min(max_digits_, 18)),
         fast_digits_(std::min(max_digits_, kMantissaDigits)),
-        max_depth_(std::clamp(limits.max_bracket_depth, 0, kMaxNestingHard)) {
+        max_depth_(std::clamp(limits.max_bracket_depth, 0, kMaxNestingHard)),
+        ngc_(limits.syntax == Syntax::kRs274ngc),
+        grbl_(limits.syntax == Syntax::kGrbl) {
     // Typical blocks never grow the arrays past this: no reallocation while
     // the first blocks of a program are parsed.
     if (out_.words.capacity() < 16) out_.words.reserve(16);
@@ -368,11 +370,13 @@ class Parser {
   bool parse_uint(std::int64_t& value, std::string_view what, bool& any);
   [[gnu::always_inline]] bool parse_word();
   bool parse_head();
+  bool parse_head_ngc();
 
   // ---- expressions
   ExprId parse_expr();
   [[gnu::always_inline]] int binary_op(Op& op);  // inlined into parse_expr's loop
-  ExprId parse_number_node();                    // p_ at a digit or '.'
+  [[gnu::always_inline]] int binary_op_fanuc(Op& op);
+  ExprId parse_number_node();   // p_ at a digit or '.'
   ExprId parse_operand(int c);  // the cases parse_expr leaves: signs, functions, errors
   ExprId parse_signed();        // p_ at a sign
   ExprId parse_primary(int c);  // c: the upper-cased character at p_
@@ -393,6 +397,9 @@ class Parser {
   bool parse_while(const char* at);
   bool parse_print(StmtKind kind, const char* at);
   bool parse_comment();
+  bool parse_oword(const char* at);
+  bool parse_ngc_assign(const char* at);
+  [[gnu::noinline]] int ngc_precedence(Op op) const noexcept;
   [[gnu::always_inline]] bool try_keyword(int c, const char* at, bool& handled);
 
   const char* begin_;
@@ -404,6 +411,8 @@ class Parser {
   int uint_digits_;  // digits of an unsigned integer (N, O, #n, ...)
   int fast_digits_;  // digits of a number that can be neither too many nor inexact
   int max_depth_;
+  bool ngc_;   // RS274NGC: O-words, several parameter settings, ';' comments, '**'
+  bool grbl_;  // grbl: numbers only, no parameters or expressions
   int depth_ = 0;
   NodeSlots nodes_{out_.nodes};
   std::optional<Error> err_;  // the first error

@@ -34,13 +34,16 @@ constexpr std::array<unsigned char, 256> kClasses = make_classes();
 // Index of the first end of block in data[i, stop): a '\n', or a ';' outside
 // parentheses; `stop` when there is none. `in_paren` tells whether data[i]
 // is inside parentheses; it is kept up to date when `stop` is returned.
-std::size_t scan(const char* data, std::size_t i, std::size_t stop, bool& in_paren) noexcept {
+// Without `semicolon` (RS274NGC, grbl: ';' begins a comment) only '\n' ends a block.
+std::size_t scan(const char* data, std::size_t i, std::size_t stop, bool& in_paren,
+                 bool semicolon) noexcept {
   // The usual case, found by memchr: a line end with no ';' before it, where
   // parentheses do not matter.
   if (const void* nl = std::memchr(data + i, '\n', stop - i)) {
     const auto end = static_cast<std::size_t>(static_cast<const char*>(nl) - data);
-    if (std::memchr(data + i, ';', end - i) == nullptr) return end;
+    if (!semicolon || std::memchr(data + i, ';', end - i) == nullptr) return end;
   }
+  if (!semicolon) return stop;
   for (; i < stop; ++i) {
     const unsigned char k = kClasses[static_cast<unsigned char>(data[i])];
     if (k != kPlain) {
@@ -150,7 +153,7 @@ Result<bool> TextSource::next(RawBlock& out) {
       std::size_t text_end = i;
       if (text_end > begin && data[text_end - 1] == '\r') --text_end;
       if (text_end - begin <= limits_.max_block_bytes &&
-          std::memchr(data + begin, ';', i - begin) == nullptr) {
+          (!limits_.semicolon_ends_block || std::memchr(data + begin, ';', i - begin) == nullptr)) {
         out.text = std::string_view(data + begin, text_end - begin);
         out.offset = pos_.offset;
         out.line = pos_.line;
@@ -183,7 +186,7 @@ Result<bool> TextSource::next_general(RawBlock& out) {
     // Scan for the end of the block; past max + 1 bytes the block is too long
     // whatever its end, and only its end is still needed.
     const std::size_t stop = too_long ? len_ : std::min(len_, begin + max + 2);
-    i = scan(data, i, stop, in_paren);
+    i = scan(data, i, stop, in_paren, limits_.semicolon_ends_block);
     if (i == stop && stop < len_) {
       too_long = true;
       continue;
@@ -191,7 +194,8 @@ Result<bool> TextSource::next_general(RawBlock& out) {
     const bool found = i < len_;
     // A ';' directly followed by a line end is one end of block, so that
     // listings written "G0 X1 ;" give no empty blocks: look two bytes ahead.
-    const bool need_more = found ? (data[i] == ';' && i + 2 >= len_ && !eof_) : !eof_;
+    const bool need_more =
+        found ? (data[i] == ';' && limits_.semicolon_ends_block && i + 2 >= len_ && !eof_) : !eof_;
     if (need_more) {
       const std::size_t keep = too_long ? i : begin;
       if (too_long) skipped += i - begin;

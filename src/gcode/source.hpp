@@ -33,7 +33,8 @@ class Source {
  public:
   virtual ~Source() = default;
   // Next block; false at end of text. Blocks end at '\n', "\r\n" or ';'
-  // outside parentheses. The view is valid until the next call.
+  // outside parentheses (SourceLimits::semicolon_ends_block). The view is valid until the next
+  // call.
   [[nodiscard]] virtual Result<bool> next(RawBlock& out) = 0;
   // Position of the block that next() returns next.
   virtual SourcePos tell() const noexcept = 0;
@@ -44,6 +45,10 @@ class Source {
 struct SourceLimits {
   std::size_t max_block_bytes = 64 * 1024;  // a longer block is kBlockTooLong
   std::size_t window_bytes = 1 << 20;       // read buffer of a file source
+  // ';' outside parentheses ends a block (Fanuc's end of block, EOB); when
+  // false only a line end does and ';' is left to the parser (RS274NGC and
+  // grbl read it as a comment to the end of the line).
+  bool semicolon_ends_block = true;
 };
 
 // A source over text held in memory (tests, generated programs).

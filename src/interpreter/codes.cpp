@@ -14,6 +14,12 @@ constexpr void (*setter)(ModalState&) noexcept = [](ModalState& m) noexcept { m.
 
 constexpr auto kNoSet = static_cast<void (*)(ModalState&) noexcept>(nullptr);
 
+template <int Code>
+constexpr void (*probe_setter)(ModalState&) noexcept = [](ModalState& m) noexcept {
+  m.motion = Motion::kProbe;
+  m.probe = Code;
+};
+
 // clang-format off
 constexpr CodeDef kG[] = {
     {0,   Group::k01, kBoth, setter<&ModalState::motion, Motion::kRapid>, Action::kNone, "positioning (rapid traverse)"},
@@ -34,6 +40,10 @@ constexpr CodeDef kG[] = {
     {280, Group::k00, kBoth, kNoSet, Action::kRefReturn, "reference position return"},
     {300, Group::k00, kBoth, kNoSet, Action::kRefReturn2, "2nd-4th reference position return"},
     {310, Group::k00, kBoth, kNoSet, Action::kSkip, "skip function"},
+    {382, Group::k01, kMill | kG38Dialect, probe_setter<382>, Action::kNone, "straight probe toward the part, error without contact"},
+    {383, Group::k01, kMill | kG38Dialect, probe_setter<383>, Action::kNone, "straight probe toward the part"},
+    {384, Group::k01, kMill | kG38Dialect, probe_setter<384>, Action::kNone, "straight probe away from the part, error without loss of contact"},
+    {385, Group::k01, kMill | kG38Dialect, probe_setter<385>, Action::kNone, "straight probe away from the part"},
     {400, Group::k07, kBoth, setter<&ModalState::cutter, CutterComp::kOff>, Action::kNone, "cutter compensation cancel"},
     {410, Group::k07, kBoth, setter<&ModalState::cutter, CutterComp::kLeft>, Action::kNone, "cutter compensation left"},
     {420, Group::k07, kBoth, setter<&ModalState::cutter, CutterComp::kRight>, Action::kNone, "cutter compensation right"},

@@ -42,6 +42,7 @@ enum Avail : std::uint8_t {
   kLathe = 2,
   kBoth = kMill | kLathe,
   kToolPosOffsetDialect = 4,
+  kG38Dialect = 8,  // dialects with the probe_g38 switch (LinuxCNC, grbl)
 };
 
 // What a one-shot (group 00) code does. G09 and G53 modify the block's

@@ -14,6 +14,13 @@
 // - ASIN gives 270..90 and ATAN 0..360 degrees, or -90..90 and -180..180
 //   with parameter 6004#0 NAT = 1; TAN of an odd multiple of 90 degrees is a
 //   division by zero (TAN is SIN/COS).
+// RS274NGC (LinuxCNC) differs, as its interpreter computes them
+// (measured with rs274, tests/rs274/): EQ and NE allow 0.0001 (its
+// TOLERANCE_EQUAL); AND OR XOR are logical (non-zero is true, the result
+// 0 or 1); MOD gives a result of the divisor's range, never negative
+// (-7 MOD 3 = 2); ** is the power; FIX is floor and FUP ceiling
+// (FIX[-1.5] = -2, FUP[-1.5] = -1); ATAN and ASIN are signed (-180..180,
+// -90..90); EXISTS[#<name>] is 1 when the named parameter is set.
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -41,7 +48,11 @@ struct FuncContext {
   bool nat;                // 6004#0 NAT: signed ranges of ATAN / ASIN
   double round_increment;  // ROUND inside an address word (0: whole numbers)
   bool inch;               // ADP: the least input increment is 0.0001 inch
+  bool ngc = false;        // RS274NGC rules (FIX floor, FUP ceiling, no BIN/BCD/ADP/POW)
 };
+
+// LinuxCNC's TOLERANCE_EQUAL: EQ and NE of RS274NGC.
+constexpr double kNgcEqualTolerance = 0.0001;
 
 // The value of fn at x (and y, the second argument of ATAN and POW, when
 // given), in r; or the fault to raise. One set of rules for both evaluators.
@@ -92,10 +103,10 @@ std::optional<Fault> function_value(gcode::Func fn, double x, const double* y,
                                    : round_half_away(x);
       return std::nullopt;
     case Func::kFix:
-      r = std::trunc(x);
+      r = cx.ngc ? std::floor(x) : std::trunc(x);
       return std::nullopt;
     case Func::kFup:
-      r = x >= 0 ? std::ceil(x) : std::floor(x);
+      r = cx.ngc ? std::ceil(x) : x >= 0 ? std::ceil(x) : std::floor(x);
       return std::nullopt;
     case Func::kLn:
       if (x <= 0.0) return bad("LN of a value that is not positive");
@@ -104,7 +115,10 @@ std::optional<Fault> function_value(gcode::Func fn, double x, const double* y,
     case Func::kExp:
       r = std::exp(x);
       return std::nullopt;
+    case Func::kExists:
+      break;  // evaluated by the interpreter (it names a parameter)
     case Func::kPow:
+      if (cx.ngc) break;
       if (y == nullptr) return bad("POW needs two arguments");
       if (x < 0.0 && *y != std::trunc(*y))
         return bad("POW of a negative base to a fractional power");
@@ -112,6 +126,7 @@ std::optional<Fault> function_value(gcode::Func fn, double x, const double* y,
       r = std::pow(x, *y);
       return std::nullopt;
     case Func::kBin: {
+      if (cx.ngc) break;
       // BCD -> binary
       if (x < 0 || x != std::trunc(x) || x > 9.0e15) return bad("BIN of a value that is not BCD");
       auto v = static_cast<std::uint64_t>(x);
@@ -127,6 +142,7 @@ std::optional<Fault> function_value(gcode::Func fn, double x, const double* y,
       return std::nullopt;
     }
     case Func::kBcd: {
+      if (cx.ngc) break;
       if (x < 0 || x != std::trunc(x) || x > 9.0e15)
         return bad("BCD of a negative or fractional value");
       auto v = static_cast<std::uint64_t>(x);
@@ -141,6 +157,7 @@ std::optional<Fault> function_value(gcode::Func fn, double x, const double* y,
       return std::nullopt;
     }
     case Func::kAdp:
+      if (cx.ngc) break;
       // ADP: the value of an argument written without a decimal point, as
       // if written with one (X10 -> #24 = 0.010 -> ADP[#24] = 10).
       r = x / (cx.inch ? 0.0001 : 0.001);
@@ -149,6 +166,44 @@ std::optional<Fault> function_value(gcode::Func fn, double x, const double* y,
       break;
   }
   return Fault{AlarmId::kMacroFormat, "function not available in this control"};
+}
+
+// The RS274NGC operators (see the top of the file), in r; or the fault.
+std::optional<Fault> ngc_operator_value(gcode::Op op, double x, double y, double& r) noexcept {
+  using gcode::Op;
+  switch (op) {
+    case Op::kPow:
+      if (x < 0.0 && y != std::trunc(y)) {
+        return Fault{AlarmId::kIllegalArgument, "a negative value to a fractional power"};
+      }
+      if (x == 0.0 && y < 0.0) return Fault{AlarmId::kDivisionByZero, "zero to a negative power"};
+      r = std::pow(x, y);
+      break;
+    case Op::kMod:
+      if (y == 0.0) return Fault{AlarmId::kDivisionByZero, "MOD by zero"};
+      r = std::fmod(x, y);
+      if (r < 0.0) r += std::fabs(y);
+      break;
+    case Op::kAnd:
+      r = (x == 0.0 || y == 0.0) ? 0.0 : 1.0;
+      break;
+    case Op::kOr:
+      r = (x != 0.0 || y != 0.0) ? 1.0 : 0.0;
+      break;
+    case Op::kXor:
+      r = ((x == 0.0) != (y == 0.0)) ? 1.0 : 0.0;
+      break;
+    case Op::kEq:
+      r = std::fabs(x - y) < kNgcEqualTolerance ? 1.0 : 0.0;
+      break;
+    case Op::kNe:
+      r = std::fabs(x - y) >= kNgcEqualTolerance ? 1.0 : 0.0;
+      break;
+    default:
+      return std::nullopt;  // as Macro B
+  }
+  if (!std::isfinite(r)) return Fault{AlarmId::kOverflow, "result out of range"};
+  return std::nullopt;
 }
 
 // The value of the binary operator op on a and b, in r; or the fault to
@@ -244,6 +299,7 @@ Flow<void> Interpreter::Impl::assign(gcode::ExprId lhs, Value v) {
 // general way, which gives the same value or the alarm; nothing here has a
 // side effect, so the second pass is safe.
 bool Interpreter::Impl::eval_plain(gcode::ExprId id, Value& out) const noexcept {
+  if (ngc) return false;  // RS274NGC: every rule in eval_general
   if (id < 0 || static_cast<std::size_t>(id) >= blk.nodes.size()) return false;
   const gcode::ExprNode& n = blk.nodes[static_cast<std::size_t>(id)];
   using gcode::Op;
@@ -335,11 +391,34 @@ Flow<Value> Interpreter::Impl::eval_general(gcode::ExprId id) {
       auto b = eval_general(n.b);
       if (!b) return b;
       double r = 0.0;
+      if (ngc) {
+        const bool own = n.op == Op::kPow || n.op == Op::kMod || n.op == Op::kAnd ||
+                         n.op == Op::kOr || n.op == Op::kXor || n.op == Op::kEq || n.op == Op::kNe;
+        if (own) {
+          if (auto f = ngc_operator_value(n.op, a->num(), b->num(), r)) {
+            return fail(f->id, f->why, loc(n.column));
+          }
+          return Value::of(r + 0.0);
+        }
+      } else if (n.op == Op::kPow) {
+        return fail(AlarmId::kMacroFormat, "'**' is not an operator of this control",
+                    loc(n.column));
+      }
       if (auto f = operator_value(n.op, *a, *b, r)) return fail(f->id, f->why, loc(n.column));
       return Value::of(r + 0.0);  // no -0
     }
   }
   // Functions.
+  if (n.fn == gcode::Func::kExists) {
+    const gcode::ExprNode& v = blk.nodes[static_cast<std::size_t>(n.a)];
+    if (!ngc || v.op != Op::kNamedVar) {
+      return fail(AlarmId::kMacroFormat,
+                  ngc ? "EXISTS takes a named parameter: EXISTS[#<name>]"
+                      : "function not available in this control",
+                  loc(n.column));
+    }
+    return Value::of(ngc_named_exists(blk.names[static_cast<std::size_t>(v.name)]) ? 1.0 : 0.0);
+  }
   auto a = eval_general(n.a);
   if (!a) return a;
   double y = 0.0;
@@ -349,7 +428,8 @@ Flow<Value> Interpreter::Impl::eval_general(gcode::ExprId id) {
     y = b->num();
   }
   double r = 0.0;
-  const FuncContext cx{nat, word_round_increment, modal.units == Units::kInch};
+  const FuncContext cx{nat || ngc, ngc ? 0.0 : word_round_increment, modal.units == Units::kInch,
+                       ngc};
   if (auto f = function_value(n.fn, a->num(), n.b != gcode::kNoExpr ? &y : nullptr, cx, r)) {
     return fail(f->id, f->why, loc(n.column));
   }

@@ -66,6 +66,26 @@ struct ProgramFile {
   // A false WHILE: the position after its END, keyed by the WHILE block's
   // offset, found by the first scan; later passes jump there at once.
   std::unordered_map<std::uint64_t, gcode::SourcePos> while_exits;
+  // RS274NGC (oword.cpp): `o<label> sub` definitions of the file, by label,
+  // at the block after the sub (found by one scan of the file), and the
+  // O-word a skip forward from an O-word block found, keyed by that block's
+  // offset and what was looked for: later passes seek there at once.
+  std::unordered_map<std::string, gcode::SourcePos> subs;
+  bool subs_scanned = false;
+  struct OJump {
+    gcode::SourcePos at;     // the O-word block found
+    gcode::SourcePos after;  // the block after it
+  };
+  std::unordered_map<std::uint64_t, OJump> ojumps;
+};
+
+// An RS274NGC loop being run (o-word while, do, repeat).
+struct OLoop {
+  std::string label;
+  gcode::OKind kind = gcode::OKind::kNone;  // kWhile, kDo or kRepeat
+  gcode::SourcePos start;                   // the opening block
+  gcode::SourcePos body;                    // the block after it
+  double left = 0.0;                        // repeat: passes still to run
 };
 
 struct Loop {
@@ -90,6 +110,9 @@ struct Frame {
   bool macro = false;         // G65/G66 call: owns a local-variable level
   bool modal_call = false;    // a G66 call (no re-entry of the modal macro inside)
   std::vector<Loop> loops;
+  // RS274NGC: a frame opened by `o<label> call` (its label), and its loops.
+  std::string sub_label;
+  std::vector<OLoop> oloops;
 };
 
 // One word's value after evaluation.
@@ -195,6 +218,7 @@ struct PendingSkip {
   SourceLoc loc;
   std::array<std::string, canon::SkipSpec::kMaxInputs> input_names;
   int g37_axis = -1;         // G37: the measured axis (-1: a G31)
+  int g38 = 0;               // G38.n as 382..385 (0: not a G38 probe)
   double g37_target = 0.0;   // G37: the measuring position, machine mm
   double g37_epsilon = 0.0;  // G37: the allowed range, mm
 };
@@ -340,6 +364,20 @@ struct Interpreter::Impl {
   // Held from the read of #500-#999 to their write (variables.hpp).
   PersistentLock persistent_lock;
 
+  // RS274NGC (LinuxCNC) and grbl: the dialect's language.
+  bool ngc = false;
+  bool grbl = false;
+  Value ngc_value;                    // #<_value>: the last return / endsub value
+  bool ngc_value_returned = false;    // #<_value_returned>
+  std::vector<int> var_file_numbers;  // the parameters the var file keeps (ngc_params.cpp)
+
+  // How the program text is cut into blocks: ';' is a comment in RS274NGC and grbl.
+  gcode::SourceLimits source_limits() const noexcept {
+    gcode::SourceLimits l;
+    l.semicolon_ends_block = dialect.sw.language == config::Language::kMacroB;
+    return l;
+  }
+
   Impl(const Setup& s);
   ~Impl();
 
@@ -366,6 +404,26 @@ struct Interpreter::Impl {
   Flow<void> leave_loops_for(std::uint64_t target);
   Flow<void> print_line(SourceLoc where);
   Result<void> write_dprnt() const;
+
+  // oword.cpp: RS274NGC O-word statements and parameter settings
+  Flow<Step> execute_oword(CommandSink& out);
+  Flow<void> oword_call(const std::string& label, SourceLoc where);
+  Flow<bool> find_sub(const std::string& label, ProgramFile*& file, gcode::SourcePos& at,
+                      SourceLoc where);
+  Flow<void> skip_to_oword(const std::string& label, std::uint32_t kinds, SourceLoc where);
+  Flow<Step> oword_return(const gcode::Stmt& s, SourceLoc where);
+  Flow<void> ngc_assignments();
+  // ngc_params.cpp: LinuxCNC's numbered and named parameters
+  Flow<Value> read_ngc_param(int n, SourceLoc where);
+  Flow<void> write_ngc_param(int n, Value v, SourceLoc where);
+  Flow<Value> read_ngc_named(const std::string& name, SourceLoc where);
+  Flow<void> write_ngc_named(const std::string& name, Value v, SourceLoc where);
+  std::optional<Flow<Value>> predefined_named(const std::string& name, SourceLoc where);
+  bool ngc_named_exists(const std::string& name);
+  Flow<std::string> ngc_message_text(std::string_view text, SourceLoc where);
+  Flow<void> ngc_comments();
+  void ngc_store_probe(const AxisVec& latch_work, bool triggered);
+  int ngc_axis_index(char letter) const noexcept;  // X0 Y1 Z2 A3 B4 C5 U6 V7 W8, -1 else
 
   // macro_call.cpp
   Flow<void> find_program(std::int64_t number, ProgramFile*& file, gcode::SourcePos& pos,
@@ -473,6 +531,11 @@ struct Interpreter::Impl {
   Flow<Step> skip_block(const Words& words, const AxisVec& target, AxisMask moved,
                         CommandSink& out);
   Flow<void> finish_skip(const SyncState& s);
+  Flow<Step> queue_skip(const canon::Skip& sk, SourceLoc at, CommandSink& out);
+  // probe_g38.cpp: G38.2-G38.5
+  Flow<Step> probe_block(const Words& words, const AxisVec& target, AxisMask moved,
+                         CommandSink& out);
+  Flow<void> finish_probe(const SyncState& s);
   Flow<void> arc(const Words& words, const AxisVec& target, CommandSink& out);
   Flow<void> dwell(const Words& words, CommandSink& out);
   Flow<void> reference_return(const Words& words, int g, CommandSink& out);

@@ -42,20 +42,57 @@ Flow<void> Interpreter::Impl::init(const AxisVec& start) {
   work_offsets.assign(kWorkSystems, AxisVec{});
   std::copy(mc.work_offsets.begin(), mc.work_offsets.end(), work_offsets.begin());
   parse_limits.max_bracket_depth = dialect.sw.macro_bracket_depth;
+  ngc = dialect.sw.language == config::Language::kRs274ngc;
+  grbl = dialect.sw.language == config::Language::kGrbl;
+  parse_limits.syntax = ngc    ? gcode::Syntax::kRs274ngc
+                        : grbl ? gcode::Syntax::kGrbl
+                               : gcode::Syntax::kMacroB;
   nat = params.bit(config::param::kSignedArcFunctions);
   tools.assign(static_cast<std::size_t>(mc.tool_offset_count) + 1, config::ToolOffset{});
   for (const auto& [n, t] : mc.tool_offsets) tools[static_cast<std::size_t>(n)] = t;
   modal.units = mc.inch_machine ? Units::kInch : Units::kMetric;
+  if (ngc) vars.enable_ngc();
   if (!mc.persistent_vars.empty()) {
     // Locked until the run has written them back (save_persistent), so that
     // runs sharing the file do not lose each other's updates.
     auto l = PersistentLock::acquire(mc.persistent_vars, kPersistentLockWaitS);
     if (!l) return std::unexpected(l.error());
     persistent_lock = std::move(*l);
-    auto r = load_persistent(mc.persistent_vars, vars.persistent());
-    if (!r) return r;
+    if (ngc) {
+      // LinuxCNC's parameter file: the parameters it lists, and always
+      // #5161-#5390 (G28, G30, G92 and the work offsets).
+      std::vector<double> values;
+      auto r = load_var_file(mc.persistent_vars, var_file_numbers, values);
+      if (!r) return r;
+      for (std::size_t i = 0; i < var_file_numbers.size(); ++i) {
+        auto w = write_ngc_param(var_file_numbers[i], Value::of(values[i]), SourceLoc{});
+        if (!w) {
+          return fail(AlarmId::kConfig, "parameter file '" + mc.persistent_vars + "': #" +
+                                            std::to_string(var_file_numbers[i]) + " cannot be set");
+        }
+      }
+      for (int n = 5161; n <= 5390; ++n) {
+        if (std::find(var_file_numbers.begin(), var_file_numbers.end(), n) ==
+            var_file_numbers.end()) {
+          var_file_numbers.push_back(n);
+        }
+      }
+      std::sort(var_file_numbers.begin(), var_file_numbers.end());
+    } else {
+      auto r = load_persistent(mc.persistent_vars, vars.persistent());
+      if (!r) return r;
+    }
   }
   for (const auto& [n, v] : setup.variables) {
+    if (ngc) {
+      auto w = write_ngc_param(n, Value::of(v), SourceLoc{});
+      if (!w) {
+        return fail(AlarmId::kUsage, "parameter #" + std::to_string(n) +
+                                         " cannot be set before a run (#1-#5060, #5071-#5209, "
+                                         "#5221-#5399)");
+      }
+      continue;
+    }
     if (VariableStore::is_persistent(n)) {
       vars.persistent()[static_cast<std::size_t>(n - 500)] = Value::of(v);
     } else if (VariableStore::is_local(n) || VariableStore::is_common(n)) {
@@ -69,10 +106,10 @@ Flow<void> Interpreter::Impl::init(const AxisVec& start) {
   auto file = std::make_unique<ProgramFile>();
   file->display = setup.program_name;
   if (setup.program_path.empty()) {
-    file->src = gcode::make_string_source(setup.program_name, setup.program_text);
+    file->src = gcode::make_string_source(setup.program_name, setup.program_text, source_limits());
   } else {
     file->path = setup.program_path;
-    auto src = gcode::open_file_source(setup.program_path, setup.program_name);
+    auto src = gcode::open_file_source(setup.program_path, setup.program_name, source_limits());
     if (!src) return std::unexpected(src.error());
     file->src = std::move(*src);
   }
@@ -221,6 +258,9 @@ Flow<Step> Interpreter::Impl::step_block(CommandSink& out) {
         }
         continue;
       }
+      if (blk.empty() && (ngc || grbl) && !blk.comments.empty()) {
+        break;  // (debug,..) reads parameters: it runs as a block (ngc_comments)
+      }
       if (blk.empty()) {
         for (const auto& c : blk.comments) {
           const std::string& t = blk.names[static_cast<std::size_t>(c.text)];
@@ -246,6 +286,26 @@ Flow<Step> Interpreter::Impl::step_block(CommandSink& out) {
 }
 
 Flow<Step> Interpreter::Impl::execute(CommandSink& out) {
+  if (ngc || grbl) {
+    // RS274NGC: the words and the settings' values are read with the
+    // parameters as they were before the line; then the settings take
+    // effect, then the comments speak, then the codes run.
+    if (blk.has_n) modal.seq = static_cast<int>(blk.n % 100000000);
+    if (blk.stmt.kind == gcode::StmtKind::kOword) {
+      auto c = ngc_comments();
+      if (!c) return std::unexpected(c.error());
+      return execute_oword(out);  // oword.cpp
+    }
+    cur_words.clear();
+    auto w = collect_words(cur_words);
+    if (!w) return std::unexpected(w.error());
+    auto a = ngc_assignments();
+    if (!a) return std::unexpected(a.error());
+    auto c = ngc_comments();
+    if (!c) return std::unexpected(c.error());
+    if (blk.words.empty()) return Step::kContinue;
+    return execute_nc(cur_words, out);
+  }
   if (blk.stmt.kind != gcode::StmtKind::kNone) {
     if (!blk.words.empty()) {
       // Fanuc: an NC statement and a macro statement in one block (PS0127).
@@ -356,7 +416,14 @@ Result<void> Interpreter::save_persistent() {
   auto d = impl_->write_dprnt();
   if (!d) return d;
   Result<void> r;
-  if (!impl_->mc.persistent_vars.empty() && impl_->vars.persistent_dirty()) {
+  if (!impl_->mc.persistent_vars.empty() && impl_->ngc) {
+    std::vector<double> values;
+    for (const int n : impl_->var_file_numbers) {
+      auto v = impl_->read_ngc_param(n, SourceLoc{});
+      values.push_back(v ? v->num() : 0.0);
+    }
+    r = save_var_file(impl_->mc.persistent_vars, impl_->var_file_numbers, values);
+  } else if (!impl_->mc.persistent_vars.empty() && impl_->vars.persistent_dirty()) {
     r = interp::save_persistent(impl_->mc.persistent_vars, impl_->vars.persistent());
   }
   impl_->persistent_lock.release();

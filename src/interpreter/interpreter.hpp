@@ -71,8 +71,9 @@ struct SyncState {
   bool skip_done = false;
   bool triggered = false;
   bool torque_reached = false;
-  AxisVec latch_machine;  // machine coordinates stored by the skip
-  int input_index = -1;   // which selected input ended the block (-1: none/torque)
+  bool active_at_start = false;  // the input was already active (SkipSpec::active_at_start_fails)
+  AxisVec latch_machine;         // machine coordinates stored by the skip
+  int input_index = -1;          // which selected input ended the block (-1: none/torque)
 };
 
 // Where a block runs: its file and program, and the call that led there.

@@ -92,9 +92,9 @@ Flow<void> Interpreter::Impl::find_program(std::int64_t number, ProgramFile*& fi
     // the running read position is not disturbed.
     std::unique_ptr<gcode::Source> scanner;
     if (pf.path.empty()) {
-      scanner = gcode::make_string_source(pf.display, setup.program_text);
+      scanner = gcode::make_string_source(pf.display, setup.program_text, source_limits());
     } else {
-      auto s = gcode::open_file_source(pf.path, pf.display);
+      auto s = gcode::open_file_source(pf.path, pf.display, source_limits());
       if (!s) return std::unexpected(s.error());
       scanner = std::move(*s);
     }
@@ -153,7 +153,7 @@ Flow<void> Interpreter::Impl::find_program(std::int64_t number, ProgramFile*& fi
     auto pf = std::make_unique<ProgramFile>();
     pf->path = p.string();
     pf->display = p.filename().string();
-    auto src = gcode::open_file_source(pf->path, pf->display);
+    auto src = gcode::open_file_source(pf->path, pf->display, source_limits());
     if (!src) return std::unexpected(src.error());
     pf->src = std::move(*src);
     files.push_back(std::move(pf));

@@ -198,6 +198,7 @@ Flow<Step> Interpreter::Impl::execute_statement(CommandSink& out) {
       if (!p) return std::unexpected(p.error());
       return Step::kContinue;
     }
+    case StmtKind::kOword:  // RS274NGC only (execute runs it: oword.cpp)
     case StmtKind::kNone:
       break;
   }

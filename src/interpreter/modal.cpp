@@ -23,6 +23,7 @@ int g_code_of_group(const ModalState& m, int group) noexcept {
   }
   switch (group) {
     case 1: {
+      if (m.motion == Motion::kProbe) return m.probe;
       static constexpr int k[] = {0, 10, 20, 30, 900};
       return k[static_cast<int>(m.motion)];
     }

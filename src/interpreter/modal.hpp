@@ -9,8 +9,9 @@
 
 namespace skipnc::interp {
 
-// Group 01; kTurningCycle is G90 of a lathe (outer-diameter cutting cycle).
-enum class Motion : std::uint8_t { kRapid, kLinear, kCwArc, kCcwArc, kTurningCycle };
+// Group 01; kTurningCycle is G90 of a lathe (outer-diameter cutting cycle),
+// kProbe G38.2-G38.5 (ModalState::probe says which).
+enum class Motion : std::uint8_t { kRapid, kLinear, kCwArc, kCcwArc, kTurningCycle, kProbe };
 enum class PlaneSel : std::uint8_t { kXY, kZX, kYZ };            // group 02: G17 G18 G19
 enum class Distance : std::uint8_t { kAbsolute, kIncremental };  // group 03: G90 G91
 // Group 05: G94 G95 on a mill, G98 G99 on a lathe (G-code system A).
@@ -61,7 +62,8 @@ struct ModalState {
   int h = 0;                       // active H number (length offset)
   int d = 0;                       // active D number (radius offset)
   int last_m = 0;
-  int seq = 0;  // last N
+  int probe = 0;  // G38.n as 382..385 while motion is kProbe
+  int seq = 0;    // last N
 };
 
 // Fanuc's modal information codes (#4001-#4022) for the state.

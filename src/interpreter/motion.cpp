@@ -111,6 +111,8 @@ Flow<Step> Interpreter::Impl::motion(const Words& words, CommandSink& out, bool 
       if (!r) return std::unexpected(r.error());
       break;
     }
+    case Motion::kProbe:
+      return fail(AlarmId::kInternal, "a G38 block reached the motion of a G01", loc(cur_col));
   }
   pos = target;
   motion_since_sync = true;

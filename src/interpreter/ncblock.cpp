@@ -267,6 +267,15 @@ Flow<void> Interpreter::Impl::plan_g_codes(const Words& words, BlockPlan& plan) 
     const int code = words.g[static_cast<std::size_t>(i)];
     const std::uint32_t col = words.g_col[static_cast<std::size_t>(i)];
     const SourceLoc at = loc(col);
+    if (std::find(dialect.absent_g.begin(), dialect.absent_g.end(), code) !=
+        dialect.absent_g.end()) {
+      return fail(AlarmId::kUnknownGCode, g_name(code) + " is not a code of this control", at);
+    }
+    if (std::find(dialect.other_g.begin(), dialect.other_g.end(), code) != dialect.other_g.end()) {
+      return fail(AlarmId::kNotSimulated,
+                  g_name(code) + " has another meaning on this control, not simulated by skipnc",
+                  at);
+    }
     const CodeDef* def = find_g(code, lathe);
     if (def == nullptr) {
       auto mill = mill_code(code, at, plan.mill);  // mill_codes.cpp
@@ -280,6 +289,20 @@ Flow<void> Interpreter::Impl::plan_g_codes(const Words& words, BlockPlan& plan) 
                     g_name(code) + " is a code of the lathe (G-code system A) only", at);
       }
       return fail(AlarmId::kUnknownGCode, g_name(code), at);
+    }
+    if ((def->avail & kG38Dialect) != 0 && !dialect.sw.probe_g38) {
+      return fail(AlarmId::kUnknownGCode,
+                  g_name(code) +
+                      " (straight probe) is not a code of this control; it probes "
+                      "with G31",
+                  at);
+    }
+    if (code == 310 && !dialect.sw.skip_g31) {
+      return fail(AlarmId::kUnknownGCode,
+                  g_name(code) +
+                      " (skip function) is not a code of this control; it probes with "
+                      "G38.2-G38.5",
+                  at);
     }
     if ((def->avail & kToolPosOffsetDialect) != 0 && !dialect.sw.tool_position_offset) {
       return fail(AlarmId::kUnknownGCode,
@@ -617,7 +640,12 @@ Flow<Step> Interpreter::Impl::commit_action(const Words& words, const BlockPlan&
     default:
       break;
   }
-  const bool skip = plan.action == Action::kSkip;
+  // G38.n: a probe move when the block has axis words or names the code
+  // (then without axis words it is refused: probe_no_axis).
+  const bool skip =
+      plan.action == Action::kSkip ||
+      (modal.motion == Motion::kProbe && plan.action == Action::kNone &&
+       (has_axis_word(words) || plan.group[static_cast<std::size_t>(Group::k01)] != nullptr));
   const bool arc_words = (modal.motion == Motion::kCwArc || modal.motion == Motion::kCcwArc) &&
                          (words.has('I') || words.has('J') || words.has('K') || words.has('R'));
   if (!skip && !has_axis_word(words) && !arc_words && plan.tool_pos_offset == 0) {

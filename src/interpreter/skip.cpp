@@ -30,6 +30,9 @@ std::string upper(std::string s) {
 
 Flow<Step> Interpreter::Impl::skip_block(const Words& words, const AxisVec& target, AxisMask moved,
                                          CommandSink& out) {
+  if (modal.motion == Motion::kProbe && !words.has_g(310)) {
+    return probe_block(words, target, moved, out);  // probe_g38.cpp
+  }
   const SourceLoc at = loc(cur_col);
   const config::Switches& sw = dialect.sw;
   skip_rules::BlockWords b;
@@ -97,7 +100,14 @@ Flow<Step> Interpreter::Impl::skip_block(const Words& words, const AxisVec& targ
   auto k = skip_rules::alarm_on_miss(b, sw, params);
   if (!k) return std::unexpected(std::move(k.error()));
   spec.alarm_on_miss = *k;
+  return queue_skip(sk, at, out);
+}
 
+// The skip block goes to the machine; the interpreter waits for its answer
+// (finish_skip). pending_skip's input names are set.
+Flow<Step> Interpreter::Impl::queue_skip(const canon::Skip& sk, SourceLoc at, CommandSink& out) {
+  const canon::SkipSpec& spec = sk.spec;
+  const AxisVec& target = sk.target;
   // The record the report shows.
   SkipRecord& rec = pending_skip.record;
   rec.line = cur_line;
@@ -129,6 +139,7 @@ Flow<Step> Interpreter::Impl::skip_block(const Words& words, const AxisVec& targ
 // (#5001..), which differs from the latch by the stopping distance.
 Flow<void> Interpreter::Impl::finish_skip(const SyncState& s) {
   PendingSkip& ps = pending_skip;
+  if (ps.g38 != 0) return finish_probe(s);  // probe_g38.cpp
   const AxisVec latch = s.triggered ? s.latch_machine : ps.target;
   skip_machine = latch;
   for (int i = 0; i < axis_count; ++i) {

@@ -115,6 +115,7 @@ const Range* find(int n, int& number) noexcept {
 }  // namespace sysvar
 
 Flow<Value> Interpreter::Impl::read_var(int n, SourceLoc where) {
+  if (ngc) return read_ngc_param(n, where);  // ngc_params.cpp
   if (n == 0) return Value::null();
   if (n < 0) return fail(AlarmId::kIllegalVariable, "#" + std::to_string(n), where);
   if (VariableStore::is_local(n) || VariableStore::is_common(n) ||
@@ -287,6 +288,7 @@ double* Interpreter::Impl::tool_field(const sysvar::Range& r, int k) noexcept {
 }
 
 Flow<void> Interpreter::Impl::write_var(int n, Value v, SourceLoc where) {
+  if (ngc) return write_ngc_param(n, v, where);  // ngc_params.cpp
   if (VariableStore::is_local(n) || VariableStore::is_common(n) ||
       VariableStore::is_persistent(n)) {
     vars.set(n, v);
@@ -372,6 +374,7 @@ Flow<void> Interpreter::Impl::write_control(const sysvar::Range& r, int n, Value
 }
 
 Flow<Value> Interpreter::Impl::read_named_var(const std::string& name, SourceLoc where) {
+  if (ngc) return read_ngc_named(name, where);  // ngc_params.cpp
   if (!name.empty() && name.front() == '_') {
     const int n = system_number(name);
     if (n > 0) return read_var(n, where);
@@ -381,6 +384,7 @@ Flow<Value> Interpreter::Impl::read_named_var(const std::string& name, SourceLoc
 }
 
 Flow<void> Interpreter::Impl::write_named_var(const std::string& name, Value v, SourceLoc where) {
+  if (ngc) return write_ngc_named(name, v, where);  // ngc_params.cpp
   if (!name.empty() && name.front() == '_') {
     const int n = system_number(name);
     if (n > 0) return write_var(n, v, where);

@@ -23,10 +23,27 @@ VariableStore::VariableStore() {
 
 void VariableStore::push_level() {
   locals_.emplace_back();
+  named_local_.emplace_back();
 }
 
 void VariableStore::pop_level() {
   if (locals_.size() > 1) locals_.pop_back();
+  if (named_local_.size() > 1) named_local_.pop_back();
+}
+
+void VariableStore::enable_ngc() {
+  ngc_params_.assign(kNgcParams, 0.0);
+  ngc_touched_.assign(kNgcParams, false);
+}
+
+Value* VariableStore::local_named(const std::string& name) {
+  auto& m = named_local_.back();
+  auto it = m.find(name);
+  return it == m.end() ? nullptr : &it->second;
+}
+
+void VariableStore::set_local_named(const std::string& name, Value v) {
+  named_local_.back()[name] = v;
 }
 
 Value VariableStore::get(int n) const noexcept {
@@ -58,6 +75,48 @@ void VariableStore::set_named(const std::string& name, Value v) {
 
 void VariableStore::clear_common() noexcept {
   common_.fill(Value::null());
+}
+
+Result<void> load_var_file(const std::string& path, std::vector<int>& numbers,
+                           std::vector<double>& values) {
+  numbers.clear();
+  values.clear();
+  std::ifstream in(path);
+  if (!in) {
+    if (errno == ENOENT) return {};  // a new file: written at the end
+    return fail(AlarmId::kConfig, "cannot read the parameter file '" + path + "'");
+  }
+  std::string line;
+  std::uint32_t lineno = 0;
+  while (std::getline(in, line)) {
+    ++lineno;
+    std::size_t i = line.find_first_not_of(" \t\r");
+    if (i == std::string::npos) continue;
+    int n = 0;
+    double v = 0.0;
+    char tail = 0;
+    if (std::sscanf(line.c_str() + i, "%d %lf %c", &n, &v, &tail) != 2 || n < 1 ||
+        n >= VariableStore::kNgcParams || !std::isfinite(v)) {
+      return std::unexpected(Error{AlarmId::kConfig,
+                                   "a parameter file line is \"NUMBER VALUE\" with NUMBER 1-" +
+                                       std::to_string(VariableStore::kNgcParams - 1),
+                                   SourceLoc{path, lineno, static_cast<std::uint32_t>(i + 1)}, -1});
+    }
+    numbers.push_back(n);
+    values.push_back(v);
+  }
+  return {};
+}
+
+Result<void> save_var_file(const std::string& path, const std::vector<int>& numbers,
+                           const std::vector<double>& values) {
+  std::string text;
+  char buf[64];
+  for (std::size_t i = 0; i < numbers.size() && i < values.size(); ++i) {
+    std::snprintf(buf, sizeof buf, "%d\t%.6f\n", numbers[i], values[i]);
+    text += buf;
+  }
+  return write_file_atomic(path, text);
 }
 
 // File format: one line per non-vacant variable, "#<n> = <value>" with 17

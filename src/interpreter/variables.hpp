@@ -51,6 +51,23 @@ class VariableStore {
   bool has_named(const std::string& name) const noexcept { return named_.contains(name); }
   std::size_t named_count() const noexcept { return named_.size(); }
 
+  // RS274NGC (LinuxCNC): numbered parameters #31-#5602 are one global
+  // store, 0 until set (no vacant value); #1-#30 are local to a call level;
+  // named parameters without a leading '_' are local to a call level too.
+  static constexpr int kNgcParams = 5603;  // #0-#5602 (RS274NGC_MAX_PARAMETERS)
+  void enable_ngc();
+  bool ngc() const noexcept { return !ngc_params_.empty(); }
+  double ngc_param(int n) const noexcept { return ngc_params_[static_cast<std::size_t>(n)]; }
+  void set_ngc_param(int n, double v) noexcept {
+    ngc_params_[static_cast<std::size_t>(n)] = v;
+    ngc_touched_[static_cast<std::size_t>(n)] = true;
+  }
+  bool ngc_touched(int n) const noexcept { return ngc_touched_[static_cast<std::size_t>(n)]; }
+  const std::unordered_map<std::string, Value>* find_local_named(const std::string& name) const;
+  Value* local_named(const std::string& name);
+  void set_local_named(const std::string& name, Value v);
+  std::size_t local_named_count() const noexcept { return named_local_.back().size(); }
+
   // Reset clears #100-#199 (Fanuc: vacant at reset); #500-#999 are kept.
   void clear_common() noexcept;
   const std::array<Value, 500>& persistent() const noexcept { return persistent_; }
@@ -63,7 +80,20 @@ class VariableStore {
   std::array<Value, 500> persistent_{};  // #500-#999
   bool persistent_dirty_ = false;
   std::unordered_map<std::string, Value> named_;
+  std::vector<double> ngc_params_;
+  std::vector<bool> ngc_touched_;
+  std::vector<std::unordered_map<std::string, Value>> named_local_{1};
 };
+
+// LinuxCNC's parameter file (the INI's PARAMETER_FILE, "*.var"): one line
+// per parameter, "NUMBER VALUE". The parameters it lists are read at the
+// start and written back at the end (atomically: a temporary file in the
+// same folder, renamed), with #5161-#5390 always among them, as LinuxCNC
+// does. `numbers` gets the parameters listed.
+[[nodiscard]] Result<void> load_var_file(const std::string& path, std::vector<int>& numbers,
+                                         std::vector<double>& values);
+[[nodiscard]] Result<void> save_var_file(const std::string& path, const std::vector<int>& numbers,
+                                         const std::vector<double>& values);
 
 // Reads and writes the persistent-variable file (#500-#999). Writing is
 // atomic: a temporary file in the same folder, flushed and renamed.

@@ -250,6 +250,20 @@ void Kernel::start_skip_block(const TickInput& in) noexcept {
   skip_started_ = true;
   handshake_ = SkipHandshake{true, false, false, false};
   const canon::SkipSpec& spec = skip_.spec;
+  if (!spec.ignore_inputs && spec.active_at_start_fails) {
+    for (int i = 0; i < spec.input_count; ++i) {
+      if (!input_active(i, signals_.get(spec.inputs[i]))) continue;
+      const AxisVec start = interpolator_.segment_start();
+      interpolator_.set_position(start);
+      cmd_ = start;
+      skip_.active_at_start = true;
+      skip_.input_index = i;
+      skip_.time_s = cfg_.clock.seconds(tick_ - 1);
+      skip_.latch_machine = start;
+      skip_stopping_ = true;
+      return;
+    }
+  }
   if (spec.ignore_inputs || spec.edge || !spec.active_at_start_ends) return;
   for (int i = 0; i < spec.input_count; ++i) {
     if (!input_active(i, signals_.get(spec.inputs[i]))) continue;
@@ -281,7 +295,7 @@ void Kernel::monitor_skip(const TickInput& in) noexcept {
       return;
     }
   }
-  if (!skip_.triggered) {
+  if (!skip_.triggered && !skip_.active_at_start) {
     if (!spec.ignore_inputs) {
       for (int e = 0; e < in.edge_count; ++e) {
         const SignalEdge& edge = in.edges[static_cast<std::size_t>(e)];

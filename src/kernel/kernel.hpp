@@ -140,6 +140,9 @@ struct SkipResult {
   bool done = false;    // finished: triggered or reached its end point, and at rest
   bool triggered = false;
   bool torque_reached = false;
+  // An input was active when the block started and spec.active_at_start_fails:
+  // the block ended there without moving (not a trigger).
+  bool active_at_start = false;
   int input_index = -1;
   double time_s = 0.0;    // instant of the latch
   AxisVec latch_machine;  // stored position (machine coordinates)

@@ -188,6 +188,7 @@ void build_skips(const PlotInput& in, PlotModel& pm) {
     sk.p = s.p;
     sk.kind = s.kind == canon::SkipKind::kTorque      ? "torque"
               : s.kind == canon::SkipKind::kMultiStep ? "multi_step"
+              : s.kind == canon::SkipKind::kProbe     ? "probe"
                                                       : "skip";
     sk.latch_t = s.time_s;
     sk.latch_machine = s.machine_position;

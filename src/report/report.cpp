@@ -179,6 +179,8 @@ const char* kind_name(canon::SkipKind k) {
       return "multi_step";
     case canon::SkipKind::kTorque:
       return "torque";
+    case canon::SkipKind::kProbe:
+      return "probe";
   }
   return "skip";
 }
@@ -192,10 +194,10 @@ std::string to_json(const ReportInput& in) {
   j["dialect"] = in.dialect;
   const sim::RunResult& r = in.result;
   const Error* err = in.start_error ? &*in.start_error : (r.alarm ? &*r.alarm : nullptr);
-  j["status"] = in.start_error                                 ? "alarm"
+  j["status"] = in.start_error                             ? "alarm"
                 : r.status == sim::RunStatus::kCompleted   ? "completed"
                 : r.status == sim::RunStatus::kInterrupted ? "interrupted"
-                                                               : "alarm";
+                                                           : "alarm";
   if (err != nullptr) {
     const AlarmView v = view_alarm(*err, in.dialect_table);
     ordered_json a;

@@ -447,6 +447,7 @@ Result<RunResult> Simulator::run(const interp::Setup& setup, const RunOptions& o
         s.skip_done = true;
         s.triggered = sk.triggered;
         s.torque_reached = sk.torque_reached;
+        s.active_at_start = sk.active_at_start;
         s.latch_machine = sk.latch_machine;
         s.input_index = sk.input_index;
         if (sk.triggered) s.time_s = sk.time_s;

@@ -81,10 +81,12 @@ std::string show(const Block& b, ExprId id) {
       return bin("lt");
     case Op::kLe:
       return bin("le");
+    case Op::kPow:
+      return bin("**");
     case Op::kFunc: {
-      static constexpr const char* kNames[] = {"none", "sin",  "cos", "tan",   "asin", "acos",
-                                               "atan", "sqrt", "abs", "round", "fix",  "fup",
-                                               "ln",   "exp",  "pow", "bin",   "bcd",  "adp"};
+      static constexpr const char* kNames[] = {
+          "none", "sin", "cos", "tan", "asin", "acos", "atan", "sqrt", "abs",   "round",
+          "fix",  "fup", "ln",  "exp", "pow",  "bin",  "bcd",  "adp",  "exists"};
       std::string s = std::string("(") + kNames[static_cast<int>(n.fn)] + " " + show(b, n.a);
       if (n.b != kNoExpr) s += " " + show(b, n.b);
       return s + ")";
@@ -858,6 +860,117 @@ TEST(GcodeParser, RealisticProgram) {
     const auto r = parse(line, b);
     EXPECT_TRUE(r) << line << ": " << (r ? "" : r.error().detail);
   }
+}
+
+// ---- RS274NGC (LinuxCNC) and grbl
+
+ParseLimits ngc_limits() {
+  ParseLimits l;
+  l.syntax = Syntax::kRs274ngc;
+  return l;
+}
+
+Block parse_ngc(std::string_view text) {
+  Block b;
+  const auto r = parse(text, b, ngc_limits());
+  EXPECT_TRUE(r.has_value()) << "'" << text << "': " << (r ? "" : r.error().detail);
+  return b;
+}
+
+std::string ngc_rhs(std::string_view text) {
+  const Block b = parse_ngc(text);
+  EXPECT_EQ(b.assigns.size(), 1u) << text;
+  return b.assigns.empty() ? "" : show(b, b.assigns.front().rhs);
+}
+
+TEST(GcodeParserNgc, PrecedenceIsLinuxCncs) {
+  // ** above * / MOD above + - above comparisons above AND OR XOR; left to right.
+  EXPECT_EQ(ngc_rhs("#1=[2**3**2]"), "(** (** 2 3) 2)");
+  EXPECT_EQ(ngc_rhs("#1=[2+3 GT 4 AND 1]"), "(and (gt (+ 2 3) 4) 1)");
+  EXPECT_EQ(ngc_rhs("#1=[1 OR 2 EQ 3]"), "(or 1 (eq 2 3))");
+  EXPECT_EQ(ngc_rhs("#1=[7 MOD 3*2]"), "(* (mod 7 3) 2)");
+  EXPECT_EQ(ngc_rhs("#1=[-2**2]"), "(** (neg 2) 2)");
+  EXPECT_EQ(ngc_rhs("#1=EXISTS[#<abc>]"), "(exists #<ABC>)");
+  // The same text under Macro B: AND binds as *, and ** is no operator.
+  EXPECT_EQ(rhs("#1=[2+3 GT 4 AND 1]"), "(gt (+ 2 3) (and 4 1))");
+  parse_err("#1=[2**3]");
+}
+
+TEST(GcodeParserNgc, SeveralSettingsAndWordsOnALine) {
+  const Block b = parse_ngc("#1=2 #<x> = [#1+1] G1 X#1 ; the rest is a comment (not one");
+  ASSERT_EQ(b.assigns.size(), 2u);
+  EXPECT_EQ(show(b, b.assigns[0].lhs), "#1");
+  EXPECT_EQ(show(b, b.assigns[1].lhs), "#<X>");
+  ASSERT_EQ(b.words.size(), 2u);
+  EXPECT_EQ(b.words[1].letter, 'X');
+  EXPECT_EQ(b.stmt.kind, StmtKind::kNone);
+}
+
+TEST(GcodeParserNgc, OWords) {
+  struct Case {
+    std::string_view text;
+    OKind kind;
+    std::string_view label;
+    std::size_t args;
+  };
+  const Case cases[] = {
+      {"o100 sub", OKind::kSub, "100", 0},
+      {"O0100 ENDSUB", OKind::kEndsub, "100", 0},
+      {"o100 endsub [#1*2]", OKind::kEndsub, "100", 1},
+      {"o<probe_x> call [1] [2.5] [#<_x>]", OKind::kCall, "<PROBE_X>", 3},
+      {"o<Probe X> call", OKind::kCall, "<PROBEX>", 0},
+      {"o100 return [5]", OKind::kReturn, "100", 1},
+      {"N20 o101 if [#1 GT 2]", OKind::kIf, "101", 1},
+      {"o101 elseif [#1 LT 0]", OKind::kElseif, "101", 1},
+      {"o101 else (comment)", OKind::kElse, "101", 0},
+      {"o101 endif", OKind::kEndif, "101", 0},
+      {"o102 while [#1 LT 3]", OKind::kWhile, "102", 1},
+      {"o102 endwhile", OKind::kEndwhile, "102", 0},
+      {"o103 do", OKind::kDo, "103", 0},
+      {"o104 repeat [3]", OKind::kRepeat, "104", 1},
+      {"o104 endrepeat", OKind::kEndrepeat, "104", 0},
+      {"o102 break", OKind::kBreak, "102", 0},
+      {"o102 continue ; why", OKind::kContinue, "102", 0},
+  };
+  for (const Case& c : cases) {
+    const Block b = parse_ngc(c.text);
+    EXPECT_EQ(b.stmt.kind, StmtKind::kOword) << c.text;
+    EXPECT_EQ(b.stmt.okind, c.kind) << c.text;
+    ASSERT_GE(b.stmt.label, 0) << c.text;
+    EXPECT_EQ(b.names[static_cast<std::size_t>(b.stmt.label)], c.label) << c.text;
+    EXPECT_EQ(b.args.size(), c.args) << c.text;
+  }
+}
+
+TEST(GcodeParserNgc, OWordErrors) {
+  Block b;
+  auto err = [&](std::string_view text) {
+    auto r = parse(text, b, ngc_limits());
+    EXPECT_FALSE(r.has_value()) << text;
+    return r ? Error{} : r.error();
+  };
+  EXPECT_EQ(err("o100").loc.column, 5u);                  // no keyword
+  EXPECT_EQ(err("o100 if").id, AlarmId::kMacroFormat);    // no condition
+  EXPECT_EQ(err("o100 sub G1 X1").loc.column, 10u);       // only a comment may follow
+  EXPECT_EQ(err("o100 return [1] [2]").loc.column, 17u);  // one value at most
+  EXPECT_EQ(err("o x call").id, AlarmId::kMacroFormat);
+}
+
+TEST(GcodeParserGrbl, NumbersOnly) {
+  ParseLimits l;
+  l.syntax = Syntax::kGrbl;
+  Block b;
+  ASSERT_TRUE(parse("G38.2 Z-10 F100 ; probe", b, l));
+  EXPECT_EQ(b.words.size(), 3u);
+  auto e1 = parse("#1=2", b, l);
+  ASSERT_FALSE(e1);
+  EXPECT_EQ(e1.error().id, AlarmId::kIllegalChar);
+  auto e2 = parse("G1 X[1+2]", b, l);
+  ASSERT_FALSE(e2);
+  EXPECT_EQ(e2.error().loc.column, 4u);  // the X, which has no number
+  auto e3 = parse("O100", b, l);
+  ASSERT_FALSE(e3);
+  EXPECT_EQ(e3.error().id, AlarmId::kIllegalAddress);
 }
 
 }  // namespace

@@ -1,0 +1,306 @@
+// LinuxCNC's parameters (RS274NGC dialects; docs/languages.md), after the
+// "Parameters" section of LinuxCNC's G-code overview:
+//   #1-#30        local to a call level; `o.. call [a] [b]` sets #1, #2 ...
+//   #31-#5000     global, 0 until set (there is no vacant value)
+//   #5061-#5069   the last G38 probe position, in the work coordinates
+//                 of the G38 block, X Y Z A B C U V W
+//   #5070         1 when the last G38 tripped the probe, else 0
+//   #5161-#5169   G28 position, #5181-#5189 G30 position (stored values)
+//   #5210         1 while a G92 offset applies; #5211-#5219 the G92 offset
+//   #5220         the coordinate system, 1 = G54 .. 6 = G59
+//   #5221-#5230   G54 X Y Z A B C U V W R, then 20 per system to G59
+//   #5400         tool number; #5401-#5409 tool offsets; #5410 diameter
+//   #5420-#5428   the current position in work coordinates
+// Named parameters: #<name> is local to its call level, #<_name> global;
+// reading one never set is an error. Predefined read-only names (#<_x>,
+// #<_abs_x>, #<_line>, #<_value> ...) are computed from the state.
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+#include "interpreter/impl.hpp"
+
+namespace skipnc::interp {
+namespace {
+
+constexpr const char* kNgcAxes = "XYZABCUVW";
+
+std::string lower(std::string s) {
+  for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return s;
+}
+
+}  // namespace
+
+int Interpreter::Impl::ngc_axis_index(char letter) const noexcept {
+  for (int i = 0; i < 9; ++i) {
+    if (kNgcAxes[i] == letter) return i;
+  }
+  return -1;
+}
+
+Flow<Value> Interpreter::Impl::read_ngc_param(int n, SourceLoc where) {
+  if (n < 0 || n >= VariableStore::kNgcParams) {
+    return fail(AlarmId::kIllegalVariable,
+                "#" + std::to_string(n) + ": parameters are #0 to #" +
+                    std::to_string(VariableStore::kNgcParams - 1),
+                where);
+  }
+  if (n >= 1 && n <= 30) return Value::of(vars.get(n).num());
+  // A machine axis of LinuxCNC's axis slot j (X Y Z A B C U V W), -1 if none.
+  auto axis = [&](int j) { return axis_of_letter[static_cast<std::size_t>(kNgcAxes[j] - 'A')]; };
+  if (n >= 5211 && n <= 5219) {
+    const int a = axis(n - 5211);
+    return Value::of(a < 0 ? 0.0 : g92_shift[a] / unit_mm() + 0.0);
+  }
+  if (n == 5210) {
+    bool any = false;
+    for (int i = 0; i < axis_count; ++i) any = any || g92_shift[i] != 0.0;
+    return Value::of(any ? 1.0 : 0.0);
+  }
+  if (n == 5220) return Value::of(modal.work >= 1 && modal.work <= 6 ? modal.work : 1.0);
+  if (n >= 5221 && n <= 5340) {
+    const int set = (n - 5221) / 20 + 1;
+    const int j = (n - 5221) % 20;
+    if (j < 9) {
+      const int a = axis(j);
+      return Value::of(a < 0 ? 0.0
+                             : work_offsets[static_cast<std::size_t>(set)][a] / unit_mm() + 0.0);
+    }
+    return Value::of(vars.ngc_param(n));  // R (rotation) and the spare numbers
+  }
+  if (n == 5400) return Value::of(modal.tool);
+  if (n >= 5401 && n <= 5409) {
+    const int a = axis(n - 5401);
+    return Value::of(a >= 0 && a == length_axis ? length_offset / unit_mm() + 0.0 : 0.0);
+  }
+  if (n >= 5410 && n <= 5413) {
+    if (n == 5410 && modal.tool > 0 && modal.tool < static_cast<int>(tools.size())) {
+      const auto& t = tools[static_cast<std::size_t>(modal.tool)];
+      return Value::of(2.0 * (t.radius_geometry + t.radius_wear) / unit_mm());
+    }
+    return Value::of(0.0);
+  }
+  if (n >= 5420 && n <= 5428) {
+    if (motion_since_sync) return need_sync();
+    const int a = axis(n - 5420);
+    if (a < 0) return Value::of(0.0);
+    return Value::of(position_var(a, pos[a] + comp.vector()[a], dialect.sw.current_tool_offsets));
+  }
+  return Value::of(vars.ngc_param(n));
+}
+
+Flow<void> Interpreter::Impl::write_ngc_param(int n, Value v, SourceLoc where) {
+  if (n < 0 || n >= VariableStore::kNgcParams) {
+    return fail(AlarmId::kIllegalVariable,
+                "#" + std::to_string(n) + ": parameters are #0 to #" +
+                    std::to_string(VariableStore::kNgcParams - 1),
+                where);
+  }
+  if (n >= 1 && n <= 30) {
+    vars.set(n, Value::of(v.num()));
+    return {};
+  }
+  if ((n >= 5061 && n <= 5070) || (n >= 5210 && n <= 5220) || (n >= 5400 && n <= 5428)) {
+    return fail(AlarmId::kWriteProtected, "#" + std::to_string(n) + " is read-only", where);
+  }
+  if (n >= 5221 && n <= 5340 && (n - 5221) % 20 < 9) {
+    // A work offset: the system's value at once (skipnc keeps one copy;
+    // docs/languages.md).
+    const int set = (n - 5221) / 20 + 1;
+    const int a = axis_of_letter[static_cast<std::size_t>(kNgcAxes[(n - 5221) % 20] - 'A')];
+    if (a >= 0) work_offsets[static_cast<std::size_t>(set)][a] = v.num() * unit_mm();
+  }
+  vars.set_ngc_param(n, v.num());
+  return {};
+}
+
+// The predefined named parameters (LinuxCNC "Predefined Named Parameters"):
+// nullopt when `name` is not one of them.
+std::optional<Flow<Value>> Interpreter::Impl::predefined_named(const std::string& name,
+                                                               SourceLoc where) {
+  (void)where;
+  const std::string n = lower(name);
+  if (n.size() < 2 || n[0] != '_') return std::nullopt;
+  auto of = [](double x) -> std::optional<Flow<Value>> { return Flow<Value>(Value::of(x + 0.0)); };
+  // Positions: #<_x> .. #<_w> in work coordinates (as #5420..), #<_abs_x> ..
+  // in machine coordinates.
+  const bool abs = n.starts_with("_abs_") && n.size() == 6;
+  if ((n.size() == 2 || abs) && ngc_axis_index(static_cast<char>(std::toupper(n.back()))) >= 0) {
+    const int j = ngc_axis_index(static_cast<char>(std::toupper(n.back())));
+    const int a = axis_of_letter[static_cast<std::size_t>(kNgcAxes[j] - 'A')];
+    if (motion_since_sync) return Flow<Value>(need_sync());
+    if (a < 0) return of(0.0);
+    const double tool = pos[a] + comp.vector()[a];
+    return of(abs ? tool / unit_mm() : position_var(a, tool, dialect.sw.current_tool_offsets));
+  }
+  if (n == "_line") return of(cur_line);
+  if (n == "_value") return of(ngc_value.num());
+  if (n == "_value_returned") return of(ngc_value_returned ? 1.0 : 0.0);
+  if (n == "_call_level") return of(static_cast<double>(frames.size() - 1));
+  if (n == "_task") return of(1.0);
+  if (n == "_metric") return of(modal.units == Units::kMetric ? 1.0 : 0.0);
+  if (n == "_imperial") return of(modal.units == Units::kInch ? 1.0 : 0.0);
+  if (n == "_absolute") return of(modal.distance == Distance::kAbsolute ? 1.0 : 0.0);
+  if (n == "_incremental") return of(modal.distance == Distance::kIncremental ? 1.0 : 0.0);
+  if (n == "_units_per_minute") return of(modal.feed_mode == FeedMode::kPerMinute ? 1.0 : 0.0);
+  if (n == "_units_per_rev") return of(modal.feed_mode == FeedMode::kPerRev ? 1.0 : 0.0);
+  if (n == "_inverse_time") return of(0.0);
+  if (n == "_feed") return of(modal.feed);
+  if (n == "_rpm") return of(modal.spindle);
+  if (n == "_current_tool" || n == "_selected_tool") return of(modal.tool);
+  if (n == "_spindle_on") return of(modal.spindle_dir != 0 ? 1.0 : 0.0);
+  if (n == "_spindle_cw") return of(modal.spindle_dir == 1 ? 1.0 : 0.0);
+  if (n == "_tool_offset") return of(modal.length != LengthComp::kOff ? 1.0 : 0.0);
+  if (n == "_coord_system") return of(530.0 + 10.0 * modal.work);
+  if (n == "_plane") {
+    return of(modal.plane == PlaneSel::kXY ? 170.0 : modal.plane == PlaneSel::kZX ? 180.0 : 190.0);
+  }
+  if (n == "_ccomp") {
+    return of(modal.cutter == CutterComp::kOff    ? 400.0
+              : modal.cutter == CutterComp::kLeft ? 410.0
+                                                  : 420.0);
+  }
+  if (n == "_motion_mode") {
+    switch (modal.motion) {
+      case Motion::kRapid:
+        return of(0.0);
+      case Motion::kLinear:
+        return of(10.0);
+      case Motion::kCwArc:
+        return of(20.0);
+      case Motion::kCcwArc:
+        return of(30.0);
+      case Motion::kProbe:
+        return of(static_cast<double>(modal.probe));
+      default:
+        return of(0.0);
+    }
+  }
+  return std::nullopt;
+}
+
+bool Interpreter::Impl::ngc_named_exists(const std::string& name) {
+  if (!name.empty() && name.front() == '_') {
+    return vars.has_named(name) || predefined_named(name, loc(cur_col)).has_value();
+  }
+  return vars.local_named(name) != nullptr;
+}
+
+Flow<Value> Interpreter::Impl::read_ngc_named(const std::string& name, SourceLoc where) {
+  if (!name.empty() && name.front() == '_') {
+    if (auto p = predefined_named(name, where)) return std::move(*p);
+    if (vars.has_named(name)) return vars.get_named(name);
+  } else if (const Value* v = vars.local_named(name)) {
+    return *v;
+  }
+  return fail(AlarmId::kNamedUndefined, "#<" + lower(name) + "> was never set", where);
+}
+
+Flow<void> Interpreter::Impl::write_ngc_named(const std::string& name, Value v, SourceLoc where) {
+  const bool global = !name.empty() && name.front() == '_';
+  if (global && predefined_named(name, where).has_value()) {
+    return fail(AlarmId::kWriteProtected, "#<" + lower(name) + "> is a predefined parameter",
+                where);
+  }
+  const bool have = global ? vars.has_named(name) : vars.local_named(name) != nullptr;
+  if (!have && static_cast<std::int64_t>(vars.named_count() + vars.local_named_count()) >=
+                   mc.limits.max_named_variables) {
+    return fail(AlarmId::kNamedVariableLimit,
+                "#<" + lower(name) + ">: more than limits.max_named_variables = " +
+                    std::to_string(mc.limits.max_named_variables) + " named parameters",
+                where);
+  }
+  if (global) {
+    vars.set_named(name, Value::of(v.num()));
+  } else {
+    vars.set_local_named(name, Value::of(v.num()));
+  }
+  return {};
+}
+
+// A message's text with #n and #<name> replaced by their values ("%f", as
+// LinuxCNC prints them; a named parameter never set prints "######").
+Flow<std::string> Interpreter::Impl::ngc_message_text(std::string_view text, SourceLoc where) {
+  std::string out;
+  std::size_t i = 0;
+  char buf[64];
+  while (i < text.size()) {
+    if (text[i] != '#') {
+      out += text[i++];
+      continue;
+    }
+    if (i + 1 < text.size() && text[i + 1] == '<') {
+      const std::size_t close = text.find('>', i + 2);
+      if (close == std::string_view::npos) {
+        out += text.substr(i);
+        break;
+      }
+      std::string name;
+      for (std::size_t k = i + 2; k < close; ++k) {
+        if (text[k] != ' ' && text[k] != '\t') {
+          name += static_cast<char>(std::toupper(static_cast<unsigned char>(text[k])));
+        }
+      }
+      i = close + 1;
+      const bool exists = ngc_named_exists(name);
+      if (!exists) {
+        out += "######";
+        continue;
+      }
+      auto v = read_ngc_named(name, where);
+      if (!v) return std::unexpected(v.error());
+      std::snprintf(buf, sizeof buf, "%f", v->num());
+      out += buf;
+      continue;
+    }
+    std::size_t k = i + 1;
+    int n = 0;
+    while (k < text.size() && text[k] >= '0' && text[k] <= '9' && n < VariableStore::kNgcParams) {
+      n = n * 10 + (text[k] - '0');
+      ++k;
+    }
+    if (k == i + 1 || n >= VariableStore::kNgcParams) {
+      out += text[i++];
+      continue;
+    }
+    auto v = read_ngc_param(n, where);
+    if (!v) return std::unexpected(v.error());
+    std::snprintf(buf, sizeof buf, "%f", v->num());
+    out += buf;
+    i = k;
+  }
+  return out;
+}
+
+// The comments of an RS274NGC line that speak: (msg,..) is shown as
+// written, (debug,..) with parameters replaced; (print,..) goes to the
+// messages the same way (LinuxCNC prints it on its standard output).
+Flow<void> Interpreter::Impl::ngc_comments() {
+  for (const auto& c : blk.comments) {
+    const std::string& t = blk.names[static_cast<std::size_t>(c.text)];
+    std::size_t i = 0;
+    while (i < t.size() && (t[i] == ' ' || t[i] == '\t')) ++i;
+    const std::string head = lower(t.substr(i, 6));
+    if (head.starts_with("msg,")) {
+      add_message(t.substr(i + 4));
+    } else if (head.starts_with("debug,") || head.starts_with("print,")) {
+      auto m = ngc_message_text(std::string_view(t).substr(i + 6), loc(c.column));
+      if (!m) return std::unexpected(m.error());
+      add_message(*m);
+    }
+  }
+  return {};
+}
+
+// After a G38: #5061-#5069 (the latch, or the end point without contact,
+// in the work coordinates of the block) and #5070.
+void Interpreter::Impl::ngc_store_probe(const AxisVec& latch_work, bool triggered) {
+  for (int j = 0; j < 9; ++j) {
+    const int a = axis_of_letter[static_cast<std::size_t>(kNgcAxes[j] - 'A')];
+    vars.set_ngc_param(5061 + j, a < 0 ? 0.0 : latch_work[a]);
+  }
+  vars.set_ngc_param(5070, triggered ? 1.0 : 0.0);
+}
+
+}  // namespace skipnc::interp

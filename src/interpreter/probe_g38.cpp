@@ -1,0 +1,137 @@
+// G38.2-G38.5, the straight probe of LinuxCNC and grbl (docs/skip-dialects.md):
+//   G38.2  toward the part, stops on contact, an error without one
+//   G38.3  toward the part, stops on contact, no error without one
+//   G38.4  away from the part, stops when contact is lost, an error without
+//   G38.5  away from the part, stops when contact is lost, no error
+// In the other controls' terms a skip: one input (the probe), level
+// detection, the axes decelerate to a stop, and the block is the interpreter's
+// point of synchronisation. Two rules are G38's own: the probe already in the
+// state the move waits for is an error before any motion (LinuxCNC "Probe is
+// already tripped ...", grbl ALARM 4), and the move goes on with the modal
+// feed, override and acceleration of a G01. What the control stores is the
+// dialect's: LinuxCNC #5061-#5069 in the work coordinates of the block and
+// #5070 = 1/0; grbl the "[PRB:x,y,z:1]" line in machine coordinates.
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+#include "config/skip_inputs.hpp"
+#include "interpreter/impl.hpp"
+
+namespace skipnc::interp {
+
+Flow<Step> Interpreter::Impl::probe_block(const Words& words, const AxisVec& target, AxisMask moved,
+                                          CommandSink& out) {
+  (void)words;
+  const SourceLoc at = loc(cur_col);
+  const config::Switches& sw = dialect.sw;
+  const int code = modal.probe;
+  const std::string name = "G38." + std::to_string(code - 380);
+  const bool toward = code == 382 || code == 383;
+  // The block's checks, in LinuxCNC's order (convert_straight_probe).
+  if (moved.empty()) return fail(AlarmId::kProbeNoAxis, name + " without an axis word", at);
+  if (modal.cutter != CutterComp::kOff) {
+    return fail(AlarmId::kProbeInCutterComp, name + " with G41/G42 active", at);
+  }
+  if (modal.feed_mode == FeedMode::kPerRev) {
+    return fail(AlarmId::kProbeFeedPerRev, name + " in feed per revolution (G95)", at);
+  }
+  if (feed_mm_per_min() <= 0.0) return fail(AlarmId::kProbeZeroFeed, name + " with F0", at);
+  // The end point at the start point: LinuxCNC refuses it for G38.2 and
+  // G38.4 only, grbl for every G38 (error 33): probe_same_point_all.
+  bool same = true;
+  for (int i = 0; i < axis_count; ++i) same = same && target[i] == pos[i];
+  if (same && (sw.probe_same_point_all || code == 382 || code == 384)) {
+    return fail(AlarmId::kProbeTooShort, name + ": the end point is the start point", at);
+  }
+  pending_skip = PendingSkip{};
+  pending_skip.g38 = code;
+  canon::Skip sk;
+  sk.target = target;
+  sk.feed_mm_per_min = feed_mm_per_min();
+  canon::SkipSpec& spec = sk.spec;
+  spec.kind = canon::SkipKind::kProbe;
+  spec.p = -1;
+  skip_rules::BlockWords b;
+  b.moved = moved;
+  b.at = at;
+  auto in = skip_rules::inputs(b, skip_rules::Form{}, dialect, params);
+  if (!in) return std::unexpected(std::move(in.error()));
+  spec.input_count = 1;  // the probe input: the dialect's first
+  spec.inputs[0] = in->addr[0];
+  pending_skip.input_names[0] = config::signal_name(in->addr[0]);
+  const bool invert = sw.probe_invert_param != 0 && params.bit(sw.probe_invert_param, 0);
+  // Away from the part the move waits for the input to go inactive: the
+  // input's active state is the other one.
+  spec.active_low = toward == invert;
+  spec.edge = false;
+  spec.active_at_start_ends = false;
+  spec.active_at_start_fails = true;
+  spec.ignore_inputs = false;
+  spec.accel = true;
+  spec.stop = canon::SkipStop::kDecelerate;
+  spec.feed_fixed = false;
+  spec.override_zero_stops = false;
+  spec.latch = sw.probe_latch_sampled ? canon::SkipLatch::kSampled : canon::SkipLatch::kExact;
+  spec.latch_delay_s = 0.0;
+  spec.servo_delay_comp = sw.probe_latch_actual;
+  spec.locked_stores_command = sw.skip_locked_stores_command;
+  spec.alarm_on_miss = code == 382 || code == 384;
+  return queue_skip(sk, at, out);
+}
+
+Flow<void> Interpreter::Impl::finish_probe(const SyncState& s) {
+  PendingSkip& ps = pending_skip;
+  const int code = ps.g38;
+  const std::string name = "G38." + std::to_string(code - 380);
+  const bool toward = code == 382 || code == 383;
+  pos = s.machine_position;
+  if (s.active_at_start) {
+    return fail(toward ? AlarmId::kProbeTrippedAtStart : AlarmId::kProbeClearAtStart,
+                toward ? name + ": the probe was already in contact when the move began"
+                       : name + ": the probe was not in contact when the move began",
+                ps.loc);
+  }
+  const AxisVec latch = s.triggered ? s.latch_machine : ps.target;
+  skip_machine = latch;
+  for (int i = 0; i < axis_count; ++i) {
+    skip_work[i] = position_var(i, latch[i], dialect.sw.skip_tool_offsets);
+  }
+  have_skip = true;
+  SkipRecord rec = ps.record;
+  rec.triggered = s.triggered;
+  rec.time_s = s.time_s;
+  rec.position = skip_work;
+  rec.position_has_tool_offsets = dialect.sw.skip_tool_offsets;
+  rec.machine_position = latch;
+  for (int i = 0; i < axis_count; ++i) rec.end_position[i] = work_of(i, pos[i]);
+  if (s.triggered) rec.signal = ps.input_names[0];
+  skips.push_back(rec);
+  skip_missed_unread = !s.triggered;
+  skip_missed_line = rec.line;
+  if (ngc) {
+    ngc_store_probe(skip_work, s.triggered);
+  } else if (dialect.skip_vars.success_flag > 0) {
+    vars.set(dialect.skip_vars.success_flag, Value::of(s.triggered ? 1.0 : 0.0));
+  }
+  if (dialect.sw.probe_report_line) {
+    // grbl: "[PRB:x,y,z:1]", machine coordinates in mm, 3 decimals.
+    std::string line = "[PRB:";
+    char buf[48];
+    for (int i = 0; i < axis_count; ++i) {
+      std::snprintf(buf, sizeof buf, "%s%.3f", i == 0 ? "" : ",", latch[i] + 0.0);
+      line += buf;
+    }
+    line += s.triggered ? ":1]" : ":0]";
+    add_message(line);
+  }
+  if (!s.triggered && ps.alarm_on_miss) {
+    return fail(toward ? AlarmId::kProbeNoContact : AlarmId::kProbeNoBreak,
+                toward ? name + " reached its end point without contact"
+                       : name + " reached its end point still in contact",
+                ps.loc);
+  }
+  return {};
+}
+
+}  // namespace skipnc::interp

@@ -1,0 +1,1 @@
+../../../examples/probing/bore_centre_linuxcnc.ngc
