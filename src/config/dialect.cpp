@@ -300,15 +300,15 @@ Result<void> load_alarms(const toml::table& t, std::string_view origin, Dialect&
   return {};
 }
 
-// [codes]: G codes of skipnc's table the control does not have (absent_g)
-// or has with another meaning that skipnc does not simulate (other_g).
+// [codes]: G codes the control does not have (absent_g), and those it has
+// that skipnc does not simulate (not_simulated_g).
 Result<void> load_codes(const toml::table& t, std::string_view origin, Dialect& d) {
-  auto keys = check_keys(t, {"absent_g", "other_g"}, origin, "[codes]");
+  auto keys = check_keys(t, {"absent_g", "not_simulated_g"}, origin, "[codes]");
   if (!keys) return keys;
   for (const auto& [key, node] : t) {
     const auto* arr = node.as_array();
     if (!arr) return config_error(node, origin, std::string(key.str()) + " must be an array");
-    std::vector<int>& out = key.str() == "absent_g" ? d.absent_g : d.other_g;
+    std::vector<int>& out = key.str() == "absent_g" ? d.absent_g : d.not_simulated_g;
     out.clear();
     for (const auto& e : *arr) {
       const auto v = e.value<double>();

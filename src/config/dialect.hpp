@@ -172,11 +172,11 @@ struct Dialect {
   SkipHandshakeNames handshake;
   // Fixed skip-input addresses, index 0 = first selectable input (P first).
   std::vector<canon::SignalAddr> fixed_skip_inputs;
-  // [codes] (x10, G54.1 = 541): codes of skipnc's table this control does not
-  // have (unknown_g_code), and codes it has with another meaning, not
-  // simulated (not_simulated).
+  // [codes] (x10, G54.1 = 541): codes this control does not have
+  // (unknown_g_code), and codes it has that skipnc does not simulate, among
+  // them those of skipnc's table that mean something else there (not_simulated).
   std::vector<int> absent_g;
-  std::vector<int> other_g;
+  std::vector<int> not_simulated_g;
 
   const ParamDef* param(int number) const noexcept;
   const AlarmText& alarm(AlarmId id) const noexcept { return alarms[static_cast<std::size_t>(id)]; }

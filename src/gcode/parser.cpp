@@ -283,7 +283,11 @@ bool Parser::parse_oword(const char* at) {
                          kind == OKind::kRepeat;
   const bool takes_many = kind == OKind::kCall;
   const bool takes_one = needs_one || kind == OKind::kReturn || kind == OKind::kEndsub;
-  while (peek() == '[') {
+  for (int next = peek(); next == '[' || next == '('; next = peek()) {
+    if (next == '(') {  // a comment between the arguments (LinuxCNC reads past it)
+      if (!parse_comment()) return false;
+      continue;
+    }
     if (!takes_many && !(takes_one && out_.args.empty())) {
       return error(AlarmId::kMacroFormat, "this O-word statement takes no more arguments", p_);
     }
@@ -295,6 +299,15 @@ bool Parser::parse_oword(const char* at) {
     return unexpected("a [condition] or [count] after the O-word keyword", p_);
   }
   return true;
+}
+
+// p_ at a letter after an address: the function named there, or kNoExpr
+// (nothing consumed) when none is.
+ExprId Parser::ngc_word_function(char c) {
+  const char* at = p_;
+  const FuncName* f = find_function(static_cast<unsigned char>(to_upper(c)));
+  if (f == nullptr) return kNoExpr;
+  return parse_function(f->fn, at);
 }
 
 // p_ at '#': one parameter setting of an RS274NGC line.
@@ -331,6 +344,12 @@ inline bool Parser::parse_word() {
     if (negative) value = -value;
   } else if ((c == '#' || c == '[') && !grbl_) {
     e = c == '#' ? parse_var(false) : parse_bracket();
+    if (e == kFail) return false;
+    if (negative) e = add_node(Op::kNeg, col(sign_at), e);
+    if (e == kFail) return false;
+  } else if (ngc_ && is_letter(static_cast<char>(c)) &&
+             (e = ngc_word_function(static_cast<char>(c))) != kNoExpr) {
+    // RS274NGC: a function is a value of its own (X SIN[30], X EXISTS[#<a>]).
     if (e == kFail) return false;
     if (negative) e = add_node(Op::kNeg, col(sign_at), e);
     if (e == kFail) return false;

@@ -399,6 +399,7 @@ class Parser {
   bool parse_comment();
   bool parse_oword(const char* at);
   bool parse_ngc_assign(const char* at);
+  ExprId ngc_word_function(char c);
   [[gnu::noinline]] int ngc_precedence(Op op) const noexcept;
   [[gnu::always_inline]] bool try_keyword(int c, const char* at, bool& handled);
 

@@ -19,6 +19,7 @@ enum class Group : std::uint8_t {
   k01 = 1,
   k02 = 2,
   k03 = 3,
+  k04 = 4,  // RS274NGC: G90.1 / G91.1 (arc centre distance mode)
   k05 = 5,
   k06 = 6,
   k07 = 7,
@@ -42,7 +43,7 @@ enum Avail : std::uint8_t {
   kLathe = 2,
   kBoth = kMill | kLathe,
   kToolPosOffsetDialect = 4,
-  kG38Dialect = 8,  // dialects with the probe_g38 switch (LinuxCNC, grbl)
+  kG38Dialect = 8,  // dialects with the probe_g38 switch: LinuxCNC and grbl codes
 };
 
 // What a one-shot (group 00) code does. G09 and G53 modify the block's
@@ -61,6 +62,7 @@ enum class Action : std::uint8_t {
   kMachineCoord,   // G53 (modifier)
   kMacroCall,      // G65
   kCoordSet,       // G92
+  kNgc,  // LinuxCNC/grbl one-shot codes: G28.1 G30.1 G43.1 G92.1 G92.2 G92.3 (ngc_codes.cpp)
 };
 
 constexpr bool is_modifier(Action a) noexcept {

@@ -411,6 +411,13 @@ Flow<Value> Interpreter::Impl::eval_general(gcode::ExprId id) {
   // Functions.
   if (n.fn == gcode::Func::kExists) {
     const gcode::ExprNode& v = blk.nodes[static_cast<std::size_t>(n.a)];
+    if (ngc && v.op == Op::kVar) {
+      // A numbered parameter exists when its number is one (#0-#5602).
+      auto num = eval_general(v.a);
+      if (!num) return num;
+      const double k = std::round(num->num());
+      return Value::of(k >= 0 && k < VariableStore::kNgcParams ? 1.0 : 0.0);
+    }
     if (!ngc || v.op != Op::kNamedVar) {
       return fail(AlarmId::kMacroFormat,
                   ngc ? "EXISTS takes a named parameter: EXISTS[#<name>]"

@@ -424,6 +424,11 @@ struct Interpreter::Impl {
   Flow<void> ngc_comments();
   void ngc_store_probe(const AxisVec& latch_work, bool triggered);
   int ngc_axis_index(char letter) const noexcept;  // X0 Y1 Z2 A3 B4 C5 U6 V7 W8, -1 else
+  // ngc_codes.cpp: LinuxCNC's and grbl's own codes
+  Flow<void> ngc_action(const Words& words, int code, CommandSink& out);
+  void ngc_store_g92();
+  Flow<void> ngc_reference_return(const Words& words, int g, CommandSink& out);
+  Flow<void> data_setting_ngc(const Words& words, SourceLoc where);
 
   // macro_call.cpp
   Flow<void> find_program(std::int64_t number, ProgramFile*& file, gcode::SourcePos& pos,

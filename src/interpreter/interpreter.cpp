@@ -51,7 +51,7 @@ Flow<void> Interpreter::Impl::init(const AxisVec& start) {
   tools.assign(static_cast<std::size_t>(mc.tool_offset_count) + 1, config::ToolOffset{});
   for (const auto& [n, t] : mc.tool_offsets) tools[static_cast<std::size_t>(n)] = t;
   modal.units = mc.inch_machine ? Units::kInch : Units::kMetric;
-  if (ngc) vars.enable_ngc();
+  if (ngc || grbl) vars.enable_ngc();  // grbl keeps G28, G30, G92 in the same numbers
   if (!mc.persistent_vars.empty()) {
     // Locked until the run has written them back (save_persistent), so that
     // runs sharing the file do not lose each other's updates.

@@ -580,6 +580,14 @@ Flow<Step> Interpreter::Impl::canned_cycle(const Words& words, CommandSink& out)
   const SourceLoc at = loc(cur_col);
   const int z = axis_of_letter['Z' - 'A'];
   if (z < 0) return fail(AlarmId::kIllegalPlaneAxis, "a canned cycle needs a Z axis", at);
+  if (modal.plane != PlaneSel::kXY) {
+    // The drilling axis is the plane's normal (Y in G18, X in G19); skipnc
+    // drills along Z only, so it says so rather than drill the wrong way.
+    return fail(AlarmId::kNotSimulated,
+                "a canned cycle in the G18/G19 plane (drilling along Y or X) is not simulated "
+                "by skipnc: G17 only",
+                at);
+  }
   cycles::Data& d = cycle_data;
   if (words.has('R')) {
     d.r = word_length(words.at('R'), false);
@@ -590,7 +598,19 @@ Flow<Step> Interpreter::Impl::canned_cycle(const Words& words, CommandSink& out)
     d.have_z = true;
   }
   if (words.has('Q')) d.q = std::fabs(word_length(words.at('Q'), false));
-  if (words.has('P')) d.p_ms = words.at('P').value;
+  if (words.has('P')) {
+    const WordVal& p = words.at('P');
+    if (ngc || grbl) {
+      d.p_ms = p.value * 1000.0;  // LinuxCNC: the dwell P is in seconds
+    } else if (p.has_point) {
+      // As G04 P: milliseconds, written without a decimal point (PS0007).
+      return fail(AlarmId::kBadDecimalPoint,
+                  "the dwell P of a canned cycle is in milliseconds, without decimal point",
+                  loc(p.column));
+    } else {
+      d.p_ms = p.value;
+    }
+  }
   int repeats = 1;
   const char kw = words.has('K') ? 'K' : words.has('L') ? 'L' : 0;
   if (kw != 0) {
@@ -653,6 +673,21 @@ Flow<Step> Interpreter::Impl::canned_cycle(const Words& words, CommandSink& out)
     h.shift_dir =
         cycles::shift_direction(static_cast<int>(params.get(config::param::kShiftDirection)) >> 4);
     h.spindle_dir = modal.spindle_dir != 0 ? modal.spindle_dir : 1;
+    if (ngc || grbl) {
+      // LinuxCNC: below the clearance level (R, or in G98 the higher of R
+      // and the Z the cycles began at) the tool first rises to it, then
+      // moves to the hole ("Preliminary and In-Between Motion").
+      const double clear = modal.ret == ReturnLevel::kInitial ? std::max(h.initial, h.r) : h.r;
+      h.initial = std::max(h.initial, h.r);  // G98 returns to the higher of the two
+      if (h.from[2] < clear) {
+        h.from[2] = clear;
+        const xform::Point w = xform::to_work(frame, h.from);
+        AxisVec mp = pos;
+        mp[z] = machine_of(z, w[2]);
+        emit(out, canon::Rapid{mp, linear});
+        pos = mp;
+      }
+    }
     for (const cycles::Move& m : cycles::hole_moves(h)) {
       const xform::Point w = xform::to_work(frame, m.to);
       AxisVec mp = base;

@@ -50,7 +50,7 @@ int g_code_of_group(const ModalState& m, int group) noexcept {
     case 12:
       return m.modal_macro ? 660 : 670;
     case 14:
-      return 530 + 10 * m.work;
+      return m.work > 6 && m.work <= 9 ? 584 + m.work : 530 + 10 * m.work;  // G59.1-G59.3
     case 15:
       return m.path == PathMode::kExactStop ? 610 : 640;
     default:

@@ -62,8 +62,9 @@ struct ModalState {
   int h = 0;                       // active H number (length offset)
   int d = 0;                       // active D number (radius offset)
   int last_m = 0;
-  int probe = 0;  // G38.n as 382..385 while motion is kProbe
-  int seq = 0;    // last N
+  int probe = 0;                  // G38.n as 382..385 while motion is kProbe
+  bool arc_ijk_absolute = false;  // G90.1 (RS274NGC): I J K are the centre, not an offset
+  int seq = 0;                    // last N
 };
 
 // Fanuc's modal information codes (#4001-#4022) for the state.

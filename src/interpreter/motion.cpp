@@ -10,7 +10,9 @@ namespace skipnc::interp {
 
 Flow<void> Interpreter::Impl::dwell(const Words& words, CommandSink& out) {
   double seconds = 0.0;
-  if (words.has('P')) {
+  if ((ngc || grbl) && words.has('P')) {
+    seconds = words.at('P').value;  // LinuxCNC and grbl: P in seconds
+  } else if (words.has('P')) {
     const WordVal& p = words.at('P');
     if (p.has_point) {
       return fail(AlarmId::kBadDecimalPoint, "G04 P is in milliseconds, without decimal point",
@@ -36,6 +38,7 @@ Flow<void> Interpreter::Impl::dwell(const Words& words, CommandSink& out) {
 }
 
 Flow<void> Interpreter::Impl::reference_return(const Words& words, int g, CommandSink& out) {
+  if (ngc || grbl) return ngc_reference_return(words, g, out);  // ngc_codes.cpp
   // G30: P2-P4 choose the 2nd-4th reference point (P omitted: the 2nd), from
   // the machine file's [reference_points]; G28: the reference position,
   // machine zero.
@@ -75,7 +78,8 @@ Flow<Step> Interpreter::Impl::motion(const Words& words, CommandSink& out, bool 
   AxisMask moved;
   auto t = axis_targets(words, g53, target, moved);
   if (!t) return std::unexpected(t.error());
-  if (g53 && !skip) {
+  // G53 G01 is a feed in machine coordinates on LinuxCNC and grbl.
+  if (g53 && !skip && !((ngc || grbl) && modal.motion == Motion::kLinear)) {
     // G53 positions at rapid traverse whatever the modal motion (B-63944EN
     // "Machine coordinate system"); in G91 it is an incremental rapid.
     emit(out, canon::Rapid{target, params.bit(config::param::kLinearRapid)});
@@ -181,9 +185,18 @@ Flow<void> Interpreter::Impl::arc(const Words& words, const AxisVec& target, Com
     if (r < 0) side = -side;
     cx = sx + dx / 2.0 - side * h * dy / d;
     cy = sy + dy / 2.0 + side * h * dx / d;
+  } else if ((ngc || grbl) && words.has('P') && words.at('P').value != 1.0) {
+    return fail(AlarmId::kNotSimulated,
+                "G02/G03 P (an arc of more than one turn) is not simulated by skipnc",
+                loc(words.at('P').column));
   } else if (words.has(ci) || words.has(cj)) {
     double oi = words.has(ci) ? word_length(words.at(ci), false) * unit_mm() : 0.0;
     double oj = words.has(cj) ? word_length(words.at(cj), false) * unit_mm() : 0.0;
+    if (modal.arc_ijk_absolute) {
+      // G90.1: I J K are the centre in work coordinates.
+      oi = words.has(ci) ? machine_of(pl.a0, oi / unit_mm()) - sx : 0.0;
+      oj = words.has(cj) ? machine_of(pl.a1, oj / unit_mm()) - sy : 0.0;
+    }
     if (framed) {
       const xform::Point v = xform::vector_to_work(frame, {oi, oj, 0.0});
       oi = v[0];
@@ -194,7 +207,17 @@ Flow<void> Interpreter::Impl::arc(const Words& words, const AxisVec& target, Com
     const double r0 = std::hypot(sx - cx, sy - cy);
     const double r1 = std::hypot(ex - cx, ey - cy);
     if (r0 < 1e-9) return fail(AlarmId::kArcBadCenter, "the arc's centre is its start point", at);
-    if (std::fabs(r1 - r0) > tol) {
+    bool radius_error = std::fabs(r1 - r0) > tol;
+    if (ngc || grbl) {
+      // LinuxCNC (interp_arc.cc): refused when the radii differ by more than
+      // 100 times the tolerance, or by more than the tolerance and 0.1 %;
+      // the tolerance is 2 * 0.01 mm * sqrt(2) (2 * 0.001 inch * sqrt(2) in G20).
+      const double abs_tol =
+          (modal.units == Units::kInch ? 0.001 * 25.4 : 0.01) * 2.0 * std::sqrt(2.0);
+      const double err = std::fabs(r1 - r0);
+      radius_error = err > 100.0 * abs_tol || (err / std::max(r0, r1) > 0.001 && err > abs_tol);
+    }
+    if (radius_error) {
       return fail(AlarmId::kArcRadiusMismatch,
                   "start radius " + std::to_string(r0 / unit_mm()) + ", end radius " +
                       std::to_string(r1 / unit_mm()),

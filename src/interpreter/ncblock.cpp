@@ -136,7 +136,7 @@ Flow<void> Interpreter::Impl::collect_words(Words& words) {
       // A computed length is rounded to the address's least input increment,
       // as the control does (#1 = 12.3456, X#1 -> X12.346); macro arguments
       // keep their value.
-      if (length && !call_block) {
+      if (length && !call_block && !ngc && !grbl) {
         v.value = std::round(v.value / word_inc) * word_inc + 0.0;
       }
     } else {
@@ -188,7 +188,8 @@ Flow<void> Interpreter::Impl::set_tool_length(const Words& words, LengthComp mod
     modal.h = 0;
     return {};
   }
-  int h = modal.h;
+  // LinuxCNC: G43 without H takes the tool in the spindle.
+  int h = (ngc || grbl) && !words.has('H') ? modal.tool : modal.h;
   if (words.has('H')) {
     const double v = words.at('H').value;
     if (v != std::trunc(v) || v < 0 || v > mc.tool_offset_count) {
@@ -208,6 +209,7 @@ Flow<void> Interpreter::Impl::set_tool_length(const Words& words, LengthComp mod
 // L20 Pn: G54.1 Pn (1-300); L10/L11: H geometry/wear; L12/L13: D
 // geometry/wear; L1: H wear (memory A). G90 sets, G91 adds.
 Flow<void> Interpreter::Impl::data_setting(const Words& words, SourceLoc where) {
+  if (ngc || grbl) return data_setting_ngc(words, where);  // ngc_codes.cpp
   if (mc.lathe() && !words.has('L')) return lathe_offset_setting(words, where);
   if (!words.has('L')) return fail(AlarmId::kBadValue, "G10 needs L", where);
   const int l = static_cast<int>(words.at('L').value);
@@ -271,10 +273,10 @@ Flow<void> Interpreter::Impl::plan_g_codes(const Words& words, BlockPlan& plan) 
         dialect.absent_g.end()) {
       return fail(AlarmId::kUnknownGCode, g_name(code) + " is not a code of this control", at);
     }
-    if (std::find(dialect.other_g.begin(), dialect.other_g.end(), code) != dialect.other_g.end()) {
+    if (std::find(dialect.not_simulated_g.begin(), dialect.not_simulated_g.end(), code) !=
+        dialect.not_simulated_g.end()) {
       return fail(AlarmId::kNotSimulated,
-                  g_name(code) + " has another meaning on this control, not simulated by skipnc",
-                  at);
+                  g_name(code) + " is a code of this control that skipnc does not simulate", at);
     }
     const CodeDef* def = find_g(code, lathe);
     if (def == nullptr) {
@@ -588,6 +590,7 @@ void Interpreter::Impl::commit_shift(const Words& words, bool local) {
       g92_shift[i] = pos[i] * axis_scale[static_cast<std::size_t>(i)] - v - offset_total(i);
     }
   }
+  if (!local && (ngc || grbl)) ngc_store_g92();
 }
 
 // G45-G48: the move is extended (G45, G47) or shortened (G46, G48) by the
@@ -617,6 +620,9 @@ Flow<Step> Interpreter::Impl::commit_action(const Words& words, const BlockPlan&
                                             CommandSink& out, bool& moved) {
   const SourceLoc at = loc(cur_col);
   switch (plan.action) {
+    case Action::kNgc:
+      if (auto r = ngc_action(words, plan.action_code, out); !r) return std::unexpected(r.error());
+      return Step::kContinue;
     case Action::kDataSetting:
       if (auto r = data_setting(words, at); !r) return std::unexpected(r.error());
       return Step::kContinue;

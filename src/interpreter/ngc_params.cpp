@@ -7,8 +7,9 @@
 //   #5070         1 when the last G38 tripped the probe, else 0
 //   #5161-#5169   G28 position, #5181-#5189 G30 position (stored values)
 //   #5210         1 while a G92 offset applies; #5211-#5219 the G92 offset
-//   #5220         the coordinate system, 1 = G54 .. 6 = G59
-//   #5221-#5230   G54 X Y Z A B C U V W R, then 20 per system to G59
+//                 (kept by G92.2, applied again by G92.3)
+//   #5220         the coordinate system, 1 = G54 .. 9 = G59.3
+//   #5221-#5230   G54 X Y Z A B C U V W R, then 20 per system to G59.3
 //   #5400         tool number; #5401-#5409 tool offsets; #5410 diameter
 //   #5420-#5428   the current position in work coordinates
 // Named parameters: #<name> is local to its call level, #<_name> global;
@@ -49,17 +50,8 @@ Flow<Value> Interpreter::Impl::read_ngc_param(int n, SourceLoc where) {
   if (n >= 1 && n <= 30) return Value::of(vars.get(n).num());
   // A machine axis of LinuxCNC's axis slot j (X Y Z A B C U V W), -1 if none.
   auto axis = [&](int j) { return axis_of_letter[static_cast<std::size_t>(kNgcAxes[j] - 'A')]; };
-  if (n >= 5211 && n <= 5219) {
-    const int a = axis(n - 5211);
-    return Value::of(a < 0 ? 0.0 : g92_shift[a] / unit_mm() + 0.0);
-  }
-  if (n == 5210) {
-    bool any = false;
-    for (int i = 0; i < axis_count; ++i) any = any || g92_shift[i] != 0.0;
-    return Value::of(any ? 1.0 : 0.0);
-  }
-  if (n == 5220) return Value::of(modal.work >= 1 && modal.work <= 6 ? modal.work : 1.0);
-  if (n >= 5221 && n <= 5340) {
+  if (n == 5220) return Value::of(modal.work >= 1 && modal.work <= 9 ? modal.work : 1.0);
+  if (n >= 5221 && n <= 5390) {
     const int set = (n - 5221) / 20 + 1;
     const int j = (n - 5221) % 20;
     if (j < 9) {
@@ -101,10 +93,10 @@ Flow<void> Interpreter::Impl::write_ngc_param(int n, Value v, SourceLoc where) {
     vars.set(n, Value::of(v.num()));
     return {};
   }
-  if ((n >= 5061 && n <= 5070) || (n >= 5210 && n <= 5220) || (n >= 5400 && n <= 5428)) {
+  if ((n >= 5061 && n <= 5070) || n == 5220 || (n >= 5400 && n <= 5428)) {
     return fail(AlarmId::kWriteProtected, "#" + std::to_string(n) + " is read-only", where);
   }
-  if (n >= 5221 && n <= 5340 && (n - 5221) % 20 < 9) {
+  if (n >= 5221 && n <= 5390 && (n - 5221) % 20 < 9) {
     // A work offset: the system's value at once (skipnc keeps one copy;
     // docs/languages.md).
     const int set = (n - 5221) / 20 + 1;
@@ -152,7 +144,9 @@ std::optional<Flow<Value>> Interpreter::Impl::predefined_named(const std::string
   if (n == "_spindle_on") return of(modal.spindle_dir != 0 ? 1.0 : 0.0);
   if (n == "_spindle_cw") return of(modal.spindle_dir == 1 ? 1.0 : 0.0);
   if (n == "_tool_offset") return of(modal.length != LengthComp::kOff ? 1.0 : 0.0);
-  if (n == "_coord_system") return of(530.0 + 10.0 * modal.work);
+  if (n == "_coord_system") {
+    return of(modal.work > 6 ? 584.0 + modal.work : 530.0 + 10.0 * modal.work);
+  }
   if (n == "_plane") {
     return of(modal.plane == PlaneSel::kXY ? 170.0 : modal.plane == PlaneSel::kZX ? 180.0 : 190.0);
   }

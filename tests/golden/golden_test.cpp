@@ -1,6 +1,7 @@
 // Golden tests: every tests/golden/<feature>/<case>.nc is run as a user
 // would run it, and compared with what is stored beside it:
-//   <case>.canon        expected `skipnc canon` output, exactly;
+//   <case>.canon        expected `skipnc canon` output, exactly (with the
+//                       dialect of the .json's "args", if any);
 //   <case>.json         expected report fields (a subset of the report; numbers
 //                       within "tolerance", default 1e-6), plus "exit" (the
 //                       exit status) and "args" (extra command-line words, in
@@ -81,6 +82,15 @@ TEST_P(Golden, MatchesStoredResult) {
   if (fs::exists(canon)) {
     std::vector<std::string> args = {"canon", nc.string()};
     if (fs::exists(machine)) args.insert(args.end(), {"-m", machine.string()});
+    if (fs::exists(expect)) {
+      // The run's dialect (-d in the case's "args") is canon's too.
+      const json a = json::parse(read_file(expect)).value("args", json::array());
+      for (std::size_t i = 0; i + 1 < a.size(); ++i) {
+        if (a[i] == "-d" || a[i] == "--dialect") {
+          args.insert(args.end(), {"-d", a[i + 1].get<std::string>()});
+        }
+      }
+    }
     const auto r = run_cli(args);
     EXPECT_EQ(r.out, read_file(canon)) << "canon output of " << nc;
   }

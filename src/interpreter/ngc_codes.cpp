@@ -1,0 +1,170 @@
+// The codes LinuxCNC and grbl give a meaning of their own (docs/languages.md),
+// after LinuxCNC's "G Codes" reference and grbl 1.1's command list, checked
+// against LinuxCNC's `rs274` (tests/rs274/):
+//   G10 L1 Pn     tool n: Z its length, R its radius
+//   G10 L2 Pn     work offset n (0: the active one, 1-9: G54-G59.3), always absolute
+//   G10 L20 Pn    work offset n such that the present position reads the words given
+//   G28.1 G30.1   the present machine position into #5161.. / #5181..
+//   G28 G30       to #5161.. / #5181.. (through the point of the axis words, if any)
+//   G43.1 Z       a tool length offset given as a value
+//   G92.1 G92.2   G92 off; #5211.. cleared (G92.1) or kept (G92.2)
+//   G92.3         G92 from #5211..
+// Positions kept in parameters are machine coordinates in the program's
+// units at the time they were stored (mm here: the built-in machines are
+// metric).
+#include <cmath>
+#include <string>
+
+#include "interpreter/impl.hpp"
+
+namespace skipnc::interp {
+namespace {
+
+constexpr const char* kNgcAxes = "XYZABCUVW";
+
+}  // namespace
+
+Flow<void> Interpreter::Impl::ngc_action(const Words& words, int code, CommandSink& out) {
+  (void)out;
+  auto axis_param = [&](int base, int i) {
+    const char c = axis_letter[static_cast<std::size_t>(i)];
+    const int j = ngc_axis_index(c);
+    return j < 0 ? -1 : base + j;
+  };
+  switch (code) {
+    case 281:
+    case 301: {
+      const int base = code == 281 ? 5161 : 5181;
+      for (int i = 0; i < axis_count; ++i) {
+        const int n = axis_param(base, i);
+        if (n > 0) vars.set_ngc_param(n, pos[i] / unit_mm());
+      }
+      return {};
+    }
+    case 431: {
+      if (!words.has('Z') || length_axis < 0) {
+        return fail(AlarmId::kBadValue, "G43.1 needs Z, the tool length", loc(cur_col));
+      }
+      length_offset = word_length(words.at('Z'), false) * unit_mm();
+      modal.length = LengthComp::kPlus;
+      modal.h = 0;
+      return {};
+    }
+    case 921:
+    case 922:
+      for (int i = 0; i < axis_count; ++i) {
+        g92_shift[i] = 0.0;
+        const int n = axis_param(5211, i);
+        if (code == 921 && n > 0) vars.set_ngc_param(n, 0.0);
+      }
+      if (code == 921) vars.set_ngc_param(5210, 0.0);
+      return {};
+    case 923:
+      for (int i = 0; i < axis_count; ++i) {
+        const int n = axis_param(5211, i);
+        g92_shift[i] = n > 0 ? vars.ngc_param(n) * unit_mm() : 0.0;
+      }
+      vars.set_ngc_param(5210, 1.0);
+      return {};
+    default:
+      break;
+  }
+  return fail(AlarmId::kInternal,
+              "no action for G" + std::to_string(code / 10) + "." + std::to_string(code % 10),
+              loc(cur_col));
+}
+
+// G92 in RS274NGC: the offset is also kept in #5211.. and #5210 = 1.
+void Interpreter::Impl::ngc_store_g92() {
+  for (int i = 0; i < axis_count; ++i) {
+    const int j = ngc_axis_index(axis_letter[static_cast<std::size_t>(i)]);
+    if (j >= 0) vars.set_ngc_param(5211 + j, g92_shift[i] / unit_mm());
+  }
+  vars.set_ngc_param(5210, 1.0);
+}
+
+// G28 / G30: to the stored position (#5161.. / #5181..), through the point
+// of the block's axis words; without axis words every axis goes there.
+Flow<void> Interpreter::Impl::ngc_reference_return(const Words& words, int g, CommandSink& out) {
+  AxisVec mid;
+  AxisMask moved;
+  auto t = axis_targets(words, false, mid, moved);
+  if (!t) return t;
+  const int base = g == 28 ? 5161 : 5181;
+  AxisVec ref = pos;
+  for (int i = 0; i < axis_count; ++i) {
+    if (!moved.empty() && !moved.has(i)) continue;
+    const int j = ngc_axis_index(axis_letter[static_cast<std::size_t>(i)]);
+    ref[i] = j < 0 ? pos[i] : vars.ngc_param(base + j) * unit_mm();
+  }
+  if (!moved.empty()) emit(out, canon::Rapid{mid, true});
+  emit(out, canon::Rapid{ref, true});
+  pos = ref;
+  motion_since_sync = true;
+  return {};
+}
+
+Flow<void> Interpreter::Impl::data_setting_ngc(const Words& words, SourceLoc where) {
+  if (!words.has('L')) return fail(AlarmId::kBadValue, "G10 needs L", where);
+  if (!words.has('P')) return fail(AlarmId::kBadValue, "G10 needs P", where);
+  const double lv = words.at('L').value;
+  const double pv = words.at('P').value;
+  const int l = static_cast<int>(lv);
+  const SourceLoc p_at = loc(words.at('P').column);
+  if (l == 2 || l == 20) {
+    if (pv != std::trunc(pv) || pv < 0 || pv > 9) {
+      return fail(AlarmId::kIllegalOffsetNumber,
+                  "G10 L" + std::to_string(l) + " P" + std::to_string(pv) +
+                      ": P0 (the active system) or P1-P9 (G54-G59.3)",
+                  p_at);
+    }
+    if (words.has('R') && words.at('R').value != 0.0) {
+      return fail(AlarmId::kNotSimulated,
+                  "G10 L" + std::to_string(l) + " R (a rotated coordinate system) is not simulated",
+                  loc(words.at('R').column));
+    }
+    const int set = pv == 0 ? modal.work : static_cast<int>(pv);
+    AxisVec& o = work_offsets[static_cast<std::size_t>(set)];
+    for (int i = 0; i < axis_count; ++i) {
+      const char c = axis_letter[static_cast<std::size_t>(i)];
+      if (!words.has(c)) continue;
+      const double mm = word_length(words.at(c), false) * unit_mm();
+      if (l == 2) {
+        o[i] = mm;  // absolute in G91 too
+      } else {
+        // The offset that makes the present position read `mm` in system `set`.
+        const double others = offset_total(i) -
+                              work_offsets[static_cast<std::size_t>(modal.work)][i] -
+                              work_offsets[0][i];
+        o[i] = pos[i] * axis_scale[static_cast<std::size_t>(i)] - mm - others;
+      }
+      const int j = ngc_axis_index(c);
+      if (j >= 0) vars.set_ngc_param(5221 + 20 * (set - 1) + j, o[i] / unit_mm());
+    }
+    return {};
+  }
+  if (l == 1) {
+    if (pv != std::trunc(pv) || pv < 1 || pv > mc.tool_offset_count) {
+      return fail(AlarmId::kIllegalOffsetNumber, "G10 L1 P" + std::to_string(pv), p_at);
+    }
+    auto& t = tools[static_cast<std::size_t>(pv)];
+    if (words.has('Z')) {
+      t.length_geometry = word_length(words.at('Z'), false) * unit_mm();
+      t.length_wear = 0.0;
+    }
+    if (words.has('R')) {
+      t.radius_geometry = word_length(words.at('R'), false) * unit_mm();
+      t.radius_wear = 0.0;
+    }
+    // The active tool's length follows the table (LinuxCNC reloads it).
+    if (modal.length == LengthComp::kPlus && modal.h == static_cast<int>(pv)) {
+      length_offset = t.length_geometry;
+    }
+    return {};
+  }
+  return fail(AlarmId::kNotSimulated,
+              "G10 L" + std::to_string(l) + " is not simulated by skipnc (L1, L2, L20 are)",
+              loc(words.at('L').column));
+}
+
+}  // namespace skipnc::interp

@@ -1,0 +1,1 @@
+../../rs274/programs/arcs_g90_1_absolute_ij.ngc

@@ -1,0 +1,1 @@
+../../rs274/programs/cycles_r_above_start.ngc

@@ -1,0 +1,1 @@
+../../rs274/programs/motion_g28_g28_1.ngc

@@ -1,0 +1,1 @@
+../../rs274/programs/motion_g30_params.ngc

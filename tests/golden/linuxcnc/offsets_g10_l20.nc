@@ -1,0 +1,1 @@
+../../rs274/programs/offsets_g10_l20.ngc

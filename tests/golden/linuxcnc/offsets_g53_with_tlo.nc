@@ -1,0 +1,1 @@
+../../rs274/programs/offsets_g53_with_tlo.ngc

@@ -1,0 +1,1 @@
+../../rs274/programs/offsets_g59_1_3.ngc

@@ -1,0 +1,1 @@
+../../rs274/programs/offsets_g92_1_2_3.ngc

@@ -1,0 +1,1 @@
+../../rs274/programs/params_trig_functions.ngc
