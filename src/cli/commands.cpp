@@ -356,6 +356,48 @@ int canon_command(const RunArgs& a) {
   return sink.failed() ? 1 : 0;
 }
 
+namespace {
+
+// The probing features of a dialect that probes with G38.2-G38.5.
+template <class AlarmText>
+void print_g38_dialect(const config::Dialect& d, const std::string& inputs,
+                       const AlarmText& alarm) {
+  const config::Switches& sw = d.sw;
+  fmt::print(
+      "  command     G38.2 toward, G38.3 toward (no error), G38.4 away, G38.5 away "
+      "(no error); modal group 01\n");
+  fmt::print("  inputs      {} (the probe){}\n", inputs,
+             sw.probe_invert_param != 0 ? fmt::format("; ${} = 1 inverts it", sw.probe_invert_param)
+                                        : std::string());
+  fmt::print("  detection   level; away from the part: the input going inactive\n");
+  auto pair = [&](AlarmId a, AlarmId b) {
+    const std::string x = alarm(a), y = alarm(b);
+    return x == y ? x : x + " / " + y;
+  };
+  fmt::print("  at start    already in the target state: {}; no motion\n",
+             pair(AlarmId::kProbeTrippedAtStart, AlarmId::kProbeClearAtStart));
+  fmt::print("  feed        F, else modal F (F is modal); override and acc/dec as G01\n");
+  fmt::print("  stop        linear deceleration\n");
+  fmt::print("  latch       {}, {} position\n",
+             sw.probe_latch_sampled ? "the first servo sample that sees the input"
+                                    : "the instant of the edge",
+             sw.probe_latch_actual ? "feedback (actual)" : "commanded (step count)");
+  fmt::print("  miss        G38.2, G38.4: {}; G38.3, G38.5 complete normally\n",
+             pair(AlarmId::kProbeNoContact, AlarmId::kProbeNoBreak));
+  fmt::print("  results     {}\n",
+             sw.probe_report_line
+                 ? std::string("[PRB:x,y,z:1|0] in machine coordinates (messages, console)")
+                 : fmt::format("#{}-#{} in work coordinates, tool offset {}; #{} = 1 on contact",
+                               d.skip_vars.work_base, d.skip_vars.work_base + 8,
+                               sw.skip_tool_offsets ? "in" : "out", d.skip_vars.success_flag));
+  fmt::print("  alarms      radius comp {}; no feed {}; no axis {}; end = start {}{}\n",
+             alarm(AlarmId::kProbeInCutterComp), alarm(AlarmId::kProbeZeroFeed),
+             alarm(AlarmId::kProbeNoAxis), alarm(AlarmId::kProbeTooShort),
+             sw.probe_same_point_all ? " (every G38)" : " (G38.2, G38.4)");
+}
+
+}  // namespace
+
 // One line per skip feature that differs between the dialects.
 int dialects_command() {
   using config::SkipAccel;
@@ -383,6 +425,16 @@ int dialects_command() {
     }
     const int last = sw.skip_p_first + sw.skip_p_count - 1;
     fmt::print("{:<11} {}\n", d->name, d->title);
+    fmt::print("  language    {}\n",
+               sw.language == config::Language::kRs274ngc
+                   ? "RS274NGC: O-word subroutines and flow, numbered and named parameters"
+               : sw.language == config::Language::kGrbl
+                   ? "G code only: no parameters, expressions or subprograms"
+                   : "Custom Macro B: #1-#33 locals, IF/GOTO/WHILE, G65/G66, M98/M99");
+    if (sw.probe_g38 && !sw.skip_g31) {
+      print_g38_dialect(*d, inputs, alarm);
+      continue;
+    }
     fmt::print(
         "  P word      {}\n",
         sw.skip_p_mode == SkipPMode::kMultiStep

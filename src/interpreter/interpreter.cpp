@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <filesystem>
 
 #include "interpreter/impl.hpp"
@@ -65,10 +66,26 @@ Flow<void> Interpreter::Impl::init(const AxisVec& start) {
       auto r = load_var_file(mc.persistent_vars, var_file_numbers, values);
       if (!r) return r;
       for (std::size_t i = 0; i < var_file_numbers.size(); ++i) {
-        auto w = write_ngc_param(var_file_numbers[i], Value::of(values[i]), SourceLoc{});
+        const int n = var_file_numbers[i];
+        if (n == 5220) {  // the coordinate system LinuxCNC starts in
+          const double w = std::round(values[i]);
+          if (w >= 1 && w <= 9) modal.work = static_cast<int>(w);
+          continue;
+        }
+        if (n >= 5210 && n <= 5219) {  // G92: on and its offsets
+          vars.set_ngc_param(n, values[i]);
+          continue;
+        }
+        auto w = write_ngc_param(n, Value::of(values[i]), SourceLoc{});
         if (!w) {
           return fail(AlarmId::kConfig, "parameter file '" + mc.persistent_vars + "': #" +
                                             std::to_string(var_file_numbers[i]) + " cannot be set");
+        }
+      }
+      if (vars.ngc_param(5210) != 0.0) {
+        for (int i = 0; i < axis_count; ++i) {
+          const int j = ngc_axis_index(axis_letter[static_cast<std::size_t>(i)]);
+          if (j >= 0) g92_shift[i] = vars.ngc_param(5211 + j) * unit_mm();
         }
       }
       for (int n = 5161; n <= 5390; ++n) {

@@ -28,8 +28,8 @@
 #include "gcode/source.hpp"
 #include "interpreter/interpreter.hpp"
 #include "machine/scene.hpp"
-#include "sim/simulator.hpp"
 #include "report/report.hpp"
+#include "sim/simulator.hpp"
 
 namespace skipnc::fuzz {
 
@@ -159,6 +159,17 @@ inline std::string check_block(const gcode::Block& b) {
   for (gcode::ExprId id : {b.stmt.lhs, b.stmt.rhs, b.stmt.cond, b.stmt.target}) {
     if (auto s = root(id, "a statement"); !s.empty()) return s;
   }
+  for (gcode::ExprId id : b.args) {
+    if (auto s = root(id, "an O-word argument"); !s.empty()) return s;
+  }
+  for (const auto& a : b.assigns) {
+    if (auto s = root(a.lhs, "a parameter setting"); !s.empty()) return s;
+    if (auto s = root(a.rhs, "a parameter setting"); !s.empty()) return s;
+  }
+  if (b.stmt.kind == gcode::StmtKind::kOword &&
+      (b.stmt.label < 0 || static_cast<std::size_t>(b.stmt.label) >= b.names.size())) {
+    return "O-word label index out of range";
+  }
   for (const auto& p : b.print_items) {
     if (p.is_text && (p.text < 0 || static_cast<std::size_t>(p.text) >= b.names.size())) {
       return "print text index out of range";
@@ -282,7 +293,11 @@ inline std::string check_parser(std::string_view data) {
   gcode::Block blk;
   gcode::ParseLimits pl;
   pl.max_bracket_depth = 5;  // Fanuc's five levels
-  for (int round = 0; round < 2; ++round) {
+  // Macro B twice (the second time at the hard nesting bound), then the
+  // RS274NGC and grbl syntaxes on the same blocks.
+  for (int round = 0; round < 4; ++round) {
+    if (round == 2) pl.syntax = gcode::Syntax::kRs274ngc;
+    if (round == 3) pl.syntax = gcode::Syntax::kGrbl;
     for (const auto& b : blocks) {
       if (!b.ok) {
         if (b.error != AlarmId::kBlockTooLong) return "source error other than a long block";
