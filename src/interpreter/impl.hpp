@@ -423,6 +423,7 @@ struct Interpreter::Impl {
   Flow<std::string> ngc_message_text(std::string_view text, SourceLoc where);
   Flow<void> ngc_comments();
   void ngc_store_probe(const AxisVec& latch_work, bool triggered);
+  void ngc_load_work(int set);
   int ngc_axis_index(char letter) const noexcept;  // X0 Y1 Z2 A3 B4 C5 U6 V7 W8, -1 else
   // ngc_codes.cpp: LinuxCNC's and grbl's own codes
   Flow<void> ngc_action(const Words& words, int code, CommandSink& out);

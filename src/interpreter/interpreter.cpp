@@ -52,7 +52,18 @@ Flow<void> Interpreter::Impl::init(const AxisVec& start) {
   tools.assign(static_cast<std::size_t>(mc.tool_offset_count) + 1, config::ToolOffset{});
   for (const auto& [n, t] : mc.tool_offsets) tools[static_cast<std::size_t>(n)] = t;
   modal.units = mc.inch_machine ? Units::kInch : Units::kMetric;
-  if (ngc || grbl) vars.enable_ngc();  // grbl keeps G28, G30, G92 in the same numbers
+  if (ngc || grbl) {
+    vars.enable_ngc();  // grbl keeps G28, G30, G92 and the work offsets in the same numbers
+    for (int set = 1; set <= 9; ++set) {
+      for (int i = 0; i < axis_count; ++i) {
+        const int j = ngc_axis_index(axis_letter[static_cast<std::size_t>(i)]);
+        if (j >= 0) {
+          vars.set_ngc_param(5221 + 20 * (set - 1) + j,
+                             work_offsets[static_cast<std::size_t>(set)][i] / unit_mm());
+        }
+      }
+    }
+  }
   if (!mc.persistent_vars.empty()) {
     // Locked until the run has written them back (save_persistent), so that
     // runs sharing the file do not lose each other's updates.
@@ -82,6 +93,7 @@ Flow<void> Interpreter::Impl::init(const AxisVec& start) {
                                             std::to_string(var_file_numbers[i]) + " cannot be set");
         }
       }
+      for (int set = 1; set <= 9; ++set) ngc_load_work(set);
       if (vars.ngc_param(5210) != 0.0) {
         for (int i = 0; i < axis_count; ++i) {
           const int j = ngc_axis_index(axis_letter[static_cast<std::size_t>(i)]);

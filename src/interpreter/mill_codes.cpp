@@ -14,6 +14,7 @@
 #include <cstdio>
 #include <string>
 #include <variant>
+#include <vector>
 
 #include "config/skip_inputs.hpp"
 #include "interpreter/codes.hpp"
@@ -688,7 +689,24 @@ Flow<Step> Interpreter::Impl::canned_cycle(const Words& words, CommandSink& out)
         pos = mp;
       }
     }
-    for (const cycles::Move& m : cycles::hole_moves(h)) {
+    std::vector<cycles::Move> moves = cycles::hole_moves(h);
+    if ((ngc || grbl) && (modal.cycle == Cycle::kG84 || modal.cycle == Cycle::kG74) &&
+        modal.ret == ReturnLevel::kInitial) {
+      // LinuxCNC's tapping cycle feeds back out to the clearance level
+      // itself (G98: the higher of R and the start), with the spindle
+      // reversed; there is no rapid up from R.
+      for (std::size_t f = 0; f + 1 < moves.size(); ++f) {
+        if (moves[f].kind != cycles::MoveKind::kFeed || moves[f].to[2] != h.r) continue;
+        for (std::size_t r = f + 1; r < moves.size(); ++r) {
+          if (moves[r].kind != cycles::MoveKind::kRapid) continue;
+          moves[f].to[2] = moves[r].to[2];
+          moves.erase(moves.begin() + static_cast<std::ptrdiff_t>(r));
+          break;
+        }
+        break;
+      }
+    }
+    for (const cycles::Move& m : moves) {
       const xform::Point w = xform::to_work(frame, m.to);
       AxisVec mp = base;
       if (x >= 0) mp[x] = machine_of(x, w[0]);

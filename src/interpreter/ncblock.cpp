@@ -541,6 +541,11 @@ void Interpreter::Impl::commit_modal(const Words& words, const BlockPlan& plan, 
   }
   if (words.has('T') && !mc.lathe()) emit(out, canon::ToolSelect{plan.next.tool});
   const int seq = modal.seq;
+  // LinuxCNC: selecting another coordinate system loads it from #5221..
+  // (the same one again: "continuing to use same coordinate system").
+  if ((ngc || grbl) && plan.next.work != modal.work && plan.next.work >= 1 && plan.next.work <= 9) {
+    ngc_load_work(plan.next.work);
+  }
   modal = plan.next;
   modal.seq = seq;
 }

@@ -9,7 +9,8 @@
 //   #5210         1 while a G92 offset applies; #5211-#5219 the G92 offset
 //                 (kept by G92.2, applied again by G92.3)
 //   #5220         the coordinate system, 1 = G54 .. 9 = G59.3
-//   #5221-#5230   G54 X Y Z A B C U V W R, then 20 per system to G59.3
+//   #5221-#5230   G54 X Y Z A B C U V W R, then 20 per system to G59.3;
+//                 the active system reads them when it is selected
 //   #5400         tool number; #5401-#5409 tool offsets; #5410 diameter
 //   #5420-#5428   the current position in work coordinates
 // Named parameters: #<name> is local to its call level, #<_name> global;
@@ -51,16 +52,6 @@ Flow<Value> Interpreter::Impl::read_ngc_param(int n, SourceLoc where) {
   // A machine axis of LinuxCNC's axis slot j (X Y Z A B C U V W), -1 if none.
   auto axis = [&](int j) { return axis_of_letter[static_cast<std::size_t>(kNgcAxes[j] - 'A')]; };
   if (n == 5220) return Value::of(modal.work >= 1 && modal.work <= 9 ? modal.work : 1.0);
-  if (n >= 5221 && n <= 5390) {
-    const int set = (n - 5221) / 20 + 1;
-    const int j = (n - 5221) % 20;
-    if (j < 9) {
-      const int a = axis(j);
-      return Value::of(a < 0 ? 0.0
-                             : work_offsets[static_cast<std::size_t>(set)][a] / unit_mm() + 0.0);
-    }
-    return Value::of(vars.ngc_param(n));  // R (rotation) and the spare numbers
-  }
   if (n == 5400) return Value::of(modal.tool);
   if (n >= 5401 && n <= 5409) {
     const int a = axis(n - 5401);
@@ -96,15 +87,21 @@ Flow<void> Interpreter::Impl::write_ngc_param(int n, Value v, SourceLoc where) {
   if ((n >= 5061 && n <= 5070) || n == 5220 || (n >= 5400 && n <= 5428)) {
     return fail(AlarmId::kWriteProtected, "#" + std::to_string(n) + " is read-only", where);
   }
-  if (n >= 5221 && n <= 5390 && (n - 5221) % 20 < 9) {
-    // A work offset: the system's value at once (skipnc keeps one copy;
-    // docs/languages.md).
-    const int set = (n - 5221) / 20 + 1;
-    const int a = axis_of_letter[static_cast<std::size_t>(kNgcAxes[(n - 5221) % 20] - 'A')];
-    if (a >= 0) work_offsets[static_cast<std::size_t>(set)][a] = v.num() * unit_mm();
-  }
+  // #5221-#5390 are the stored work offsets: the active system keeps what
+  // it loaded until another one is selected (ngc_load_work), as LinuxCNC.
   vars.set_ngc_param(n, v.num());
   return {};
+}
+
+// The work offsets of system `set` (1-9) from #5221.. (LinuxCNC loads them
+// when a block selects a system other than the active one, and at start).
+void Interpreter::Impl::ngc_load_work(int set) {
+  for (int i = 0; i < axis_count; ++i) {
+    const int j = ngc_axis_index(axis_letter[static_cast<std::size_t>(i)]);
+    if (j < 0) continue;
+    work_offsets[static_cast<std::size_t>(set)][i] =
+        vars.ngc_param(5221 + 20 * (set - 1) + j) * unit_mm();
+  }
 }
 
 // The predefined named parameters (LinuxCNC "Predefined Named Parameters"):

@@ -51,7 +51,8 @@ G2, N - 1 being the extra full turns (P word); skipnc's is +/-(1 + TURNS).
 
 Null moves
 ----------
-A rapid or feed that ends where the previous move ended moves nothing.
+A rapid or feed that ends where the previous move ended moves nothing, and a
+dwell of no time waits for nothing: both are dropped.
 rs274 writes some (a G28 intermediate point equal to the present position,
 for instance) where skipnc may not; such records are dropped on both sides
 before comparing (--keep-null-moves keeps them).
@@ -334,12 +335,13 @@ def parse_skipnc(text):
 
 def drop_null_moves(records, tol_mm):
     """Drops rapids and feeds that end where the previous move ended (both
-    interpreters start at machine zero)."""
+    interpreters start at machine zero), and dwells of no time."""
     out = []
     last, last_allow = {a: 0.0 for a in AXES}, 0.0
     for r in records:
         if r.kind == "dwell":
-            out.append(r)
+            if abs(r.seconds) > r.allow:  # a dwell of no time waits for nothing
+                out.append(r)
             continue
         allowance = r.allow + last_allow + tol_mm
         if r.kind in ("rapid", "feed") and last is not None and all(

@@ -1,0 +1,1 @@
+../../rs274/programs/cycles_g84_tap.ngc

@@ -1,0 +1,1 @@
+../../rs274/programs/offsets_params_active.ngc
