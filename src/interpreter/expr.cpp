@@ -299,7 +299,7 @@ Flow<void> Interpreter::Impl::assign(gcode::ExprId lhs, Value v) {
 // general way, which gives the same value or the alarm; nothing here has a
 // side effect, so the second pass is safe.
 bool Interpreter::Impl::eval_plain(gcode::ExprId id, Value& out) const noexcept {
-  if (ngc) return false;  // RS274NGC: every rule in eval_general
+  if (ngc) return eval_plain_ngc(id, out);
   if (id < 0 || static_cast<std::size_t>(id) >= blk.nodes.size()) return false;
   const gcode::ExprNode& n = blk.nodes[static_cast<std::size_t>(id)];
   using gcode::Op;
@@ -349,6 +349,62 @@ bool Interpreter::Impl::eval_plain(gcode::ExprId id, Value& out) const noexcept 
   }
   double r = 0.0;
   const FuncContext cx{nat, word_round_increment, modal.units == Units::kInch};
+  if (function_value(n.fn, a.num(), n.b != gcode::kNoExpr ? &y : nullptr, cx, r)) return false;
+  if (!std::isfinite(r)) return false;
+  out = Value::of(r + 0.0);
+  return true;
+}
+
+// eval_plain under RS274NGC rules: numbers, #1-#30 and #31-#5060 (no
+// vacant value: 0), the operators and functions; system and named
+// parameters, EXISTS and anything that may alarm go to eval_general.
+bool Interpreter::Impl::eval_plain_ngc(gcode::ExprId id, Value& out) const noexcept {
+  if (id < 0 || static_cast<std::size_t>(id) >= blk.nodes.size()) return false;
+  const gcode::ExprNode& n = blk.nodes[static_cast<std::size_t>(id)];
+  using gcode::Op;
+  Value a, b;
+  switch (n.op) {
+    case Op::kNumber:
+      out = Value::of(n.value);
+      return true;
+    case Op::kVar: {
+      if (!eval_plain_ngc(n.a, a)) return false;
+      const double x = std::round(a.num());
+      if (!(x >= 1.0 && x < 5061.0)) return false;
+      const int num = static_cast<int>(x);
+      out = Value::of(num <= 30 ? vars.get(num).num() : vars.ngc_param(num));
+      return true;
+    }
+    case Op::kNeg:
+      if (!eval_plain_ngc(n.a, a)) return false;
+      out = Value::of(0.0 - a.num());
+      return true;
+    case Op::kFunc:
+      break;
+    case Op::kNamedVar:
+      return false;
+    default: {
+      if (!eval_plain_ngc(n.a, a) || !eval_plain_ngc(n.b, b)) return false;
+      double r = 0.0;
+      const bool own = n.op == Op::kPow || n.op == Op::kMod || n.op == Op::kAnd ||
+                       n.op == Op::kOr || n.op == Op::kXor || n.op == Op::kEq || n.op == Op::kNe;
+      if (own ? ngc_operator_value(n.op, a.num(), b.num(), r).has_value()
+              : operator_value(n.op, a, b, r).has_value()) {
+        return false;
+      }
+      out = Value::of(r + 0.0);
+      return true;
+    }
+  }
+  if (n.fn == gcode::Func::kExists) return false;
+  if (!eval_plain_ngc(n.a, a)) return false;
+  double y = 0.0;
+  if (n.b != gcode::kNoExpr) {
+    if (!eval_plain_ngc(n.b, b)) return false;
+    y = b.num();
+  }
+  double r = 0.0;
+  const FuncContext cx{true, 0.0, modal.units == Units::kInch, true};
   if (function_value(n.fn, a.num(), n.b != gcode::kNoExpr ? &y : nullptr, cx, r)) return false;
   if (!std::isfinite(r)) return false;
   out = Value::of(r + 0.0);

@@ -446,6 +446,7 @@ struct Interpreter::Impl {
   Flow<Value> eval(gcode::ExprId id);
   Flow<Value> eval_general(gcode::ExprId id);
   bool eval_plain(gcode::ExprId id, Value& out) const noexcept;
+  bool eval_plain_ngc(gcode::ExprId id, Value& out) const noexcept;
   Flow<int> var_number(gcode::ExprId lhs);
   Flow<void> assign(gcode::ExprId lhs, Value v);
 
