@@ -237,18 +237,33 @@ bool Parser::parse_head_ngc() {
 bool Parser::parse_oword(const char* at) {
   ++p_;
   std::string label;
+  ExprId computed = kNoExpr;
+  std::int64_t number = -1;
   const int c = peek();
   if (c == '<') {
     std::string name;
     if (!parse_named(name, false)) return false;
     label = "<" + name + ">";
   } else if (is_digit(c)) {
-    std::int64_t v = 0;
     bool any = false;
-    if (!parse_uint(v, "O-word number", any)) return false;
-    label = std::to_string(v);
+    if (!parse_uint(number, "O-word number", any)) return false;
+    label = std::to_string(number);
+  } else if (c == '[') {
+    // o[expr] call: the number computed when the call runs.
+    computed = parse_bracket();
+    if (computed == kFail) return false;
   } else {
-    return unexpected("a number or <name> after 'o'", p_);
+    return unexpected("a number, <name> or [expression] after 'o'", p_);
+  }
+  {
+    // A program's title ("O100", "O<name>" alone, as LinuxCNC's Fanuc-style
+    // numbered programs called by M98): a program number, no statement.
+    const int next = peek();
+    if (computed == kNoExpr && (next < 0 || next == '(' || next == ';')) {
+      out_.has_o = true;
+      out_.o = number >= 0 ? number : 0;
+      return true;
+    }
   }
   struct Kw {
     std::string_view kw;
@@ -276,9 +291,13 @@ bool Parser::parse_oword(const char* at) {
         "while, endwhile, do, repeat, endrepeat, break, continue)",
         p_);
   }
+  if (computed != kNoExpr && kind != OKind::kCall) {
+    return error(AlarmId::kMacroFormat, "a computed O-word number is for a call only", at);
+  }
   if (!begin_stmt(StmtKind::kOword, at)) return false;
   out_.stmt.okind = kind;
   out_.stmt.label = add_name(std::move(label));
+  out_.stmt.target = computed;
   const bool needs_one = kind == OKind::kIf || kind == OKind::kElseif || kind == OKind::kWhile ||
                          kind == OKind::kRepeat;
   const bool takes_many = kind == OKind::kCall;

@@ -301,7 +301,18 @@ Flow<Step> Interpreter::Impl::oword_return(const gcode::Stmt& s, SourceLoc where
 Flow<Step> Interpreter::Impl::execute_oword(CommandSink& out) {
   (void)out;
   const gcode::Stmt s = blk.stmt;
-  const std::string label = blk.names[static_cast<std::size_t>(s.label)];
+  std::string label = blk.names[static_cast<std::size_t>(s.label)];
+  if (s.target != gcode::kNoExpr) {
+    // o[expr] call: the subroutine's number, rounded.
+    auto v = eval(s.target);
+    if (!v) return std::unexpected(v.error());
+    const double n = std::round(v->num());
+    if (!(n >= 0 && n < 1e9)) {
+      return fail(AlarmId::kProgramNotFound,
+                  "o[...] call: no subroutine number " + std::to_string(v->num()), loc(s.column));
+    }
+    label = std::to_string(static_cast<std::int64_t>(n));
+  }
   const SourceLoc where = loc(s.column);
   Frame& f = frames.back();
   auto cond = [&](gcode::ExprId e) -> Flow<bool> {

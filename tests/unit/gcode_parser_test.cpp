@@ -942,6 +942,18 @@ TEST(GcodeParserNgc, OWords) {
   }
 }
 
+TEST(GcodeParserNgc, ProgramTitlesAndComputedCalls) {
+  // "O200" alone heads a Fanuc-style numbered program (called by M98).
+  const Block t = parse_ngc("O200 (drill pattern)");
+  EXPECT_TRUE(t.has_o);
+  EXPECT_EQ(t.o, 200);
+  EXPECT_EQ(t.stmt.kind, StmtKind::kNone);
+  const Block c = parse_ngc("o[#2 * 10] call [1]");
+  EXPECT_EQ(c.stmt.okind, OKind::kCall);
+  EXPECT_EQ(show(c, c.stmt.target), "(* #2 10)");
+  EXPECT_EQ(c.args.size(), 1u);
+}
+
 TEST(GcodeParserNgc, OWordErrors) {
   Block b;
   auto err = [&](std::string_view text) {
@@ -949,7 +961,8 @@ TEST(GcodeParserNgc, OWordErrors) {
     EXPECT_FALSE(r.has_value()) << text;
     return r ? Error{} : r.error();
   };
-  EXPECT_EQ(err("o100").loc.column, 5u);                  // no keyword
+  EXPECT_EQ(err("o100 jump").loc.column, 6u);             // no such keyword
+  EXPECT_EQ(err("o[1] sub").id, AlarmId::kMacroFormat);   // computed: a call only
   EXPECT_EQ(err("o100 if").id, AlarmId::kMacroFormat);    // no condition
   EXPECT_EQ(err("o100 sub G1 X1").loc.column, 10u);       // only a comment may follow
   EXPECT_EQ(err("o100 return [1] [2]").loc.column, 17u);  // one value at most

@@ -1,0 +1,1 @@
+../../rs274/programs/oword_computed_call.ngc
