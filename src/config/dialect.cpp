@@ -303,14 +303,23 @@ Result<void> load_alarms(const toml::table& t, std::string_view origin, Dialect&
 // [codes]: G codes the control does not have (absent_g), and those it has
 // that skipnc does not simulate (not_simulated_g).
 Result<void> load_codes(const toml::table& t, std::string_view origin, Dialect& d) {
-  auto keys = check_keys(t, {"absent_g", "not_simulated_g"}, origin, "[codes]");
+  auto keys = check_keys(t, {"absent_g", "not_simulated_g", "not_simulated_m"}, origin, "[codes]");
   if (!keys) return keys;
   for (const auto& [key, node] : t) {
     const auto* arr = node.as_array();
     if (!arr) return config_error(node, origin, std::string(key.str()) + " must be an array");
-    std::vector<int>& out = key.str() == "absent_g" ? d.absent_g : d.not_simulated_g;
+    const bool m_codes = key.str() == "not_simulated_m";
+    std::vector<int>& out = key.str() == "absent_g" ? d.absent_g
+                            : m_codes               ? d.not_simulated_m
+                                                    : d.not_simulated_g;
     out.clear();
     for (const auto& e : *arr) {
+      if (m_codes) {
+        const auto v = e.value<std::int64_t>();
+        if (!v || *v < 0 || *v > 999) return config_error(e, origin, "an M code such as 66");
+        out.push_back(static_cast<int>(*v));
+        continue;
+      }
       const auto v = e.value<double>();
       if (!v || *v < 0 || *v > 999 || std::round(*v * 10) != *v * 10) {
         return config_error(e, origin, "a G code such as 54 or 54.1");

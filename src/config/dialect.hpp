@@ -177,6 +177,7 @@ struct Dialect {
   // them those of skipnc's table that mean something else there (not_simulated).
   std::vector<int> absent_g;
   std::vector<int> not_simulated_g;
+  std::vector<int> not_simulated_m;  // M codes with an effect skipnc does not model
 
   const ParamDef* param(int number) const noexcept;
   const AlarmText& alarm(AlarmId id) const noexcept { return alarms[static_cast<std::size_t>(id)]; }

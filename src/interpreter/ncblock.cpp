@@ -493,6 +493,16 @@ Flow<void> Interpreter::Impl::plan_block(const Words& words, BlockPlan& plan) {
   plan.next = modal;
   auto g = plan_g_codes(words, plan);
   if (!g) return g;
+  for (int i = 0; i < words.m_count; ++i) {
+    const int m = words.m[static_cast<std::size_t>(i)];
+    if (std::find(dialect.not_simulated_m.begin(), dialect.not_simulated_m.end(), m) !=
+        dialect.not_simulated_m.end()) {
+      return fail(
+          AlarmId::kNotSimulated,
+          "M" + std::to_string(m) + " is a code of this control that skipnc does not simulate",
+          loc(cur_col));
+    }
+  }
   auto m = plan_mill(plan);
   if (!m) return m;
   const CodeDef* g12 = plan.group[static_cast<std::size_t>(Group::k12)];
