@@ -103,7 +103,8 @@ Flow<void> Interpreter::Impl::skip_to_oword(const std::string& label, std::uint3
                                             SourceLoc where) {
   Frame& f = frames.back();
   gcode::Source& src = *f.file->src;
-  const std::uint64_t key = block_pos.offset * 64 + (kinds % 61);
+  // The block and what it looks for (kinds: bits of OKind, below 2^16).
+  const std::uint64_t key = (block_pos.offset << 16) | (kinds & 0xffffu);
   if (auto it = f.file->ojumps.find(key); it != f.file->ojumps.end()) {
     const ProgramFile::OJump j = it->second;
     auto sk = src.seek(j.at);
@@ -113,7 +114,6 @@ Flow<void> Interpreter::Impl::skip_to_oword(const std::string& label, std::uint3
     f.resume = src.tell();
     return {};
   }
-  const std::uint64_t from = block_pos.offset;
   for (;;) {
     const gcode::SourcePos here = src.tell();
     auto more = src.next(raw);
@@ -139,7 +139,6 @@ Flow<void> Interpreter::Impl::skip_to_oword(const std::string& label, std::uint3
     if (blk.names[static_cast<std::size_t>(blk.stmt.label)] != label) continue;
     f.resume = src.tell();
     f.file->ojumps.emplace(key, ProgramFile::OJump{here, f.resume});
-    (void)from;
     return {};
   }
 }
