@@ -151,8 +151,11 @@ bool Parser::parse_uint(std::int64_t& value, std::string_view what, bool& any) {
   return true;
 }
 
-// Head of the block: '%', '/n', 'O' or ':' program number, 'N' sequence number.
+// Head of the block: '%', '/n', then 'O' or ':' program number and 'N'
+// sequence number (Macro B), or 'N' line number and an O-word (RS274NGC:
+// `o100 sub`, `o<name> call [1] [2]`, ...; grbl has no O).
 bool Parser::parse_head() {
+  const bool ngc = ngc_ || grbl_;
   int c = peek();
   if (c == '%') {
     out_.percent = true;
@@ -163,12 +166,21 @@ bool Parser::parse_head() {
     ++p_;
     out_.block_delete = 1;
     c = peek();
-    if (is_digit(c)) {
+    if (is_digit(c) && !(ngc && c == '0')) {
       if (c == '0') return error(AlarmId::kIllegalChar, "block delete switch /0 (use /1../9)", p_);
       out_.block_delete = c - '0';
       ++p_;
       c = peek();
     }
+  }
+  if (ngc) {
+    if (c == 'N') {
+      if (!parse_sequence_number(false)) return false;
+      c = peek();
+    }
+    if (c != 'O') return true;
+    if (grbl_) return error(AlarmId::kIllegalAddress, "'O' is not a word of this control", p_);
+    return parse_oword(p_);
   }
   if (c == 'O' || c == ':') {
     const char* at = p_;
@@ -181,54 +193,25 @@ bool Parser::parse_head() {
     out_.has_o = true;
     c = peek();
   }
-  if (c == 'N') {
-    const char* at = p_;
-    ++p_;
+  return c != 'N' || parse_sequence_number(true);
+}
+
+// p_ at 'N'. Macro B (`strict`) refuses a sign and a computed number with
+// their own alarms; RS274NGC's line number only needs digits.
+bool Parser::parse_sequence_number(bool strict) {
+  const char* at = p_;
+  ++p_;
+  if (strict) {
     const int v = peek();
     if (v == '-' || v == '+') return error(AlarmId::kBadSign, "sequence number with a sign", p_);
     if (v == '#' || v == '[') {
       return error(AlarmId::kMacroFormat, "sequence number must be a constant", p_);
     }
-    bool any = false;
-    if (!parse_uint(out_.n, "sequence number", any)) return false;
-    if (!any) return error(AlarmId::kNoValue, "'N' has no value", at);
-    out_.has_n = true;
   }
-  return true;
-}
-
-// Head of an RS274NGC or grbl block: '%', '/', 'N' sequence number, then an
-// O-word (RS274NGC: `o100 sub`, `o<name> call [1] [2]`, ...).
-bool Parser::parse_head_ngc() {
-  int c = peek();
-  if (c == '%') {
-    out_.percent = true;
-    ++p_;
-    return true;
-  }
-  if (c == '/') {
-    ++p_;
-    out_.block_delete = 1;
-    c = peek();
-    if (is_digit(c) && c != '0') {
-      out_.block_delete = c - '0';
-      ++p_;
-      c = peek();
-    }
-  }
-  if (c == 'N') {
-    const char* at = p_;
-    ++p_;
-    bool any = false;
-    if (!parse_uint(out_.n, "line number", any)) return false;
-    if (!any) return error(AlarmId::kNoValue, "'N' has no value", at);
-    out_.has_n = true;
-    c = peek();
-  }
-  if (c == 'O') {
-    if (grbl_) return error(AlarmId::kIllegalAddress, "'O' is not a word of this control", p_);
-    return parse_oword(p_);
-  }
+  bool any = false;
+  if (!parse_uint(out_.n, strict ? "sequence number" : "line number", any)) return false;
+  if (!any) return error(AlarmId::kNoValue, "'N' has no value", at);
+  out_.has_n = true;
   return true;
 }
 
@@ -435,11 +418,8 @@ inline bool Parser::try_keyword(int c, const char* at, bool& handled) {
 inline Result<void> Parser::run() {
   // Head: '%', '/', 'O', ':' or 'N' first.
   const int first = peek();
-  if (ngc_ || grbl_) [[unlikely]] {
-    if (first == '%' || first == '/' || first == 'O' || first == 'N') {
-      if (!parse_head_ngc()) return std::unexpected(std::move(*err_));
-    }
-  } else if (first == '%' || first == '/' || first == 'O' || first == ':' || first == 'N') {
+  if (first == '%' || first == '/' || first == 'O' || first == 'N' ||
+      (first == ':' && !ngc_ && !grbl_)) {
     if (!parse_head()) return std::unexpected(std::move(*err_));
   }
   if (out_.percent) {

@@ -370,7 +370,7 @@ class Parser {
   bool parse_uint(std::int64_t& value, std::string_view what, bool& any);
   [[gnu::always_inline]] bool parse_word();
   bool parse_head();
-  bool parse_head_ngc();
+  bool parse_sequence_number(bool strict);
 
   // ---- expressions
   ExprId parse_expr();

@@ -2,6 +2,7 @@
 // their source).
 #include "interpreter/cycles.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace skipnc::interp::cycles {
@@ -48,7 +49,8 @@ double return_level(const Hole& h) {
   // G87 starts below the work from the initial level and always returns
   // there (B-63944EN 5.1.10: point R cannot be the return level).
   if (h.kind == Cycle::kG87) return h.initial;
-  return h.ret == ReturnLevel::kInitial ? h.initial : h.r;
+  if (h.ret == ReturnLevel::kR) return h.r;
+  return h.linuxcnc_levels ? std::max(h.initial, h.r) : h.initial;
 }
 
 // Depth after one more peck of q from `reached`, not past the bottom.
@@ -72,6 +74,9 @@ void shift_back(Builder& b, const Hole& h) {
 
 std::vector<Move> hole_moves(const Hole& h) {
   Builder b(h.from);
+  const double back = return_level(h);
+  // LinuxCNC: up to the clearance level before the positioning.
+  if (h.linuxcnc_levels && h.from[2] < back) b.rapid_z(back);
   // Operations 1 and 2: positioning at the present level, then down to R
   // (G87: to the initial level, the tool goes down to R with its shift).
   b.rapid_xy(h.at[0], h.at[1]);
@@ -81,7 +86,6 @@ std::vector<Move> hole_moves(const Hole& h) {
     b.rapid_z(h.r);
   }
   const double dir = h.bottom < h.r ? -1.0 : 1.0;  // the drilling direction
-  const double back = return_level(h);
   switch (h.kind) {
     case Cycle::kNone:
       break;
@@ -118,7 +122,7 @@ std::vector<Move> hole_moves(const Hole& h) {
       b.feed_z(h.bottom);
       b.dwell(h.dwell_s);
       b.spindle(t.out);
-      b.feed_z(h.r);
+      b.feed_z(h.linuxcnc_levels ? back : h.r);
       b.dwell(h.dwell_s);
       b.spindle(t.in);
       b.rapid_z(back);

@@ -57,6 +57,11 @@ struct Hole {
   double peck_clearance = 0.0;                // d: G73 retraction (5114), G83 clearance (5115)
   std::array<double, 2> shift_dir{1.0, 0.0};  // unit vector of the G76/G87 shift
   int spindle_dir = 1;                        // spindle direction to restore after a stop (M03 = 1)
+  // LinuxCNC's rules ("Preliminary and In-Between Motion", G84): below the
+  // clearance level (R; in G98 the higher of R and the initial level) the
+  // tool first rises to it, then moves to the hole; G98 returns there; a tap
+  // feeds back out to the return level itself, with no rapid up from R.
+  bool linuxcnc_levels = false;
 };
 
 // The moves of one hole, in order. Moves of zero length are left out.

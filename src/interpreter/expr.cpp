@@ -200,7 +200,7 @@ std::optional<Fault> ngc_operator_value(gcode::Op op, double x, double y, double
       r = std::fabs(x - y) >= kNgcEqualTolerance ? 1.0 : 0.0;
       break;
     default:
-      return std::nullopt;  // as Macro B
+      return Fault{AlarmId::kMacroFormat, "unknown operator"};  // not one of ngc_own
   }
   if (!std::isfinite(r)) return Fault{AlarmId::kOverflow, "result out of range"};
   return std::nullopt;
@@ -264,6 +264,30 @@ std::optional<Fault> ngc_operator_value(gcode::Op op, double x, double y, double
   return Fault{AlarmId::kMacroFormat, "unknown operator"};
 }
 
+// The RS274NGC operators with rules of their own (the others are Macro B's).
+constexpr bool ngc_own(gcode::Op op) noexcept {
+  using gcode::Op;
+  return op == Op::kPow || op == Op::kMod || op == Op::kAnd || op == Op::kOr || op == Op::kXor ||
+         op == Op::kEq || op == Op::kNe;
+}
+
+// The context of the functions for the block being evaluated: RS274NGC's
+// signed ATAN/ASIN and whole-number ROUND, or Macro B's 6004#0 and increments.
+FuncContext func_context(const Interpreter::Impl& im) noexcept {
+  return FuncContext{im.nat || im.ngc, im.ngc ? 0.0 : im.word_round_increment,
+                     im.modal.units == Units::kInch, im.ngc};
+}
+
+// A binary operator under the dialect's rules, for both evaluators.
+[[gnu::always_inline]] inline std::optional<Fault> binary_value(gcode::Op op, Value a, Value b,
+                                                                bool ngc, double& r) noexcept {
+  if (ngc && ngc_own(op)) return ngc_operator_value(op, a.num(), b.num(), r);
+  if (op == gcode::Op::kPow) {
+    return Fault{AlarmId::kMacroFormat, "'**' is not an operator of this control"};
+  }
+  return operator_value(op, a, b, r);
+}
+
 }  // namespace
 
 Flow<int> Interpreter::Impl::var_number(gcode::ExprId lhs) {
@@ -299,7 +323,6 @@ Flow<void> Interpreter::Impl::assign(gcode::ExprId lhs, Value v) {
 // general way, which gives the same value or the alarm; nothing here has a
 // side effect, so the second pass is safe.
 bool Interpreter::Impl::eval_plain(gcode::ExprId id, Value& out) const noexcept {
-  if (ngc) return eval_plain_ngc(id, out);
   if (id < 0 || static_cast<std::size_t>(id) >= blk.nodes.size()) return false;
   const gcode::ExprNode& n = blk.nodes[static_cast<std::size_t>(id)];
   using gcode::Op;
@@ -310,6 +333,15 @@ bool Interpreter::Impl::eval_plain(gcode::ExprId id, Value& out) const noexcept 
       return true;
     case Op::kVar: {
       if (!eval_plain(n.a, a)) return false;
+      if (ngc) {
+        // RS274NGC: #1-#30 of the call level and #31-#5060, 0 until set
+        // (no vacant value); the system parameters the general way.
+        const double k = std::round(a.num());
+        if (!(k >= 1.0 && k < 5061.0)) return false;
+        const int num = static_cast<int>(k);
+        out = Value::of(num <= 30 ? vars.get(num).num() : vars.ngc_param(num));
+        return true;
+      }
       const double x = a.num();
       if (!(std::fabs(x) < 1e9)) return false;
       int num = static_cast<int>(x);
@@ -336,7 +368,7 @@ bool Interpreter::Impl::eval_plain(gcode::ExprId id, Value& out) const noexcept 
     default: {
       if (!eval_plain(n.a, a) || !eval_plain(n.b, b)) return false;
       double r = 0.0;
-      if (operator_value(n.op, a, b, r)) return false;
+      if (binary_value(n.op, a, b, ngc, r)) return false;
       out = Value::of(r + 0.0);
       return true;
     }
@@ -348,64 +380,9 @@ bool Interpreter::Impl::eval_plain(gcode::ExprId id, Value& out) const noexcept 
     y = b.num();
   }
   double r = 0.0;
-  const FuncContext cx{nat, word_round_increment, modal.units == Units::kInch};
-  if (function_value(n.fn, a.num(), n.b != gcode::kNoExpr ? &y : nullptr, cx, r)) return false;
-  if (!std::isfinite(r)) return false;
-  out = Value::of(r + 0.0);
-  return true;
-}
-
-// eval_plain under RS274NGC rules: numbers, #1-#30 and #31-#5060 (no
-// vacant value: 0), the operators and functions; system and named
-// parameters, EXISTS and anything that may alarm go to eval_general.
-bool Interpreter::Impl::eval_plain_ngc(gcode::ExprId id, Value& out) const noexcept {
-  if (id < 0 || static_cast<std::size_t>(id) >= blk.nodes.size()) return false;
-  const gcode::ExprNode& n = blk.nodes[static_cast<std::size_t>(id)];
-  using gcode::Op;
-  Value a, b;
-  switch (n.op) {
-    case Op::kNumber:
-      out = Value::of(n.value);
-      return true;
-    case Op::kVar: {
-      if (!eval_plain_ngc(n.a, a)) return false;
-      const double x = std::round(a.num());
-      if (!(x >= 1.0 && x < 5061.0)) return false;
-      const int num = static_cast<int>(x);
-      out = Value::of(num <= 30 ? vars.get(num).num() : vars.ngc_param(num));
-      return true;
-    }
-    case Op::kNeg:
-      if (!eval_plain_ngc(n.a, a)) return false;
-      out = Value::of(0.0 - a.num());
-      return true;
-    case Op::kFunc:
-      break;
-    case Op::kNamedVar:
-      return false;
-    default: {
-      if (!eval_plain_ngc(n.a, a) || !eval_plain_ngc(n.b, b)) return false;
-      double r = 0.0;
-      const bool own = n.op == Op::kPow || n.op == Op::kMod || n.op == Op::kAnd ||
-                       n.op == Op::kOr || n.op == Op::kXor || n.op == Op::kEq || n.op == Op::kNe;
-      if (own ? ngc_operator_value(n.op, a.num(), b.num(), r).has_value()
-              : operator_value(n.op, a, b, r).has_value()) {
-        return false;
-      }
-      out = Value::of(r + 0.0);
-      return true;
-    }
+  if (function_value(n.fn, a.num(), n.b != gcode::kNoExpr ? &y : nullptr, func_context(*this), r)) {
+    return false;  // EXISTS too: it names a parameter (eval_general)
   }
-  if (n.fn == gcode::Func::kExists) return false;
-  if (!eval_plain_ngc(n.a, a)) return false;
-  double y = 0.0;
-  if (n.b != gcode::kNoExpr) {
-    if (!eval_plain_ngc(n.b, b)) return false;
-    y = b.num();
-  }
-  double r = 0.0;
-  const FuncContext cx{true, 0.0, modal.units == Units::kInch, true};
-  if (function_value(n.fn, a.num(), n.b != gcode::kNoExpr ? &y : nullptr, cx, r)) return false;
   if (!std::isfinite(r)) return false;
   out = Value::of(r + 0.0);
   return true;
@@ -447,20 +424,7 @@ Flow<Value> Interpreter::Impl::eval_general(gcode::ExprId id) {
       auto b = eval_general(n.b);
       if (!b) return b;
       double r = 0.0;
-      if (ngc) {
-        const bool own = n.op == Op::kPow || n.op == Op::kMod || n.op == Op::kAnd ||
-                         n.op == Op::kOr || n.op == Op::kXor || n.op == Op::kEq || n.op == Op::kNe;
-        if (own) {
-          if (auto f = ngc_operator_value(n.op, a->num(), b->num(), r)) {
-            return fail(f->id, f->why, loc(n.column));
-          }
-          return Value::of(r + 0.0);
-        }
-      } else if (n.op == Op::kPow) {
-        return fail(AlarmId::kMacroFormat, "'**' is not an operator of this control",
-                    loc(n.column));
-      }
-      if (auto f = operator_value(n.op, *a, *b, r)) return fail(f->id, f->why, loc(n.column));
+      if (auto f = binary_value(n.op, *a, *b, ngc, r)) return fail(f->id, f->why, loc(n.column));
       return Value::of(r + 0.0);  // no -0
     }
   }
@@ -491,9 +455,8 @@ Flow<Value> Interpreter::Impl::eval_general(gcode::ExprId id) {
     y = b->num();
   }
   double r = 0.0;
-  const FuncContext cx{nat || ngc, ngc ? 0.0 : word_round_increment, modal.units == Units::kInch,
-                       ngc};
-  if (auto f = function_value(n.fn, a->num(), n.b != gcode::kNoExpr ? &y : nullptr, cx, r)) {
+  if (auto f = function_value(n.fn, a->num(), n.b != gcode::kNoExpr ? &y : nullptr,
+                              func_context(*this), r)) {
     return fail(f->id, f->why, loc(n.column));
   }
   if (!std::isfinite(r)) return fail(AlarmId::kOverflow, "result out of range", loc(n.column));

@@ -18,6 +18,7 @@
 #include <array>
 #include <bit>
 #include <cstdio>
+#include <filesystem>
 #include <memory>
 #include <optional>
 #include <string>
@@ -412,6 +413,9 @@ struct Interpreter::Impl {
                       SourceLoc where);
   Flow<void> skip_to_oword(const std::string& label, std::uint32_t kinds, SourceLoc where);
   Flow<Step> oword_return(const gcode::Stmt& s, SourceLoc where);
+  Flow<bool> oword_condition();
+  Flow<Step> oword_branch(gcode::OKind kind, const std::string& label, SourceLoc where);
+  Flow<Step> oword_loop(gcode::OKind kind, const std::string& label, SourceLoc where);
   Flow<void> ngc_assignments();
   // ngc_params.cpp: LinuxCNC's numbered and named parameters
   Flow<Value> read_ngc_param(int n, SourceLoc where);
@@ -424,6 +428,8 @@ struct Interpreter::Impl {
   Flow<void> ngc_comments();
   void ngc_store_probe(const AxisVec& latch_work, bool triggered);
   void ngc_load_work(int set);
+  void ngc_start();
+  Flow<void> load_ngc_var_file();
   int ngc_axis_index(char letter) const noexcept;  // X0 Y1 Z2 A3 B4 C5 U6 V7 W8, -1 else
   // ngc_codes.cpp: LinuxCNC's and grbl's own codes
   Flow<void> ngc_action(const Words& words, int code, CommandSink& out);
@@ -437,6 +443,9 @@ struct Interpreter::Impl {
   Flow<void> call(std::int64_t program, int repeats, bool macro, SourceLoc where,
                   bool modal_call = false);
   std::uint32_t context_of(CallContext c);  // index of c, added when new
+  Flow<void> push_frame(Frame f, std::string call, SourceLoc where);
+  std::vector<std::string> include_dirs() const;
+  Result<ProgramFile*> program_file(const std::filesystem::path& p, bool& added);
   Flow<Step> return_from_sub(std::optional<std::int64_t> label, SourceLoc where);
   Flow<void> macro_call(std::int64_t program, int repeats, bool modal_call, SourceLoc where);
   Flow<void> collect_argument(const gcode::Word& w, const WordVal& v, int& ijk_set, int& ijk_last);
@@ -446,7 +455,6 @@ struct Interpreter::Impl {
   Flow<Value> eval(gcode::ExprId id);
   Flow<Value> eval_general(gcode::ExprId id);
   bool eval_plain(gcode::ExprId id, Value& out) const noexcept;
-  bool eval_plain_ngc(gcode::ExprId id, Value& out) const noexcept;
   Flow<int> var_number(gcode::ExprId lhs);
   Flow<void> assign(gcode::ExprId lhs, Value v);
 
@@ -538,6 +546,7 @@ struct Interpreter::Impl {
   Flow<Step> skip_block(const Words& words, const AxisVec& target, AxisMask moved,
                         CommandSink& out);
   Flow<void> finish_skip(const SyncState& s);
+  AxisVec record_skip(const SyncState& s);
   Flow<Step> queue_skip(const canon::Skip& sk, SourceLoc at, CommandSink& out);
   // probe_g38.cpp: G38.2-G38.5
   Flow<Step> probe_block(const Words& words, const AxisVec& target, AxisMask moved,

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cctype>
-#include <cmath>
 #include <filesystem>
 
 #include "interpreter/impl.hpp"
@@ -52,65 +51,16 @@ Flow<void> Interpreter::Impl::init(const AxisVec& start) {
   tools.assign(static_cast<std::size_t>(mc.tool_offset_count) + 1, config::ToolOffset{});
   for (const auto& [n, t] : mc.tool_offsets) tools[static_cast<std::size_t>(n)] = t;
   modal.units = mc.inch_machine ? Units::kInch : Units::kMetric;
-  if (ngc || grbl) {
-    vars.enable_ngc();  // grbl keeps G28, G30, G92 and the work offsets in the same numbers
-    for (int set = 1; set <= 9; ++set) {
-      for (int i = 0; i < axis_count; ++i) {
-        const int j = ngc_axis_index(axis_letter[static_cast<std::size_t>(i)]);
-        if (j >= 0) {
-          vars.set_ngc_param(5221 + 20 * (set - 1) + j,
-                             work_offsets[static_cast<std::size_t>(set)][i] / unit_mm());
-        }
-      }
-    }
-  }
+  if (ngc || grbl) ngc_start();  // ngc_params.cpp
   if (!mc.persistent_vars.empty()) {
     // Locked until the run has written them back (save_persistent), so that
     // runs sharing the file do not lose each other's updates.
     auto l = PersistentLock::acquire(mc.persistent_vars, kPersistentLockWaitS);
     if (!l) return std::unexpected(l.error());
     persistent_lock = std::move(*l);
-    if (ngc) {
-      // LinuxCNC's parameter file: the parameters it lists, and always
-      // #5161-#5390 (G28, G30, G92 and the work offsets).
-      std::vector<double> values;
-      auto r = load_var_file(mc.persistent_vars, var_file_numbers, values);
-      if (!r) return r;
-      for (std::size_t i = 0; i < var_file_numbers.size(); ++i) {
-        const int n = var_file_numbers[i];
-        if (n == 5220) {  // the coordinate system LinuxCNC starts in
-          const double w = std::round(values[i]);
-          if (w >= 1 && w <= 9) modal.work = static_cast<int>(w);
-          continue;
-        }
-        if (n >= 5210 && n <= 5219) {  // G92: on and its offsets
-          vars.set_ngc_param(n, values[i]);
-          continue;
-        }
-        auto w = write_ngc_param(n, Value::of(values[i]), SourceLoc{});
-        if (!w) {
-          return fail(AlarmId::kConfig, "parameter file '" + mc.persistent_vars + "': #" +
-                                            std::to_string(var_file_numbers[i]) + " cannot be set");
-        }
-      }
-      for (int set = 1; set <= 9; ++set) ngc_load_work(set);
-      if (vars.ngc_param(5210) != 0.0) {
-        for (int i = 0; i < axis_count; ++i) {
-          const int j = ngc_axis_index(axis_letter[static_cast<std::size_t>(i)]);
-          if (j >= 0) g92_shift[i] = vars.ngc_param(5211 + j) * unit_mm();
-        }
-      }
-      for (int n = 5161; n <= 5390; ++n) {
-        if (std::find(var_file_numbers.begin(), var_file_numbers.end(), n) ==
-            var_file_numbers.end()) {
-          var_file_numbers.push_back(n);
-        }
-      }
-      std::sort(var_file_numbers.begin(), var_file_numbers.end());
-    } else {
-      auto r = load_persistent(mc.persistent_vars, vars.persistent());
-      if (!r) return r;
-    }
+    auto r = ngc ? load_ngc_var_file()  // ngc_params.cpp
+                 : Flow<void>(load_persistent(mc.persistent_vars, vars.persistent()));
+    if (!r) return r;
   }
   for (const auto& [n, v] : setup.variables) {
     if (ngc) {

@@ -135,29 +135,16 @@ Flow<void> Interpreter::Impl::find_program(std::int64_t number, ProgramFile*& fi
     if (!r) return std::unexpected(r.error());
     if (*r) return {};
   }
-  std::vector<std::string> dirs = setup.include_dirs;
-  if (dirs.empty()) {
-    const fs::path parent = fs::path(setup.program_path).parent_path();
-    dirs.push_back(setup.program_path.empty() || parent.empty() ? std::string(".")
-                                                                : parent.string());
-  }
+  const std::vector<std::string> dirs = include_dirs();
   const std::string n = std::to_string(number);
   const std::vector<std::string> names = program_file_names(number);
   // A file not loaded yet: opened, scanned, kept in `files`. Null when it is
   // already loaded (its programs were searched above).
   auto load = [&](const fs::path& p) -> Result<ProgramFile*> {
-    for (const auto& f : files) {
-      std::error_code ec;
-      if (!f->path.empty() && fs::equivalent(f->path, p, ec)) return nullptr;
-    }
-    auto pf = std::make_unique<ProgramFile>();
-    pf->path = p.string();
-    pf->display = p.filename().string();
-    auto src = gcode::open_file_source(pf->path, pf->display, source_limits());
-    if (!src) return std::unexpected(src.error());
-    pf->src = std::move(*src);
-    files.push_back(std::move(pf));
-    return files.back().get();
+    bool added = false;
+    auto pf = program_file(p, added);
+    if (!pf) return std::unexpected(pf.error());
+    return added ? *pf : nullptr;
   };
   std::vector<std::string> libraries_tried;
   // A library: a file holding several programs (%, O9810 ... M99, O9811 ...
@@ -254,19 +241,58 @@ Flow<void> Interpreter::Impl::call(std::int64_t program, int repeats, bool macro
   gcode::SourcePos at;
   auto found = find_program(program, file, at, where);
   if (!found) return found;
-  frames.back().resume = frames.back().file->src->tell();
   Frame f;
   f.file = file;
   f.start = at;
-  f.resume = at;
   f.program = program;
   f.repeats_left = repeats - 1;
   f.macro = macro;
-  f.context = context_of(CallContext{
-      file->display, program, frames.back().context, where.line,
-      (macro ? (modal_call ? "G66 P" : "G65 P") : "M98 P") + std::to_string(program), file->path});
-  frames.push_back(f);
-  return file->src->seek(at);
+  return push_frame(
+      f, (macro ? (modal_call ? "G66 P" : "G65 P") : "M98 P") + std::to_string(program), where);
+}
+
+// The called program's frame on top of the caller's: the caller resumes
+// after the calling block, the call path gets its context, reading goes on
+// at the frame's start.
+Flow<void> Interpreter::Impl::push_frame(Frame f, std::string call, SourceLoc where) {
+  frames.back().resume = frames.back().file->src->tell();
+  f.resume = f.start;
+  f.context = context_of(CallContext{f.file->display, f.program, frames.back().context, where.line,
+                                     std::move(call), f.file->path});
+  frames.push_back(std::move(f));
+  const Frame& top = frames.back();
+  return top.file->src->seek(top.start);
+}
+
+// Where called programs are looked for: the -I folders, else the folder of
+// the main program.
+std::vector<std::string> Interpreter::Impl::include_dirs() const {
+  std::vector<std::string> dirs = setup.include_dirs;
+  if (dirs.empty()) {
+    const fs::path parent = fs::path(setup.program_path).parent_path();
+    dirs.push_back(setup.program_path.empty() || parent.empty() ? std::string(".")
+                                                                : parent.string());
+  }
+  return dirs;
+}
+
+// The program file at `p`: the one already loaded, or opened now and kept in
+// `files` (`added` says which).
+Result<ProgramFile*> Interpreter::Impl::program_file(const fs::path& p, bool& added) {
+  added = false;
+  for (const auto& f : files) {
+    std::error_code ec;
+    if (!f->path.empty() && fs::equivalent(f->path, p, ec)) return f.get();
+  }
+  auto pf = std::make_unique<ProgramFile>();
+  pf->path = p.string();
+  pf->display = p.filename().string();
+  auto src = gcode::open_file_source(pf->path, pf->display, source_limits());
+  if (!src) return std::unexpected(src.error());
+  pf->src = std::move(*src);
+  files.push_back(std::move(pf));
+  added = true;
+  return files.back().get();
 }
 
 // M99 (or the end of a called program): runs the program again while

@@ -14,7 +14,6 @@
 #include <cstdio>
 #include <string>
 #include <variant>
-#include <vector>
 
 #include "config/skip_inputs.hpp"
 #include "interpreter/codes.hpp"
@@ -674,39 +673,10 @@ Flow<Step> Interpreter::Impl::canned_cycle(const Words& words, CommandSink& out)
     h.shift_dir =
         cycles::shift_direction(static_cast<int>(params.get(config::param::kShiftDirection)) >> 4);
     h.spindle_dir = modal.spindle_dir != 0 ? modal.spindle_dir : 1;
-    if (ngc || grbl) {
-      // LinuxCNC: below the clearance level (R, or in G98 the higher of R
-      // and the Z the cycles began at) the tool first rises to it, then
-      // moves to the hole ("Preliminary and In-Between Motion").
-      const double clear = modal.ret == ReturnLevel::kInitial ? std::max(h.initial, h.r) : h.r;
-      h.initial = std::max(h.initial, h.r);  // G98 returns to the higher of the two
-      if (h.from[2] < clear) {
-        h.from[2] = clear;
-        const xform::Point w = xform::to_work(frame, h.from);
-        AxisVec mp = pos;
-        mp[z] = machine_of(z, w[2]);
-        emit(out, canon::Rapid{mp, linear});
-        pos = mp;
-      }
-    }
-    std::vector<cycles::Move> moves = cycles::hole_moves(h);
-    if ((ngc || grbl) && (modal.cycle == Cycle::kG84 || modal.cycle == Cycle::kG74) &&
-        modal.ret == ReturnLevel::kInitial) {
-      // LinuxCNC's tapping cycle feeds back out to the clearance level
-      // itself (G98: the higher of R and the start), with the spindle
-      // reversed; there is no rapid up from R.
-      for (std::size_t f = 0; f + 1 < moves.size(); ++f) {
-        if (moves[f].kind != cycles::MoveKind::kFeed || moves[f].to[2] != h.r) continue;
-        for (std::size_t r = f + 1; r < moves.size(); ++r) {
-          if (moves[r].kind != cycles::MoveKind::kRapid) continue;
-          moves[f].to[2] = moves[r].to[2];
-          moves.erase(moves.begin() + static_cast<std::ptrdiff_t>(r));
-          break;
-        }
-        break;
-      }
-    }
-    for (const cycles::Move& m : moves) {
+    // LinuxCNC's levels (cycles.hpp): rise to the clearance level first,
+    // G98 to the higher of R and the start, taps feeding out to it.
+    h.linuxcnc_levels = ngc || grbl;
+    for (const cycles::Move& m : cycles::hole_moves(h)) {
       const xform::Point w = xform::to_work(frame, m.to);
       AxisVec mp = base;
       if (x >= 0) mp[x] = machine_of(x, w[0]);

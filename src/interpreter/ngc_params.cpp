@@ -16,6 +16,7 @@
 // Named parameters: #<name> is local to its call level, #<_name> global;
 // reading one never set is an error. Predefined read-only names (#<_x>,
 // #<_abs_x>, #<_line>, #<_value> ...) are computed from the state.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -292,6 +293,59 @@ void Interpreter::Impl::ngc_store_probe(const AxisVec& latch_work, bool triggere
     vars.set_ngc_param(5061 + j, a < 0 ? 0.0 : latch_work[a]);
   }
   vars.set_ngc_param(5070, triggered ? 1.0 : 0.0);
+}
+
+// At the start: the parameter store, and #5221.. holding the machine file's
+// work offsets (grbl keeps G28, G30, G92 and the offsets in the same numbers).
+void Interpreter::Impl::ngc_start() {
+  vars.enable_ngc();
+  for (int set = 1; set <= 9; ++set) {
+    for (int i = 0; i < axis_count; ++i) {
+      const int j = ngc_axis_index(axis_letter[static_cast<std::size_t>(i)]);
+      if (j >= 0) {
+        vars.set_ngc_param(5221 + 20 * (set - 1) + j,
+                           work_offsets[static_cast<std::size_t>(set)][i] / unit_mm());
+      }
+    }
+  }
+}
+
+// LinuxCNC's parameter file (the machine's persistent_variables): the
+// parameters it lists, and always #5161-#5390 (G28, G30, G92 and the work
+// offsets); the run starts in the system of #5220 with the G92 of
+// #5210-#5219, as LinuxCNC does.
+Flow<void> Interpreter::Impl::load_ngc_var_file() {
+  std::vector<double> values;
+  auto r = load_var_file(mc.persistent_vars, var_file_numbers, values);
+  if (!r) return std::unexpected(r.error());
+  for (std::size_t i = 0; i < var_file_numbers.size(); ++i) {
+    const int n = var_file_numbers[i];
+    if (n == 5220) {  // the coordinate system LinuxCNC starts in
+      const double w = std::round(values[i]);
+      if (w >= 1 && w <= 9) modal.work = static_cast<int>(w);
+      continue;
+    }
+    if (n >= 5210 && n <= 5219) {  // G92: on and its offsets
+      vars.set_ngc_param(n, values[i]);
+      continue;
+    }
+    if (!write_ngc_param(n, Value::of(values[i]), SourceLoc{})) {
+      return fail(AlarmId::kConfig, "parameter file '" + mc.persistent_vars + "': #" +
+                                        std::to_string(n) + " cannot be set");
+    }
+  }
+  for (int set = 1; set <= 9; ++set) ngc_load_work(set);
+  if (vars.ngc_param(5210) != 0.0) {
+    for (int i = 0; i < axis_count; ++i) {
+      const int j = ngc_axis_index(axis_letter[static_cast<std::size_t>(i)]);
+      if (j >= 0) g92_shift[i] = vars.ngc_param(5211 + j) * unit_mm();
+    }
+  }
+  for (int n = 5161; n <= 5390; ++n) var_file_numbers.push_back(n);
+  std::sort(var_file_numbers.begin(), var_file_numbers.end());
+  var_file_numbers.erase(std::unique(var_file_numbers.begin(), var_file_numbers.end()),
+                         var_file_numbers.end());
+  return {};
 }
 
 }  // namespace skipnc::interp

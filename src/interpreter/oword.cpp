@@ -192,31 +192,14 @@ Flow<bool> Interpreter::Impl::find_sub(const std::string& label, ProgramFile*& f
   // LinuxCNC looks for it.
   std::string name = label.substr(1, label.size() - 2);
   for (char& c : name) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  std::vector<std::string> dirs = setup.include_dirs;
-  if (dirs.empty()) {
-    const fs::path parent = fs::path(setup.program_path).parent_path();
-    dirs.push_back(setup.program_path.empty() || parent.empty() ? std::string(".")
-                                                                : parent.string());
-  }
-  for (const auto& d : dirs) {
+  for (const auto& d : include_dirs()) {
     const fs::path p = fs::path(d) / (name + ".ngc");
     std::error_code ec;
     if (!fs::is_regular_file(p, ec)) continue;
-    ProgramFile* have = nullptr;
-    for (const auto& pf : files) {
-      if (!pf->path.empty() && fs::equivalent(pf->path, p, ec)) have = pf.get();
-    }
-    if (have == nullptr) {
-      auto pf = std::make_unique<ProgramFile>();
-      pf->path = p.string();
-      pf->display = p.filename().string();
-      auto src = gcode::open_file_source(pf->path, pf->display, source_limits());
-      if (!src) return std::unexpected(src.error());
-      pf->src = std::move(*src);
-      files.push_back(std::move(pf));
-      have = files.back().get();
-    }
-    auto r = scan(*have);
+    bool added = false;
+    auto have = program_file(p, added);
+    if (!have) return std::unexpected(have.error());
+    auto r = scan(**have);
     if (!r) return std::unexpected(r.error());
     if (*r) return true;
     return fail(AlarmId::kProgramNotFound,
@@ -250,23 +233,20 @@ Flow<void> Interpreter::Impl::oword_call(const std::string& label, SourceLoc whe
   if (!*found) {
     return fail(AlarmId::kProgramNotFound, "no " + shown(label) + " sub for this call", where);
   }
-  frames.back().resume = frames.back().file->src->tell();
   Frame f;
   f.file = file;
   f.start = at;
-  f.resume = at;
   f.macro = true;
   f.sub_label = label;
-  f.context = context_of(CallContext{file->display, 0, frames.back().context, where.line,
-                                     shown(label) + " call", file->path});
-  frames.push_back(f);
+  auto pushed = push_frame(f, shown(label) + " call", where);
+  if (!pushed) return pushed;
   vars.push_level();
   for (std::size_t i = 0; i < args.size(); ++i) {
     vars.set(static_cast<int>(i) + 1, Value::of(args[i]));
   }
   for (int i = static_cast<int>(args.size()) + 1; i <= 30; ++i) vars.set(i, Value::of(0.0));
   ngc_value_returned = false;
-  return file->src->seek(at);
+  return {};
 }
 
 Flow<Step> Interpreter::Impl::oword_return(const gcode::Stmt& s, SourceLoc where) {
@@ -300,6 +280,7 @@ Flow<Step> Interpreter::Impl::oword_return(const gcode::Stmt& s, SourceLoc where
 Flow<Step> Interpreter::Impl::execute_oword(CommandSink& out) {
   (void)out;
   const gcode::Stmt s = blk.stmt;
+  const SourceLoc where = loc(s.column);
   std::string label = blk.names[static_cast<std::size_t>(s.label)];
   if (s.target != gcode::kNoExpr) {
     // o[expr] call: the subroutine's number, rounded.
@@ -308,47 +289,10 @@ Flow<Step> Interpreter::Impl::execute_oword(CommandSink& out) {
     const double n = std::round(v->num());
     if (!(n >= 0 && n < 1e9)) {
       return fail(AlarmId::kProgramNotFound,
-                  "o[...] call: no subroutine number " + std::to_string(v->num()), loc(s.column));
+                  "o[...] call: no subroutine number " + std::to_string(v->num()), where);
     }
     label = std::to_string(static_cast<std::int64_t>(n));
   }
-  const SourceLoc where = loc(s.column);
-  Frame& f = frames.back();
-  auto cond = [&](gcode::ExprId e) -> Flow<bool> {
-    auto v = eval(e);
-    if (!v) return std::unexpected(v.error());
-    return v->num() != 0.0;
-  };
-  auto find_loop = [&](OKind kind) -> OLoop* {
-    for (std::size_t i = f.oloops.size(); i-- > 0;) {
-      if (f.oloops[i].label == label && (kind == OKind::kNone || f.oloops[i].kind == kind)) {
-        return &f.oloops[i];
-      }
-    }
-    return nullptr;
-  };
-  auto seek_to = [&](gcode::SourcePos p) -> Flow<Step> {
-    auto sk = f.file->src->seek(p);
-    if (!sk) return std::unexpected(sk.error());
-    f.resume = p;
-    return Step::kContinue;
-  };
-  // Leaves a loop: past its closing statement.
-  auto leave = [&](const OLoop& l) -> Flow<Step> {
-    const OKind kind = l.kind;
-    const std::string lab = l.label;
-    auto sk = f.file->src->seek(l.body);
-    if (!sk) return std::unexpected(sk.error());
-    // The closing statement, found from the opening block.
-    block_pos = l.start;
-    auto k = skip_to_oword(lab,
-                           kind == OKind::kWhile    ? bit(OKind::kEndwhile)
-                           : kind == OKind::kRepeat ? bit(OKind::kEndrepeat)
-                                                    : bit(OKind::kWhile),
-                           where);
-    if (!k) return std::unexpected(k.error());
-    return Step::kContinue;
-  };
   switch (s.okind) {
     case OKind::kSub: {
       // A definition met in the flow of the program is passed over.
@@ -364,8 +308,31 @@ Flow<Step> Interpreter::Impl::execute_oword(CommandSink& out) {
       if (!c) return std::unexpected(c.error());
       return Step::kContinue;
     }
+    case OKind::kIf:
+    case OKind::kElseif:
+    case OKind::kElse:
+    case OKind::kEndif:
+      return oword_branch(s.okind, label, where);
+    case OKind::kNone:
+      return fail(AlarmId::kInternal, "unknown O-word statement", where);
+    default:
+      return oword_loop(s.okind, label, where);
+  }
+}
+
+// The condition of the O-word block being run: true when not zero.
+Flow<bool> Interpreter::Impl::oword_condition() {
+  auto v = eval(blk.args.front());
+  if (!v) return std::unexpected(v.error());
+  return v->num() != 0.0;
+}
+
+// if / elseif / else / endif.
+Flow<Step> Interpreter::Impl::oword_branch(gcode::OKind kind, const std::string& label,
+                                           SourceLoc where) {
+  switch (kind) {
     case OKind::kIf: {
-      auto c = cond(blk.args.front());
+      auto c = oword_condition();
       if (!c) return std::unexpected(c.error());
       if (*c) return Step::kContinue;
       for (;;) {
@@ -373,7 +340,7 @@ Flow<Step> Interpreter::Impl::execute_oword(CommandSink& out) {
                                where);
         if (!k) return std::unexpected(k.error());
         if (blk.stmt.okind != OKind::kElseif) return Step::kContinue;
-        auto e = cond(blk.args.front());
+        auto e = oword_condition();
         if (!e) return std::unexpected(e.error());
         if (*e) return Step::kContinue;
       }
@@ -387,6 +354,47 @@ Flow<Step> Interpreter::Impl::execute_oword(CommandSink& out) {
     }
     case OKind::kEndif:
       return Step::kContinue;
+    default:
+      return Step::kContinue;
+  }
+}
+
+// do / while / endwhile / repeat / endrepeat / break / continue, on the
+// frame's loop stack.
+Flow<Step> Interpreter::Impl::oword_loop(gcode::OKind kind, const std::string& label,
+                                         SourceLoc where) {
+  Frame& f = frames.back();
+  auto find_loop = [&](OKind of) -> OLoop* {
+    for (std::size_t i = f.oloops.size(); i-- > 0;) {
+      if (f.oloops[i].label == label && (of == OKind::kNone || f.oloops[i].kind == of)) {
+        return &f.oloops[i];
+      }
+    }
+    return nullptr;
+  };
+  auto seek_to = [&](gcode::SourcePos p) -> Flow<Step> {
+    auto sk = f.file->src->seek(p);
+    if (!sk) return std::unexpected(sk.error());
+    f.resume = p;
+    return Step::kContinue;
+  };
+  // Leaves a loop: past its closing statement.
+  auto leave = [&](const OLoop& l) -> Flow<Step> {
+    const OKind opened = l.kind;
+    const std::string lab = l.label;
+    auto sk = f.file->src->seek(l.body);
+    if (!sk) return std::unexpected(sk.error());
+    // The closing statement, found from the opening block.
+    block_pos = l.start;
+    auto k = skip_to_oword(lab,
+                           opened == OKind::kWhile    ? bit(OKind::kEndwhile)
+                           : opened == OKind::kRepeat ? bit(OKind::kEndrepeat)
+                                                      : bit(OKind::kWhile),
+                           where);
+    if (!k) return std::unexpected(k.error());
+    return Step::kContinue;
+  };
+  switch (kind) {
     case OKind::kDo: {
       const gcode::SourcePos body = f.file->src->tell();
       if (OLoop* l = find_loop(OKind::kDo); l != nullptr && l->start == block_pos) {
@@ -399,13 +407,13 @@ Flow<Step> Interpreter::Impl::execute_oword(CommandSink& out) {
       if (!f.oloops.empty() && f.oloops.back().label == label &&
           f.oloops.back().kind == OKind::kDo) {
         // The end of a do loop.
-        auto c = cond(blk.args.front());
+        auto c = oword_condition();
         if (!c) return std::unexpected(c.error());
         if (*c) return seek_to(f.oloops.back().body);
         f.oloops.pop_back();
         return Step::kContinue;
       }
-      auto c = cond(blk.args.front());
+      auto c = oword_condition();
       if (!c) return std::unexpected(c.error());
       const bool again = !f.oloops.empty() && f.oloops.back().label == label &&
                          f.oloops.back().kind == OKind::kWhile &&
@@ -455,14 +463,13 @@ Flow<Step> Interpreter::Impl::execute_oword(CommandSink& out) {
     case OKind::kContinue: {
       OLoop* l = find_loop(OKind::kNone);
       if (l == nullptr) {
-        return fail(
-            AlarmId::kOwordFlow,
-            shown(label) + " " + keyword(s.okind) + " outside a loop labelled " + shown(label),
-            where);
+        return fail(AlarmId::kOwordFlow,
+                    shown(label) + " " + keyword(kind) + " outside a loop labelled " + shown(label),
+                    where);
       }
       f.oloops.resize(static_cast<std::size_t>(l - f.oloops.data()) + 1);
       OLoop loop = f.oloops.back();
-      if (s.okind == OKind::kBreak) {
+      if (kind == OKind::kBreak) {
         f.oloops.pop_back();
         return leave(loop);
       }
@@ -480,7 +487,7 @@ Flow<Step> Interpreter::Impl::execute_oword(CommandSink& out) {
         }
       }
     }
-    case OKind::kNone:
+    default:
       break;
   }
   return fail(AlarmId::kInternal, "unknown O-word statement", where);

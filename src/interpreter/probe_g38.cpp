@@ -92,23 +92,7 @@ Flow<void> Interpreter::Impl::finish_probe(const SyncState& s) {
                        : name + ": the probe was not in contact when the move began",
                 ps.loc);
   }
-  const AxisVec latch = s.triggered ? s.latch_machine : ps.target;
-  skip_machine = latch;
-  for (int i = 0; i < axis_count; ++i) {
-    skip_work[i] = position_var(i, latch[i], dialect.sw.skip_tool_offsets);
-  }
-  have_skip = true;
-  SkipRecord rec = ps.record;
-  rec.triggered = s.triggered;
-  rec.time_s = s.time_s;
-  rec.position = skip_work;
-  rec.position_has_tool_offsets = dialect.sw.skip_tool_offsets;
-  rec.machine_position = latch;
-  for (int i = 0; i < axis_count; ++i) rec.end_position[i] = work_of(i, pos[i]);
-  if (s.triggered) rec.signal = ps.input_names[0];
-  skips.push_back(rec);
-  skip_missed_unread = !s.triggered;
-  skip_missed_line = rec.line;
+  const AxisVec latch = record_skip(s);  // skip.cpp
   if (ngc) {
     ngc_store_probe(skip_work, s.triggered);
   } else if (dialect.skip_vars.success_flag > 0) {

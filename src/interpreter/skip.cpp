@@ -131,15 +131,12 @@ Flow<Step> Interpreter::Impl::queue_skip(const canon::Skip& sk, SourceLoc at, Co
   return Step::kSync;
 }
 
-// The machine's answer to a skip block. The latched position is stored in
-// the dialect's variables, in work coordinates of the offsets active now,
-// with the tool offsets in them or not as the dialect says (skip_tool_offsets:
-// the tool reference point, Fanuc-class); without a signal the programmed end
-// point is stored. The next block starts where the axes came to rest
-// (#5001..), which differs from the latch by the stopping distance.
-Flow<void> Interpreter::Impl::finish_skip(const SyncState& s) {
-  PendingSkip& ps = pending_skip;
-  if (ps.g38 != 0) return finish_probe(s);  // probe_g38.cpp
+// What every skip and probe block stores of the machine's answer: the
+// latch (or without a signal the programmed end point) in machine and work
+// coordinates, the position the next block starts from, the report's
+// record. Returns the latch, machine coordinates.
+AxisVec Interpreter::Impl::record_skip(const SyncState& s) {
+  const PendingSkip& ps = pending_skip;
   const AxisVec latch = s.triggered ? s.latch_machine : ps.target;
   skip_machine = latch;
   for (int i = 0; i < axis_count; ++i) {
@@ -163,6 +160,19 @@ Flow<void> Interpreter::Impl::finish_skip(const SyncState& s) {
   // A miss stores the end point: reading it as a touch is worth a warning.
   skip_missed_unread = !s.triggered && ps.g37_axis < 0;
   skip_missed_line = rec.line;
+  return latch;
+}
+
+// The machine's answer to a skip block. The latched position is stored in
+// the dialect's variables, in work coordinates of the offsets active now,
+// with the tool offsets in them or not as the dialect says (skip_tool_offsets:
+// the tool reference point, Fanuc-class); without a signal the programmed end
+// point is stored. The next block starts where the axes came to rest
+// (#5001..), which differs from the latch by the stopping distance.
+Flow<void> Interpreter::Impl::finish_skip(const SyncState& s) {
+  PendingSkip& ps = pending_skip;
+  if (ps.g38 != 0) return finish_probe(s);  // probe_g38.cpp
+  const AxisVec latch = record_skip(s);
   const auto& sv = dialect.skip_vars;
   if (sv.success_flag > 0) vars.set(sv.success_flag, Value::of(s.triggered ? 1.0 : 0.0));
   if (!sv.named_machine.empty() || !sv.named_local.empty()) {

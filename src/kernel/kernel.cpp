@@ -245,40 +245,32 @@ void Kernel::begin_stop() noexcept {
 // level input already active then (Fanuc TSG = 0, NCT, Mitsubishi) ends the
 // block with no motion at all: the command goes back to the block's start
 // point before it reaches the servo, and that point and this period's time
-// are the latch.
+// are the latch. Under active_at_start_fails (G38) the block ends the same
+// way, not triggered, and the interpreter raises the alarm.
 void Kernel::start_skip_block(const TickInput& in) noexcept {
   skip_started_ = true;
   handshake_ = SkipHandshake{true, false, false, false};
   const canon::SkipSpec& spec = skip_.spec;
-  if (!spec.ignore_inputs && spec.active_at_start_fails) {
-    for (int i = 0; i < spec.input_count; ++i) {
-      if (!input_active(i, signals_.get(spec.inputs[i]))) continue;
-      const AxisVec start = interpolator_.segment_start();
-      interpolator_.set_position(start);
-      cmd_ = start;
-      skip_.active_at_start = true;
-      skip_.input_index = i;
-      skip_.time_s = cfg_.clock.seconds(tick_ - 1);
-      skip_.latch_machine = start;
-      skip_stopping_ = true;
-      return;
-    }
-  }
-  if (spec.ignore_inputs || spec.edge || !spec.active_at_start_ends) return;
+  const bool fails = spec.active_at_start_fails;  // G38: an error, not a trigger
+  if (spec.ignore_inputs || (!fails && (spec.edge || !spec.active_at_start_ends))) return;
   for (int i = 0; i < spec.input_count; ++i) {
     if (!input_active(i, signals_.get(spec.inputs[i]))) continue;
     const AxisVec start = interpolator_.segment_start();
     interpolator_.set_position(start);
     cmd_ = start;
-    skip_.triggered = true;
     skip_.input_index = i;
     skip_.time_s = cfg_.clock.seconds(tick_ - 1);  // the period this command starts
+    skip_.latch_machine = start;
+    skip_stopping_ = true;
+    if (fails) {
+      skip_.active_at_start = true;
+      return;
+    }
+    skip_.triggered = true;
     skip_.latch_actual = in.actual;
     skip_.latch_command = start;
-    skip_.latch_machine = start;
     handshake_.skip = true;
     handshake_.recorded = true;
-    skip_stopping_ = true;
     return;
   }
 }
