@@ -43,6 +43,10 @@ namespace sysvar {
 struct Range;
 }
 
+// True when `p` (after resolving links) lies inside folder `dir`
+// (macro_call.cpp): called programs stay inside the include folders.
+bool path_inside(const std::filesystem::path& p, const std::filesystem::path& dir);
+
 // A file of programs: the main program file or one found on the include path.
 struct ProgramFile {
   std::string path;
@@ -446,6 +450,7 @@ struct Interpreter::Impl {
   Flow<void> push_frame(Frame f, std::string call, SourceLoc where);
   std::vector<std::string> include_dirs() const;
   Result<ProgramFile*> program_file(const std::filesystem::path& p, bool& added);
+  Result<std::unique_ptr<gcode::Source>> scanner_for(const ProgramFile& pf) const;
   Flow<Step> return_from_sub(std::optional<std::int64_t> label, SourceLoc where);
   Flow<void> macro_call(std::int64_t program, int repeats, bool modal_call, SourceLoc where);
   Flow<void> collect_argument(const gcode::Word& w, const WordVal& v, int& ijk_set, int& ijk_last);

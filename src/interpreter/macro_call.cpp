@@ -25,10 +25,8 @@ namespace skipnc::interp {
 
 namespace fs = std::filesystem;
 
-namespace {
-
 // True when `p` (after resolving links) lies inside folder `dir`.
-bool inside(const fs::path& p, const fs::path& dir) {
+bool path_inside(const fs::path& p, const fs::path& dir) {
   std::error_code ec;
   const fs::path rp = fs::weakly_canonical(p, ec);
   if (ec) return false;
@@ -37,6 +35,8 @@ bool inside(const fs::path& p, const fs::path& dir) {
   auto r = std::mismatch(rd.begin(), rd.end(), rp.begin(), rp.end());
   return r.first == rd.end();
 }
+
+namespace {
 
 // The file names that hold program O<n> alone, in the order they are tried.
 std::vector<std::string> program_file_names(std::int64_t number) {
@@ -70,7 +70,7 @@ std::vector<fs::path> library_files(const fs::path& dir, const std::vector<std::
         std::ranges::any_of(kLibraryEndings, [&](std::string_view e) { return name.ends_with(e); });
     if (!library || std::ranges::find(skip, name) != skip.end()) continue;
     std::error_code fe;
-    if (!fs::is_regular_file(p, fe) || !inside(p, dir)) continue;
+    if (!fs::is_regular_file(p, fe) || !path_inside(p, dir)) continue;
     out.push_back(p);
   }
   std::ranges::sort(out);
@@ -90,14 +90,9 @@ Flow<void> Interpreter::Impl::find_program(std::int64_t number, ProgramFile*& fi
     if (pf.scanned) return false;
     // Scan the file once for program numbers with a source of its own, so
     // the running read position is not disturbed.
-    std::unique_ptr<gcode::Source> scanner;
-    if (pf.path.empty()) {
-      scanner = gcode::make_string_source(pf.display, setup.program_text, source_limits());
-    } else {
-      auto s = gcode::open_file_source(pf.path, pf.display, source_limits());
-      if (!s) return std::unexpected(s.error());
-      scanner = std::move(*s);
-    }
+    auto opened = scanner_for(pf);
+    if (!opened) return std::unexpected(opened.error());
+    const std::unique_ptr<gcode::Source> scanner = std::move(*opened);
     gcode::RawBlock rb;
     for (;;) {
       auto more = scanner->next(rb);
@@ -168,7 +163,7 @@ Flow<void> Interpreter::Impl::find_program(std::int64_t number, ProgramFile*& fi
     for (const auto& name : names) {
       const fs::path p = dir / name;
       if (!fs::is_regular_file(p, ec)) continue;
-      if (!inside(p, dir)) {
+      if (!path_inside(p, dir)) {
         return fail(AlarmId::kProgramNotFound,
                     "program O" + n + ": '" + p.string() + "' leads outside the include folder",
                     where);
@@ -262,6 +257,15 @@ Flow<void> Interpreter::Impl::push_frame(Frame f, std::string call, SourceLoc wh
   frames.push_back(std::move(f));
   const Frame& top = frames.back();
   return top.file->src->seek(top.start);
+}
+
+// A second reader of a program file, for a scan that must not move the
+// running read position.
+Result<std::unique_ptr<gcode::Source>> Interpreter::Impl::scanner_for(const ProgramFile& pf) const {
+  if (pf.path.empty()) {
+    return gcode::make_string_source(pf.display, setup.program_text, source_limits());
+  }
+  return gcode::open_file_source(pf.path, pf.display, source_limits());
 }
 
 // Where called programs are looked for: the -I folders, else the folder of

@@ -150,15 +150,9 @@ Flow<bool> Interpreter::Impl::find_sub(const std::string& label, ProgramFile*& f
                                        gcode::SourcePos& at, SourceLoc where) {
   auto scan = [&](ProgramFile& pf) -> Result<bool> {
     if (!pf.subs_scanned) {
-      std::unique_ptr<gcode::Source> scanner;
-      const gcode::SourceLimits lim = source_limits();
-      if (pf.path.empty()) {
-        scanner = gcode::make_string_source(pf.display, setup.program_text, lim);
-      } else {
-        auto s = gcode::open_file_source(pf.path, pf.display, lim);
-        if (!s) return std::unexpected(s.error());
-        scanner = std::move(*s);
-      }
+      auto opened = scanner_for(pf);
+      if (!opened) return std::unexpected(opened.error());
+      const std::unique_ptr<gcode::Source> scanner = std::move(*opened);
       gcode::RawBlock rb;
       gcode::Block b;
       for (;;) {
@@ -196,6 +190,10 @@ Flow<bool> Interpreter::Impl::find_sub(const std::string& label, ProgramFile*& f
     const fs::path p = fs::path(d) / (name + ".ngc");
     std::error_code ec;
     if (!fs::is_regular_file(p, ec)) continue;
+    if (!path_inside(p, fs::path(d))) {  // o</..>: as M98's files, inside the folder
+      return fail(AlarmId::kProgramNotFound,
+                  shown(label) + ": '" + p.string() + "' leads outside the include folder", where);
+    }
     bool added = false;
     auto have = program_file(p, added);
     if (!have) return std::unexpected(have.error());
