@@ -1,5 +1,5 @@
 // The Python module's native part (skipnc._skipnc): one run through the same
-// path as `skipnc sweep` (cli/scenario.hpp), the report as the CLI writes it,
+// path as `skipnc sweep` (run/scenario.hpp), the report as the CLI writes it,
 // the trace as columns; sweeps by scenario range. python/skipnc/__init__.py
 // is the interface users see.
 #include <pybind11/numpy.h>
@@ -11,11 +11,11 @@
 #include <string>
 #include <vector>
 
-#include "cli/scenario.hpp"
-#include "cli/session.hpp"
-#include "cli/sweep.hpp"
 #include "config/skip_inputs.hpp"
 #include "report/report.hpp"
+#include "run/scenario.hpp"
+#include "run/session.hpp"
+#include "run/sweep.hpp"
 
 namespace py = pybind11;
 using namespace skipnc;
@@ -30,7 +30,7 @@ class StartError : public std::runtime_error {
 };
 
 [[noreturn]] void raise(const Error& e, const config::Dialect* d) {
-  throw StartError(cli::describe(e, d));
+  throw StartError(run::describe(e, d));
 }
 
 // The trace as columns, named as the CSV trace's header.
@@ -80,35 +80,35 @@ class ColumnTrace final : public sim::TraceSink {
   std::size_t signals_ = 0;
 };
 
-// run(): the JSON report text and the trace columns (None without trace).
-py::tuple run(const std::string& program, const std::string& program_text,
-              const std::string& machine, const std::string& scene, const std::string& dialect,
-              const std::vector<std::string>& params,
-              const std::vector<std::pair<int, double>>& variables,
-              const std::vector<std::string>& include, const std::vector<std::string>& vars,
-              bool trace) {
-  cli::Session s;
-  if (auto o = cli::open_session(cli::SessionOptions{machine, dialect, scene, params}, s); !o) {
+// run_program() (_skipnc.run): the JSON report text and the trace columns (None without trace).
+py::tuple run_program(const std::string& program, const std::string& program_text,
+                      const std::string& machine, const std::string& scene,
+                      const std::string& dialect, const std::vector<std::string>& params,
+                      const std::vector<std::pair<int, double>>& variables,
+                      const std::vector<std::string>& include, const std::vector<std::string>& vars,
+                      bool trace) {
+  run::Session s;
+  if (auto o = run::open_session(run::SessionOptions{machine, dialect, scene, params}, s); !o) {
     raise(o.error(), s.dialect.name.empty() ? nullptr : &s.dialect);
   }
-  cli::RunRequest rq;
+  run::RunRequest rq;
   rq.program_path = program;
   rq.program_text = program_text;
   rq.program_name = program.empty() ? std::string("program") : program;
   rq.include_dirs = include;
   for (const auto& v : vars) {
-    auto r = cli::parse_var_ref(v);
+    auto r = run::parse_var_ref(v);
     if (!r) raise(r.error(), &s.dialect);
     rq.vars.push_back(*r);
   }
-  cli::Variation var;
+  run::Variation var;
   var.variables = variables;
   std::unique_ptr<ColumnTrace> columns;
   if (trace) columns = std::make_unique<ColumnTrace>(s.machine);
-  Result<cli::RunOutcome> res;
+  Result<run::RunOutcome> res;
   {
     py::gil_scoped_release unlocked;
-    res = cli::run_variation(s, rq, var, columns.get());
+    res = run::run_variation(s, rq, var, columns.get());
   }
   if (!res) raise(res.error(), &s.dialect);
   return py::make_tuple(res->report_json,
@@ -116,7 +116,7 @@ py::tuple run(const std::string& program, const std::string& program_text,
                         res->exit_code);
 }
 
-py::dict row_to_dict(const cli::ScenarioRow& r) {
+py::dict row_to_dict(const run::ScenarioRow& r) {
   py::dict d;
   d["scenario"] = r.index;
   d["probe_seed"] = r.probe_seed;
@@ -131,8 +131,8 @@ py::dict row_to_dict(const cli::ScenarioRow& r) {
   return d;
 }
 
-cli::ScenarioRow row_from_dict(const py::dict& d) {
-  cli::ScenarioRow r;
+run::ScenarioRow row_from_dict(const py::dict& d) {
+  run::ScenarioRow r;
   r.index = d["scenario"].cast<std::int64_t>();
   r.probe_seed = d["probe_seed"].cast<std::uint64_t>();
   r.status = d["status"].cast<std::string>();
@@ -146,8 +146,8 @@ cli::ScenarioRow row_from_dict(const py::dict& d) {
   return r;
 }
 
-std::vector<cli::ScenarioRow> rows_from(const py::list& rows, const cli::SweepPlan& plan) {
-  std::vector<cli::ScenarioRow> out;
+std::vector<run::ScenarioRow> rows_from(const py::list& rows, const run::SweepPlan& plan) {
+  std::vector<run::ScenarioRow> out;
   for (const auto& item : rows) {
     out.push_back(row_from_dict(item.cast<py::dict>()));
     const auto& r = out.back();
@@ -164,10 +164,10 @@ class Sweep {
  public:
   Sweep(const std::string& spec, std::optional<std::int64_t> scenarios,
         std::optional<std::uint64_t> seed) {
-    cli::SweepOverrides o;
+    run::SweepOverrides o;
     o.scenarios = scenarios;
     o.seed = seed;
-    if (auto r = cli::load_sweep(spec, o, plan_); !r) {
+    if (auto r = run::load_sweep(spec, o, plan_); !r) {
       raise(r.error(), plan_.session.dialect.name.empty() ? nullptr : &plan_.session.dialect);
     }
   }
@@ -178,23 +178,23 @@ class Sweep {
     if (begin < 0 || end > plan_.scenarios || begin > end) {
       throw std::out_of_range("scenarios are 0.." + std::to_string(plan_.scenarios));
     }
-    std::vector<cli::ScenarioRow> rows;
+    std::vector<run::ScenarioRow> rows;
     {
       py::gil_scoped_release unlocked;
-      rows = cli::run_scenarios(plan_, begin, end, workers);
+      rows = run::run_scenarios(plan_, begin, end, workers);
     }
     py::list out;
     for (const auto& r : rows) out.append(row_to_dict(r));
     return out;
   }
   std::string csv(const py::list& rows) const {
-    return cli::sweep_csv(plan_, rows_from(rows, plan_));
+    return run::sweep_csv(plan_, rows_from(rows, plan_));
   }
   std::string json(const py::list& rows) const {
-    return cli::sweep_json(plan_, rows_from(rows, plan_));
+    return run::sweep_json(plan_, rows_from(rows, plan_));
   }
   std::string summary(const py::list& rows) const {
-    return cli::sweep_summary_text(plan_, rows_from(rows, plan_));
+    return run::sweep_summary_text(plan_, rows_from(rows, plan_));
   }
   std::vector<std::string> vary() const {
     std::vector<std::string> out;
@@ -213,7 +213,7 @@ class Sweep {
   }
 
  private:
-  cli::SweepPlan plan_;
+  run::SweepPlan plan_;
 };
 
 }  // namespace
@@ -221,7 +221,7 @@ class Sweep {
 PYBIND11_MODULE(_skipnc, m) {
   m.doc() = "skipnc native module (use the skipnc package)";
   py::register_exception<StartError>(m, "StartError", PyExc_ValueError);
-  m.def("run", &run, py::arg("program"), py::arg("program_text"), py::arg("machine"),
+  m.def("run", &run_program, py::arg("program"), py::arg("program_text"), py::arg("machine"),
         py::arg("scene"), py::arg("dialect"), py::arg("params"), py::arg("variables"),
         py::arg("include"), py::arg("vars"), py::arg("trace"));
   py::class_<Sweep>(m, "Sweep")

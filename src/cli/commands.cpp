@@ -13,10 +13,10 @@
 #include "cli/expect.hpp"
 #include "cli/outputs.hpp"
 #include "cli/plot.hpp"
-#include "cli/session.hpp"
 #include "config/skip_inputs.hpp"
 #include "core/embedded.hpp"
 #include "report/report.hpp"
+#include "run/session.hpp"
 #include "sim/simulator.hpp"
 
 namespace skipnc::cli {
@@ -55,7 +55,7 @@ void print_warnings(std::FILE* f, const sim::RunResult& r) {
   }
 }
 
-void print_summary(std::FILE* f, const sim::RunResult& r, const Session& s,
+void print_summary(std::FILE* f, const sim::RunResult& r, const run::Session& s,
                    const std::string& program) {
   const auto& m = s.machine;
   fmt::print(f, "{} on {} ({}): ", program, m.name, s.dialect.name);
@@ -73,7 +73,7 @@ void print_summary(std::FILE* f, const sim::RunResult& r, const Session& s,
   fmt::print(f, " after {:.3f} s of machine time\n", r.time_s);
   print_warnings(f, r);  // before the alarm: one of them may be why it came
   if (r.alarm) {
-    fmt::print(f, "  {}\n", describe(*r.alarm, &s.dialect));
+    fmt::print(f, "  {}\n", run::describe(*r.alarm, &s.dialect));
     if (r.alarm_context != 0 && !r.contexts.empty())
       fmt::print(f, "  at {}\n", report::where(r.contexts, r.alarm_context, r.alarm->loc.line));
   }
@@ -112,20 +112,20 @@ struct Outcome {
 };
 
 // Runs a loaded session; writes report and trace. Returns the exit code.
-int execute(const RunArgs& a, Session& s, interp::Setup setup, bool explain) {
-  std::vector<VarRef> vars;
+int execute(const RunArgs& a, run::Session& s, interp::Setup setup, bool explain) {
+  std::vector<run::VarRef> vars;
   for (const auto& v : a.vars) {
-    auto r = parse_var_ref(v);
+    auto r = run::parse_var_ref(v);
     if (!r) return start_failure(a, r.error(), &s);
     vars.push_back(*r);
   }
   std::vector<Expectation> expects;
-  std::vector<VarRef> expect_vars;
+  std::vector<run::VarRef> expect_vars;
   for (const auto& text : a.expect) {
     auto e = parse_expectation(text);
     if (!e) return start_failure(a, e.error(), &s);
     if (e->kind == Expectation::Kind::kVariable) {
-      auto r = parse_var_ref("#" + e->var);
+      auto r = run::parse_var_ref("#" + e->var);
       if (!r) return start_failure(a, r.error(), &s);
       expect_vars.push_back(*r);
     }
@@ -220,7 +220,8 @@ int execute(const RunArgs& a, Session& s, interp::Setup setup, bool explain) {
   if (!write_report(a, report::to_json(in))) rc = rc == 0 ? 1 : rc;
   if (explain) return rc;
   std::FILE* out = is_stdout(a.report) || is_stdout(a.trace) ? stderr : stdout;
-  if (in.result.alarm) std::cerr << "skipnc: " << describe(*in.result.alarm, &s.dialect) << "\n";
+  if (in.result.alarm)
+    std::cerr << "skipnc: " << run::describe(*in.result.alarm, &s.dialect) << "\n";
   in.result.variables = in.variables;  // the summary prints them too
   if (!a.quiet) print_summary(out, in.result, s, a.program);
   for (const auto& why : failed) std::cerr << "skipnc: " << why << "\n";
@@ -230,7 +231,7 @@ int execute(const RunArgs& a, Session& s, interp::Setup setup, bool explain) {
   return rc;
 }
 
-interp::Setup make_setup(const RunArgs& a, Session& s) {
+interp::Setup make_setup(const RunArgs& a, run::Session& s) {
   interp::Setup setup;
   setup.machine = &s.machine;
   setup.dialect = &s.dialect;
@@ -294,15 +295,15 @@ class PrintSink final : public canon::CommandSink {
 }  // namespace
 
 int run_command(const RunArgs& a) {
-  Session s;
-  auto o = open_session(SessionOptions{a.machine, a.dialect, a.scene, a.params}, s);
+  run::Session s;
+  auto o = run::open_session(run::SessionOptions{a.machine, a.dialect, a.scene, a.params}, s);
   if (!o) return start_failure(a, o.error(), &s);
   return execute(a, s, make_setup(a, s), false);
 }
 
 int canon_command(const RunArgs& a) {
-  Session s;
-  auto o = open_session(SessionOptions{a.machine, a.dialect, "", a.params}, s);
+  run::Session s;
+  auto o = run::open_session(run::SessionOptions{a.machine, a.dialect, "", a.params}, s);
   if (!o) return start_failure(a, o.error(), &s);
   auto in = interp::Interpreter::create(make_setup(a, s), AxisVec{});
   if (!in) return start_failure(a, in.error(), &s);
@@ -321,13 +322,13 @@ int canon_command(const RunArgs& a) {
                       SourceLoc{a.program, (*in)->line(), 1}, -1}
               : Error{AlarmId::kInterrupted, "stopped by a signal",
                       SourceLoc{a.program, (*in)->line(), 1}, -1};
-      std::cerr << "skipnc: " << describe(e, &s.dialect) << "\n";
+      std::cerr << "skipnc: " << run::describe(e, &s.dialect) << "\n";
       return 1;
     }
     auto st = (*in)->step(sink);
     if (!st) {
       sink.flush();
-      std::cerr << "skipnc: " << describe(st.error(), &s.dialect) << "\n";
+      std::cerr << "skipnc: " << run::describe(st.error(), &s.dialect) << "\n";
       return 1;
     }
     if (*st == interp::Step::kEnd) break;
@@ -342,7 +343,7 @@ int canon_command(const RunArgs& a) {
       if (!r && r.error().id != AlarmId::kSkipMiss && r.error().id != AlarmId::kProbeNoContact &&
           r.error().id != AlarmId::kProbeNoBreak) {
         sink.flush();
-        std::cerr << "skipnc: " << describe(r.error(), &s.dialect) << "\n";
+        std::cerr << "skipnc: " << run::describe(r.error(), &s.dialect) << "\n";
         return 1;
       }
     }
@@ -509,8 +510,8 @@ int demo_command(const RunArgs& args) {
   RunArgs a = args;
   a.program = "probe_demo.nc";
   a.quiet = true;
-  Session s;
-  auto o = open_session(SessionOptions{"mill3", "", "", {}}, s);
+  run::Session s;
+  auto o = run::open_session(run::SessionOptions{"mill3", "", "", {}}, s);
   if (!o) return start_failure(a, o.error(), &s);
   const EmbeddedFile* prog = embedded_entry("demo/probe_demo.nc");
   const EmbeddedFile* scene = embedded_entry("demo/probe_demo.toml");
@@ -586,7 +587,7 @@ int demo_command(const RunArgs& args) {
   fmt::print("\n{} after {:.3f} s of machine time; final position {}\n",
              r.status == sim::RunStatus::kCompleted ? "Completed" : "Stopped by an alarm", r.time_s,
              fmt_axes(r.final_work, s.machine));
-  if (r.alarm) std::cout << "  " << describe(*r.alarm, &s.dialect) << "\n";
+  if (r.alarm) std::cout << "  " << run::describe(*r.alarm, &s.dialect) << "\n";
   if (!a.report.empty()) {
     report::ReportInput in;
     in.program = a.program;

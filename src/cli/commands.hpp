@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -33,5 +34,17 @@ int dialects_command();
 // `skipnc plot`: a run whose pictures go to the -o files (default
 // <program>.html and <program>.svg in the current folder).
 int plot_command(RunArgs a);
+
+// `skipnc sweep SPEC`: the scenarios of run/sweep.hpp, a table and a summary.
+struct SweepArgs {
+  std::string spec;
+  std::string csv;   // default: <spec stem>.sweep.csv here
+  std::string json;  // default: <spec stem>.sweep.json here
+  int workers = -1;  // -1: the spec's
+  std::int64_t scenarios = -1;
+  long long seed = -1;
+  bool quiet = false;
+};
+int sweep_command(const SweepArgs& a);
 
 }  // namespace skipnc::cli

@@ -11,7 +11,7 @@
 #include "cli/plot.hpp"
 #include "cli/repeat.hpp"
 #include "cli/show.hpp"
-#include "cli/sweep.hpp"
+#include "run/sweep.hpp"
 
 namespace {
 

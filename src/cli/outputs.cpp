@@ -38,7 +38,7 @@ std::string signal_name(int sig) {
 
 }  // namespace
 
-const config::Dialect* report_dialect(const RunArgs& a, const Session* s) {
+const config::Dialect* report_dialect(const RunArgs& a, const run::Session* s) {
   if (s != nullptr && !s->dialect.name.empty()) return &s->dialect;
   static const std::optional<config::Dialect> fallback = [&]() -> std::optional<config::Dialect> {
     if (!a.dialect.empty()) {
@@ -65,9 +65,9 @@ bool write_report(const RunArgs& a, const std::string& json) {
   return true;
 }
 
-int start_failure(const RunArgs& a, const Error& e, const Session* s) {
+int start_failure(const RunArgs& a, const Error& e, const run::Session* s) {
   const config::Dialect* d = report_dialect(a, s);
-  std::cerr << "skipnc: " << describe(e, d) << "\n";
+  std::cerr << "skipnc: " << run::describe(e, d) << "\n";
   if (!a.report.empty() && !g_report_is_input.load()) {
     report::ReportInput in;
     in.program = a.program;
@@ -99,7 +99,7 @@ int internal_failure(const RunArgs* a, std::string_view what) noexcept {
   return 1;
 }
 
-Result<void> check_outputs(const RunArgs& a, const Session& s) {
+Result<void> check_outputs(const RunArgs& a, const run::Session& s) {
   std::vector<Named> outputs;
   std::vector<Named> inputs;
   auto add = [](std::vector<Named>& list, std::string what,

@@ -9,16 +9,16 @@
 
 #include "cli/commands.hpp"
 #include "cli/guard.hpp"
-#include "cli/session.hpp"
-#include "sim/simulator.hpp"
 #include "report/report.hpp"
+#include "run/session.hpp"
+#include "sim/simulator.hpp"
 
 namespace skipnc::cli {
 
 // The dialect whose numbers a report uses: the session's; before the session
 // has one (a bad machine file), the -d dialect, else fanuc. Every dialect
 // numbers skipnc's own alarms alike (config: 9090, SN9090; base.toml).
-const config::Dialect* report_dialect(const RunArgs& a, const Session* s);
+const config::Dialect* report_dialect(const RunArgs& a, const run::Session* s);
 
 // Writes the report (`a.report`; nothing when none was asked for). Errors go
 // to standard error and make the returned value false.
@@ -28,7 +28,7 @@ bool report_written() noexcept;
 
 // The run could not start: the message on standard error, the report (when
 // asked for and not itself the cause), exit status 2.
-int start_failure(const RunArgs& a, const Error& e, const Session* s);
+int start_failure(const RunArgs& a, const Error& e, const run::Session* s);
 
 // The last resort of main(): an exception reached the top. The report (when
 // asked for and not written yet) has the internal-error alarm (SN9000); exit 1.
@@ -38,14 +38,13 @@ int internal_failure(const RunArgs* a, std::string_view what) noexcept;
 // file, persistent variables) that are one file, or an output that is one of
 // the inputs (program, machine file, scene file): kUsage naming both. A
 // refused report is not written at all when it is an input.
-[[nodiscard]] Result<void> check_outputs(const RunArgs& a, const Session& s);
+[[nodiscard]] Result<void> check_outputs(const RunArgs& a, const run::Session& s);
 
 // A run that the simulator ended as interrupted because skipnc asked it to
 // (run_stop()): the alarm that says why. The processor-time limit is
 // cpu_limit, an output that failed is its own error (file_access,
 // trace_limit), a signal stays `interrupted` and names the signal.
-void explain_stop(sim::RunResult& r, const report::CsvTrace* trace,
-                  const config::MachineConfig& m);
+void explain_stop(sim::RunResult& r, const report::CsvTrace* trace, const config::MachineConfig& m);
 
 // Flushes standard output; an error when anything written to it was lost
 // (a full disk, a closed pipe).

@@ -40,7 +40,7 @@ PlotCapture::PlotCapture(const config::MachineConfig& m, sim::RunOptions& opts)
   opts.commands = &rec_;
 }
 
-Result<void> PlotCapture::write(const std::vector<std::string>& files, const Session& s,
+Result<void> PlotCapture::write(const std::vector<std::string>& files, const run::Session& s,
                                 const sim::RunResult& r, const Output& out) {
   rec_.finish();
   plot::PlotInput in;
@@ -71,6 +71,5 @@ std::string read_program_text(const std::string& path) {
   ss << in.rdbuf();
   return ss.str();
 }
-
 
 }  // namespace skipnc::cli

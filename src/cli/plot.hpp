@@ -9,9 +9,9 @@
 #include <utility>
 #include <vector>
 
-#include "cli/session.hpp"
-#include "sim/simulator.hpp"
 #include "plot/recorder.hpp"
+#include "run/session.hpp"
+#include "sim/simulator.hpp"
 
 namespace skipnc::cli {
 
@@ -31,7 +31,7 @@ class PlotCapture {
     std::string_view source;  // program text for the page ("" when unknown)
     std::vector<std::pair<std::string, std::optional<double>>> variables;
   };
-  [[nodiscard]] Result<void> write(const std::vector<std::string>& files, const Session& s,
+  [[nodiscard]] Result<void> write(const std::vector<std::string>& files, const run::Session& s,
                                    const sim::RunResult& r, const Output& out);
 
  private:

@@ -14,11 +14,11 @@
 
 #include "cli/guard.hpp"
 #include "cli/outputs.hpp"
-#include "cli/session.hpp"
 #include "core/utf8.hpp"
 #include "interpreter/variables.hpp"
-#include "sim/simulator.hpp"
 #include "report/report.hpp"
+#include "run/session.hpp"
+#include "sim/simulator.hpp"
 
 namespace skipnc::cli {
 namespace {
@@ -101,14 +101,14 @@ std::optional<double> read(const interp::Interpreter& in, int number) {
 }  // namespace
 
 int repeat_command(const RunArgs& a) {
-  Session s;
-  auto o = open_session(SessionOptions{a.machine, a.dialect, a.scene, a.params}, s);
+  run::Session s;
+  auto o = run::open_session(run::SessionOptions{a.machine, a.dialect, a.scene, a.params}, s);
   // A run that cannot start writes the report with its alarm too (was:
   // none), as `run` without --repeat does.
   if (!o) return start_failure(a, o.error(), &s);
-  std::vector<VarRef> vars;
+  std::vector<run::VarRef> vars;
   for (const auto& v : a.vars) {
-    auto r = parse_var_ref(v);
+    auto r = run::parse_var_ref(v);
     if (!r) return start_failure(a, r.error(), &s);
     vars.push_back(*r);
   }
@@ -200,7 +200,7 @@ int repeat_command(const RunArgs& a) {
     if (res->status != sim::RunStatus::kCompleted) {
       if (!nominal) ++alarms;
       if (first_alarm.empty() && res->alarm) {
-        first_alarm = fmt::format("run {}: {}", run, describe(*res->alarm, &s.dialect));
+        first_alarm = fmt::format("run {}: {}", run, run::describe(*res->alarm, &s.dialect));
       }
     }
     const interp::Interpreter& in = *sim.interpreter();

@@ -1,4 +1,4 @@
-// skipnc sweep SPEC.toml (cli/sweep.hpp).
+// skipnc sweep SPEC.toml (run/sweep.hpp).
 #include <fmt/format.h>
 
 #include <atomic>
@@ -6,7 +6,8 @@
 #include <filesystem>
 #include <iostream>
 
-#include "cli/sweep.hpp"
+#include "cli/commands.hpp"
+#include "run/sweep.hpp"
 
 namespace skipnc::cli {
 namespace {
@@ -19,12 +20,12 @@ extern "C" void on_sweep_signal(int) {
 }  // namespace
 
 int sweep_command(const SweepArgs& a) {
-  SweepPlan plan;
-  SweepOverrides o;
+  run::SweepPlan plan;
+  run::SweepOverrides o;
   if (a.scenarios > 0) o.scenarios = a.scenarios;
   if (a.seed >= 0) o.seed = static_cast<std::uint64_t>(a.seed);
-  if (auto r = load_sweep(a.spec, o, plan); !r) {
-    std::cerr << "skipnc: " << describe(r.error(), &plan.session.dialect) << "\n";
+  if (auto r = run::load_sweep(a.spec, o, plan); !r) {
+    std::cerr << "skipnc: " << run::describe(r.error(), &plan.session.dialect) << "\n";
     return 2;
   }
   // touch.sweep.toml -> touch.sweep.csv; touch.toml -> touch.sweep.csv
@@ -35,10 +36,10 @@ int sweep_command(const SweepArgs& a) {
   std::signal(SIGINT, on_sweep_signal);
   std::signal(SIGTERM, on_sweep_signal);
   const int workers = a.workers >= 0 ? a.workers : plan.workers;
-  const auto rows = run_scenarios(plan, 0, plan.scenarios, workers, &g_sweep_interrupt);
+  const auto rows = run::run_scenarios(plan, 0, plan.scenarios, workers, &g_sweep_interrupt);
   int rc = 0;
   for (const auto& [path, text] :
-       {std::pair{csv, sweep_csv(plan, rows)}, std::pair{json, sweep_json(plan, rows)}}) {
+       {std::pair{csv, run::sweep_csv(plan, rows)}, std::pair{json, run::sweep_json(plan, rows)}}) {
     if (auto w = report::write_atomic(path, text); !w) {
       std::cerr << "skipnc: " << w.error().detail << "\n";
       rc = 1;
@@ -46,7 +47,7 @@ int sweep_command(const SweepArgs& a) {
   }
   if (!a.quiet) {
     std::FILE* f = csv == "-" || json == "-" ? stderr : stdout;
-    fmt::print(f, "{}", sweep_summary_text(plan, rows));
+    fmt::print(f, "{}", run::sweep_summary_text(plan, rows));
     fmt::print(f, "  table: {} and {}\n", csv, json);
   }
   for (const auto& r : rows) {

@@ -1,7 +1,7 @@
-// skipnc sweep (cli/sweep.hpp): every row checked against the hand rule of
+// skipnc sweep (run/sweep.hpp): every row checked against the hand rule of
 // the exact latch, determinism whatever the number of workers, the CLI's
 // files and exit status, spec errors with file, line and column.
-#include "cli/sweep.hpp"
+#include "run/sweep.hpp"
 
 #include <gtest/gtest.h>
 
@@ -12,7 +12,7 @@
 
 #include "support/run_cli.hpp"
 
-namespace skipnc::cli {
+namespace skipnc::run {
 namespace {
 
 const std::string kDir = std::string(SKIPNC_SOURCE_DIR) + "/tests/sweep/";
@@ -171,4 +171,4 @@ TEST(SweepCli, ABadSpecNamesFileLineAndColumnAndExitsTwo) {
 }
 
 }  // namespace
-}  // namespace skipnc::cli
+}  // namespace skipnc::run

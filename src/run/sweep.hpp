@@ -15,10 +15,10 @@
 #include <string>
 #include <vector>
 
-#include "cli/scenario.hpp"
-#include "cli/session.hpp"
+#include "run/scenario.hpp"
+#include "run/session.hpp"
 
-namespace skipnc::cli {
+namespace skipnc::run {
 
 // What one [[vary]] changes, and how its value is drawn.
 struct VaryRule {
@@ -103,15 +103,4 @@ std::string sweep_csv(const SweepPlan& plan, const std::vector<ScenarioRow>& row
 std::string sweep_json(const SweepPlan& plan, const std::vector<ScenarioRow>& rows);
 std::string sweep_summary_text(const SweepPlan& plan, const std::vector<ScenarioRow>& rows);
 
-struct SweepArgs {
-  std::string spec;
-  std::string csv;   // default: <spec stem>.sweep.csv here
-  std::string json;  // default: <spec stem>.sweep.json here
-  int workers = -1;  // -1: the spec's
-  std::int64_t scenarios = -1;
-  long long seed = -1;
-  bool quiet = false;
-};
-int sweep_command(const SweepArgs& a);
-
-}  // namespace skipnc::cli
+}  // namespace skipnc::run

@@ -1,4 +1,4 @@
-#include "cli/sweep.hpp"
+#include "run/sweep.hpp"
 
 #include <fmt/format.h>
 #include <toml++/toml.h>
@@ -15,7 +15,7 @@
 
 #include "interpreter/variables.hpp"
 
-namespace skipnc::cli {
+namespace skipnc::run {
 namespace {
 
 namespace fs = std::filesystem;
@@ -668,4 +668,4 @@ std::string sweep_summary_text(const SweepPlan& plan, const std::vector<Scenario
   return out;
 }
 
-}  // namespace skipnc::cli
+}  // namespace skipnc::run

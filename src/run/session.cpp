@@ -1,4 +1,4 @@
-#include "cli/session.hpp"
+#include "run/session.hpp"
 
 #include <charconv>
 #include <filesystem>
@@ -6,7 +6,7 @@
 #include "config/skip_inputs.hpp"
 #include "report/report.hpp"
 
-namespace skipnc::cli {
+namespace skipnc::run {
 
 Result<void> open_session(const SessionOptions& o, Session& s) {
   std::error_code ec;
@@ -83,4 +83,4 @@ std::string describe(const Error& e, const config::Dialect* d) {
   return out;
 }
 
-}  // namespace skipnc::cli
+}  // namespace skipnc::run

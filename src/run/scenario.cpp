@@ -1,4 +1,4 @@
-#include "cli/scenario.hpp"
+#include "run/scenario.hpp"
 
 #include <array>
 #include <cstdio>
@@ -7,7 +7,7 @@
 #include "config/skip_inputs.hpp"
 #include "interpreter/variables.hpp"
 
-namespace skipnc::cli {
+namespace skipnc::run {
 namespace {
 
 // The scene with the parts, triggers and stops moved and the probe's scatter
@@ -169,4 +169,4 @@ Result<std::vector<std::pair<int, double>>> load_variable_file(const std::string
   return out;
 }
 
-}  // namespace skipnc::cli
+}  // namespace skipnc::run

@@ -11,7 +11,7 @@
 #include "config/machine_config.hpp"
 #include "machine/scene.hpp"
 
-namespace skipnc::cli {
+namespace skipnc::run {
 
 struct SessionOptions {
   std::string machine = "mill3";  // file or built-in name
@@ -47,4 +47,4 @@ struct VarRef {
 // "file:line:column: CODE message" for standard error.
 std::string describe(const Error& e, const config::Dialect* d);
 
-}  // namespace skipnc::cli
+}  // namespace skipnc::run

@@ -1,6 +1,6 @@
 // One run of a loaded session with changes of its own: parameters, macro
 // variables, work and tool offsets, the parts moved, the probe's scatter
-// seed. Shared by `skipnc sweep` (cli/sweep.hpp) and the Python module
+// seed. Shared by `skipnc sweep` (run/sweep.hpp) and the Python module
 // (python/): the session is read only, so runs in several threads may share
 // one (each run copies what it changes; nothing is written to files).
 #pragma once
@@ -11,11 +11,11 @@
 #include <utility>
 #include <vector>
 
-#include "cli/session.hpp"
-#include "sim/simulator.hpp"
 #include "report/report.hpp"
+#include "run/session.hpp"
+#include "sim/simulator.hpp"
 
-namespace skipnc::cli {
+namespace skipnc::run {
 
 // A tool offset a run sets: offset number and which value.
 enum class ToolValue : std::uint8_t { kLengthGeometry, kLengthWear, kRadiusGeometry, kRadiusWear };
@@ -67,8 +67,7 @@ struct RunOutcome {
 // an unreadable program): exit status 2 for the CLI. Never writes files
 // (no persistent variables, no DPRNT file).
 [[nodiscard]] Result<RunOutcome> run_variation(const Session& s, const RunRequest& rq,
-                                               const Variation& v,
-                                               sim::TraceSink* trace = nullptr,
+                                               const Variation& v, sim::TraceSink* trace = nullptr,
                                                const std::atomic<bool>* interrupt = nullptr);
 
 // Reads a variable file: one "#<n> = <value>" per line, ';' comments (the
@@ -76,4 +75,4 @@ struct RunOutcome {
 [[nodiscard]] Result<std::vector<std::pair<int, double>>> load_variable_file(
     const std::string& path);
 
-}  // namespace skipnc::cli
+}  // namespace skipnc::run
