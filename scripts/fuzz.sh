@@ -7,7 +7,8 @@
 #   HARNESS   parser expr interp machine scene (default: all)
 # Environment:
 #   SKIPNC_FUZZ_JOBS  harnesses run at once (default: the number of cores)
-#   SKIPNC_FUZZ_DIR   build folder (default build-fuzz)
+#   SKIPNC_FUZZ_DIR   build folder (default build-fuzz; scripts/test.sh gives
+#                     build-check, whose objects it shares with the sanitizer tests)
 #
 # New inputs that reach new code go to build-fuzz/corpus/<harness>/ (not kept
 # in the source tree). A crash, hang (timeout-*), leak or broken check ends
@@ -31,9 +32,14 @@ fi
 
 # Debug keeps assertions on; -O1 keeps the sanitized harnesses quick to build and run.
 start=$(date +%s)
-cmake -S . -B "$dir" -G Ninja -DCMAKE_CXX_COMPILER="$cxx" -DCMAKE_BUILD_TYPE=Debug \
-  -DCMAKE_CXX_FLAGS_DEBUG="-O1" -DSKIPNC_FUZZ=ON -DSKIPNC_TESTS=OFF -DSKIPNC_BENCH=OFF \
-  >/dev/null
+# A tree already configured with the harnesses (the check build,
+# scripts/build.sh check) is used as it is: its objects serve the tests and
+# the harnesses alike. Otherwise a tree of the harnesses alone.
+if ! grep -q '^SKIPNC_FUZZ:BOOL=ON' "$dir/CMakeCache.txt" 2>/dev/null; then
+  cmake -S . -B "$dir" -G Ninja -DCMAKE_CXX_COMPILER="$cxx" -DCMAKE_BUILD_TYPE=Debug \
+    -DCMAKE_CXX_FLAGS_DEBUG="-O1 -gline-tables-only" -DSKIPNC_FUZZ=ON -DSKIPNC_TESTS=OFF \
+    -DSKIPNC_BENCH=OFF >/dev/null
+fi
 targets=()
 for h in "${harnesses[@]}"; do targets+=("fuzz_$h"); done
 cmake --build "$dir" -j"$(nproc)" --target "${targets[@]}"

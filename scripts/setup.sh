@@ -3,11 +3,13 @@
 # Usage: scripts/setup.sh [demo|all]
 #   demo  only what building the skipnc binary needs (scripts/demo.sh)
 #   all   (default) also the tests, the Python module, the benchmarks, the
-#         plot page test (Chromium) and the fuzz stage (clang 16)
+#         plot page test (Chromium), the check build and fuzz stage (clang 16)
+#         and the formatting check (clang-format)
 # Idempotent: packages already present are left alone.
 set -euo pipefail
 what=${1:-all}
-build=(cmake ninja-build g++ libfmt-dev libcli11-dev libtomlplusplus-dev nlohmann-json3-dev)
+# ccache: a second build (another clone, a clean tree) takes its objects from the cache.
+build=(cmake ninja-build g++ ccache libfmt-dev libcli11-dev libtomlplusplus-dev nlohmann-json3-dev)
 case $what in
   demo) pkgs=("${build[@]}") ;;
   all)
@@ -16,10 +18,13 @@ case $what in
           # the Python module (python/) and its tests, the example, Dask sweeps
           python3-dev pybind11-dev python3-numpy python3-pytest python3-matplotlib
           python3-distributed
+          # pip install . (the Python package, offline, setuptools driving CMake)
+          python3-venv python3-pip python3-setuptools
           # the plot page test (tests/browser/plot_page_test.py): headless Chromium
           chromium
-          # the fuzz stage (scripts/fuzz.sh): libFuzzer, ASan and UBSan of clang 16
-          clang-16 libclang-rt-16-dev) ;;
+          # the check build (scripts/build.sh check): clang 16 with its ASan, UBSan,
+          # TSan and libFuzzer runtimes; the formatting check
+          clang-16 libclang-rt-16-dev clang-format) ;;
   *) echo "setup.sh: unknown set '$what' (demo, all)" >&2; exit 2 ;;
 esac
 missing=()

@@ -1,37 +1,72 @@
 #!/usr/bin/env bash
-# Quick start 2: set up, build, and run every test: once in the release build,
-# once under AddressSanitizer + UndefinedBehaviorSanitizer; and build skipnc as a
-# user would (plain Release, warnings not errors) and install it.
-# SKIPNC_SKIP_ASAN=1 leaves out the sanitizer pass (faster local runs);
-# SKIPNC_SKIP_TSAN=1 the ThreadSanitizer run of the thread tests.
-# The fuzz stage (scripts/fuzz.sh: every libFuzzer harness for a bounded
-# time under ASan + UBSan) runs in CI (CI=true) or when SKIPNC_FUZZ=1;
-# SKIPNC_FUZZ_SECONDS sets the time of each harness (default 40: with two
-# harnesses at a time on two cores the stage, build included, stays within
-# about four minutes).
+# Quick start 2: set up, build, and run every test. The sources are compiled
+# twice, once for each kind of check (docs/testing.md):
+#   release  build/ (GCC, Release): every test, Python's included; then the
+#            user's install is made from this tree and run
+#   check    build-check/ (clang 16, -O1): every test again under
+#            AddressSanitizer + UndefinedBehaviorSanitizer; the libFuzzer
+#            harnesses come from the same compile (fuzz stage)
+# and the thread tests a third time under ThreadSanitizer (only what they
+# link). Then the formatting check. The time of each stage is printed at the end.
+#
+# SKIPNC_SKIP_CHECK=1 leaves out the sanitizer tests and the fuzz stage,
+# SKIPNC_SKIP_TSAN=1 the ThreadSanitizer run (faster local runs).
+# The fuzz stage (scripts/fuzz.sh: each harness for a bounded time) runs in
+# CI (CI=true) or when SKIPNC_FUZZ=1; SKIPNC_FUZZ_SECONDS sets the time of
+# each harness (default 25).
 set -euo pipefail
 cd "$(dirname "$0")/.."
+jobs=$(nproc)
+stages=()
+stage_start=0
+begin() { echo "== $1"; stage_name=$1; stage_start=$(date +%s); }
+end() { stages+=("$(printf '%-44s %4d s' "$stage_name" $(( $(date +%s) - stage_start )))"); }
+report_times() {
+  echo
+  echo "== stage times"
+  printf '%s\n' "${stages[@]}"
+}
+trap report_times EXIT
+
+begin "setup (Debian packages)"
 scripts/setup.sh
-echo "== release build"
+end
+
+begin "release build (build/)"
 scripts/build.sh release
-(cd build && ctest --output-on-failure -j"$(nproc)")
-echo "== a user's plain Release build (no -DSKIPNC_WERROR: warnings stay warnings), then install"
-cmake -S . -B build-user -DCMAKE_BUILD_TYPE=Release -DSKIPNC_TESTS=OFF -DSKIPNC_PYTHON=OFF >/dev/null
-cmake --build build-user -j"$(nproc)" --target skipnc
-cmake --install build-user --prefix build-user/installed >/dev/null
-build-user/installed/bin/skipnc dialects >/dev/null
-if [ "${SKIPNC_SKIP_ASAN:-0}" != 1 ]; then
-  echo "== ASan + UBSan build"
-  scripts/build.sh asan
-  (cd build-asan && ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
-     ctest --output-on-failure -j"$(nproc)")
+end
+begin "release tests"
+(cd build && ctest --output-on-failure -j"$jobs")
+end
+
+begin "install from the release tree, run it"
+rm -rf build/installed
+cmake --install build --prefix build/installed >/dev/null
+build/installed/bin/skipnc dialects >/dev/null
+end
+
+if [ "${SKIPNC_SKIP_CHECK:-0}" != 1 ]; then
+  begin "check build (build-check/: ASan + UBSan, fuzz)"
+  scripts/build.sh check
+  end
+  begin "check tests (ASan + UBSan)"
+  (cd build-check && ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
+     ctest --output-on-failure -j"$jobs")
+  end
+  if [ "${SKIPNC_FUZZ:-}" = 1 ] || { [ "${CI:-}" = true ] && [ "${SKIPNC_FUZZ:-}" != 0 ]; }; then
+    begin "fuzz"
+    SKIPNC_FUZZ_DIR=build-check scripts/fuzz.sh "${SKIPNC_FUZZ_SECONDS:-25}"
+    end
+  fi
 fi
+
 if [ "${SKIPNC_SKIP_TSAN:-0}" != 1 ]; then
-  echo "== ThreadSanitizer (two simulators in two threads)"
+  begin "ThreadSanitizer (two simulators in two threads)"
   scripts/build.sh tsan
   TSAN_OPTIONS=halt_on_error=1 build-tsan/tests/skipnc_thread_tests
+  end
 fi
-if [ "${SKIPNC_FUZZ:-}" = 1 ] || { [ "${CI:-}" = true ] && [ "${SKIPNC_FUZZ:-}" != 0 ]; }; then
-  echo "== fuzz"
-  scripts/fuzz.sh "${SKIPNC_FUZZ_SECONDS:-40}"
-fi
+
+begin "format (clang-format --dry-run)"
+scripts/format.sh --check
+end

@@ -7,6 +7,7 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <functional>
 #include <iostream>
 
 #include "canon/print.hpp"
@@ -21,10 +22,6 @@
 
 namespace skipnc::cli {
 namespace {
-
-std::string program_name_of(const std::string& path) {
-  return path;
-}
 
 // Outputs that go to standard output move the summary to standard error.
 bool is_stdout(const std::string& name) {
@@ -236,8 +233,7 @@ interp::Setup make_setup(const RunArgs& a, run::Session& s) {
   setup.machine = &s.machine;
   setup.dialect = &s.dialect;
   setup.params = s.params.get();
-  setup.program_path = a.program;
-  setup.program_name = program_name_of(a.program);
+  set_program(a, setup);
   setup.include_dirs = a.include;
   setup.dprnt_path = a.dprnt;
   setup.strict = a.strict;
@@ -506,10 +502,84 @@ int dialects_command() {
   return 0;
 }
 
+namespace {
+
+// The demo's program, numbered, as the user reads it.
+void print_demo_program(std::string_view program) {
+  std::cout
+      << "skipnc demo: a touch probe finds the top of a part on the built-in mill3 (fanuc).\n"
+      << "The scene puts the part's top face at Z-23.8 (machine); the probe is wired to X0.4.\n\n"
+      << "Program:\n";
+  for (std::size_t i = 0, line = 1; i < program.size(); ++line) {
+    const auto nl = program.find('\n', i);
+    const auto text =
+        program.substr(i, nl == std::string_view::npos ? std::string_view::npos : nl - i);
+    fmt::print("  {:>3}  {}\n", line, text);
+    if (nl == std::string_view::npos) break;
+    i = nl + 1;
+  }
+}
+
+// What happened, in the user's terms: each touch, the stored values, the end.
+void print_demo_outcome(const sim::RunResult& r, const run::Session& s,
+                        const std::function<double(int)>& var) {
+  std::cout << "\nWhat happened:\n";
+  for (const auto& sk : r.skips) {
+    const double over = sk.position[2] - sk.end_position[2];
+    fmt::print(
+        "  line {:>2}  {:<22}  {} at t = {:.4f} s: Z stored in #5063 = {:.4f}; "
+        "the axis stopped at Z{:.4f} ({:.4f} mm past the touch)\n",
+        sk.line, sk.block, sk.triggered ? "probe signal " + sk.signal : std::string("no signal"),
+        sk.time_s, sk.position[2], sk.end_position[2], over);
+  }
+  fmt::print(
+      "\n  first touch  #100 = {:.4f}\n  second touch #101 = {:.4f}  (slower, so it stops closer)\n"
+      "  G54 Z offset #5223 = {:.4f}  (written by G10 L2 P1)\n",
+      var(100), var(101), var(5223));
+  print_warnings(stdout, r);
+  for (const auto& m : r.messages) fmt::print("  message: {}\n", m);
+  fmt::print("\n{} after {:.3f} s of machine time; final position {}\n",
+             r.status == sim::RunStatus::kCompleted ? "Completed" : "Stopped by an alarm", r.time_s,
+             fmt_axes(r.final_work, s.machine));
+  if (r.alarm) std::cout << "  " << run::describe(*r.alarm, &s.dialect) << "\n";
+}
+
+constexpr int kDemoVariables[] = {100, 101, 102, 5223};
+
+// The report and pictures the user asked for; false when one could not be written.
+bool write_demo_outputs(const RunArgs& a, const run::Session& s, const sim::RunResult& r,
+                        PlotCapture* plot, std::string_view program,
+                        const std::function<double(int)>& var) {
+  bool ok = true;
+  if (!a.report.empty()) {
+    report::ReportInput in;
+    in.program = a.program;
+    in.dialect = s.dialect.name;
+    in.machine = &s.machine;
+    in.dialect_table = &s.dialect;
+    in.result = r;
+    for (int n : kDemoVariables) in.variables.emplace_back(std::to_string(n), var(n));
+    ok &= write_report(a, report::to_json(in));
+  }
+  if (plot != nullptr) {
+    std::vector<std::pair<std::string, std::optional<double>>> vars;
+    for (int n : kDemoVariables) vars.emplace_back(std::to_string(n), var(n));
+    auto w = plot->write(a.plot, s, r, {a.program, program, vars});
+    if (!w) {
+      std::cerr << "skipnc: " << w.error().detail << "\n";
+      ok = false;
+    }
+  }
+  return ok;
+}
+
+}  // namespace
+
+// `skipnc demo`: the built-in probing program on mill3, explained (-q: only
+// the outputs asked for, and the exit status).
 int demo_command(const RunArgs& args) {
   RunArgs a = args;
   a.program = "probe_demo.nc";
-  a.quiet = true;
   run::Session s;
   auto o = run::open_session(run::SessionOptions{"mill3", "", "", {}}, s);
   if (!o) return start_failure(a, o.error(), &s);
@@ -525,20 +595,8 @@ int demo_command(const RunArgs& args) {
   interp::Setup setup = make_setup(a, s);
   setup.program_path.clear();
   setup.program_text = std::string(prog->content);
-  a.vars = {"100", "101", "102", "5223"};
   sim::Simulator sim(s.machine, s.dialect, *s.params, s.scene);
-  std::cout
-      << "skipnc demo: a touch probe finds the top of a part on the built-in mill3 (fanuc).\n"
-      << "The scene puts the part's top face at Z-23.8 (machine); the probe is wired to X0.4.\n\n"
-      << "Program:\n";
-  for (std::size_t i = 0, line = 1; i < prog->content.size(); ++line) {
-    const auto nl = prog->content.find('\n', i);
-    const auto text =
-        prog->content.substr(i, nl == std::string_view::npos ? std::string_view::npos : nl - i);
-    fmt::print("  {:>3}  {}\n", line, text);
-    if (nl == std::string_view::npos) break;
-    i = nl + 1;
-  }
+  if (!a.quiet) print_demo_program(prog->content);
   if (auto c = check_plot_files(a.plot); !c) return start_failure(a, c.error(), &s);
   if (auto c = check_outputs(a, s); !c) return start_failure(a, c.error(), &s);
   std::unique_ptr<report::CsvTrace> trace;
@@ -564,52 +622,17 @@ int demo_command(const RunArgs& args) {
       output_failed = true;
     }
   }
-  const auto& r = *res;
-  std::cout << "\nWhat happened:\n";
-  for (const auto& sk : r.skips) {
-    const double over = sk.position[2] - sk.end_position[2];
-    fmt::print(
-        "  line {:>2}  {:<22}  {} at t = {:.4f} s: Z stored in #5063 = {:.4f}; "
-        "the axis stopped at Z{:.4f} ({:.4f} mm past the touch)\n",
-        sk.line, sk.block, sk.triggered ? "probe signal " + sk.signal : std::string("no signal"),
-        sk.time_s, sk.position[2], sk.end_position[2], over);
-  }
-  auto var = [&](int n) {
+  const auto var = [&](int n) {
     auto v = sim.interpreter()->read_variable(n);
     return v && !v->vacant ? v->v : 0.0;
   };
-  fmt::print(
-      "\n  first touch  #100 = {:.4f}\n  second touch #101 = {:.4f}  (slower, so it stops closer)\n"
-      "  G54 Z offset #5223 = {:.4f}  (written by G10 L2 P1)\n",
-      var(100), var(101), var(5223));
-  print_warnings(stdout, r);
-  for (const auto& m : r.messages) fmt::print("  message: {}\n", m);
-  fmt::print("\n{} after {:.3f} s of machine time; final position {}\n",
-             r.status == sim::RunStatus::kCompleted ? "Completed" : "Stopped by an alarm", r.time_s,
-             fmt_axes(r.final_work, s.machine));
-  if (r.alarm) std::cout << "  " << run::describe(*r.alarm, &s.dialect) << "\n";
-  if (!a.report.empty()) {
-    report::ReportInput in;
-    in.program = a.program;
-    in.dialect = s.dialect.name;
-    in.machine = &s.machine;
-    in.dialect_table = &s.dialect;
-    in.result = r;
-    for (int n : {100, 101, 102, 5223}) in.variables.emplace_back(std::to_string(n), var(n));
-    output_failed |= !write_report(a, report::to_json(in));
+  if (!a.quiet) print_demo_outcome(*res, s, var);
+  output_failed |= !write_demo_outputs(a, s, *res, plot.get(), prog->content, var);
+  if (!a.quiet) {
+    std::cout
+        << "\nTry it yourself: skipnc run PROGRAM --scene SCENE --report report.json --var 5063\n";
   }
-  if (plot) {
-    std::vector<std::pair<std::string, std::optional<double>>> vars;
-    for (int n : {100, 101, 102, 5223}) vars.emplace_back(std::to_string(n), var(n));
-    auto w = plot->write(a.plot, s, r, {a.program, prog->content, vars});
-    if (!w) {
-      std::cerr << "skipnc: " << w.error().detail << "\n";
-      output_failed = true;
-    }
-  }
-  std::cout
-      << "\nTry it yourself: skipnc run PROGRAM --scene SCENE --report report.json --var 5063\n";
-  return r.status == sim::RunStatus::kCompleted && !output_failed ? 0 : 1;
+  return res->status == sim::RunStatus::kCompleted && !output_failed ? 0 : 1;
 }
 
 int plot_command(RunArgs a) {

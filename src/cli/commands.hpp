@@ -7,7 +7,8 @@
 namespace skipnc::cli {
 
 struct RunArgs {
-  std::string program;
+  std::string program;       // a file, or "-": standard input
+  std::string program_text;  // the text read from standard input (program "-", main.cpp)
   std::string machine = "mill3";
   std::string scene;
   std::string dialect;

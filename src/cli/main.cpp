@@ -26,7 +26,7 @@ int run_main(int argc, char** argv) {
 
   RunArgs run_args;
   auto* run = app.add_subcommand("run", "run a part program on a simulated machine");
-  run->add_option("program", run_args.program, "part program file")->required();
+  run->add_option("program", run_args.program, "part program file (-: standard input)")->required();
   run->add_option("-m,--machine", run_args.machine, "machine file or built-in machine (mill3)");
   run->add_option("-s,--scene", run_args.scene, "scene file (TOML)");
   run->add_option("-d,--dialect", run_args.dialect, "fanuc, nct, mitsubishi, compass");
@@ -56,7 +56,8 @@ int run_main(int argc, char** argv) {
 
   RunArgs canon_args;
   auto* canon = app.add_subcommand("canon", "print the canonical command stream, without motion");
-  canon->add_option("program", canon_args.program, "part program file")->required();
+  canon->add_option("program", canon_args.program, "part program file (-: standard input)")
+      ->required();
   canon->add_option("-m,--machine", canon_args.machine, "machine file or built-in machine");
   canon->add_option("-d,--dialect", canon_args.dialect, "dialect");
   canon->add_option("-p,--param", canon_args.params, "parameter N=V or N#B=V (repeatable)");
@@ -68,6 +69,7 @@ int run_main(int argc, char** argv) {
   demo->add_option("--report", demo_args.report, "also write the JSON report here");
   demo->add_option("--trace", demo_args.trace, "also write the per-cycle CSV trace here");
   demo->add_option("--plot", demo_args.plot, "also write pictures: FILE.svg and/or FILE.html");
+  demo->add_flag("-q,--quiet", demo_args.quiet, "no explanation on standard output");
 
   RunArgs plot_args;
   auto* plot =
@@ -115,11 +117,17 @@ int run_main(int argc, char** argv) {
   }
   if (run->parsed()) {
     g_args = &run_args;
+    if (auto r = skipnc::cli::read_stdin_program(run_args); !r) {
+      return skipnc::cli::start_failure(run_args, r.error(), nullptr);
+    }
     return run_args.repeat > 0 ? skipnc::cli::repeat_command(run_args)
                                : skipnc::cli::run_command(run_args);
   }
   if (canon->parsed()) {
     g_args = &canon_args;
+    if (auto r = skipnc::cli::read_stdin_program(canon_args); !r) {
+      return skipnc::cli::start_failure(canon_args, r.error(), nullptr);
+    }
     return skipnc::cli::canon_command(canon_args);
   }
   if (demo->parsed()) {

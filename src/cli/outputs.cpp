@@ -120,7 +120,7 @@ Result<void> check_outputs(const RunArgs& a, const run::Session& s) {
   }
   // Inputs that are files. The persistent-variable file is read and written
   // by design; it is only checked against the other outputs.
-  if (!a.program.empty()) {
+  if (!a.program.empty() && a.program != "-") {
     if (auto r = add(inputs, "the program", a.program); !r) return r;
   }
   if (s.machine_file.find('/') != std::string::npos || s.machine_file.ends_with(".toml")) {
@@ -182,6 +182,32 @@ Result<void> finish_stdout() {
     return fail(AlarmId::kFileAccess, std::string("cannot write standard output: ") +
                                           (e != 0 ? std::strerror(e) : "write error"));
   }
+  return {};
+}
+
+void set_program(const RunArgs& a, interp::Setup& setup) {
+  if (a.program == "-") {
+    setup.program_path.clear();
+    setup.program_text = a.program_text;
+    setup.program_name = "<stdin>";
+    return;
+  }
+  setup.program_path = a.program;
+  setup.program_name = a.program;
+}
+
+Result<void> read_stdin_program(RunArgs& a) {
+  if (a.program != "-") return {};
+  std::string text;
+  char buf[1 << 16];
+  std::size_t n = 0;
+  while ((n = std::fread(buf, 1, sizeof buf, stdin)) > 0) text.append(buf, n);
+  if (std::ferror(stdin)) {
+    return std::unexpected(Error{AlarmId::kFileAccess,
+                                 "cannot read the program from standard input",
+                                 SourceLoc{"<stdin>", 0, 0}, -1});
+  }
+  a.program_text = std::move(text);
   return {};
 }
 

@@ -9,6 +9,7 @@
 
 #include "cli/commands.hpp"
 #include "cli/guard.hpp"
+#include "interpreter/interpreter.hpp"
 #include "report/report.hpp"
 #include "run/session.hpp"
 #include "sim/simulator.hpp"
@@ -19,6 +20,13 @@ namespace skipnc::cli {
 // has one (a bad machine file), the -d dialect, else fanuc. Every dialect
 // numbers skipnc's own alarms alike (config: 9090, SN9090; base.toml).
 const config::Dialect* report_dialect(const RunArgs& a, const run::Session* s);
+
+// The program of a run: its file, or (program "-") the text read from
+// standard input, named "<stdin>" in errors and the report.
+void set_program(const RunArgs& a, interp::Setup& setup);
+// Reads standard input whole into a.program_text when the program is "-";
+// an error names standard input.
+[[nodiscard]] Result<void> read_stdin_program(RunArgs& a);
 
 // Writes the report (`a.report`; nothing when none was asked for). Errors go
 // to standard error and make the returned value false.

@@ -129,8 +129,7 @@ int repeat_command(const RunArgs& a) {
   setup.machine = &s.machine;
   setup.dialect = &s.dialect;
   setup.params = s.params.get();
-  setup.program_path = a.program;
-  setup.program_name = a.program;
+  set_program(a, setup);
   setup.include_dirs = a.include;
   setup.dprnt_path = a.dprnt;
   setup.strict = a.strict;

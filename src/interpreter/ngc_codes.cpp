@@ -18,11 +18,6 @@
 #include "interpreter/impl.hpp"
 
 namespace skipnc::interp {
-namespace {
-
-constexpr const char* kNgcAxes = "XYZABCUVW";
-
-}  // namespace
 
 Flow<void> Interpreter::Impl::ngc_action(const Words& words, int code, CommandSink& out) {
   (void)out;

@@ -63,7 +63,7 @@ bool Kernel::check_stroke() noexcept {
   bool beyond = false;
   for (int i = 0; i < n; ++i) {
     const auto k = static_cast<std::size_t>(i);
-    beyond |= (cmd_[i] > f.stroke_max[k]) | (cmd_[i] < f.stroke_min[k]);
+    beyond = beyond || cmd_[i] > f.stroke_max[k] || cmd_[i] < f.stroke_min[k];
   }
   if (!beyond) return false;
   for (int i = 0; i < n; ++i) {

@@ -128,7 +128,6 @@ class Recorder final : public sim::TraceSink, public canon::CommandSink {
   bool tail_from_trace_ = false;  // after a skip: the next move starts where the machine stopped
 
   bool have_prev_ = false;
-  bool prev_kept_ = false;
   Sample prev_;
   Sample anchor_;
   std::vector<double> lo_, hi_;  // admissible slopes per channel from the anchor

@@ -29,11 +29,14 @@ inline std::string shell_quote(const std::string& s) {
   return q + "'";
 }
 
-// Runs `skipnc args...`; standard error is discarded unless `err_file` is set.
-inline CliResult run_cli(const std::vector<std::string>& args, const std::string& err_file = "") {
+// Runs `skipnc args...`; standard error is discarded unless `err_file` is set;
+// standard input is `in_file` when set.
+inline CliResult run_cli(const std::vector<std::string>& args, const std::string& err_file = "",
+                         const std::string& in_file = "") {
   std::string cmd = shell_quote(SKIPNC_BINARY);
   for (const auto& a : args) cmd += " " + shell_quote(a);
   cmd += " 2>" + (err_file.empty() ? std::string("/dev/null") : shell_quote(err_file));
+  if (!in_file.empty()) cmd += " <" + shell_quote(in_file);
   CliResult r;
   std::FILE* p = ::popen(cmd.c_str(), "r");
   if (p == nullptr) return r;

@@ -1,0 +1,1 @@
+../../../examples/probing/z_touch_grbl.nc
