@@ -10,7 +10,7 @@
 #include <iostream>
 
 #include "canon/print.hpp"
-#include "cli/expect.hpp"
+#include "run/expect.hpp"
 #include "cli/outputs.hpp"
 #include "cli/plot.hpp"
 #include "config/skip_inputs.hpp"
@@ -119,12 +119,12 @@ int execute(const RunArgs& a, run::Session& s, interp::Setup setup, bool explain
     if (!r) return start_failure(a, r.error(), &s);
     vars.push_back(*r);
   }
-  std::vector<Expectation> expects;
+  std::vector<run::Expectation> expects;
   std::vector<run::VarRef> expect_vars;
   for (const auto& text : a.expect) {
-    auto e = parse_expectation(text);
+    auto e = run::parse_expectation(text);
     if (!e) return start_failure(a, e.error(), &s);
-    if (e->kind == Expectation::Kind::kVariable) {
+    if (e->kind == run::Expectation::Kind::kVariable) {
       auto r = run::parse_var_ref("#" + e->var);
       if (!r) return start_failure(a, r.error(), &s);
       expect_vars.push_back(*r);
@@ -195,7 +195,7 @@ int execute(const RunArgs& a, run::Session& s, interp::Setup setup, bool explain
   // --expect: checked on the run's outcome; variables as the control holds them.
   std::vector<std::string> failed;
   if (!expects.empty()) {
-    ObservedRun got;
+    run::ObservedRun got;
     got.status = in.result.status == sim::RunStatus::kCompleted     ? "completed"
                  : in.result.status == sim::RunStatus::kInterrupted ? "interrupted"
                                                                     : "alarm";
@@ -209,8 +209,8 @@ int execute(const RunArgs& a, run::Session& s, interp::Setup setup, bool explain
     }
     bool outcome_expected = false;
     for (const auto& e : expects) {
-      outcome_expected |= e.kind != Expectation::Kind::kVariable;
-      if (auto why = check_expectation(e, got); !why.empty()) failed.push_back(why);
+      outcome_expected |= e.kind != run::Expectation::Kind::kVariable;
+      if (auto why = run::check_expectation(e, got); !why.empty()) failed.push_back(why);
     }
     // The run's outcome was asked for and held: an expected alarm is a pass
     // (an output that could not be written still fails).
