@@ -12,7 +12,7 @@
 #include "canon/print.hpp"
 #include "run/expect.hpp"
 #include "cli/outputs.hpp"
-#include "cli/plot.hpp"
+#include "run/plot.hpp"
 #include "config/skip_inputs.hpp"
 #include "core/embedded.hpp"
 #include "report/report.hpp"
@@ -131,7 +131,7 @@ int execute(const RunArgs& a, run::Session& s, interp::Setup setup, bool explain
     }
     expects.push_back(*e);
   }
-  if (auto c = check_plot_files(a.plot); !c) return start_failure(a, c.error(), &s);
+  if (auto c = run::check_plot_files(a.plot); !c) return start_failure(a, c.error(), &s);
   if (auto c = check_outputs(a, s); !c) return start_failure(a, c.error(), &s);
   std::unique_ptr<report::CsvTrace> trace;
   if (!a.trace.empty()) {
@@ -147,8 +147,8 @@ int execute(const RunArgs& a, run::Session& s, interp::Setup setup, bool explain
   sim::RunOptions opts;
   opts.trace = trace.get();
   opts.interrupt = &run_stop().flag;
-  std::unique_ptr<PlotCapture> plot;
-  if (!a.plot.empty()) plot = std::make_unique<PlotCapture>(s.machine, opts);
+  std::unique_ptr<run::PlotCapture> plot;
+  if (!a.plot.empty()) plot = std::make_unique<run::PlotCapture>(s.machine, opts);
   std::optional<Watchdog> watchdog;
   watchdog.emplace(Watchdog::Options{s.machine.limits.max_cpu_s, a.progress,
                                      ::isatty(STDERR_FILENO) != 0 && !a.quiet && !explain});
@@ -186,7 +186,7 @@ int execute(const RunArgs& a, run::Session& s, interp::Setup setup, bool explain
   }
   if (plot) {
     const std::string text =
-        setup.program_path.empty() ? setup.program_text : read_program_text(a.program);
+        setup.program_path.empty() ? setup.program_text : run::read_program_text(a.program);
     if (auto w = plot->write(a.plot, s, in.result, {a.program, text, in.variables}); !w) {
       output_error(w.error());
     }
@@ -539,7 +539,7 @@ int demo_command(const RunArgs& args) {
     if (nl == std::string_view::npos) break;
     i = nl + 1;
   }
-  if (auto c = check_plot_files(a.plot); !c) return start_failure(a, c.error(), &s);
+  if (auto c = run::check_plot_files(a.plot); !c) return start_failure(a, c.error(), &s);
   if (auto c = check_outputs(a, s); !c) return start_failure(a, c.error(), &s);
   std::unique_ptr<report::CsvTrace> trace;
   if (!a.trace.empty()) {
@@ -552,8 +552,8 @@ int demo_command(const RunArgs& args) {
   sim::RunOptions opts;
   opts.trace = trace.get();
   opts.interrupt = &run_stop().flag;
-  std::unique_ptr<PlotCapture> plot;
-  if (!a.plot.empty()) plot = std::make_unique<PlotCapture>(s.machine, opts);
+  std::unique_ptr<run::PlotCapture> plot;
+  if (!a.plot.empty()) plot = std::make_unique<run::PlotCapture>(s.machine, opts);
   auto res = sim.run(setup, opts);
   if (!res) return start_failure(a, res.error(), &s);
   explain_stop(*res, trace.get(), s.machine);

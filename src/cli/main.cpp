@@ -8,7 +8,7 @@
 #include "cli/commands.hpp"
 #include "cli/guard.hpp"
 #include "cli/outputs.hpp"
-#include "cli/plot.hpp"
+#include "run/plot.hpp"
 #include "cli/repeat.hpp"
 #include "cli/show.hpp"
 #include "run/sweep.hpp"
