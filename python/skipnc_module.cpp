@@ -109,11 +109,7 @@ std::vector<run::VarRef> var_refs(const std::vector<std::string>& vars, const ru
   return out;
 }
 
-py::dict run_program(const RunSpec& spec, const std::vector<std::pair<int, double>>& variables,
-                     bool trace, bool strict, const std::vector<std::string>& expect,
-                     const std::vector<std::string>& plot) {
-  run::Session s;
-  open(spec, s);
+run::RunRequest request_of(const RunSpec& spec, const run::Session& s, bool strict) {
   run::RunRequest rq;
   rq.program_path = spec.program;
   rq.program_text = spec.program_text;
@@ -121,6 +117,15 @@ py::dict run_program(const RunSpec& spec, const std::vector<std::pair<int, doubl
   rq.include_dirs = spec.include;
   rq.vars = var_refs(spec.vars, s);
   rq.strict = strict;
+  return rq;
+}
+
+py::dict run_program(const RunSpec& spec, const std::vector<std::pair<int, double>>& variables,
+                     bool trace, bool strict, const std::vector<std::string>& expect,
+                     const std::vector<std::string>& plot) {
+  run::Session s;
+  open(spec, s);
+  run::RunRequest rq = request_of(spec, s, strict);
   rq.plot_files = plot;
   for (const auto& text : expect) {
     auto e = run::parse_expectation(text);
@@ -150,12 +155,7 @@ py::dict repeat_program(const RunSpec& spec, const std::vector<std::pair<int, do
   run::Session s;
   open(spec, s);
   run::RepeatRequest rq;
-  rq.program_path = spec.program;
-  rq.program_text = spec.program_text;
-  rq.program_name = spec.program.empty() ? std::string("program") : spec.program;
-  rq.include_dirs = spec.include;
-  rq.vars = var_refs(spec.vars, s);
-  rq.strict = strict;
+  rq.program = request_of(spec, s, strict);
   rq.runs = runs;
   rq.seed = seed;
   rq.variables = variables;
@@ -166,7 +166,7 @@ py::dict repeat_program(const RunSpec& spec, const std::vector<std::pair<int, do
   }
   if (!res) raise(res.error(), &s.dialect);
   py::dict out;
-  out["report"] = run::repeat_json(*res, rq.program_name);
+  out["report"] = run::repeat_json(*res, rq.program.program_name);
   out["exit_code"] = res->exit_code();
   return out;
 }

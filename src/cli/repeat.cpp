@@ -48,13 +48,13 @@ int repeat_command(const RunArgs& a) {
   for (const auto& v : a.vars) {
     auto r = run::parse_var_ref(v);
     if (!r) return start_failure(a, r.error(), &s);
-    rq.vars.push_back(*r);
+    rq.program.vars.push_back(*r);
   }
-  rq.program_path = a.program;
-  rq.program_name = a.program;
-  rq.include_dirs = a.include;
+  rq.program.program_path = a.program;
+  rq.program.program_name = a.program;
+  rq.program.include_dirs = a.include;
+  rq.program.strict = a.strict;
   rq.dprnt_path = a.dprnt;
-  rq.strict = a.strict;
   rq.runs = a.repeat;
   if (a.seed >= 0) rq.seed = static_cast<std::uint64_t>(a.seed);
   // SIGTERM / SIGINT end the repetitions: the report keeps the runs that

@@ -3,7 +3,6 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <map>
 
@@ -87,7 +86,7 @@ class Collector {
             "skip", sk.line, nominal, sk.position[i]);
       }
     }
-    for (const auto& v : rq.vars) {
+    for (const auto& v : rq.program.vars) {
       auto val = v.name.empty() ? in.read_variable(v.number) : in.read_named(v.name);
       if (val && !val->vacant) add("#" + v.key, "variable", 0, nominal, val->v);
     }
@@ -135,19 +134,6 @@ class OffsetWatch {
   std::vector<std::vector<std::optional<double>>> values_;
 };
 
-// Every repetition starts from the same #500-#999 (the file's) and none
-// writes them back: the scatter is the probe's alone.
-Result<void> keep_persistent(config::MachineConfig& m, interp::Setup& setup) {
-  if (m.persistent_vars.empty()) return {};
-  std::array<interp::Value, 500> kept{};
-  if (auto r = interp::load_persistent(m.persistent_vars, kept); !r) return r;
-  for (std::size_t i = 0; i < kept.size(); ++i) {
-    if (!kept[i].vacant) setup.variables.emplace_back(static_cast<int>(i) + 500, kept[i].v);
-  }
-  m.persistent_vars.clear();
-  return {};
-}
-
 }  // namespace
 
 RepeatStats stats_of(const RepeatSeries& s) {
@@ -171,18 +157,15 @@ Result<RepeatOutcome> repeat_runs(const Session& s, const RepeatRequest& rq,
                                   const std::atomic<bool>* interrupt) {
   config::MachineConfig m = s.machine;
   interp::Setup setup;
-  if (auto r = keep_persistent(m, setup); !r) return std::unexpected(r.error());
+  // Every repetition starts from the same #500-#999 (the file's) and none
+  // writes them back: the scatter is the probe's alone.
+  if (auto r = take_persistent(m, setup); !r) return std::unexpected(r.error());
   setup.variables.insert(setup.variables.end(), rq.variables.begin(), rq.variables.end());
   setup.machine = &m;
   setup.dialect = &s.dialect;
   setup.params = s.params.get();
-  setup.program_path = rq.program_path;
-  setup.program_text = rq.program_text;
-  setup.program_name = rq.program_name.empty() ? rq.program_path : rq.program_name;
-  if (setup.program_name.empty()) setup.program_name = "program";
-  setup.include_dirs = rq.include_dirs;
+  setup_program(rq.program, setup);
   setup.dprnt_path = rq.dprnt_path;
-  setup.strict = rq.strict;
   OffsetWatch offsets;  // offsets as the machine starts, to tell which ones the program wrote
   if (auto r = offsets.start(setup); !r) return std::unexpected(r.error());
 

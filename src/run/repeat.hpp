@@ -14,6 +14,7 @@
 #include <utility>
 #include <vector>
 
+#include "run/scenario.hpp"
 #include "run/session.hpp"
 
 namespace skipnc::run {
@@ -34,13 +35,10 @@ struct RepeatStats {
 RepeatStats stats_of(const RepeatSeries& s);
 
 struct RepeatRequest {
-  std::string program_path;  // the program file; empty: program_text
-  std::string program_text;
-  std::string program_name;  // in errors and the report
-  std::vector<std::string> include_dirs;
-  std::string dprnt_path;  // DPRNT file; empty: none
-  bool strict = false;     // a warning is an alarm
-  std::vector<VarRef> vars;
+  // The program, its include folders, strict and the reported variables
+  // (its expect and plot_files are not used).
+  RunRequest program;
+  std::string dprnt_path;                         // DPRNT file; empty: none
   std::vector<std::pair<int, double>> variables;  // #1-#33, #100-#199, #500-#999 at the start
   int runs = 0;                                   // scattered runs
   std::optional<std::uint64_t> seed;  // first seed; none: the scene probe's (1 without a probe)

@@ -130,30 +130,36 @@ Result<void> prepare(const Session& s, const RunRequest& rq, const Variation& v,
     if (auto r = config::check_skip_addresses(s.dialect, params); !r) return r;
   }
   if (auto r = check_plot_files(rq.plot_files); !r) return r;
-  // #500-#999 from the machine's file are read, never written back: runs in
-  // parallel must not write one file.
-  if (!m.persistent_vars.empty()) {
-    std::array<interp::Value, 500> kept{};
-    if (auto r = interp::load_persistent(m.persistent_vars, kept); !r) return r;
-    for (std::size_t i = 0; i < kept.size(); ++i) {
-      if (!kept[i].vacant) setup.variables.emplace_back(static_cast<int>(i) + 500, kept[i].v);
-    }
-    m.persistent_vars.clear();
-  }
+  if (auto r = take_persistent(m, setup); !r) return r;
   setup.variables.insert(setup.variables.end(), v.variables.begin(), v.variables.end());
   setup.machine = &m;
   setup.dialect = &s.dialect;
   setup.params = &params;
+  setup_program(rq, setup);
+  return {};
+}
+
+}  // namespace
+
+void setup_program(const RunRequest& rq, interp::Setup& setup) {
   setup.program_path = rq.program_path;
   setup.program_text = rq.program_text;
   setup.program_name = rq.program_name.empty() ? rq.program_path : rq.program_name;
   if (setup.program_name.empty()) setup.program_name = "program";
   setup.include_dirs = rq.include_dirs;
   setup.strict = rq.strict;
-  return {};
 }
 
-}  // namespace
+Result<void> take_persistent(config::MachineConfig& m, interp::Setup& setup) {
+  if (m.persistent_vars.empty()) return {};
+  std::array<interp::Value, 500> kept{};
+  if (auto r = interp::load_persistent(m.persistent_vars, kept); !r) return r;
+  for (std::size_t i = 0; i < kept.size(); ++i) {
+    if (!kept[i].vacant) setup.variables.emplace_back(static_cast<int>(i) + 500, kept[i].v);
+  }
+  m.persistent_vars.clear();
+  return {};
+}
 
 Result<RunOutcome> run_variation(const Session& s, const RunRequest& rq, const Variation& v,
                                  sim::TraceSink* trace, const std::atomic<bool>* interrupt) {

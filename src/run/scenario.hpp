@@ -82,6 +82,15 @@ struct RunOutcome {
                                                const Variation& v, sim::TraceSink* trace = nullptr,
                                                const std::atomic<bool>* interrupt = nullptr);
 
+// The program part of an interpreter setup: file or text, name, include
+// folders, strict.
+void setup_program(const RunRequest& rq, interp::Setup& setup);
+
+// The machine's #500-#999 (its persistent-variable file) as starting values
+// of `setup`, and the file dropped from `m`: runs from the library read it,
+// never write it (runs in parallel must not write one file).
+[[nodiscard]] Result<void> take_persistent(config::MachineConfig& m, interp::Setup& setup);
+
 // Reads a variable file: one "#<n> = <value>" per line, ';' comments (the
 // persistent-variable file's format, any settable variable).
 [[nodiscard]] Result<std::vector<std::pair<int, double>>> load_variable_file(
