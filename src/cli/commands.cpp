@@ -10,12 +10,12 @@
 #include <iostream>
 
 #include "canon/print.hpp"
-#include "run/expect.hpp"
 #include "cli/outputs.hpp"
-#include "run/plot.hpp"
 #include "config/skip_inputs.hpp"
 #include "core/embedded.hpp"
 #include "report/report.hpp"
+#include "run/expect.hpp"
+#include "run/plot.hpp"
 #include "run/session.hpp"
 #include "sim/simulator.hpp"
 
