@@ -11,12 +11,12 @@
 #include <iostream>
 
 #include "canon/print.hpp"
-#include "cli/expect.hpp"
 #include "cli/outputs.hpp"
-#include "cli/plot.hpp"
 #include "config/skip_inputs.hpp"
 #include "core/embedded.hpp"
 #include "report/report.hpp"
+#include "run/expect.hpp"
+#include "run/plot.hpp"
 #include "run/session.hpp"
 #include "sim/simulator.hpp"
 
@@ -116,19 +116,19 @@ int execute(const RunArgs& a, run::Session& s, interp::Setup setup, bool explain
     if (!r) return start_failure(a, r.error(), &s);
     vars.push_back(*r);
   }
-  std::vector<Expectation> expects;
+  std::vector<run::Expectation> expects;
   std::vector<run::VarRef> expect_vars;
   for (const auto& text : a.expect) {
-    auto e = parse_expectation(text);
+    auto e = run::parse_expectation(text);
     if (!e) return start_failure(a, e.error(), &s);
-    if (e->kind == Expectation::Kind::kVariable) {
+    if (e->kind == run::Expectation::Kind::kVariable) {
       auto r = run::parse_var_ref("#" + e->var);
       if (!r) return start_failure(a, r.error(), &s);
       expect_vars.push_back(*r);
     }
     expects.push_back(*e);
   }
-  if (auto c = check_plot_files(a.plot); !c) return start_failure(a, c.error(), &s);
+  if (auto c = run::check_plot_files(a.plot); !c) return start_failure(a, c.error(), &s);
   if (auto c = check_outputs(a, s); !c) return start_failure(a, c.error(), &s);
   std::unique_ptr<report::CsvTrace> trace;
   if (!a.trace.empty()) {
@@ -144,8 +144,8 @@ int execute(const RunArgs& a, run::Session& s, interp::Setup setup, bool explain
   sim::RunOptions opts;
   opts.trace = trace.get();
   opts.interrupt = &run_stop().flag;
-  std::unique_ptr<PlotCapture> plot;
-  if (!a.plot.empty()) plot = std::make_unique<PlotCapture>(s.machine, opts);
+  std::unique_ptr<run::PlotCapture> plot;
+  if (!a.plot.empty()) plot = std::make_unique<run::PlotCapture>(s.machine, opts);
   std::optional<Watchdog> watchdog;
   watchdog.emplace(Watchdog::Options{s.machine.limits.max_cpu_s, a.progress,
                                      ::isatty(STDERR_FILENO) != 0 && !a.quiet && !explain});
@@ -183,7 +183,7 @@ int execute(const RunArgs& a, run::Session& s, interp::Setup setup, bool explain
   }
   if (plot) {
     const std::string text =
-        setup.program_path.empty() ? setup.program_text : read_program_text(a.program);
+        setup.program_path.empty() ? setup.program_text : run::read_program_text(a.program);
     if (auto w = plot->write(a.plot, s, in.result, {a.program, text, in.variables}); !w) {
       output_error(w.error());
     }
@@ -192,7 +192,7 @@ int execute(const RunArgs& a, run::Session& s, interp::Setup setup, bool explain
   // --expect: checked on the run's outcome; variables as the control holds them.
   std::vector<std::string> failed;
   if (!expects.empty()) {
-    ObservedRun got;
+    run::ObservedRun got;
     got.status = in.result.status == sim::RunStatus::kCompleted     ? "completed"
                  : in.result.status == sim::RunStatus::kInterrupted ? "interrupted"
                                                                     : "alarm";
@@ -206,8 +206,8 @@ int execute(const RunArgs& a, run::Session& s, interp::Setup setup, bool explain
     }
     bool outcome_expected = false;
     for (const auto& e : expects) {
-      outcome_expected |= e.kind != Expectation::Kind::kVariable;
-      if (auto why = check_expectation(e, got); !why.empty()) failed.push_back(why);
+      outcome_expected |= e.kind != run::Expectation::Kind::kVariable;
+      if (auto why = run::check_expectation(e, got); !why.empty()) failed.push_back(why);
     }
     // The run's outcome was asked for and held: an expected alarm is a pass
     // (an output that could not be written still fails).
@@ -548,7 +548,7 @@ constexpr int kDemoVariables[] = {100, 101, 102, 5223};
 
 // The report and pictures the user asked for; false when one could not be written.
 bool write_demo_outputs(const RunArgs& a, const run::Session& s, const sim::RunResult& r,
-                        PlotCapture* plot, std::string_view program,
+                        run::PlotCapture* plot, std::string_view program,
                         const std::function<double(int)>& var) {
   bool ok = true;
   if (!a.report.empty()) {
@@ -597,7 +597,7 @@ int demo_command(const RunArgs& args) {
   setup.program_text = std::string(prog->content);
   sim::Simulator sim(s.machine, s.dialect, *s.params, s.scene);
   if (!a.quiet) print_demo_program(prog->content);
-  if (auto c = check_plot_files(a.plot); !c) return start_failure(a, c.error(), &s);
+  if (auto c = run::check_plot_files(a.plot); !c) return start_failure(a, c.error(), &s);
   if (auto c = check_outputs(a, s); !c) return start_failure(a, c.error(), &s);
   std::unique_ptr<report::CsvTrace> trace;
   if (!a.trace.empty()) {
@@ -610,8 +610,8 @@ int demo_command(const RunArgs& args) {
   sim::RunOptions opts;
   opts.trace = trace.get();
   opts.interrupt = &run_stop().flag;
-  std::unique_ptr<PlotCapture> plot;
-  if (!a.plot.empty()) plot = std::make_unique<PlotCapture>(s.machine, opts);
+  std::unique_ptr<run::PlotCapture> plot;
+  if (!a.plot.empty()) plot = std::make_unique<run::PlotCapture>(s.machine, opts);
   auto res = sim.run(setup, opts);
   if (!res) return start_failure(a, res.error(), &s);
   explain_stop(*res, trace.get(), s.machine);

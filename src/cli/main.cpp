@@ -8,9 +8,9 @@
 #include "cli/commands.hpp"
 #include "cli/guard.hpp"
 #include "cli/outputs.hpp"
-#include "cli/plot.hpp"
 #include "cli/repeat.hpp"
 #include "cli/show.hpp"
+#include "run/plot.hpp"
 #include "run/sweep.hpp"
 
 namespace {

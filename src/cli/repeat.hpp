@@ -1,9 +1,6 @@
-// skipnc run PROGRAM --repeat N [--seed S]: measurement uncertainty. The
-// cycle runs once without the probe's scatter (the nominal run) and N times
-// with it, each with its own seed (S, S+1, ...); the latch model is the
-// machine's. Every latched value, every --var and every offset the program
-// wrote is summarised: nominal, mean, standard deviation, minimum, maximum
-// and the worst deviation from the nominal run (docs/scene.md).
+// skipnc run PROGRAM --repeat N [--seed S]: measurement uncertainty. The runs
+// and their statistics are the run library's (run/repeat.hpp); this prints
+// the table and writes the skipnc-repeat/1 report.
 #pragma once
 
 #include "cli/commands.hpp"

@@ -336,55 +336,87 @@ void CsvTrace::flush_buffer() {
   }
 }
 
-void CsvTrace::header(const sim::TraceRow& r) {
-  buf_ += "time_s,line,file,feed_mm_min";
+TraceColumns TraceColumns::of(const config::MachineConfig& m, const sim::TraceRow& r) {
+  TraceColumns c;
+  c.axes = m.axis_count();
+  c.names = {"time_s", "line", "file", "feed_mm_min"};
   for (const char* kind : {"cmd", "act", "ferr", "torque"}) {
-    for (const auto& a : m_.axes) {
-      buf_ += ',';
-      buf_ += a.name;
-      buf_ += '_';
-      buf_ += kind;
-    }
+    for (const auto& a : m.axes) c.names.push_back(std::string(1, a.name) + "_" + kind);
   }
   if (r.plant != nullptr) {
-    for (std::size_t i = 0; i < r.plant->signal_count(); ++i) {
-      buf_ += ',';
-      buf_ += config::signal_name(r.plant->signal_addr(i));
+    c.signals = r.plant->signal_count();
+    for (std::size_t i = 0; i < c.signals; ++i) {
+      c.names.push_back(config::signal_name(r.plant->signal_addr(i)));
     }
   }
   if (r.handshake_names != nullptr) {
+    c.handshake = true;
     for (const std::string* name : {&r.handshake_names->active, &r.handshake_names->skip,
                                     &r.handshake_names->recorded, &r.handshake_names->done}) {
-      buf_ += ',';
-      buf_ += *name;
+      c.names.push_back(*name);
     }
   }
   // The touch probe of the scene: its stylus's deflection (mm) and whether
   // the ball touches a surface (docs/scene.md).
-  probe_ = r.plant != nullptr ? r.plant->probing().probe() : nullptr;
-  if (probe_ != nullptr) buf_ += ",probe_deflection,probe_contact";
+  c.probe = r.plant != nullptr ? r.plant->probing().probe() : nullptr;
+  if (c.probe != nullptr) {
+    c.names.emplace_back("probe_deflection");
+    c.names.emplace_back("probe_contact");
+  }
   // The actual position in the running block's work coordinates (as
   // #5041..), and the tip of what is in the spindle along Z (machine) when
   // the scene gives its tools or probe a length.
-  work_ = r.work != nullptr;
-  if (work_) {
-    for (const auto& a : m_.axes) {
-      buf_ += ',';
-      buf_ += a.name;
-      buf_ += "_work";
-    }
+  c.work = r.work != nullptr;
+  if (c.work) {
+    for (const auto& a : m.axes) c.names.push_back(std::string(1, a.name) + "_work");
   }
-  tip_axis_ = -1;
   if (r.plant != nullptr) {
     const auto& spec = r.plant->probing().spec();
-    if (spec.probe || !spec.tools.empty()) tip_axis_ = m_.axis_index('Z');
+    if (spec.probe || !spec.tools.empty()) c.tip_axis = m.axis_index('Z');
   }
-  if (tip_axis_ >= 0) {
-    buf_ += ',';
-    buf_ += m_.axes[static_cast<std::size_t>(tip_axis_)].name;
-    buf_ += "_tip";
+  if (c.tip_axis >= 0) {
+    c.names.push_back(std::string(1, m.axes[static_cast<std::size_t>(c.tip_axis)].name) + "_tip");
+  }
+  return c;
+}
+
+void TraceColumns::numbers(const sim::TraceRow& r, std::vector<double>& out) const {
+  out.clear();
+  out.push_back(r.time_s);
+  out.push_back(static_cast<double>(r.line));
+  out.push_back(r.feed_mm_per_min);
+  const AxisVec ferr = *r.commanded - *r.actual;
+  for (const AxisVec* v : {r.commanded, r.actual, &ferr, r.torque}) {
+    for (int i = 0; i < axes; ++i) out.push_back((*v)[i]);
+  }
+  for (std::size_t i = 0; i < signals; ++i) out.push_back(r.plant->signal_level(i) ? 1.0 : 0.0);
+  if (handshake) {
+    for (bool b : {r.handshake.active, r.handshake.skip, r.handshake.recorded, r.handshake.done}) {
+      out.push_back(b ? 1.0 : 0.0);
+    }
+  }
+  if (probe != nullptr) {
+    out.push_back(probe->deflection());
+    out.push_back(probe->touching() ? 1.0 : 0.0);
+  }
+  if (work) {
+    for (int i = 0; i < axes; ++i) out.push_back(r.work != nullptr ? (*r.work)[i] : 0.0);
+  }
+  if (tip_axis >= 0) {
+    out.push_back((*r.actual)[tip_axis] - r.plant->probing().spindle_tool_length());
+  }
+}
+
+void CsvTrace::header(const sim::TraceRow& r) {
+  const TraceColumns c = TraceColumns::of(m_, r);
+  for (std::size_t i = 0; i < c.names.size(); ++i) {
+    if (i > 0) buf_ += ',';
+    buf_ += c.names[i];
   }
   buf_ += '\n';
+  probe_ = c.probe;
+  work_ = c.work;
+  tip_axis_ = c.tip_axis;
   header_done_ = true;
 }
 

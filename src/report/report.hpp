@@ -49,6 +49,23 @@ std::string where(const std::vector<interp::CallContext>& contexts, std::uint32_
 // nanosecond), never -0.
 double clean(double v) noexcept;
 
+// The trace's columns (--trace), decided by its first row: the names in the
+// CSV header's order, and each row's numbers in the same order. The CSV
+// trace and the Python module's trace both take them from here.
+struct TraceColumns {
+  std::vector<std::string> names;  // "time_s", "line", "file", "feed_mm_min", "X_cmd", ...
+  int axes = 0;
+  std::size_t signals = 0;                     // one 0/1 column per scene signal
+  bool handshake = false;                      // the skip handshake's four 0/1 columns
+  const machine::TouchProbe* probe = nullptr;  // probe_deflection, probe_contact
+  bool work = false;                           // <axis>_work columns
+  int tip_axis = -1;                           // the <Z>_tip column's axis, -1: none
+  static constexpr std::size_t kFile = 2;      // the one column that is text
+  static TraceColumns of(const config::MachineConfig& m, const sim::TraceRow& first);
+  // The row's value of every column but `file`, in order (names.size() - 1).
+  void numbers(const sim::TraceRow& r, std::vector<double>& out) const;
+};
+
 // CSV trace: one row per servo period, written as the run goes (an
 // OutputFile: a regular file through a unique temporary renamed when the run
 // ends, complete up to the last period run; a device, a FIFO or standard

@@ -3,9 +3,11 @@
 #include <array>
 #include <cstdio>
 #include <fstream>
+#include <memory>
 
 #include "config/skip_inputs.hpp"
 #include "interpreter/variables.hpp"
+#include "run/plot.hpp"
 
 namespace skipnc::run {
 namespace {
@@ -75,47 +77,103 @@ Result<void> apply_offsets(config::MachineConfig& m, const Variation& v) {
 
 }  // namespace
 
-Result<RunOutcome> run_variation(const Session& s, const RunRequest& rq, const Variation& v,
-                                 sim::TraceSink* trace, const std::atomic<bool>* interrupt) {
-  config::MachineConfig m = s.machine;
-  if (auto r = apply_offsets(m, v); !r) return std::unexpected(r.error());
-  config::Parameters params = *s.params;
+namespace {
+
+// Variables as the control holds them after the run (vacant: no value).
+std::vector<std::pair<std::string, std::optional<double>>> read_vars(
+    const interp::Interpreter& in, const std::vector<VarRef>& refs) {
+  std::vector<std::pair<std::string, std::optional<double>>> out;
+  for (const auto& var : refs) {
+    Result<interp::Value> val =
+        var.name.empty() ? in.read_variable(var.number) : in.read_named(var.name);
+    std::optional<double> x;
+    if (val && !val->vacant) x = val->v;
+    out.emplace_back(var.key, x);
+  }
+  return out;
+}
+
+// The --expect checks on a finished run: the lines of those that failed,
+// and the exit status as `skipnc run` gives it.
+Result<void> check_outcome(const Session& s, const RunRequest& rq, const sim::RunResult& r,
+                           const interp::Interpreter& in, RunOutcome& out) {
+  ObservedRun got;
+  got.status = r.status == sim::RunStatus::kCompleted     ? "completed"
+               : r.status == sim::RunStatus::kInterrupted ? "interrupted"
+                                                          : "alarm";
+  if (r.alarm) got.alarm = report::view_alarm(*r.alarm, &s.dialect).number;
+  std::vector<VarRef> refs;
+  bool outcome_expected = false;
+  for (const auto& e : rq.expect) {
+    outcome_expected |= e.kind != Expectation::Kind::kVariable;
+    if (e.kind != Expectation::Kind::kVariable) continue;
+    auto ref = parse_var_ref("#" + e.var);
+    if (!ref) return std::unexpected(ref.error());
+    refs.push_back(*ref);
+  }
+  got.variables = read_vars(in, refs);
+  for (const auto& e : rq.expect) {
+    if (auto why = check_expectation(e, got); !why.empty()) out.failed_expectations.push_back(why);
+  }
+  if (outcome_expected && out.failed_expectations.empty() && !out.output_failed) out.exit_code = 0;
+  if (!out.failed_expectations.empty()) out.exit_code = 3;
+  return {};
+}
+
+Result<void> prepare(const Session& s, const RunRequest& rq, const Variation& v,
+                     config::MachineConfig& m, config::Parameters& params, interp::Setup& setup) {
+  if (auto r = apply_offsets(m, v); !r) return r;
   for (const auto& p : v.params) {
-    if (auto r = params.apply(p); !r) return std::unexpected(r.error());
+    if (auto r = params.apply(p); !r) return r;
   }
   if (!v.params.empty()) {
-    if (auto r = config::check_skip_addresses(s.dialect, params); !r) {
-      return std::unexpected(r.error());
-    }
+    if (auto r = config::check_skip_addresses(s.dialect, params); !r) return r;
   }
-  interp::Setup setup;
-  // #500-#999 from the machine's file are read, never written back: runs in
-  // parallel must not write one file.
-  if (!m.persistent_vars.empty()) {
-    std::array<interp::Value, 500> kept{};
-    if (auto r = interp::load_persistent(m.persistent_vars, kept); !r) {
-      return std::unexpected(r.error());
-    }
-    for (std::size_t i = 0; i < kept.size(); ++i) {
-      if (!kept[i].vacant) setup.variables.emplace_back(static_cast<int>(i) + 500, kept[i].v);
-    }
-    m.persistent_vars.clear();
-  }
+  if (auto r = check_plot_files(rq.plot_files); !r) return r;
+  if (auto r = take_persistent(m, setup); !r) return r;
   setup.variables.insert(setup.variables.end(), v.variables.begin(), v.variables.end());
-  const machine::Scene scene = varied_scene(s.scene, m, v);
   setup.machine = &m;
   setup.dialect = &s.dialect;
   setup.params = &params;
+  setup_program(rq, setup);
+  return {};
+}
+
+}  // namespace
+
+void setup_program(const RunRequest& rq, interp::Setup& setup) {
   setup.program_path = rq.program_path;
   setup.program_text = rq.program_text;
   setup.program_name = rq.program_name.empty() ? rq.program_path : rq.program_name;
   if (setup.program_name.empty()) setup.program_name = "program";
   setup.include_dirs = rq.include_dirs;
+  setup.strict = rq.strict;
+}
 
+Result<void> take_persistent(config::MachineConfig& m, interp::Setup& setup) {
+  if (m.persistent_vars.empty()) return {};
+  std::array<interp::Value, 500> kept{};
+  if (auto r = interp::load_persistent(m.persistent_vars, kept); !r) return r;
+  for (std::size_t i = 0; i < kept.size(); ++i) {
+    if (!kept[i].vacant) setup.variables.emplace_back(static_cast<int>(i) + 500, kept[i].v);
+  }
+  m.persistent_vars.clear();
+  return {};
+}
+
+Result<RunOutcome> run_variation(const Session& s, const RunRequest& rq, const Variation& v,
+                                 sim::TraceSink* trace, const std::atomic<bool>* interrupt) {
+  config::MachineConfig m = s.machine;
+  config::Parameters params = *s.params;
+  interp::Setup setup;
+  if (auto r = prepare(s, rq, v, m, params, setup); !r) return std::unexpected(r.error());
+  const machine::Scene scene = varied_scene(s.scene, m, v);
   sim::Simulator sim(m, s.dialect, params, scene);
   sim::RunOptions opts;
   opts.trace = trace;
   opts.interrupt = interrupt;
+  std::unique_ptr<PlotCapture> plot;
+  if (!rq.plot_files.empty()) plot = std::make_unique<PlotCapture>(m, opts);
   auto res = sim.run(setup, opts);
   if (!res) return std::unexpected(res.error());
   report::ReportInput in;
@@ -124,23 +182,36 @@ Result<RunOutcome> run_variation(const Session& s, const RunRequest& rq, const V
   in.machine = &s.machine;
   in.dialect_table = &s.dialect;
   in.result = std::move(*res);
-  for (const auto& var : rq.vars) {
-    Result<interp::Value> val = var.name.empty() ? sim.interpreter()->read_variable(var.number)
-                                                 : sim.interpreter()->read_named(var.name);
-    std::optional<double> x;
-    if (val && !val->vacant) x = val->v;
-    in.variables.emplace_back(var.key, x);
-  }
+  in.variables = read_vars(*sim.interpreter(), rq.vars);
   RunOutcome out;
-  out.report_json = report::to_json(in);
+  if (plot) {
+    const std::string text =
+        rq.program_path.empty() ? rq.program_text : read_program_text(rq.program_path);
+    // A picture that could not be written is an alarm of the run, as on
+    // the command line.
+    if (auto w = plot->write(rq.plot_files, s, in.result, {setup.program_name, text, in.variables});
+        !w) {
+      out.output_failed = true;
+      if (in.result.status == sim::RunStatus::kCompleted) {
+        in.result.status = sim::RunStatus::kAlarm;
+        in.result.alarm = w.error();
+      }
+    }
+  }
   out.status = in.result.status;
   out.time_s = in.result.time_s;
   if (in.result.alarm) {
     out.alarm = report::view_alarm(*in.result.alarm, &s.dialect).number;
     out.alarm_text = describe(*in.result.alarm, &s.dialect);
   }
-  out.variables = std::move(in.variables);
   out.exit_code = in.result.status == sim::RunStatus::kCompleted ? 0 : 1;
+  if (!rq.expect.empty()) {
+    if (auto c = check_outcome(s, rq, in.result, *sim.interpreter(), out); !c) {
+      return std::unexpected(c.error());
+    }
+  }
+  out.report_json = report::to_json(in);
+  out.variables = std::move(in.variables);
   return out;
 }
 

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "report/report.hpp"
+#include "run/expect.hpp"
 #include "run/session.hpp"
 #include "sim/simulator.hpp"
 
@@ -49,6 +50,11 @@ struct RunRequest {
   std::string program_name;  // in errors and the report
   std::vector<std::string> include_dirs;
   std::vector<VarRef> vars;  // reported after the run
+  bool strict = false;       // --strict: a warning is an alarm (strict_warning)
+  // --expect: checked on the run's outcome (run/expect.hpp), as `skipnc run`.
+  std::vector<Expectation> expect;
+  // --plot: pictures of the run (.svg, .html), written after it (run/plot.hpp).
+  std::vector<std::string> plot_files;
 };
 
 // The run, made while its simulator exists: an alarm's location points into
@@ -60,7 +66,13 @@ struct RunOutcome {
   std::string alarm_text;  // describe(): "file:line:column: alarm CODE (N): message"
   double time_s = 0.0;     // simulated
   std::vector<std::pair<std::string, std::optional<double>>> variables;  // rq.vars, in order
-  int exit_code = 0;  // as `skipnc run`: 0 completed, 1 alarm or interrupted
+  // The expectations that failed, one line each ("expectation failed: ...").
+  std::vector<std::string> failed_expectations;
+  bool output_failed = false;  // a picture (plot_files) could not be written
+  // As `skipnc run`: 0 completed, 1 alarm or interrupted (or a plot that could
+  // not be written), 3 an expectation failed; an expected outcome that held
+  // is 0 (an expected alarm passes).
+  int exit_code = 0;
 };
 
 // Runs once. A returned error is a run that could not start (a bad change,
@@ -69,6 +81,15 @@ struct RunOutcome {
 [[nodiscard]] Result<RunOutcome> run_variation(const Session& s, const RunRequest& rq,
                                                const Variation& v, sim::TraceSink* trace = nullptr,
                                                const std::atomic<bool>* interrupt = nullptr);
+
+// The program part of an interpreter setup: file or text, name, include
+// folders, strict.
+void setup_program(const RunRequest& rq, interp::Setup& setup);
+
+// The machine's #500-#999 (its persistent-variable file) as starting values
+// of `setup`, and the file dropped from `m`: runs from the library read it,
+// never write it (runs in parallel must not write one file).
+[[nodiscard]] Result<void> take_persistent(config::MachineConfig& m, interp::Setup& setup);
 
 // Reads a variable file: one "#<n> = <value>" per line, ';' comments (the
 // persistent-variable file's format, any settable variable).

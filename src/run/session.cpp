@@ -9,13 +9,19 @@
 namespace skipnc::run {
 
 Result<void> open_session(const SessionOptions& o, Session& s) {
+  return open_session(o, SessionTexts{}, s);
+}
+
+Result<void> open_session(const SessionOptions& o, const SessionTexts& texts, Session& s) {
   std::error_code ec;
   const bool is_file = o.machine.find('/') != std::string::npos || o.machine.ends_with(".toml") ||
                        std::filesystem::is_regular_file(o.machine, ec);
   s.machine_file = o.machine;
   s.scene_file = o.scene;
-  auto m =
-      is_file ? config::load_machine_file(s.machine_file) : config::builtin_machine(s.machine_file);
+  s.texts = texts;
+  auto m = !s.texts.machine.empty() ? config::parse_machine(s.texts.machine, s.machine_file)
+           : is_file                ? config::load_machine_file(s.machine_file)
+                                    : config::builtin_machine(s.machine_file);
   if (!m) return std::unexpected(m.error());
   s.machine = std::move(*m);
   const std::string dname = o.dialect.empty() ? s.machine.dialect : o.dialect;
@@ -41,7 +47,11 @@ Result<void> open_session(const SessionOptions& o, Session& s) {
   }
   auto chk = config::check_skip_addresses(s.dialect, *s.params);
   if (!chk) return chk;
-  if (!o.scene.empty()) {
+  if (!s.texts.scene.empty()) {
+    auto sc = machine::parse_scene(s.texts.scene, s.scene_file, s.machine, s.dialect, *s.params);
+    if (!sc) return std::unexpected(sc.error());
+    s.scene = std::move(*sc);
+  } else if (!o.scene.empty()) {
     auto sc = machine::load_scene_file(s.scene_file, s.machine, s.dialect, *s.params);
     if (!sc) return std::unexpected(sc.error());
     s.scene = std::move(*sc);

@@ -20,11 +20,21 @@ struct SessionOptions {
   std::vector<std::string> params;
 };
 
+// A machine or scene given as TOML text (the Python module's dicts): read
+// instead of a file, SessionOptions' `machine` / `scene` naming it in errors;
+// relative paths in it (`extends`, a mesh's file) are taken from that name's
+// folder. Empty: the file (or built-in machine) as usual.
+struct SessionTexts {
+  std::string machine;
+  std::string scene;
+};
+
 struct Session {
   // The files as given: an error's location points into these, so they
   // live as long as the session (not as long as the options).
   std::string machine_file;
   std::string scene_file;
+  SessionTexts texts;  // the texts read instead of files, when given
   config::MachineConfig machine;
   config::Dialect dialect;
   std::unique_ptr<config::Parameters> params;
@@ -35,6 +45,8 @@ struct Session {
 // with the dialect's numbers where possible. `partial` receives whatever was
 // loaded before an error.
 [[nodiscard]] Result<void> open_session(const SessionOptions& o, Session& s);
+[[nodiscard]] Result<void> open_session(const SessionOptions& o, const SessionTexts& texts,
+                                        Session& s);
 
 // "#5061", "5061", "#<NC.SysVars.G31.LCS.X>" -> number or name.
 struct VarRef {

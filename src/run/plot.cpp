@@ -1,4 +1,4 @@
-#include "cli/plot.hpp"
+#include "run/plot.hpp"
 
 #include <fmt/format.h>
 
@@ -9,7 +9,7 @@
 #include "plot/plot.hpp"
 #include "report/report.hpp"
 
-namespace skipnc::cli {
+namespace skipnc::run {
 
 namespace {
 
@@ -72,4 +72,4 @@ std::string read_program_text(const std::string& path) {
   return ss.str();
 }
 
-}  // namespace skipnc::cli
+}  // namespace skipnc::run

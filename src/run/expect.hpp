@@ -13,7 +13,7 @@
 
 #include "core/diag.hpp"
 
-namespace skipnc::cli {
+namespace skipnc::run {
 
 struct Expectation {
   enum class Kind : std::uint8_t { kVariable, kStatus, kAlarm };
@@ -41,4 +41,4 @@ struct ObservedRun {
 // Empty when the expectation holds; else the line that says why not.
 std::string check_expectation(const Expectation& e, const ObservedRun& o);
 
-}  // namespace skipnc::cli
+}  // namespace skipnc::run

@@ -13,7 +13,7 @@
 #include "run/session.hpp"
 #include "sim/simulator.hpp"
 
-namespace skipnc::cli {
+namespace skipnc::run {
 
 // Every FILE must end in .svg, .html or .htm.
 [[nodiscard]] Result<void> check_plot_files(const std::vector<std::string>& files);
@@ -42,4 +42,4 @@ class PlotCapture {
 // The program's text (for the page's block list); "" when it cannot be read.
 std::string read_program_text(const std::string& path);
 
-}  // namespace skipnc::cli
+}  // namespace skipnc::run
