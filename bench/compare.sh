@@ -36,22 +36,7 @@ rm -f "$work/big.ngc"
 
 echo
 echo "== 3. simulation speed: simulated seconds per wall second"
-python3 - "$work/hour.nc" <<'PY'
-import sys, random
-# About one hour of 3-axis machining: pockets of lines and arcs at F1200-3000.
-rnd = random.Random(1)
-out = ["G21 G90 G17 G54", "G0 X0 Y0 Z5."]
-t = 0.0
-x = y = 0.0
-while t < 3600.0:
-    f = rnd.choice([1200, 2000, 3000])
-    nx, ny = rnd.uniform(-200, 200), rnd.uniform(-200, 200)
-    out.append(f"G1 X{nx:.3f} Y{ny:.3f} Z{rnd.uniform(-5, 0):.3f} F{f}.")
-    t += (((nx - x) ** 2 + (ny - y) ** 2) ** 0.5) / (f / 60.0)
-    x, y = nx, ny
-out.append("M30")
-open(sys.argv[1], "w").write("\n".join(out) + "\n")
-PY
+python3 "$root/bench/gen_hour.py" "$work/hour.nc"
 # Each case runs several times (the median is the figure; the fastest shows
 # what an undisturbed run takes on a shared virtual machine).
 for trace in off on; do
