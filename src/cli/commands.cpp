@@ -214,7 +214,9 @@ int execute(const RunArgs& a, run::Session& s, interp::Setup setup, bool explain
     if (outcome_expected && failed.empty() && !output_failed) rc = 0;
     if (!failed.empty()) rc = 3;
   }
-  if (!write_report(a, report::to_json(in))) rc = rc == 0 ? 1 : rc;
+  // The report is made only when asked for (it costs more than the run's
+  // motion on a program of many short moves).
+  if (!a.report.empty() && !write_report(a, report::to_json(in))) rc = rc == 0 ? 1 : rc;
   if (explain) return rc;
   std::FILE* out = is_stdout(a.report) || is_stdout(a.trace) ? stderr : stdout;
   if (in.result.alarm)

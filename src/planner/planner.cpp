@@ -545,27 +545,38 @@ void SegmentQueue::replan() noexcept {
   if (first == n) return;
 
   // Backward pass: the exit of each segment is limited by what the rest of
-  // the queue can still absorb (the newest segment ends at rest).
+  // the queue can still absorb (the newest segment ends at rest). Only the
+  // newest segment is new since the last replan: once an older segment's exit
+  // comes out as it was, or one that is always entered from rest is met,
+  // every segment before it would be planned exactly as it is (exits and
+  // profiles), so both passes stop there.
   double next_entry = 0.0;
+  std::size_t from = first;  // the first segment whose profile may change
   for (std::size_t k = n; k-- > first;) {
     Segment& s = at(k);
-    const double exit_limit = k + 1 == n ? 0.0 : next_entry;
-    if (s.kind == Kind::kDwell || s.kind == Kind::kRapidNonLinear) {
+    const bool newest = k + 1 == n;
+    if (s.kind == Kind::kDwell || s.kind == Kind::kRapidNonLinear || s.no_accel) {
+      // Its predecessor ends at rest (a no_accel segment's v_entry_max is 0).
+      if (!newest) {
+        from = k + 1;
+        break;
+      }
       next_entry = 0.0;
       continue;
     }
-    if (s.no_accel) {
-      next_entry = 0.0;  // its predecessor ends at rest (v_entry_max is 0)
-      continue;
+    const double v_exit = s.exact_stop || newest ? 0.0 : next_entry;
+    if (!newest && v_exit == s.v_exit) {
+      from = k + 1;
+      break;
     }
-    s.v_exit = s.exact_stop ? 0.0 : exit_limit;
+    s.v_exit = v_exit;
     next_entry =
         std::min({s.v_entry_max, s.v_max, std::sqrt(sq(s.v_exit) + 2.0 * s.accel * s.length)});
   }
 
   // Forward pass: each entry is the previous exit; the exit is what can be
   // reached from there; then the closed-form profile.
-  for (std::size_t k = first; k < n; ++k) {
+  for (std::size_t k = from; k < n; ++k) {
     Segment& s = at(k);
     if (s.kind == Kind::kDwell || s.kind == Kind::kRapidNonLinear || s.no_accel) continue;
     double v0 = front_entry_;
