@@ -76,7 +76,11 @@ class TextSource final : public Source {
       : name_(std::move(name)), limits_(limits), fd_(fd), size_(size) {
     // A whole block, its end of block and the look-ahead must fit in the window.
     const std::size_t window = std::max(limits_.window_bytes, limits_.max_block_bytes + 8);
-    buf_.resize(std::max<std::size_t>(window, 64));
+    // Not cleared: only the first len_ bytes, written by pread, are read (a
+    // sweep opens the program once per scenario, and clearing 1 MiB cost more
+    // than a short program's reading).
+    buf_.resize_and_overwrite(std::max<std::size_t>(window, 64),
+                              [](char*, std::size_t n) noexcept { return n; });
   }
   ~TextSource() override {
     if (fd_ >= 0) ::close(fd_);

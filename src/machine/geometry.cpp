@@ -453,7 +453,31 @@ Material::Material(std::vector<Part> parts) : parts_(std::move(parts)) {
       }
     }
     bounds_.push_back(b);
+    world_.push_back(world_box(part, b));
   }
+}
+
+// The machine-frame box that holds the part's solids and meshes (the corners
+// of their part-frame box, placed); none for a part that turns or is unbounded.
+Material::WorldBox Material::world_box(const Part& part, const PartBounds& b) noexcept {
+  WorldBox w;
+  w.valid = b.bounded && !part.rotary.turns();
+  if (!w.valid) return w;
+  w.lo = Vec3{kInf, kInf, kInf};
+  w.hi = Vec3{-kInf, -kInf, -kInf};
+  const auto add = [&](Vec3 lo, Vec3 hi) {
+    if (!(lo.x <= hi.x && lo.y <= hi.y && lo.z <= hi.z)) return;  // empty
+    for (unsigned c = 0; c < 8; ++c) {
+      const Vec3 q =
+          part.place.to_machine(Vec3{(c & 1U) != 0U ? hi.x : lo.x, (c & 2U) != 0U ? hi.y : lo.y,
+                                     (c & 4U) != 0U ? hi.z : lo.z});
+      w.lo = Vec3{std::min(w.lo.x, q.x), std::min(w.lo.y, q.y), std::min(w.lo.z, q.z)};
+      w.hi = Vec3{std::max(w.hi.x, q.x), std::max(w.hi.y, q.y), std::max(w.hi.z, q.z)};
+    }
+  };
+  add(b.lo, b.hi);
+  for (const auto& mesh : part.meshes) add(mesh->bounds().lo, mesh->bounds().hi);
+  return w;
 }
 
 // Can nothing within the box lo..hi (part frame) reach the part's solids?
@@ -863,6 +887,24 @@ double Material::distance(Vec3 p, double cap) const noexcept {
   return best;
 }
 
+double Material::clearance(Vec3 p) const noexcept {
+  if (turns()) return 0.0;
+  double best = kInf;
+  for (std::size_t i = 0; i < parts_.size(); ++i) {
+    const Part& part = parts_[i];
+    const PartBounds& pb = bounds_[i];
+    const Vec3 q = part.place.to_local(p);
+    if (pb.begin != pb.end || !part.solids.empty()) {
+      if (!pb.bounded) return 0.0;
+      best = std::min(best, box_distance(pb.lo, pb.hi, q));
+    }
+    for (const auto& mesh : part.meshes) {
+      best = std::min(best, box_distance(mesh->bounds().lo, mesh->bounds().hi, q));
+    }
+  }
+  return best;
+}
+
 double Material::depth(Vec3 p) const noexcept {
   double d = 0.0;
   for (const Part& part : parts_) d = std::max(d, part_depth(part, part.place.to_local(p)));
@@ -929,6 +971,12 @@ bool Material::leaning_column_hits(std::size_t p, const Column& world, double to
 int Material::column_hits(const Column& world, double tol) const noexcept {
   for (std::size_t p = 0; p < parts_.size(); ++p) {
     const Part& part = parts_[p];
+    if (const WorldBox& w = world_[p];
+        w.valid && (world.x + world.radius < w.lo.x || world.x - world.radius > w.hi.x ||
+                    world.y + world.radius < w.lo.y || world.y - world.radius > w.hi.y ||
+                    world.top < w.lo.z || world.bottom > w.hi.z)) {
+      continue;  // most periods: the column is nowhere near the part
+    }
     if (!part.place.upright()) {
       if (leaning_column_hits(p, world, tol)) return static_cast<int>(p);
       continue;
@@ -938,6 +986,11 @@ int Material::column_hits(const Column& world, double tol) const noexcept {
     const Column c{foot.x, foot.y, world.radius, foot.z, foot.z + (world.top - world.bottom)};
     for (const auto& mesh : part.meshes) {
       if (mesh->column_overlap(c) > tol) return static_cast<int>(p);
+    }
+    // A column beyond the box that holds the solids overlaps none of them.
+    if (beyond(bounds_[p], Vec3{c.x - c.radius, c.y - c.radius, c.bottom},
+               Vec3{c.x + c.radius, c.y + c.radius, c.top})) {
+      continue;
     }
     for (const Shape& s : part.solids) {
       if (column_shape_overlap(c, s) <= tol) continue;

@@ -14,6 +14,7 @@
 // Nothing here allocates after construction.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -46,6 +47,13 @@ inline double length(Vec3 a) noexcept {
 }
 constexpr Vec3 lerp(Vec3 a, Vec3 b, double t) noexcept {
   return a + (b - a) * t;
+}
+// Distance from p to the axis-aligned box lo..hi (0 inside it).
+inline double box_distance(Vec3 lo, Vec3 hi, Vec3 p) noexcept {
+  const double dx = std::max({lo.x - p.x, 0.0, p.x - hi.x});
+  const double dy = std::max({lo.y - p.y, 0.0, p.y - hi.y});
+  const double dz = std::max({lo.z - p.z, 0.0, p.z - hi.z});
+  return std::sqrt(dx * dx + dy * dy + dz * dz);
 }
 
 enum class ShapeKind : std::uint8_t { kBox, kCylinder, kSphere, kHalfSpace };
@@ -219,6 +227,10 @@ class Material {
   double distance(Vec3 p, double cap = std::numeric_limits<double>::infinity()) const noexcept;
   // How deep p is inside the material (0 outside); a CSG estimate near holes.
   double depth(Vec3 p) const noexcept;
+  // A lower bound of distance(p): the distance to the nearest box that holds
+  // a part's solids or meshes; 0 when a part is unbounded or turns. Cheap
+  // (no feature is looked at): a probe far from every part skips the searches.
+  double clearance(Vec3 p) const noexcept;
   // The first part the column overlaps by more than `tol`, or -1. A column
   // standing wholly inside one of the part's holes over the part's height
   // does not overlap it.
@@ -283,12 +295,21 @@ class Material {
     bool bounded = true;  // false with a half-space solid
   };
   bool beyond(const PartBounds& b, Vec3 lo, Vec3 hi) const noexcept;
+  // The same box in machine coordinates, for the column queries (valid: the
+  // part neither turns nor has a half-space; a little larger when placed
+  // turned). A column that does not reach it overlaps nothing of the part.
+  struct WorldBox {
+    Vec3 lo, hi;
+    bool valid = false;
+  };
+  static WorldBox world_box(const Part& part, const PartBounds& b) noexcept;
 
   std::vector<Part> parts_;
   std::vector<Placement> start_;      // per part: where it stands at the period's start
   std::vector<std::size_t> turning_;  // the parts on rotary tables
   std::vector<Feature> features_;
   std::vector<PartBounds> bounds_;
+  std::vector<WorldBox> world_;
 };
 
 // Real roots of c[0] + c[1] t + ... + c[n] t^n (n <= 4) in [lo, hi], in

@@ -67,10 +67,7 @@ Vec3 closest_on_triangle(const Triangle& t, Vec3 p) noexcept {
 }
 
 double box_distance(const Aabb& b, Vec3 p) noexcept {
-  const double dx = std::max({b.lo.x - p.x, 0.0, p.x - b.hi.x});
-  const double dy = std::max({b.lo.y - p.y, 0.0, p.y - b.hi.y});
-  const double dz = std::max({b.lo.z - p.z, 0.0, p.z - b.hi.z});
-  return std::sqrt(dx * dx + dy * dy + dz * dz);
+  return geo::box_distance(b.lo, b.hi, p);
 }
 
 bool boxes_overlap(const Aabb& a, const Aabb& b) noexcept {

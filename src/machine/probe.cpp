@@ -78,6 +78,7 @@ double TouchProbe::deflection_at(geo::Vec3 p) const noexcept {
 }
 
 void TouchProbe::reset(geo::Vec3 ball) noexcept {
+  anchor_clear_ = -1.0;
   raw_ = signed_deflection(ball);
   deflection_ = std::max(0.0, raw_);
   state_ = State::kFree;
@@ -87,9 +88,30 @@ void TouchProbe::reset(geo::Vec3 ball) noexcept {
   }
 }
 
+// True when every point of the path a -> b is more than the deflection's
+// search cap (2 r, signed_deflection) from the material, with 1 nm to spare:
+// then no contact can start and the distance search would return its cap.
+// The clearance of a point moved by s is at least its clearance less s.
+bool TouchProbe::far_from_material(geo::Vec3 a, geo::Vec3 b) noexcept {
+  constexpr double kSpare = 1e-6;  // mm
+  const double need = 2.0 * spec_.ball_radius + kSpare;
+  const auto reach = [&] { return std::max(geo::length(a - anchor_), geo::length(b - anchor_)); };
+  if (anchor_clear_ < 0.0 || anchor_clear_ - reach() <= need) {
+    anchor_ = a;
+    anchor_clear_ = solids_.clearance(a);
+  }
+  return anchor_clear_ - reach() > need;
+}
+
 int TouchProbe::advance(geo::Vec3 a, geo::Vec3 b, SensorEdge* edges) noexcept {
   int n = 0;
   const double r = spec_.ball_radius;
+  if (state_ == State::kFree && far_from_material(a, b)) {
+    // What the searches below give there: no contact, the capped distance.
+    raw_ = r - 2.0 * r;
+    deflection_ = 0.0;
+    return 0;
+  }
   double t_from = 0.0;
   if (state_ == State::kFree) {
     geo::Contact c;

@@ -68,6 +68,7 @@ class TouchProbe {
  private:
   enum class State : std::uint8_t { kFree, kTouching, kOn };
   void start_contact(geo::Vec3 normal) noexcept;
+  bool far_from_material(geo::Vec3 a, geo::Vec3 b) noexcept;
 
   ProbeSpec spec_;
   geo::Solids solids_;
@@ -77,6 +78,11 @@ class TouchProbe {
   double deflection_ = 0.0;
   double raw_ = -1.0;
   geo::Contact contact_;
+  // A point and a lower bound of the distance from it to the material
+  // (Solids::clearance; < 0: none yet). While the ball's path stays farther
+  // than its deflection search reaches, a free ball needs no search.
+  geo::Vec3 anchor_;
+  double anchor_clear_ = -1.0;
 };
 
 class SetterSensor {

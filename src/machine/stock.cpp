@@ -15,13 +15,6 @@ double cells_on(double side, double cell) noexcept {
   return std::max(1.0, std::ceil(side / cell - 1e-9));
 }
 
-double box_distance(Vec3 lo, Vec3 hi, Vec3 p) noexcept {
-  const double dx = std::max({lo.x - p.x, 0.0, p.x - hi.x});
-  const double dy = std::max({lo.y - p.y, 0.0, p.y - hi.y});
-  const double dz = std::max({lo.z - p.z, 0.0, p.z - hi.z});
-  return std::sqrt(dx * dx + dy * dy + dz * dz);
-}
-
 // The part [t0, t1] of [0, 1] in which a + t (b - a) lies in [lo, hi] on one
 // axis; false when none.
 bool clip(double a, double b, double lo, double hi, double& t0, double& t1) noexcept {
@@ -157,6 +150,10 @@ bool Stock::first_contact(Vec3 a, Vec3 b, double radius, Contact& out) const noe
   return found;
 }
 
+double Stock::clearance(Vec3 p) const noexcept {
+  return empty() ? kInf : box_distance(lo_, hi_, p);
+}
+
 double Stock::distance(Vec3 p, double cap) const noexcept {
   if (empty()) return cap;
   const double bound = box_distance(lo_, hi_, p);
@@ -229,6 +226,11 @@ bool Solids::first_contact(Vec3 a, Vec3 b, double radius, Contact& out,
 double Solids::distance(Vec3 p, double cap) const noexcept {
   const double d = material_->distance(p, cap);
   return stock_ != nullptr && d > 0.0 ? stock_->distance(p, d) : d;
+}
+
+double Solids::clearance(Vec3 p) const noexcept {
+  const double d = material_->clearance(p);
+  return stock_ != nullptr ? std::min(d, stock_->clearance(p)) : d;
 }
 
 double Solids::depth(Vec3 p) const noexcept {

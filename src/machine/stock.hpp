@@ -65,6 +65,8 @@ class Stock {
   bool first_contact(Vec3 a, Vec3 b, double radius, Contact& out) const noexcept;
   double distance(Vec3 p, double cap = std::numeric_limits<double>::infinity()) const noexcept;
   double depth(Vec3 p) const noexcept;
+  // A lower bound of distance(p): the distance to the box (infinite without a stock).
+  double clearance(Vec3 p) const noexcept;
   // Does a cell whose centre lies more than `tol` inside the column's radius
   // overlap the column's height by more than `tol`?
   bool column_hits(const Column& c, double tol) const noexcept;
@@ -92,6 +94,8 @@ class Solids {
                      bool backward = false) const noexcept;
   double distance(Vec3 p, double cap = std::numeric_limits<double>::infinity()) const noexcept;
   double depth(Vec3 p) const noexcept;
+  // A lower bound of distance(p), as Material::clearance.
+  double clearance(Vec3 p) const noexcept;
 
  private:
   const Material* material_;
