@@ -31,7 +31,13 @@ void Kernel::set_position(const AxisVec& machine) noexcept {
 bool Kernel::check_servo(const TickInput& in) noexcept {
   const FaultLimits& f = cfg_.faults;
   const int n = cfg_.limits.axis_count;
+  // Over all axes without a branch first (locked ones too); the axis is
+  // looked for only when one may be out.
+  bool over = false;
   for (int i = 0; i < n; ++i) {
+    over |= std::fabs(cmd_prev_[i] - in.actual[i]) > f.excess_error[static_cast<std::size_t>(i)];
+  }
+  for (int i = 0; over && i < n; ++i) {
     const double fe = cmd_prev_[i] - in.actual[i];
     if (!locked_.has(i) && std::fabs(fe) > f.excess_error[static_cast<std::size_t>(i)]) {
       fault_ = Fault{Fault::Kind::kExcessError, i, fe, f.excess_error[static_cast<std::size_t>(i)]};
