@@ -455,6 +455,24 @@ Material::Material(std::vector<Part> parts) : parts_(std::move(parts)) {
     bounds_.push_back(b);
     world_.push_back(world_box(part, b));
   }
+  // The box that holds every part, when each part has one.
+  all_.valid = true;
+  all_.lo = Vec3{kInf, kInf, kInf};
+  all_.hi = Vec3{-kInf, -kInf, -kInf};
+  for (const WorldBox& w : world_) {
+    all_.valid = all_.valid && w.valid;
+    all_.lo =
+        Vec3{std::min(all_.lo.x, w.lo.x), std::min(all_.lo.y, w.lo.y), std::min(all_.lo.z, w.lo.z)};
+    all_.hi =
+        Vec3{std::max(all_.hi.x, w.hi.x), std::max(all_.hi.y, w.hi.y), std::max(all_.hi.z, w.hi.z)};
+  }
+}
+
+// Does the column miss the box?
+bool Material::misses(const WorldBox& w, const Column& c) noexcept {
+  return w.valid &&
+         (c.x + c.radius < w.lo.x || c.x - c.radius > w.hi.x || c.y + c.radius < w.lo.y ||
+          c.y - c.radius > w.hi.y || c.top < w.lo.z || c.bottom > w.hi.z);
 }
 
 // The machine-frame box that holds the part's solids and meshes (the corners
@@ -969,14 +987,10 @@ bool Material::leaning_column_hits(std::size_t p, const Column& world, double to
 }
 
 int Material::column_hits(const Column& world, double tol) const noexcept {
+  if (misses(all_, world)) return -1;  // most periods: nowhere near any part
   for (std::size_t p = 0; p < parts_.size(); ++p) {
     const Part& part = parts_[p];
-    if (const WorldBox& w = world_[p];
-        w.valid && (world.x + world.radius < w.lo.x || world.x - world.radius > w.hi.x ||
-                    world.y + world.radius < w.lo.y || world.y - world.radius > w.hi.y ||
-                    world.top < w.lo.z || world.bottom > w.hi.z)) {
-      continue;  // most periods: the column is nowhere near the part
-    }
+    if (misses(world_[p], world)) continue;
     if (!part.place.upright()) {
       if (leaning_column_hits(p, world, tol)) return static_cast<int>(p);
       continue;

@@ -303,6 +303,7 @@ class Material {
     bool valid = false;
   };
   static WorldBox world_box(const Part& part, const PartBounds& b) noexcept;
+  static bool misses(const WorldBox& w, const Column& c) noexcept;
 
   std::vector<Part> parts_;
   std::vector<Placement> start_;      // per part: where it stands at the period's start
@@ -310,6 +311,7 @@ class Material {
   std::vector<Feature> features_;
   std::vector<PartBounds> bounds_;
   std::vector<WorldBox> world_;
+  WorldBox all_;  // the parts' boxes together (valid when each is)
 };
 
 // Real roots of c[0] + c[1] t + ... + c[n] t^n (n <= 4) in [lo, hi], in

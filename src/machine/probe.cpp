@@ -91,16 +91,21 @@ void TouchProbe::reset(geo::Vec3 ball) noexcept {
 // True when every point of the path a -> b is more than the deflection's
 // search cap (2 r, signed_deflection) from the material, with 1 nm to spare:
 // then no contact can start and the distance search would return its cap.
-// The clearance of a point moved by s is at least its clearance less s.
+// The clearance of a point moved by s is at least its clearance less s, and
+// the point of a segment farthest from the anchor is one of its ends.
 bool TouchProbe::far_from_material(geo::Vec3 a, geo::Vec3 b) noexcept {
   constexpr double kSpare = 1e-6;  // mm
   const double need = 2.0 * spec_.ball_radius + kSpare;
-  const auto reach = [&] { return std::max(geo::length(a - anchor_), geo::length(b - anchor_)); };
-  if (anchor_clear_ < 0.0 || anchor_clear_ - reach() <= need) {
-    anchor_ = a;
-    anchor_clear_ = solids_.clearance(a);
-  }
-  return anchor_clear_ - reach() > need;
+  // Both ends within clearance - need of the anchor (squared: no root).
+  const auto holds = [&] {
+    const double m = anchor_clear_ - need;
+    const geo::Vec3 da = a - anchor_, db = b - anchor_;
+    return m > 0.0 && std::max(geo::dot(da, da), geo::dot(db, db)) < m * m;
+  };
+  if (anchor_clear_ >= 0.0 && holds()) return true;
+  anchor_ = a;
+  anchor_clear_ = solids_.clearance(a);
+  return holds();
 }
 
 int TouchProbe::advance(geo::Vec3 a, geo::Vec3 b, SensorEdge* edges) noexcept {
