@@ -48,8 +48,12 @@ configure_and_build() { # source folder, build folder
   command -v ccache >/dev/null && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
   local generator=()
   command -v ninja >/dev/null && [ ! -f "$2/CMakeCache.txt" ] && generator=(-G Ninja)
-  cmake -S "$1" -B "$2" "${generator[@]}" "${launcher[@]}" -DCMAKE_BUILD_TYPE=Release \
-    -DSKIPNC_TESTS=OFF -DSKIPNC_BENCH=OFF -DSKIPNC_PYTHON=OFF -DSKIPNC_WERROR=OFF --no-warn-unused-cli >/dev/null
+  # Configured once: a work build configured with tests or benchmarks (to run
+  # them on the same objects) stays so.
+  [ -f "$2/CMakeCache.txt" ] ||
+    cmake -S "$1" -B "$2" "${generator[@]}" "${launcher[@]}" -DCMAKE_BUILD_TYPE=Release \
+      -DSKIPNC_TESTS=OFF -DSKIPNC_BENCH=OFF -DSKIPNC_PYTHON=OFF -DSKIPNC_WERROR=OFF \
+      --no-warn-unused-cli >/dev/null
   cmake --build "$2" --target skipnc -j"$(nproc)" >/dev/null
 }
 
