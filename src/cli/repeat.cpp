@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "cli/guard.hpp"
+#include "cli/junit.hpp"
 #include "cli/outputs.hpp"
 #include "core/utf8.hpp"
 #include "interpreter/variables.hpp"
@@ -134,6 +135,7 @@ int repeat_command(const RunArgs& a) {
   setup.include_dirs = a.include;
   setup.dprnt_path = a.dprnt;
   setup.strict = a.strict;
+  setup.strict_allow = a.allow;
 
   // Offsets as the machine starts, to tell which ones the program wrote.
   const auto offsets = offset_variables(s.machine);
@@ -167,6 +169,7 @@ int repeat_command(const RunArgs& a) {
   std::vector<std::vector<std::optional<double>>> offset_values(offsets.size());
   int alarms = 0;
   std::string first_alarm;
+  std::vector<JunitCase> cases;  // --junit: one per run
   int runs = a.repeat;
   // SIGTERM / SIGINT end the repetitions: the report keeps the runs that
   // finished, says "interrupted", and the exit status is 1 (was: the signal
@@ -197,6 +200,15 @@ int repeat_command(const RunArgs& a) {
       runs = run > 0 ? run - 1 : 0;  // this run is cut short: not counted
       break;
     }
+    cases.push_back(JunitCase{
+        nominal ? std::string("nominal run")
+                : fmt::format("run {} (seed {})", run, seed0 + static_cast<std::uint64_t>(run - 1)),
+        "skipnc.repeat." + a.program,
+        res->time_s,
+        res->status != sim::RunStatus::kCompleted,
+        "alarm",
+        res->alarm ? run::describe(*res->alarm, &s.dialect) : std::string(),
+        {}});
     if (res->status != sim::RunStatus::kCompleted) {
       if (!nominal) ++alarms;
       if (first_alarm.empty() && res->alarm) {
@@ -272,6 +284,14 @@ int repeat_command(const RunArgs& a) {
     j += "\n  ]\n}\n";
     auto w = report::write_atomic(a.report, j);
     if (!w) {
+      std::cerr << "skipnc: " << w.error().detail << "\n";
+      return 1;
+    }
+  }
+  if (!a.junit.empty()) {
+    double total = 0.0;
+    for (const auto& c : cases) total += c.time_s;
+    if (auto w = write_junit(a.junit, a.program, total, cases); !w) {
       std::cerr << "skipnc: " << w.error().detail << "\n";
       return 1;
     }

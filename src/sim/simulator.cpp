@@ -254,6 +254,15 @@ StockResult stock_result(const machine::geo::Stock& st) {
   return r;
 }
 
+// --strict: the first warning that --allow does not name, or null.
+const interp::Warning* first_refused(const std::vector<interp::Warning>& ws,
+                                     const std::vector<std::string>& allow) {
+  for (const interp::Warning& w : ws) {
+    if (std::find(allow.begin(), allow.end(), w.code) == allow.end()) return &w;
+  }
+  return nullptr;
+}
+
 }  // namespace
 
 Simulator::Simulator(const config::MachineConfig& m, const config::Dialect& d,
@@ -349,11 +358,14 @@ Result<RunResult> Simulator::run(const interp::Setup& setup, const RunOptions& o
       }
       if (*st == interp::Step::kSync) waiting = true;
       if (*st == interp::Step::kEnd) ending = true;
-      if (setup.strict && !safety.warnings().empty()) {
+      const interp::Warning* strict_w =
+          setup.strict ? first_refused(safety.warnings(), setup.strict_allow) : nullptr;
+      if (strict_w != nullptr) {
         // --strict: the machine's warning (a skip move that cannot stop in
-        // the over-travel) is an alarm at its block; as for any program
-        // alarm, what is already queued (the skip move too) runs first.
-        const interp::Warning& w = safety.warnings().front();
+        // the over-travel) is an alarm at its block unless --allow names
+        // it; as for any program alarm, what is already queued (the skip
+        // move too) runs first.
+        const interp::Warning& w = *strict_w;
         program_alarm = Error{AlarmId::kStrictWarning, w.code + ": " + w.text,
                               SourceLoc{file_of(w.context), w.line, 1}, -1};
         program_alarm_context = w.context;
@@ -495,9 +507,14 @@ Result<RunResult> Simulator::run(const interp::Setup& setup, const RunOptions& o
   res.time_s = k.clock().seconds(k.now());
   res.block_times = times.finish();
   res.period_s = k.clock().period_s();
-  // Where the axes are: the command, unless an axis was held away from it.
+  // Where the axes are: the command, unless an axis was held away from it
+  // (a fault) or held still (machine lock, Z-axis cancel: the machine
+  // stays where it is while the work position follows the command).
   res.final_machine = held ? plant.actual() : k.command();
   res.final_work = in.work_from_machine(res.final_machine);
+  for (int i = 0; i < m_.axis_count(); ++i) {
+    if (locked.has(i)) res.final_machine[i] = plant.actual()[i];
+  }
   res.skips = in.skips();
   if (const interp::SkipRecord* p = in.pending_skip(); p != nullptr && res.alarm) {
     res.skips.push_back(cut_short_skip(*p, k.skip(), res.alarm_position, in));
