@@ -2,43 +2,16 @@
 
 #include <fmt/format.h>
 
+#include "plot/svg_util.hpp"
 #include "report/report.hpp"
 
 namespace skipnc::cli {
 namespace {
 
-// XML 1.0 text: the five special characters as entities, control bytes
-// other than tab, newline and carriage return (not allowed in XML 1.0) as
-// '?'. The report's texts are valid UTF-8 already.
+// XML 1.0 text: the plot's escaping (special characters as entities, bytes
+// XML 1.0 forbids replaced, ill-formed UTF-8 made valid).
 std::string escape(const std::string& s) {
-  std::string out;
-  out.reserve(s.size());
-  for (char c : s) {
-    switch (c) {
-      case '&':
-        out += "&amp;";
-        break;
-      case '<':
-        out += "&lt;";
-        break;
-      case '>':
-        out += "&gt;";
-        break;
-      case '"':
-        out += "&quot;";
-        break;
-      case '\'':
-        out += "&apos;";
-        break;
-      default:
-        if (static_cast<unsigned char>(c) < 0x20 && c != '\t' && c != '\n' && c != '\r') {
-          out += '?';
-        } else {
-          out += c;
-        }
-    }
-  }
-  return out;
+  return plot::esc(s);
 }
 
 }  // namespace

@@ -22,7 +22,7 @@ struct JunitCase {
 };
 
 // The XML text of one suite (text is escaped; bytes that XML 1.0 forbids
-// are replaced by '?').
+// are replaced by a space).
 std::string junit_xml(const std::string& suite, double time_s, const std::vector<JunitCase>& cases);
 
 // Writes it atomically (report::write_atomic).

@@ -254,6 +254,15 @@ StockResult stock_result(const machine::geo::Stock& st) {
   return r;
 }
 
+// Why the motion stands still: the operator's switch that holds it.
+std::string held_reason(const kernel::OperatorState& op) {
+  if (op.feed_hold) return "the motion is in feed hold";
+  if (op.interlock) return "the axes are interlocked";
+  return "the feed override is 0 %";
+}
+constexpr const char* held_never_released =
+    " and no later [[operator]] action of the scene releases it: the run would never end";
+
 // --strict: the first warning that --allow does not name, or null.
 const interp::Warning* first_refused(const std::vector<interp::Warning>& ws,
                                      const std::vector<std::string>& allow) {
@@ -313,6 +322,7 @@ Result<RunResult> Simulator::run(const interp::Setup& setup, const RunOptions& o
                                ? p_.get(d_.sw.dry_run_feed_param) * (m_.inch_machine ? 25.4 : 1.0)
                                : 0.0;
   std::size_t next_action = 0;  // scene [[operator]] actions not yet applied
+  std::int64_t held_ticks = 0;  // periods the motion has stood held for ever
 
   kernel::TickInput tin;
   kernel::TickOutput tout;
@@ -475,6 +485,19 @@ Result<RunResult> Simulator::run(const interp::Setup& setup, const RunOptions& o
     }
     if (ending && router.drained() && k.idle()) {
       if (program_alarm) alarm(*program_alarm, program_alarm_context);
+      break;
+    }
+    // A feed held for ever: the motion stands (feed hold, interlock or
+    // override 0 %: no profile time passes) with motion still to run, and
+    // no later [[operator]] action of the scene can release it. It ends
+    // after one second of it, not at limits.max_time_s.
+    const bool hold_forever =
+        tout.time_scale < 1e-12 && !k.idle() && next_action >= scene_.operator_actions.size();
+    held_ticks = hold_forever ? held_ticks + 1 : 0;
+    if (static_cast<double>(held_ticks) * k.clock().period_s() >= 1.0) {
+      alarm(Error{AlarmId::kTimeLimit, held_reason(op) + held_never_released,
+                  SourceLoc{file_of(tout.source), tout.line, 1}, -1},
+            tout.source);
       break;
     }
     if (k.now() >= m_.limits.max_ticks) {
