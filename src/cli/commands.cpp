@@ -11,6 +11,7 @@
 #include <iostream>
 
 #include "canon/print.hpp"
+#include "cli/junit.hpp"
 #include "cli/outputs.hpp"
 #include "config/skip_inputs.hpp"
 #include "core/embedded.hpp"
@@ -88,7 +89,9 @@ void print_summary(std::FILE* f, const sim::RunResult& r, const run::Session& s,
                  sk.signal.empty() ? "signal" : sk.signal, sk.time_s, fmt_axes(sk.position, m),
                  fmt_axes(sk.end_position, m));
     } else {
-      fmt::print(f, "no signal: ran to its end point {}\n", fmt_axes(sk.position, m));
+      // The tip's end point in work coordinates (#5001..), not #5061.. (the
+      // tool reference point on Fanuc-class dialects).
+      fmt::print(f, "no signal: ran to its end point {}\n", fmt_axes(sk.end_position, m));
     }
   }
   for (const auto& msg : r.messages) fmt::print(f, "  message: {}\n", msg);
@@ -101,6 +104,55 @@ void print_summary(std::FILE* f, const sim::RunResult& r, const run::Session& s,
     }
   }
   fmt::print(f, "  final position {}\n", fmt_axes(r.final_work, m));
+}
+
+// Each --expect against what the run gave (the report's "expectations").
+std::vector<report::CheckResult> check_expectations(const std::vector<run::Expectation>& expects,
+                                                    const std::vector<run::VarRef>& expect_vars,
+                                                    const sim::RunResult& r, sim::Simulator& sim,
+                                                    const config::Dialect& d) {
+  run::ObservedRun got;
+  got.status = r.status == sim::RunStatus::kCompleted     ? "completed"
+               : r.status == sim::RunStatus::kInterrupted ? "interrupted"
+                                                          : "alarm";
+  if (r.alarm) {
+    const report::AlarmView v = report::view_alarm(*r.alarm, &d);
+    got.alarm = v.number;
+    got.alarm_code = v.code;
+    got.alarm_key = std::string(alarm_key(r.alarm->id));
+  }
+  for (const auto& v : expect_vars) {
+    Result<interp::Value> val = v.name.empty() ? sim.interpreter()->read_variable(v.number)
+                                               : sim.interpreter()->read_named(v.name);
+    std::optional<double> x;
+    if (val && !val->vacant) x = val->v;
+    got.variables.emplace_back(v.key, x);
+  }
+  std::vector<report::CheckResult> out;
+  for (const auto& e : expects) out.push_back(run::evaluate_expectation(e, got));
+  return out;
+}
+
+// The JUnit test cases of a run: one per --expect; without any, one that
+// passes when the run completed.
+std::vector<JunitCase> run_cases(const RunArgs& a, const report::ReportInput& in,
+                                 const config::Dialect& d) {
+  std::vector<JunitCase> cases;
+  const std::string cls = "skipnc.run." + a.program;
+  for (const auto& c : in.expectations) {
+    cases.push_back(JunitCase{c.text, cls, 0.0, !c.pass, "expectation", c.message, {}});
+  }
+  if (cases.empty()) {
+    JunitCase c{"completes", cls, in.result.time_s, false, {}, {}, {}};
+    if (in.result.status != sim::RunStatus::kCompleted) {
+      c.failed = true;
+      c.failure_type = in.result.alarm ? "alarm" : "interrupted";
+      c.failure_message =
+          in.result.alarm ? run::describe(*in.result.alarm, &d) : std::string("interrupted");
+    }
+    cases.push_back(std::move(c));
+  }
+  return cases;
 }
 
 struct Outcome {
@@ -121,6 +173,7 @@ int execute(const RunArgs& a, run::Session& s, interp::Setup setup, bool explain
   for (const auto& text : a.expect) {
     auto e = run::parse_expectation(text);
     if (!e) return start_failure(a, e.error(), &s);
+    if (auto n = run::check_alarm_name(*e, s.dialect); !n) return start_failure(a, n.error(), &s);
     if (e->kind == run::Expectation::Kind::kVariable) {
       auto r = run::parse_var_ref("#" + e->var);
       if (!r) return start_failure(a, r.error(), &s);
@@ -192,27 +245,23 @@ int execute(const RunArgs& a, run::Session& s, interp::Setup setup, bool explain
   // --expect: checked on the run's outcome; variables as the control holds them.
   std::vector<std::string> failed;
   if (!expects.empty()) {
-    run::ObservedRun got;
-    got.status = in.result.status == sim::RunStatus::kCompleted     ? "completed"
-                 : in.result.status == sim::RunStatus::kInterrupted ? "interrupted"
-                                                                    : "alarm";
-    if (in.result.alarm) got.alarm = report::view_alarm(*in.result.alarm, &s.dialect).number;
-    for (const auto& v : expect_vars) {
-      Result<interp::Value> val = v.name.empty() ? sim.interpreter()->read_variable(v.number)
-                                                 : sim.interpreter()->read_named(v.name);
-      std::optional<double> x;
-      if (val && !val->vacant) x = val->v;
-      got.variables.emplace_back(v.key, x);
-    }
+    in.expectations = check_expectations(expects, expect_vars, in.result, sim, s.dialect);
     bool outcome_expected = false;
-    for (const auto& e : expects) {
-      outcome_expected |= e.kind != run::Expectation::Kind::kVariable;
-      if (auto why = run::check_expectation(e, got); !why.empty()) failed.push_back(why);
+    for (const auto& e : expects) outcome_expected |= e.kind != run::Expectation::Kind::kVariable;
+    for (const auto& c : in.expectations) {
+      if (!c.pass) failed.push_back(c.message);
     }
     // The run's outcome was asked for and held: an expected alarm is a pass
     // (an output that could not be written still fails).
     if (outcome_expected && failed.empty() && !output_failed) rc = 0;
     if (!failed.empty()) rc = 3;
+  }
+  if (!a.junit.empty()) {
+    auto j = write_junit(a.junit, a.program, in.result.time_s, run_cases(a, in, s.dialect));
+    if (!j) {
+      std::cerr << "skipnc: " << j.error().detail << "\n";
+      rc = rc == 0 ? 1 : rc;
+    }
   }
   // The report is made only when asked for (it costs more than the run's
   // motion on a program of many short moves).
@@ -239,6 +288,7 @@ interp::Setup make_setup(const RunArgs& a, run::Session& s) {
   setup.include_dirs = a.include;
   setup.dprnt_path = a.dprnt;
   setup.strict = a.strict;
+  setup.strict_allow = a.allow;
   return setup;
 }
 
@@ -336,6 +386,7 @@ int canon_command(const RunArgs& a) {
       sync.machine_position = (*in)->position();
       sync.actual_position = sync.machine_position;
       sync.skip_done = true;
+      sync.no_machine = true;
       sync.latch_machine = sync.machine_position;
       auto r = (*in)->sync(sync);
       if (!r && r.error().id != AlarmId::kSkipMiss && r.error().id != AlarmId::kProbeNoContact &&

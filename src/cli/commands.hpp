@@ -16,16 +16,18 @@ struct RunArgs {
   std::vector<std::string> vars;
   std::vector<std::string> expect;  // --expect (run/expect.hpp)
   std::string report;
+  std::string junit;  // --junit FILE: the checks as JUnit XML (cli/junit.hpp)
   std::string trace;
   std::vector<std::string> plot;  // --plot FILE: .svg or .html pictures of the run
   std::vector<std::string> include;
   std::string dprnt;
   bool quiet = false;
-  int repeat = 0;             // --repeat N: N runs with the probe's scatter (cli/repeat.hpp)
-  long long seed = -1;        // --seed S: first seed of those runs (-1: the scene's)
-  bool progress = false;      // --progress: a line on standard error every few seconds
-  bool strict = false;        // --strict: a warning is an alarm (strict_warning)
-  long long trace_every = 1;  // --trace-every N: a trace row every N servo periods
+  int repeat = 0;                  // --repeat N: N runs with the probe's scatter (cli/repeat.hpp)
+  long long seed = -1;             // --seed S: first seed of those runs (-1: the scene's)
+  bool progress = false;           // --progress: a line on standard error every few seconds
+  bool strict = false;             // --strict: a warning is an alarm (strict_warning)
+  std::vector<std::string> allow;  // --allow CODE: this warning stays a warning under --strict
+  long long trace_every = 1;       // --trace-every N: a trace row every N servo periods
 };
 
 int run_command(const RunArgs& a);

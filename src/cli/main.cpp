@@ -45,6 +45,10 @@ int run_main(int argc, char** argv) {
                 "a progress line on standard error every 2 s (also without a terminal)");
   run->add_flag("--strict", run_args.strict,
                 "a warning is an alarm (SN9076 strict_warning) at the block that raised it");
+  run->add_option("--allow", run_args.allow,
+                  "under --strict, warning CODE stays a warning (repeatable: --allow no_effect)");
+  run->add_option("--junit", run_args.junit,
+                  "write the checks (each --expect; with --repeat each run) as JUnit XML here");
   run->add_option("--expect", run_args.expect,
                   "CI check: #140=-0.05+-0.001, #140=vacant, status=completed, alarm=9061 "
                   "(repeatable; exit status 3 when one fails)");
@@ -63,6 +67,7 @@ int run_main(int argc, char** argv) {
   canon->add_option("-p,--param", canon_args.params, "parameter N=V or N#B=V (repeatable)");
   canon->add_option("-I,--include", canon_args.include, "subprogram folder (repeatable)");
   canon->add_flag("--strict", canon_args.strict, "a warning is an alarm (SN9076 strict_warning)");
+  canon->add_option("--allow", canon_args.allow, "under --strict, warning CODE stays a warning");
 
   RunArgs demo_args;
   auto* demo = app.add_subcommand("demo", "run the built-in probing demo and explain it");
@@ -89,6 +94,7 @@ int run_main(int argc, char** argv) {
   plot->add_flag("--progress", plot_args.progress,
                  "a progress line on standard error every 2 s (also without a terminal)");
   plot->add_flag("--strict", plot_args.strict, "a warning is an alarm (SN9076 strict_warning)");
+  plot->add_option("--allow", plot_args.allow, "under --strict, warning CODE stays a warning");
 
   auto* dialects = app.add_subcommand("dialects", "list the dialects and what differs");
 

@@ -6,6 +6,7 @@
 #include <iostream>
 
 #include "cli/guard.hpp"
+#include "cli/junit.hpp"
 #include "cli/outputs.hpp"
 #include "report/report.hpp"
 #include "run/repeat.hpp"
@@ -59,6 +60,7 @@ int repeat_command(const RunArgs& a) {
   }
   rq.program.include_dirs = a.include;
   rq.program.strict = a.strict;
+  rq.program.allow = a.allow;
   rq.dprnt_path = a.dprnt;
   rq.runs = a.repeat;
   if (a.seed >= 0) rq.seed = static_cast<std::uint64_t>(a.seed);
@@ -70,6 +72,25 @@ int repeat_command(const RunArgs& a) {
   if (!a.report.empty()) {
     auto w = report::write_atomic(a.report, run::repeat_json(*out, a.program));
     if (!w) {
+      std::cerr << "skipnc: " << w.error().detail << "\n";
+      return 1;
+    }
+  }
+  if (!a.junit.empty()) {
+    std::vector<JunitCase> cases;  // one per run
+    double total = 0.0;
+    for (const run::RepeatRun& r : out->log) {
+      cases.push_back(JunitCase{r.run == 0 ? std::string("nominal run")
+                                           : fmt::format("run {} (seed {})", r.run, r.seed),
+                                "skipnc.repeat." + a.program,
+                                r.time_s,
+                                r.alarm,
+                                "alarm",
+                                r.alarm_text,
+                                {}});
+      total += r.time_s;
+    }
+    if (auto w = write_junit(a.junit, a.program, total, cases); !w) {
       std::cerr << "skipnc: " << w.error().detail << "\n";
       return 1;
     }

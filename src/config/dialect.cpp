@@ -101,6 +101,8 @@ Result<void> load_switches(const toml::table& t, std::string_view origin, Switch
       {"block_end_tool_offsets", &sw.block_end_tool_offsets},
       {"current_tool_offsets", &sw.current_tool_offsets},
       {"skip_tool_offsets", &sw.skip_tool_offsets},
+      {"skip_position_increment", &sw.skip_position_increment},
+      {"slash_comments", &sw.slash_comments},
       {"skip_g31", &sw.skip_g31},
       {"probe_g38", &sw.probe_g38},
       {"probe_report_line", &sw.probe_report_line},

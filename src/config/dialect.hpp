@@ -160,6 +160,13 @@ struct Switches {
   bool block_end_tool_offsets = false;
   bool current_tool_offsets = true;
   bool skip_tool_offsets = true;
+  // #5061.. (and the report's skips[].position, the same number) hold the
+  // skip position rounded to the least input increment (0.001 mm, 0.0001
+  // inch: the control counts positions in whole increments), or the latched
+  // value as it is (a control computing in floating point).
+  bool skip_position_increment = false;
+  // `//` starts a comment to the end of the block (CompassNC).
+  bool slash_comments = false;
 };
 
 struct Dialect {

@@ -504,6 +504,17 @@ Result<void> parse_block(std::string_view text, SourceLoc loc, std::uint64_t off
   out.clear();
   out.loc = loc;
   out.offset = offset;
+  if (limits.slash_comments) {
+    bool in_comment = false;
+    for (std::size_t i = 0; i + 1 < text.size(); ++i) {
+      if (text[i] == '(') in_comment = true;
+      if (text[i] == ')') in_comment = false;
+      if (!in_comment && text[i] == '/' && text[i + 1] == '/') {
+        text = text.substr(0, i);
+        break;
+      }
+    }
+  }
   detail::Parser parser(text, loc, out, limits);
   auto r = parser.run();
   parser.finish();

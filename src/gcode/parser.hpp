@@ -12,6 +12,9 @@ struct ParseLimits {
   int max_bracket_depth = 64;  // nesting of [ ] (the dialect may refuse deeper)
   int max_digits = 15;         // significant digits in one number
   Syntax syntax = Syntax::kMacroB;
+  // `//` outside a ( ) comment starts a comment to the end of the block
+  // (CompassNC, seed 003's example: `N12 G31 X100 F200 // ...`).
+  bool slash_comments = false;
 };
 
 // Parses the text of exactly one block (no end-of-block character inside,

@@ -47,6 +47,7 @@ Flow<void> Interpreter::Impl::init(const AxisVec& start) {
   parse_limits.syntax = ngc    ? gcode::Syntax::kRs274ngc
                         : grbl ? gcode::Syntax::kGrbl
                                : gcode::Syntax::kMacroB;
+  parse_limits.slash_comments = dialect.sw.slash_comments;
   nat = params.bit(config::param::kSignedArcFunctions);
   tools.assign(static_cast<std::size_t>(mc.tool_offset_count) + 1, config::ToolOffset{});
   for (const auto& [n, t] : mc.tool_offsets) tools[static_cast<std::size_t>(n)] = t;
@@ -120,7 +121,8 @@ void add_warning(std::vector<Warning>& list, Warning w) {
 
 // Under --strict the warning is the block's alarm.
 Flow<void> Interpreter::Impl::warn(const char* code, std::string text, SourceLoc where) {
-  if (setup.strict) {
+  if (setup.strict && std::find(setup.strict_allow.begin(), setup.strict_allow.end(),
+                                std::string_view(code)) == setup.strict_allow.end()) {
     return fail(AlarmId::kStrictWarning, std::string(code) + ": " + text, where);
   }
   add_warning(warnings, Warning{code, frames.empty() ? 0 : frames.back().context, where.line,

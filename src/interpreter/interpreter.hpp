@@ -39,6 +39,8 @@ struct Setup {
   // --strict: a warning is an alarm (strict_warning) at the block that
   // raised it, instead of a line in the report.
   bool strict = false;
+  // --allow CODE: warnings with these codes stay warnings under --strict.
+  std::vector<std::string> strict_allow;
 };
 
 // Something the run did that a user should know and that is not an alarm:
@@ -74,6 +76,9 @@ struct SyncState {
   bool active_at_start = false;  // the input was already active (SkipSpec::active_at_start_fails)
   AxisVec latch_machine;         // machine coordinates stored by the skip
   int input_index = -1;          // which selected input ended the block (-1: none/torque)
+  // No machine answered (canon): the skip "reached its end point" by
+  // assumption, so a read of #5061.. is no read of a miss.
+  bool no_machine = false;
 };
 
 // Where a block runs: its file and program, and the call that led there.

@@ -3,6 +3,8 @@
 // model behind feed per revolution and constant surface speed; the T code
 // with geometry and wear offsets; G50 coordinate system setting and speed
 // clamp. The axis-word rules apply to mills too (without U/W/H).
+#include <fmt/format.h>
+
 #include <cmath>
 #include <numbers>
 #include <string>
@@ -125,7 +127,7 @@ Flow<void> Interpreter::Impl::need_spindle_for_feed(SourceLoc where) const {
 Flow<void> Interpreter::Impl::lathe_tool(const Words& words, ModalState& next) {
   const WordVal& t = words.at('T');
   if (t.value != std::trunc(t.value) || t.value < 0 || t.value > 99999999) {
-    return fail(AlarmId::kIllegalOffsetNumber, "T" + std::to_string(t.value), loc(t.column));
+    return fail(AlarmId::kIllegalOffsetNumber, "T" + fmt::format("{}", t.value), loc(t.column));
   }
   const auto code = static_cast<int>(t.value);
   const int tool = code / 100;
@@ -235,7 +237,7 @@ Flow<void> Interpreter::Impl::lathe_offset_setting(const Words& words, SourceLoc
   const double n = geometry ? pw.value - 10000 : pw.value;
   if (pw.value != std::trunc(pw.value) || n < 1 || n > mc.tool_offset_count) {
     return fail(AlarmId::kIllegalOffsetNumber,
-                "G10 P" + std::to_string(pw.value) + ": wear offsets are P1-P" +
+                "G10 P" + fmt::format("{}", pw.value) + ": wear offsets are P1-P" +
                     std::to_string(mc.tool_offset_count) + ", geometry offsets P10001-P" +
                     std::to_string(10000 + mc.tool_offset_count),
                 loc(pw.column));
@@ -262,7 +264,7 @@ Flow<void> Interpreter::Impl::lathe_offset_setting(const Words& words, SourceLoc
   if (words.has('Q')) {
     const WordVal& q = words.at('Q');
     if (q.value != std::trunc(q.value) || q.value < 0 || q.value > 9) {
-      return fail(AlarmId::kBadValue, "G10 Q" + std::to_string(q.value) + ": the tip is 0-9",
+      return fail(AlarmId::kBadValue, "G10 Q" + fmt::format("{}", q.value) + ": the tip is 0-9",
                   loc(q.column));
     }
     t.tip = static_cast<int>(q.value);

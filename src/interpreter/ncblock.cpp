@@ -19,6 +19,8 @@
 //   7. motion (group 01, G31 skip, G45-G48)
 //   8. other M codes (M00 M01 M02 M30 M98 M99, machine M codes)
 //   9. G66 modal macro after a block that moved
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <bit>
 #include <cmath>
@@ -153,7 +155,7 @@ Flow<void> Interpreter::Impl::collect_words(Words& words) {
       }
       const double code10 = std::round(v.value * 10.0);
       if (std::fabs(v.value * 10.0 - code10) > 1e-6 || code10 < 0 || code10 > 9999) {
-        return fail(AlarmId::kUnknownGCode, "G" + std::to_string(v.value), loc(w.column));
+        return fail(AlarmId::kUnknownGCode, "G" + fmt::format("{}", v.value), loc(w.column));
       }
       words.g[static_cast<std::size_t>(words.g_count)] = static_cast<int>(code10);
       words.g_col[static_cast<std::size_t>(words.g_count++)] = w.column;
@@ -166,7 +168,7 @@ Flow<void> Interpreter::Impl::collect_words(Words& words) {
       // A value in brackets is rounded (M[3.5] is M4); a literal must be whole.
       const double m = w.is_expr ? std::round(v.value) : v.value;
       if (m != std::trunc(m) || m < 0 || m > 99999999) {
-        return fail(AlarmId::kUnknownMCode, "M" + std::to_string(v.value), loc(w.column));
+        return fail(AlarmId::kUnknownMCode, "M" + fmt::format("{}", v.value), loc(w.column));
       }
       words.m[static_cast<std::size_t>(words.m_count++)] = static_cast<int>(m);
       continue;
@@ -193,8 +195,7 @@ Flow<void> Interpreter::Impl::set_tool_length(const Words& words, LengthComp mod
   if (words.has('H')) {
     const double v = words.at('H').value;
     if (v != std::trunc(v) || v < 0 || v > mc.tool_offset_count) {
-      return fail(AlarmId::kIllegalOffsetNumber, "H" + std::to_string(v),
-                  loc(words.at('H').column));
+      return fail(AlarmId::kIllegalOffsetNumber, fmt::format("H{}", v), loc(words.at('H').column));
     }
     h = static_cast<int>(v);
   }
@@ -221,7 +222,7 @@ Flow<void> Interpreter::Impl::data_setting(const Words& words, SourceLoc where) 
     const double hi = l == 2 ? 6 : kExtraWorkSystems;
     if (pv != std::trunc(pv) || pv < lo || pv > hi) {
       return fail(AlarmId::kIllegalOffsetNumber,
-                  "G10 L" + std::to_string(l) + " P" + std::to_string(pv) +
+                  "G10 L" + std::to_string(l) + " P" + fmt::format("{}", pv) +
                       (l == 2 ? ": work offsets are P0 (EXT) and P1-P6 (G54-G59)"
                               : ": G54.1 work offsets are P1-P300"),
                   loc(words.at('P').column));
@@ -238,7 +239,7 @@ Flow<void> Interpreter::Impl::data_setting(const Words& words, SourceLoc where) 
   }
   if (l == 1 || (l >= 10 && l <= 13)) {
     if (pv != std::trunc(pv) || pv < 1 || pv > mc.tool_offset_count) {
-      return fail(AlarmId::kIllegalOffsetNumber, "G10 P" + std::to_string(pv),
+      return fail(AlarmId::kIllegalOffsetNumber, fmt::format("G10 P{}", pv),
                   loc(words.at('P').column));
     }
     if (!words.has('R'))
@@ -293,10 +294,12 @@ Flow<void> Interpreter::Impl::plan_g_codes(const Words& words, BlockPlan& plan) 
       return fail(AlarmId::kUnknownGCode, g_name(code), at);
     }
     if ((def->avail & kG38Dialect) != 0 && !dialect.sw.probe_g38) {
+      // Named as itself: G38.x is the straight probe, G92.1 and its kin
+      // are the codes of the G38 controls they are (their summary).
+      const bool probe = code >= 382 && code <= 385;
       return fail(AlarmId::kUnknownGCode,
-                  g_name(code) +
-                      " (straight probe) is not a code of this control; it probes "
-                      "with G31",
+                  g_name(code) + " (" + (probe ? std::string("straight probe") : def->summary) +
+                      ") is not a code of this control" + (probe ? "; it probes with G31" : ""),
                   at);
     }
     if (code == 310 && !dialect.sw.skip_g31) {
@@ -712,7 +715,7 @@ Flow<Step> Interpreter::Impl::commit_sub_return(const Words& words) {
     if (pv < 1 || pv > 99999) {
       return fail(
           AlarmId::kIllegalSequenceNumber,
-          "M99 P" + std::to_string(words.at('P').value) + ": sequence numbers are 1 to 99999",
+          "M99 P" + fmt::format("{}", words.at('P').value) + ": sequence numbers are 1 to 99999",
           loc(words.at('P').column));
     }
     label = static_cast<std::int64_t>(pv);

@@ -9,6 +9,7 @@
 // for them and keeps what belongs to the interpreter: the pending skip, the
 // modal feed, the report's record. Latched values (21-26) are finish_skip's.
 #include <cctype>
+#include <cmath>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -35,6 +36,25 @@ Flow<Step> Interpreter::Impl::skip_block(const Words& words, const AxisVec& targ
   }
   const SourceLoc at = loc(cur_col);
   const config::Switches& sw = dialect.sw;
+  // G31 is a linear move on every control read (seeds 000-003: "linear
+  // interpolation"): arc words in its block are refused, not run straight.
+  for (const int g : {20, 30}) {
+    if (words.has_g(g)) {
+      return fail(AlarmId::kSkipSyntax,
+                  std::string(g == 20 ? "G02" : "G03") +
+                      " cannot be commanded with G31: the skip is a linear move",
+                  at);
+    }
+  }
+  for (const char c : {'I', 'J', 'R'}) {
+    if (words.has(c)) {
+      return fail(AlarmId::kSkipSyntax,
+                  std::string(1, c) +
+                      " (an arc word) is not an address of G31: the skip is a "
+                      "linear move",
+                  loc(words.at(c).column));
+    }
+  }
   skip_rules::BlockWords b;
   auto word = [&](char c) -> std::optional<skip_rules::Word> {
     if (!words.has(c)) return std::nullopt;
@@ -139,8 +159,12 @@ AxisVec Interpreter::Impl::record_skip(const SyncState& s) {
   const PendingSkip& ps = pending_skip;
   const AxisVec latch = s.triggered ? s.latch_machine : ps.target;
   skip_machine = latch;
+  // Controls that count in whole increments store the increment nearest
+  // the latch (skip_position_increment); the report shows the same number.
+  const double inc = modal.units == Units::kInch ? 0.0001 : 0.001;
   for (int i = 0; i < axis_count; ++i) {
-    skip_work[i] = position_var(i, latch[i], dialect.sw.skip_tool_offsets);
+    const double v = position_var(i, latch[i], dialect.sw.skip_tool_offsets);
+    skip_work[i] = dialect.sw.skip_position_increment ? std::round(v / inc) * inc + 0.0 : v;
   }
   have_skip = true;
   pos = s.machine_position;
@@ -150,6 +174,16 @@ AxisVec Interpreter::Impl::record_skip(const SyncState& s) {
   rec.position = skip_work;
   rec.position_has_tool_offsets = dialect.sw.skip_tool_offsets;
   rec.machine_position = latch;
+  // Machine lock / Z-axis cancel: #5061.. store the command at the signal
+  // for a held axis, but the machine is where it stands (as #5021..).
+  const bool lock =
+      dialect.sw.machine_lock_param != 0 && params.get(dialect.sw.machine_lock_param) != 0.0;
+  const bool z_cancel =
+      dialect.sw.z_cancel_param != 0 && params.get(dialect.sw.z_cancel_param) != 0.0;
+  for (int i = 0; i < axis_count; ++i) {
+    if (lock || (z_cancel && axis_letter[static_cast<std::size_t>(i)] == 'Z'))
+      rec.machine_position[i] = s.actual_position[i];
+  }
   for (int i = 0; i < axis_count; ++i) rec.end_position[i] = work_of(i, pos[i]);
   if (s.triggered && s.input_index >= 0 && s.input_index < canon::SkipSpec::kMaxInputs) {
     rec.signal = ps.input_names[static_cast<std::size_t>(s.input_index)];
@@ -158,7 +192,7 @@ AxisVec Interpreter::Impl::record_skip(const SyncState& s) {
   }
   skips.push_back(rec);
   // A miss stores the end point: reading it as a touch is worth a warning.
-  skip_missed_unread = !s.triggered && ps.g37_axis < 0;
+  skip_missed_unread = !s.triggered && ps.g37_axis < 0 && !s.no_machine;
   skip_missed_line = rec.line;
   return latch;
 }

@@ -4,6 +4,8 @@
 // arguments.
 #include "interpreter/skip_rules.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <bit>
 #include <cmath>
@@ -33,7 +35,14 @@ Result<Form> form(const BlockWords& b, const config::Switches& sw, bool cutter_c
     const Word& pw = *b.p;
     if (pw.value != std::trunc(pw.value) || pw.value < 0 || pw.value > 1e6 ||
         (pw.has_point && !pw.is_expr)) {
-      return fail(AlarmId::kSkipBadP, "P" + std::to_string(pw.value) + " is not a whole number",
+      // P5. is a whole number written with a decimal point, which the
+      // control refuses; P5.5 is no whole number.
+      const bool whole = pw.value == std::trunc(pw.value);
+      return fail(AlarmId::kSkipBadP,
+                  whole ? fmt::format("P{}. is written with a decimal point: P is a whole number "
+                                      "without one (P{})",
+                                      pw.value, pw.value)
+                        : fmt::format("P{} is not a whole number", pw.value),
                   pw.at);
     }
     f.p = static_cast<int>(pw.value);

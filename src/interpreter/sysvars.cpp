@@ -3,6 +3,7 @@
 // sysvar_table.hpp; this file is what each one reads and writes (the table
 // of docs/macro.md). Positions are in the program's units (G20: inch).
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <ctime>
 
@@ -143,6 +144,31 @@ Flow<Value> Interpreter::Impl::read_var(int n, SourceLoc where) {
   return read_control(*r, k);
 }
 
+namespace {
+
+// Whether a block's text compares values (EQ NE GT LT GE LE as words) or
+// reads the end point #5001-#5008 (compared with the skip position, a miss
+// shows as equality).
+bool block_checks_skip(std::string_view text) {
+  auto word_char = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) != 0; };
+  for (std::size_t i = 0; i + 1 < text.size(); ++i) {
+    const char a = static_cast<char>(std::toupper(static_cast<unsigned char>(text[i])));
+    const char b = static_cast<char>(std::toupper(static_cast<unsigned char>(text[i + 1])));
+    const bool op = (a == 'E' && b == 'Q') || (a == 'N' && b == 'E') ||
+                    ((a == 'G' || a == 'L') && (b == 'T' || b == 'E'));
+    if (op && (i == 0 || !word_char(text[i - 1])) &&
+        (i + 2 >= text.size() || !word_char(text[i + 2])))
+      return true;
+    if (text[i] == '#' && text.substr(i + 1, 3) == "500" && i + 4 < text.size() &&
+        text[i + 4] >= '1' && text[i + 4] <= '8' &&
+        (i + 5 >= text.size() || std::isdigit(static_cast<unsigned char>(text[i + 5])) == 0))
+      return true;
+  }
+  return false;
+}
+
+}  // namespace
+
 // #5001.. - #5108: one value per axis, vacant for an axis the machine does
 // not have. Lengths in program values (an X axis in diameter reads in
 // diameter); tool offsets in or out per dialect (docs/position-variables.md).
@@ -172,6 +198,13 @@ Flow<Value> Interpreter::Impl::read_position(const sysvar::Range& r, int i, Sour
       v = position_var(i, tool, sw.current_tool_offsets);
       break;
     case sysvar::Id::kSkipPos: {
+      // A block that tests the value (IF/WHILE with a comparison, or
+      // against the end point #5001..) is the program checking for a miss,
+      // the protected-move idiom: no warning, and later reads are after
+      // the check.
+      if (skip_missed_unread && where.line != 0 && block_checks_skip(raw.text)) {
+        skip_missed_unread = false;
+      }
       if (skip_missed_unread && where.line != 0) {
         skip_missed_unread = false;
         auto w = warn("skip_missed_read",

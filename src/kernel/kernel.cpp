@@ -252,7 +252,9 @@ void Kernel::begin_stop() noexcept {
 // block with no motion at all: the command goes back to the block's start
 // point before it reaches the servo, and that point and this period's time
 // are the latch. Under active_at_start_fails (G38) the block ends the same
-// way, not triggered, and the interpreter raises the alarm.
+// way, not triggered, and the interpreter raises the alarm. A block shorter
+// than one period's travel, or of no length, is no exception: with the input
+// on it ends at its start point, a detected signal.
 void Kernel::start_skip_block(const TickInput& in) noexcept {
   skip_started_ = true;
   handshake_ = SkipHandshake{true, false, false, false};
@@ -261,7 +263,9 @@ void Kernel::start_skip_block(const TickInput& in) noexcept {
   if (spec.ignore_inputs || (!fails && (spec.edge || !spec.active_at_start_ends))) return;
   for (int i = 0; i < spec.input_count; ++i) {
     if (!input_active(i, signals_.get(spec.inputs[i]))) continue;
-    const AxisVec start = interpolator_.segment_start();
+    // A block already run to its end in this period started where the
+    // command was before it.
+    const AxisVec start = interpolator_.idle() ? cmd_prev_ : interpolator_.segment_start();
     interpolator_.set_position(start);
     cmd_ = start;
     skip_.input_index = i;
@@ -286,9 +290,9 @@ void Kernel::monitor_skip(const TickInput& in) noexcept {
   const canon::SkipSpec& spec = skip_.spec;
   if (!skip_started_) {
     if (interpolator_.idle()) {
-      // The skip move had no length: it ends at once, without a signal.
-      skip_started_ = true;
-      handshake_ = SkipHandshake{true, false, false, false};
+      // The skip move had no length: it ends at once, with the signal if
+      // an input is already on (start_skip_block), else without one.
+      start_skip_block(in);
     } else {
       return;
     }
@@ -403,7 +407,11 @@ void Kernel::tick(const TickInput& in, TickOutput& out) noexcept {
     interpolator_.release_in_position();
   cmd_prev_ = cmd_;
   cmd_ = interpolator_.tick();
-  if (skip_.active && !skip_.done && !skip_started_ && interpolator_.tag() == skip_tag_) {
+  // The skip block starts this period; one that ran whole within it (shorter
+  // than one period's travel) or had no length leaves the interpolator idle,
+  // and starts (is checked for an input already on) all the same.
+  if (skip_.active && !skip_.done && !skip_started_ &&
+      (interpolator_.tag() == skip_tag_ || interpolator_.idle())) {
     start_skip_block(in);
   }
   actual_prev_ = in.actual;

@@ -75,12 +75,11 @@ std::string where(const std::vector<interp::CallContext>& contexts, std::uint32_
 
 namespace {
 
-ordered_json axes_json(const AxisVec& v, const config::MachineConfig* m, double step = 0.0) {
+ordered_json axes_json(const AxisVec& v, const config::MachineConfig* m) {
   ordered_json o = ordered_json::object();
   if (m == nullptr) return o;
   for (int i = 0; i < m->axis_count(); ++i) {
-    const double x = step > 0.0 ? std::round(v[i] / step) * step : v[i];
-    o[std::string(1, m->axes[static_cast<std::size_t>(i)].name)] = clean(x);
+    o[std::string(1, m->axes[static_cast<std::size_t>(i)].name)] = clean(v[i]);
   }
   return o;
 }
@@ -185,6 +184,28 @@ const char* kind_name(canon::SkipKind k) {
   return "skip";
 }
 
+// The --expect verdicts: pass, what the run gave, what was expected and the
+// tolerance (numbers as numbers, words as strings, null when none).
+ordered_json expectations_json(const std::vector<CheckResult>& checks) {
+  ordered_json out = ordered_json::array();
+  auto either = [](const std::optional<double>& x, const std::string& t) {
+    if (x) return ordered_json(clean(*x));
+    return t.empty() ? ordered_json(nullptr) : ordered_json(t);
+  };
+  for (const CheckResult& c : checks) {
+    ordered_json o;
+    o["expect"] = c.text;
+    o["name"] = c.name;
+    o["pass"] = c.pass;
+    o["value"] = either(c.value, c.value_text);
+    o["expected"] = either(c.expected, c.expected_text);
+    o["tolerance"] = c.tolerance ? ordered_json(*c.tolerance) : ordered_json(nullptr);
+    o["message"] = c.message.empty() ? ordered_json(nullptr) : ordered_json(c.message);
+    out.push_back(o);
+  }
+  return out;
+}
+
 }  // namespace
 
 std::string to_json(const ReportInput& in) {
@@ -221,9 +242,6 @@ std::string to_json(const ReportInput& in) {
     j["alarm"] = nullptr;
   }
   ordered_json skips = ordered_json::array();
-  // Stored positions as the control stores them: in its least input
-  // increment (IS-B: 0.001 mm, 0.0001 inch).
-  const double increment = r.program_inch ? 0.0001 : 0.001;
   for (const auto& s : r.skips) {
     ordered_json o;
     place_json(o, r.contexts, in.program, s.context, s.line, s.n, true);
@@ -233,12 +251,18 @@ std::string to_json(const ReportInput& in) {
     o["p"] = s.p >= 0 ? ordered_json(s.p) : ordered_json(nullptr);
     o["signal"] = s.signal.empty() ? ordered_json(nullptr) : ordered_json(s.signal);
     o["triggered"] = s.triggered;
-    o["time"] = clean(s.time_s);
-    o["position"] = axes_json(s.position, in.machine, increment);
+    // An alarm that cut the block short before any signal latched nothing:
+    // no time, no position (spec/cli.md), not a point never visited.
+    const bool latched = s.triggered || !s.ended_by_alarm;
+    o["time"] = latched ? ordered_json(clean(s.time_s)) : ordered_json(nullptr);
+    // The number #5061.. hold (rounded to the least input increment where
+    // the dialect's skip_position_increment says the control does).
+    o["position"] = latched ? axes_json(s.position, in.machine) : ordered_json(nullptr);
     // What `position` (#5061..) is: the tool reference point (tool offsets
     // in it) or the programmed tip (docs/position-variables.md).
     o["position_point"] = s.position_has_tool_offsets ? "tool_reference" : "tip";
-    o["machine_position"] = axes_json(s.machine_position, in.machine);
+    o["machine_position"] =
+        latched ? axes_json(s.machine_position, in.machine) : ordered_json(nullptr);
     o["end_position"] = axes_json(s.end_position, in.machine);
     o["ended_by"] = ended_by(s);
     if (s.ended_by_alarm) {
@@ -265,6 +289,7 @@ std::string to_json(const ReportInput& in) {
   for (const auto& [k, v] : in.variables)
     vars[k] = v ? ordered_json(clean(*v)) : ordered_json(nullptr);
   j["variables"] = vars;
+  j["expectations"] = expectations_json(in.expectations);
   ordered_json fin;
   fin["position"] = axes_json(r.final_work, in.machine);
   fin["machine_position"] = axes_json(r.final_machine, in.machine);

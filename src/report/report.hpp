@@ -16,6 +16,22 @@
 
 namespace skipnc::report {
 
+// One --expect check's verdict (the report's "expectations").
+struct CheckResult {
+  std::string text;  // the --expect text
+  std::string name;  // "#140", "status", "alarm"
+  bool pass = false;
+  // What the run gave and what was expected: a number (variables, alarm
+  // numbers) or a word (status, alarm code, "vacant"); nullopt/empty when
+  // there was none.
+  std::optional<double> value;
+  std::string value_text;
+  std::optional<double> expected;
+  std::string expected_text;
+  std::optional<double> tolerance;  // variables with a value
+  std::string message;              // why it failed, empty when it passed
+};
+
 struct ReportInput {
   std::string program;  // as given on the command line
   std::string dialect;
@@ -24,6 +40,7 @@ struct ReportInput {
   sim::RunResult result;
   std::optional<Error> start_error;  // the run could not start
   std::vector<std::pair<std::string, std::optional<double>>> variables;
+  std::vector<CheckResult> expectations;  // --expect, in the order given
 };
 
 std::string to_json(const ReportInput& in);

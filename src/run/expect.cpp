@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <cctype>
 #include <charconv>
 #include <cmath>
 
@@ -10,7 +11,7 @@ namespace {
 
 constexpr const char* kForms =
     "expected #N=VALUE[+-TOLERANCE], #<name>=VALUE[+-TOLERANCE], #N=vacant, "
-    "status=completed|alarm|interrupted or alarm=NUMBER";
+    "status=completed|alarm|interrupted or alarm=NUMBER|CODE|KEY";
 
 bool read_number(std::string_view t, double& out) {
   if (t.empty()) return false;
@@ -43,11 +44,21 @@ Result<Expectation> parse_expectation(const std::string& text) {
     return e;
   }
   if (lhs == "alarm") {
-    const auto r = std::from_chars(rhs.data(), rhs.data() + rhs.size(), e.alarm);
-    if (r.ec != std::errc{} || r.ptr != rhs.data() + rhs.size() || e.alarm <= 0) {
-      return std::unexpected(bad(text, "the alarm is a number"));
-    }
     e.kind = Expectation::Kind::kAlarm;
+    if (std::isdigit(static_cast<unsigned char>(rhs.front())) != 0) {
+      const auto r = std::from_chars(rhs.data(), rhs.data() + rhs.size(), e.alarm);
+      if (r.ec != std::errc{} || r.ptr != rhs.data() + rhs.size() || e.alarm <= 0) {
+        return std::unexpected(bad(text, "the alarm is a number, a code or a key"));
+      }
+      return e;
+    }
+    // A code (SN9061, PS0015) or a key (probe_crash): letters, digits, '_'.
+    for (char c : rhs) {
+      if (std::isalnum(static_cast<unsigned char>(c)) == 0 && c != '_') {
+        return std::unexpected(bad(text, "the alarm is a number, a code or a key"));
+      }
+    }
+    e.alarm_name = rhs;
     return e;
   }
   if (lhs.front() != '#' || lhs.size() < 2)
@@ -80,32 +91,107 @@ Result<Expectation> parse_expectation(const std::string& text) {
   return e;
 }
 
-std::string check_expectation(const Expectation& e, const ObservedRun& o) {
-  switch (e.kind) {
-    case Expectation::Kind::kStatus:
-      if (o.status == e.status) return {};
-      return fmt::format("expectation failed: {}: the run ended {}", e.text,
-                         o.status == "alarm" ? fmt::format("in alarm {}", o.alarm) : o.status);
-    case Expectation::Kind::kAlarm:
-      if (o.alarm == e.alarm) return {};
-      return fmt::format("expectation failed: {}: {}", e.text,
-                         o.alarm == 0 ? std::string("no alarm") : fmt::format("alarm {}", o.alarm));
-    case Expectation::Kind::kVariable:
-      break;
+namespace {
+
+bool same_word(const std::string& a, const std::string& b) {
+  if (a.size() != b.size()) return false;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    if (std::tolower(static_cast<unsigned char>(a[i])) !=
+        std::tolower(static_cast<unsigned char>(b[i])))
+      return false;
+  }
+  return true;
+}
+
+std::string alarm_text(const ObservedRun& o) {
+  if (o.alarm == 0 && o.alarm_code.empty()) return "no alarm";
+  return fmt::format("alarm {} {} ({})", o.alarm, o.alarm_code, o.alarm_key);
+}
+
+void evaluate_variable(const Expectation& e, const ObservedRun& o, ExpectResult& r) {
+  r.name = "#" + e.var;
+  if (e.vacant) {
+    r.expected_text = "vacant";
+  } else {
+    r.expected = e.value;
+    r.tolerance = e.tolerance;
   }
   for (const auto& [key, v] : o.variables) {
     if (key != e.var) continue;
+    r.value = v;
+    if (!v) r.value_text = "vacant";
     if (e.vacant) {
-      if (!v) return {};
-      return fmt::format("expectation failed: {}: #{} = {}", e.text, e.var, *v);
+      r.pass = !v;
+      if (!r.pass) r.message = fmt::format("expectation failed: {}: #{} = {}", e.text, e.var, *v);
+      return;
     }
-    if (!v) return fmt::format("expectation failed: {}: #{} is vacant", e.text, e.var);
+    if (!v) {
+      r.message = fmt::format("expectation failed: {}: #{} is vacant", e.text, e.var);
+      return;
+    }
     const double off = *v - e.value;
-    if (std::fabs(off) <= e.tolerance + 1e-12) return {};
-    return fmt::format("expectation failed: {}: #{} = {} ({:+} from {}, tolerance {})", e.text,
-                       e.var, *v, off, e.value, e.tolerance);
+    r.pass = std::fabs(off) <= e.tolerance + 1e-12;
+    if (!r.pass) {
+      r.message = fmt::format("expectation failed: {}: #{} = {} ({:+} from {}, tolerance {})",
+                              e.text, e.var, *v, off, e.value, e.tolerance);
+    }
+    return;
   }
-  return fmt::format("expectation failed: {}: #{} was not read", e.text, e.var);
+  r.message = fmt::format("expectation failed: {}: #{} was not read", e.text, e.var);
+}
+
+}  // namespace
+
+Result<void> check_alarm_name(const Expectation& e, const config::Dialect& d) {
+  if (e.kind != Expectation::Kind::kAlarm || e.alarm_name.empty()) return {};
+  for (std::size_t i = 0; i < static_cast<std::size_t>(AlarmId::kCount); ++i) {
+    const auto id = static_cast<AlarmId>(i);
+    if (same_word(d.alarm(id).code, e.alarm_name) ||
+        same_word(std::string(alarm_key(id)), e.alarm_name))
+      return {};
+  }
+  return std::unexpected(bad(
+      e.text, "no alarm of the " + d.name + " dialect has the code or key '" + e.alarm_name + "'"));
+}
+
+ExpectResult evaluate_expectation(const Expectation& e, const ObservedRun& o) {
+  ExpectResult r;
+  r.text = e.text;
+  switch (e.kind) {
+    case Expectation::Kind::kStatus:
+      r.name = "status";
+      r.expected_text = e.status;
+      r.value_text = o.status;
+      r.pass = o.status == e.status;
+      if (!r.pass) {
+        r.message = fmt::format("expectation failed: {}: the run ended {}", e.text,
+                                o.status == "alarm" ? "in " + alarm_text(o) : o.status);
+      }
+      return r;
+    case Expectation::Kind::kAlarm:
+      r.name = "alarm";
+      if (e.alarm > 0) {
+        r.expected = e.alarm;
+        r.pass = o.alarm == e.alarm;
+      } else {
+        r.expected_text = e.alarm_name;
+        r.pass = (!o.alarm_code.empty() && same_word(o.alarm_code, e.alarm_name)) ||
+                 (!o.alarm_key.empty() && same_word(o.alarm_key, e.alarm_name));
+      }
+      // The run's alarm in the form asked for: its number, or its code.
+      if (e.alarm > 0 && o.alarm != 0) r.value = o.alarm;
+      r.value_text = o.alarm_code.empty() ? std::string("none") : o.alarm_code;
+      if (!r.pass) r.message = fmt::format("expectation failed: {}: {}", e.text, alarm_text(o));
+      return r;
+    case Expectation::Kind::kVariable:
+      break;
+  }
+  evaluate_variable(e, o, r);
+  return r;
+}
+
+std::string check_expectation(const Expectation& e, const ObservedRun& o) {
+  return evaluate_expectation(e, o).message;
 }
 
 }  // namespace skipnc::run

@@ -44,6 +44,15 @@ struct RepeatRequest {
   std::optional<std::uint64_t> seed;  // first seed; none: the scene probe's (1 without a probe)
 };
 
+// One run of the repetitions (run 0 is the nominal one), for --junit.
+struct RepeatRun {
+  int run = 0;
+  std::uint64_t seed = 0;  // the probe's scatter seed (0 for the nominal run)
+  double time_s = 0.0;     // simulated
+  bool alarm = false;
+  std::string alarm_text;  // describe(): "file:line:column: alarm CODE (N): message"
+};
+
 struct RepeatOutcome {
   int runs = 0;  // scattered runs that finished
   std::uint64_t seed = 1;
@@ -52,6 +61,7 @@ struct RepeatOutcome {
   bool interrupted = false;
   bool scatter = false;  // the scene's probe scatters (else every run is the nominal one)
   std::vector<RepeatSeries> series;
+  std::vector<RepeatRun> log;  // every run that finished, in order
   int exit_code() const { return alarms > 0 || interrupted ? 1 : 0; }
 };
 

@@ -148,6 +148,7 @@ void setup_program(const RunRequest& rq, interp::Setup& setup) {
   if (setup.program_name.empty()) setup.program_name = "program";
   setup.include_dirs = rq.include_dirs;
   setup.strict = rq.strict;
+  setup.strict_allow = rq.allow;
 }
 
 Result<void> take_persistent(config::MachineConfig& m, interp::Setup& setup) {

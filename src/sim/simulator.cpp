@@ -254,6 +254,24 @@ StockResult stock_result(const machine::geo::Stock& st) {
   return r;
 }
 
+// Why the motion stands still: the operator's switch that holds it.
+std::string held_reason(const kernel::OperatorState& op) {
+  if (op.feed_hold) return "the motion is in feed hold";
+  if (op.interlock) return "the axes are interlocked";
+  return "the feed override is 0 %";
+}
+constexpr const char* held_never_released =
+    " and no later [[operator]] action of the scene releases it: the run would never end";
+
+// --strict: the first warning that --allow does not name, or null.
+const interp::Warning* first_refused(const std::vector<interp::Warning>& ws,
+                                     const std::vector<std::string>& allow) {
+  for (const interp::Warning& w : ws) {
+    if (std::find(allow.begin(), allow.end(), w.code) == allow.end()) return &w;
+  }
+  return nullptr;
+}
+
 }  // namespace
 
 Simulator::Simulator(const config::MachineConfig& m, const config::Dialect& d,
@@ -304,6 +322,7 @@ Result<RunResult> Simulator::run(const interp::Setup& setup, const RunOptions& o
                                ? p_.get(d_.sw.dry_run_feed_param) * (m_.inch_machine ? 25.4 : 1.0)
                                : 0.0;
   std::size_t next_action = 0;  // scene [[operator]] actions not yet applied
+  std::int64_t held_ticks = 0;  // periods the motion has stood held for ever
 
   kernel::TickInput tin;
   kernel::TickOutput tout;
@@ -349,11 +368,14 @@ Result<RunResult> Simulator::run(const interp::Setup& setup, const RunOptions& o
       }
       if (*st == interp::Step::kSync) waiting = true;
       if (*st == interp::Step::kEnd) ending = true;
-      if (setup.strict && !safety.warnings().empty()) {
+      const interp::Warning* strict_w =
+          setup.strict ? first_refused(safety.warnings(), setup.strict_allow) : nullptr;
+      if (strict_w != nullptr) {
         // --strict: the machine's warning (a skip move that cannot stop in
-        // the over-travel) is an alarm at its block; as for any program
-        // alarm, what is already queued (the skip move too) runs first.
-        const interp::Warning& w = safety.warnings().front();
+        // the over-travel) is an alarm at its block unless --allow names
+        // it; as for any program alarm, what is already queued (the skip
+        // move too) runs first.
+        const interp::Warning& w = *strict_w;
         program_alarm = Error{AlarmId::kStrictWarning, w.code + ": " + w.text,
                               SourceLoc{file_of(w.context), w.line, 1}, -1};
         program_alarm_context = w.context;
@@ -465,6 +487,19 @@ Result<RunResult> Simulator::run(const interp::Setup& setup, const RunOptions& o
       if (program_alarm) alarm(*program_alarm, program_alarm_context);
       break;
     }
+    // A feed held for ever: the motion stands (feed hold, interlock or
+    // override 0 %: no profile time passes) with motion still to run, and
+    // no later [[operator]] action of the scene can release it. It ends
+    // after one second of it, not at limits.max_time_s.
+    const bool hold_forever =
+        tout.time_scale < 1e-12 && !k.idle() && next_action >= scene_.operator_actions.size();
+    held_ticks = hold_forever ? held_ticks + 1 : 0;
+    if (static_cast<double>(held_ticks) * k.clock().period_s() >= 1.0) {
+      alarm(Error{AlarmId::kTimeLimit, held_reason(op) + held_never_released,
+                  SourceLoc{file_of(tout.source), tout.line, 1}, -1},
+            tout.source);
+      break;
+    }
     if (k.now() >= m_.limits.max_ticks) {
       alarm(Error{AlarmId::kTimeLimit, "the run passed limits.max_time_s of simulated time",
                   SourceLoc{file_of(tout.source), tout.line, 1}, -1},
@@ -495,9 +530,14 @@ Result<RunResult> Simulator::run(const interp::Setup& setup, const RunOptions& o
   res.time_s = k.clock().seconds(k.now());
   res.block_times = times.finish();
   res.period_s = k.clock().period_s();
-  // Where the axes are: the command, unless an axis was held away from it.
+  // Where the axes are: the command, unless an axis was held away from it
+  // (a fault) or held still (machine lock, Z-axis cancel: the machine
+  // stays where it is while the work position follows the command).
   res.final_machine = held ? plant.actual() : k.command();
   res.final_work = in.work_from_machine(res.final_machine);
+  for (int i = 0; i < m_.axis_count(); ++i) {
+    if (locked.has(i)) res.final_machine[i] = plant.actual()[i];
+  }
   res.skips = in.skips();
   if (const interp::SkipRecord* p = in.pending_skip(); p != nullptr && res.alarm) {
     res.skips.push_back(cut_short_skip(*p, k.skip(), res.alarm_position, in));
