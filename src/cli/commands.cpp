@@ -10,17 +10,23 @@
 #include <iostream>
 
 #include "canon/print.hpp"
-#include "cli/expect.hpp"
 #include "cli/outputs.hpp"
 #include "cli/plot.hpp"
 #include "config/skip_inputs.hpp"
 #include "core/embedded.hpp"
 #include "report/report.hpp"
+#include "run/expect.hpp"
 #include "run/session.hpp"
 #include "sim/simulator.hpp"
 
 namespace skipnc::cli {
 namespace {
+
+// The --expect parser is the run library's: `sweep` specs use the same one.
+using run::check_expectation;
+using run::Expectation;
+using run::ObservedRun;
+using run::parse_expectation;
 
 std::string program_name_of(const std::string& path) {
   return path;

@@ -13,7 +13,7 @@ struct RunArgs {
   std::string dialect;
   std::vector<std::string> params;
   std::vector<std::string> vars;
-  std::vector<std::string> expect;  // --expect (cli/expect.hpp)
+  std::vector<std::string> expect;  // --expect (run/expect.hpp)
   std::string report;
   std::string trace;
   std::vector<std::string> plot;  // --plot FILE: .svg or .html pictures of the run

@@ -1,11 +1,11 @@
-#include "cli/expect.hpp"
+#include "run/expect.hpp"
 
 #include <fmt/format.h>
 
 #include <charconv>
 #include <cmath>
 
-namespace skipnc::cli {
+namespace skipnc::run {
 namespace {
 
 constexpr const char* kForms =
@@ -108,4 +108,4 @@ std::string check_expectation(const Expectation& e, const ObservedRun& o) {
   return fmt::format("expectation failed: {}: #{} was not read", e.text, e.var);
 }
 
-}  // namespace skipnc::cli
+}  // namespace skipnc::run
