@@ -4,7 +4,7 @@
 #
 # Usage: scripts/fuzz.sh [SECONDS] [HARNESS...]
 #   SECONDS   run time of each harness (default 60)
-#   HARNESS   parser expr interp machine scene (default: all)
+#   HARNESS   parser expr interp machine scene stl ngc_params sweep (default: all)
 # Environment:
 #   SKIPNC_FUZZ_JOBS  harnesses run at once (default: the number of cores)
 #   SKIPNC_FUZZ_DIR   build folder (default build-fuzz; scripts/test.sh gives
@@ -20,7 +20,7 @@ cd "$(dirname "$0")/.."
 secs=${1:-60}
 [ $# -gt 0 ] && shift
 harnesses=("$@")
-[ ${#harnesses[@]} -gt 0 ] || harnesses=(parser expr interp machine scene)
+[ ${#harnesses[@]} -gt 0 ] || harnesses=(parser expr interp machine scene stl ngc_params sweep)
 dir=${SKIPNC_FUZZ_DIR:-build-fuzz}
 jobs=${SKIPNC_FUZZ_JOBS:-$(nproc)}
 cxx=${SKIPNC_FUZZ_CXX:-clang++-16}
@@ -49,7 +49,7 @@ run_one() {
   local h=$1
   local corpus="$dir/corpus/$h" art="$dir/artifacts/$h/" log="$dir/logs/$h.log"
   local max_len=4096
-  case $h in machine|scene) max_len=8192 ;; esac
+  case $h in machine|scene|sweep) max_len=8192 ;; stl) max_len=65536 ;; esac
   mkdir -p "$corpus" "$art" "$dir/logs"
   # -timeout: an input running longer is a hang; -rss_limit_mb: a leak or a
   # runaway allocation. Both are findings.

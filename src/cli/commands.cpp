@@ -24,6 +24,12 @@
 namespace skipnc::cli {
 namespace {
 
+// The --expect parser is the run library's: `sweep` specs use the same one.
+using run::check_expectation;
+using run::Expectation;
+using run::ObservedRun;
+using run::parse_expectation;
+
 // Outputs that go to standard output move the summary to standard error.
 bool is_stdout(const std::string& name) {
   return name == "-" || name == "/dev/stdout" || name == "/dev/fd/1" || name == "/proc/self/fd/1";

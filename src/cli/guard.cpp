@@ -51,6 +51,9 @@ void install_signal_handlers() noexcept {
   ign.sa_handler = SIG_IGN;
   sigemptyset(&ign.sa_mask);
   ::sigaction(SIGPIPE, &ign, nullptr);
+  // A file larger than `ulimit -f` allows: the write fails with EFBIG and the
+  // run ends with the output's alarm and its report, not killed by SIGXFSZ.
+  ::sigaction(SIGXFSZ, &ign, nullptr);
 }
 
 double process_cpu_s() noexcept {

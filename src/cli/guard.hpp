@@ -5,7 +5,7 @@
 // servo period or between two blocks; the outputs are then written whole, as
 // after an alarm); a second one ends skipnc at once (the handler is reset).
 // SIGPIPE is ignored, so that writing to a closed pipe is an error (EPIPE)
-// that the run reports, not a silent death.
+// that the run reports, not a silent death; SIGXFSZ likewise (EFBIG).
 #pragma once
 
 #include <atomic>

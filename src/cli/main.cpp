@@ -1,9 +1,14 @@
 // skipnc: command line (spec/cli.md).
 #include <CLI/CLI.hpp>
 #include <cstdio>
+#include <cstdlib>
 #include <exception>
 #include <iostream>
+#include <new>
+#include <stdexcept>
+#include <string_view>
 #include <system_error>
+#include <utility>
 
 #include "cli/commands.hpp"
 #include "cli/guard.hpp"
@@ -15,16 +20,35 @@
 
 namespace {
 
-// The parsed command's arguments, for the last-resort report.
-const skipnc::cli::RunArgs* g_args = nullptr;
+// The parsed commands' arguments. They live in main()'s frame, not in
+// run_main()'s: the last-resort handler reads them after an exception has
+// unwound run_main.
+struct Parsed {
+  skipnc::cli::RunArgs run, canon, demo, plot;
+  skipnc::cli::SweepArgs sweep;
+  skipnc::cli::ShowArgs show;
+  // The arguments of the command that runs (null before one runs).
+  const skipnc::cli::RunArgs* active = nullptr;
+};
 
-int run_main(int argc, char** argv) {
-  using skipnc::cli::RunArgs;
+// A way for the tests to make an exception leave run_main (docs/testing.md):
+// SKIPNC_TEST_THROW=bad_alloc|runtime_error|int, thrown once the command's
+// arguments are parsed.
+void test_throw() {
+  const char* what = std::getenv("SKIPNC_TEST_THROW");
+  if (what == nullptr) return;
+  const std::string_view w(what);
+  if (w == "bad_alloc") throw std::bad_alloc();
+  if (w == "runtime_error") throw std::runtime_error("test exception");
+  if (w == "int") throw 42;
+}
+
+int run_main(int argc, char** argv, Parsed& p) {
   CLI::App app{"skipnc: a CNC kernel and simulated machine built around the G31 skip function"};
   app.require_subcommand(1);
   app.set_version_flag("--version", "skipnc 0.1.0");
 
-  RunArgs run_args;
+  auto& run_args = p.run;
   auto* run = app.add_subcommand("run", "run a part program on a simulated machine");
   run->add_option("program", run_args.program, "part program file (-: standard input)")->required();
   run->add_option("-m,--machine", run_args.machine, "machine file or built-in machine (mill3)");
@@ -58,7 +82,7 @@ int run_main(int argc, char** argv) {
   run->add_option("--seed", run_args.seed, "first seed of the --repeat runs (default: the scene's)")
       ->check(CLI::Range(0LL, 9000000000000000000LL));
 
-  RunArgs canon_args;
+  auto& canon_args = p.canon;
   auto* canon = app.add_subcommand("canon", "print the canonical command stream, without motion");
   canon->add_option("program", canon_args.program, "part program file (-: standard input)")
       ->required();
@@ -69,14 +93,14 @@ int run_main(int argc, char** argv) {
   canon->add_flag("--strict", canon_args.strict, "a warning is an alarm (SN9076 strict_warning)");
   canon->add_option("--allow", canon_args.allow, "under --strict, warning CODE stays a warning");
 
-  RunArgs demo_args;
+  auto& demo_args = p.demo;
   auto* demo = app.add_subcommand("demo", "run the built-in probing demo and explain it");
   demo->add_option("--report", demo_args.report, "also write the JSON report here");
   demo->add_option("--trace", demo_args.trace, "also write the per-cycle CSV trace here");
   demo->add_option("--plot", demo_args.plot, "also write pictures: FILE.svg and/or FILE.html");
   demo->add_flag("-q,--quiet", demo_args.quiet, "no explanation on standard output");
 
-  RunArgs plot_args;
+  auto& plot_args = p.plot;
   auto* plot =
       app.add_subcommand("plot", "run a program and draw it: SVG and an offline HTML page");
   plot->add_option("program", plot_args.program, "part program file")->required();
@@ -98,19 +122,21 @@ int run_main(int argc, char** argv) {
 
   auto* dialects = app.add_subcommand("dialects", "list the dialects and what differs");
 
-  skipnc::cli::SweepArgs sweep_args;
+  auto& sweep_args = p.sweep;
   auto* sweep = app.add_subcommand("sweep", "run a program in N scenarios on all cores");
   sweep->add_option("spec", sweep_args.spec, "sweep spec (TOML)")->required();
-  sweep->add_option("--csv", sweep_args.csv, "the table as CSV (default: SPEC.sweep.csv here)");
-  sweep->add_option("--json", sweep_args.json, "table and summary as JSON (SPEC.sweep.json)");
+  sweep->add_option("--csv", sweep_args.csv,
+                    "the table as CSV (default: SPEC.sweep.csv beside the spec)");
+  sweep->add_option("--json", sweep_args.json,
+                    "table and summary as JSON (SPEC.sweep.json beside the spec)");
   sweep->add_option("-j,--workers", sweep_args.workers, "threads (0: every core; default: spec's)")
-      ->check(CLI::Range(0, 4096));
+      ->check(CLI::Range(0, skipnc::run::kMaxWorkers));
   sweep->add_option("-n,--scenarios", sweep_args.scenarios, "scenarios (default: the spec's)")
-      ->check(CLI::Range(1LL, 100000000LL));
+      ->check(CLI::Range(std::int64_t{1}, skipnc::run::kMaxScenarios));
   sweep->add_option("--seed", sweep_args.seed, "seed of the draws (default: the spec's)")
-      ->check(CLI::Range(0LL, 9000000000000000000LL));
+      ->check(CLI::Range(0LL, static_cast<long long>(skipnc::run::kMaxSeed)));
   sweep->add_flag("-q,--quiet", sweep_args.quiet, "no summary on standard output");
-  skipnc::cli::ShowArgs show_args;
+  auto& show_args = p.show;
   auto* show = app.add_subcommand("show", "print a built-in file: machine NAME, machines, demo");
   show->add_option("what", show_args.what, "machine, machines or demo")->required();
   show->add_option("name", show_args.name, "the built-in machine's name (mill3, lathe2, ...)");
@@ -121,8 +147,12 @@ int run_main(int argc, char** argv) {
     const int rc = app.exit(e);
     return rc == 0 ? 0 : 2;
   }
+  for (auto [cmd, args] : {std::pair{run, &run_args}, std::pair{canon, &canon_args},
+                           std::pair{demo, &demo_args}, std::pair{plot, &plot_args}}) {
+    if (cmd->parsed()) p.active = args;
+  }
+  test_throw();
   if (run->parsed()) {
-    g_args = &run_args;
     if (auto r = skipnc::cli::read_stdin_program(run_args); !r) {
       return skipnc::cli::start_failure(run_args, r.error(), nullptr);
     }
@@ -130,18 +160,15 @@ int run_main(int argc, char** argv) {
                                : skipnc::cli::run_command(run_args);
   }
   if (canon->parsed()) {
-    g_args = &canon_args;
     if (auto r = skipnc::cli::read_stdin_program(canon_args); !r) {
       return skipnc::cli::start_failure(canon_args, r.error(), nullptr);
     }
     return skipnc::cli::canon_command(canon_args);
   }
   if (demo->parsed()) {
-    g_args = &demo_args;
     return skipnc::cli::demo_command(demo_args);
   }
   if (plot->parsed()) {
-    g_args = &plot_args;
     return skipnc::cli::plot_command(plot_args);
   }
   if (dialects->parsed()) return skipnc::cli::dialects_command();
@@ -157,20 +184,22 @@ int run_main(int argc, char** argv) {
 // closed pipe) makes the exit status non-zero.
 int main(int argc, char** argv) {
   skipnc::cli::install_signal_handlers();
+  skipnc::cli::reserve_emergency_memory();
   int rc = 0;
+  Parsed parsed;
   try {
-    rc = run_main(argc, argv);
+    rc = run_main(argc, argv, parsed);
   } catch (const std::system_error& e) {
     if (std::ferror(stdout)) {
       std::fprintf(stderr, "skipnc: cannot write standard output: %s\n", e.what());
       rc = rc == 0 ? 1 : rc;
     } else {
-      rc = skipnc::cli::internal_failure(g_args, e.what());
+      rc = skipnc::cli::internal_failure(parsed.active, e.what());
     }
   } catch (const std::exception& e) {
-    rc = skipnc::cli::internal_failure(g_args, e.what());
+    rc = skipnc::cli::internal_failure(parsed.active, e.what());
   } catch (...) {
-    rc = skipnc::cli::internal_failure(g_args, "an exception of unknown type");
+    rc = skipnc::cli::internal_failure(parsed.active, "an exception of unknown type");
   }
   if (auto f = skipnc::cli::finish_stdout(); !f) {
     std::fprintf(stderr, "skipnc: %s\n", f.error().detail.c_str());

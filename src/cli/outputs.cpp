@@ -6,7 +6,10 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <iostream>
+#include <new>
+#include <utility>
 #include <vector>
 
 #include "core/file.hpp"
@@ -14,13 +17,9 @@
 namespace skipnc::cli {
 namespace {
 
-std::atomic<bool> g_report_written{false};
+namespace fs = std::filesystem;
 
-struct Named {
-  std::string what;  // "--report", "the program", ...
-  std::string name;
-  OutputTarget target;
-};
+std::atomic<bool> g_report_written{false};
 
 // The report's refusal stays unwritten when the report is an input.
 std::atomic<bool> g_report_is_input{false};
@@ -65,10 +64,34 @@ bool write_report(const RunArgs& a, const std::string& json) {
   return true;
 }
 
+namespace {
+
+// A report written after an error never replaces a file the run reads: the
+// program, the machine and scene files, meshes, -I files, the persistent
+// file (whatever the error, even one found before the outputs were checked).
+bool report_may_be_written(const RunArgs& a, const run::Session* s) {
+  std::vector<NamedFile> inputs{{"the scene file", a.scene}};
+  if (a.program != "-") inputs.push_back({"the program", a.program});  // "-": standard input
+  if (a.machine.find('/') != std::string::npos || a.machine.ends_with(".toml"))
+    inputs.push_back({"the machine file", a.machine});
+  if (s != nullptr) {
+    for (auto& f : session_inputs(*s)) inputs.push_back(std::move(f));
+    inputs.push_back({"the persistent-variable file", s->machine.persistent_vars});
+  }
+  for (auto& f : include_inputs(a.include)) inputs.push_back(std::move(f));
+  std::erase_if(inputs, [](const NamedFile& f) { return f.name.empty(); });
+  auto r = refuse_collisions({{"--report", a.report}}, inputs);
+  if (r) return true;
+  std::cerr << "skipnc: " << r.error().detail << "\n";
+  return false;
+}
+
+}  // namespace
+
 int start_failure(const RunArgs& a, const Error& e, const run::Session* s) {
   const config::Dialect* d = report_dialect(a, s);
   std::cerr << "skipnc: " << run::describe(e, d) << "\n";
-  if (!a.report.empty() && !g_report_is_input.load()) {
+  if (!a.report.empty() && !g_report_is_input.load() && report_may_be_written(a, s)) {
     report::ReportInput in;
     in.program = a.program;
     in.dialect = s && !s->dialect.name.empty() ? s->dialect.name : a.dialect;
@@ -80,7 +103,19 @@ int start_failure(const RunArgs& a, const Error& e, const run::Session* s) {
   return 2;
 }
 
+namespace {
+// Memory set aside at the start and given back by the last resort, so that
+// the report of a run that ran out of memory (std::bad_alloc) can be built.
+constexpr std::size_t kEmergencyBytes = 4u << 20;
+char* g_emergency = nullptr;
+}  // namespace
+
+void reserve_emergency_memory() noexcept {
+  if (g_emergency == nullptr) g_emergency = new (std::nothrow) char[kEmergencyBytes];
+}
+
 int internal_failure(const RunArgs* a, std::string_view what) noexcept {
+  delete[] std::exchange(g_emergency, nullptr);
   try {
     const Error e{AlarmId::kInternal, "uncaught exception: " + std::string(what), {}, -1};
     std::cerr << "skipnc: internal error: " << what << "\n";
@@ -99,52 +134,86 @@ int internal_failure(const RunArgs* a, std::string_view what) noexcept {
   return 1;
 }
 
-Result<void> check_outputs(const RunArgs& a, const run::Session& s) {
-  std::vector<Named> outputs;
-  std::vector<Named> inputs;
-  auto add = [](std::vector<Named>& list, std::string what,
-                const std::string& name) -> Result<void> {
-    if (name.empty()) return {};
-    auto t = resolve_output(name);
-    if (!t) return std::unexpected(t.error());
-    list.push_back(Named{std::move(what), name, std::move(*t)});
+std::vector<NamedFile> session_inputs(const run::Session& s) {
+  std::vector<NamedFile> in;
+  if (s.machine_file.find('/') != std::string::npos || s.machine_file.ends_with(".toml"))
+    in.push_back({"the machine file", s.machine_file});
+  for (const auto& f : s.machine.extends_files) in.push_back({"a machine file it extends", f});
+  if (!s.scene_file.empty()) in.push_back({"the scene file", s.scene_file});
+  for (const auto& f : s.scene.probing.mesh_files) in.push_back({"an STL mesh", f});
+  return in;
+}
+
+std::vector<NamedFile> include_inputs(const std::vector<std::string>& folders) {
+  // The files directly in each -I folder: a subprogram the run may call.
+  // At most this many per folder are looked at (a huge folder is not read
+  // whole for this check).
+  constexpr int kMaxListed = 10000;
+  std::vector<NamedFile> in;
+  for (const auto& dir : folders) {
+    std::error_code ec;
+    int listed = 0;
+    for (fs::directory_iterator it(dir, ec), end; !ec && it != end && listed < kMaxListed;
+         it.increment(ec), ++listed) {
+      if (it->is_regular_file(ec)) in.push_back({"a file of -I " + dir, it->path().string()});
+    }
+  }
+  return in;
+}
+
+Result<void> refuse_collisions(const std::vector<NamedFile>& outputs,
+                               const std::vector<NamedFile>& inputs, bool* output_is_input) {
+  auto resolve = [](const std::vector<NamedFile>& list,
+                    std::vector<OutputTarget>& out) -> Result<void> {
+    for (const auto& f : list) {
+      auto t = resolve_output(f.name);
+      if (!t) return std::unexpected(t.error());
+      out.push_back(std::move(*t));
+    }
     return {};
   };
-  for (auto r : {add(outputs, "--report", a.report), add(outputs, "--trace", a.trace),
-                 add(outputs, "--dprnt", a.dprnt),
-                 add(outputs, "the persistent-variable file", s.machine.persistent_vars)}) {
-    if (!r) return r;
-  }
-  for (const auto& p : a.plot) {
-    if (auto r = add(outputs, "--plot", p); !r) return r;
-  }
-  // Inputs that are files. The persistent-variable file is read and written
-  // by design; it is only checked against the other outputs.
-  if (!a.program.empty() && a.program != "-") {
-    if (auto r = add(inputs, "the program", a.program); !r) return r;
-  }
-  if (s.machine_file.find('/') != std::string::npos || s.machine_file.ends_with(".toml")) {
-    if (auto r = add(inputs, "the machine file", s.machine_file); !r) return r;
-  }
-  if (auto r = add(inputs, "the scene file", s.scene_file); !r) return r;
-
-  auto refuse = [&](const Named& o, const Named& other, bool input) {
-    if (input && o.what == "--report") g_report_is_input.store(true);
+  std::vector<OutputTarget> to, ti;
+  if (auto r = resolve(outputs, to); !r) return r;
+  if (auto r = resolve(inputs, ti); !r) return r;
+  auto refuse = [&](const NamedFile& o, const NamedFile& other, bool input) {
+    if (input && output_is_input != nullptr) *output_is_input = true;
     return fail(AlarmId::kUsage,
                 o.what + " " + o.name + " is the same file as " + other.what +
                     (other.what.starts_with("--") ? " " + other.name : " (" + other.name + ")") +
                     ": nothing was run, nothing written over");
   };
-  for (std::size_t i = 0; i < outputs.size(); ++i) {
-    for (const auto& in : inputs) {
-      if (same_file(outputs[i].target, in.target)) return refuse(outputs[i], in, true);
+  for (std::size_t i = 0; i < to.size(); ++i) {
+    for (std::size_t k = 0; k < ti.size(); ++k) {
+      if (same_file(to[i], ti[k])) return refuse(outputs[i], inputs[k], true);
     }
-    for (std::size_t j = i + 1; j < outputs.size(); ++j) {
-      if (same_file(outputs[i].target, outputs[j].target))
-        return refuse(outputs[j], outputs[i], false);
+    for (std::size_t j = i + 1; j < to.size(); ++j) {
+      if (same_file(to[i], to[j])) return refuse(outputs[j], outputs[i], false);
     }
   }
   return {};
+}
+
+Result<void> check_outputs(const RunArgs& a, const run::Session& s) {
+  std::vector<NamedFile> outputs;
+  for (const auto& [what, name] : {std::pair<std::string, std::string>{"--report", a.report},
+                                   {"--trace", a.trace},
+                                   {"--dprnt", a.dprnt},
+                                   {"the persistent-variable file", s.machine.persistent_vars}}) {
+    if (!name.empty()) outputs.push_back({what, name});
+  }
+  for (const auto& p : a.plot) outputs.push_back({"--plot", p});
+  // Inputs that are files. The persistent-variable file is read and written
+  // by design; it is only checked against the other outputs.
+  std::vector<NamedFile> inputs;
+  if (!a.program.empty() && a.program != "-") inputs.push_back({"the program", a.program});
+  for (auto& f : session_inputs(s)) inputs.push_back(std::move(f));
+  for (auto& f : include_inputs(a.include)) inputs.push_back(std::move(f));
+  bool report_is_input = false;
+  auto r = refuse_collisions(outputs, inputs, &report_is_input);
+  if (!r && report_is_input && r.error().detail.starts_with("--report ")) {
+    g_report_is_input.store(true);
+  }
+  return r;
 }
 
 void explain_stop(sim::RunResult& r, const report::CsvTrace* trace,

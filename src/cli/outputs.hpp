@@ -6,6 +6,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "cli/commands.hpp"
 #include "cli/guard.hpp"
@@ -40,7 +41,28 @@ int start_failure(const RunArgs& a, const Error& e, const run::Session* s);
 
 // The last resort of main(): an exception reached the top. The report (when
 // asked for and not written yet) has the internal-error alarm (SN9000); exit 1.
+// `a` must outlive the exception (main()'s frame, not the command's). The
+// memory reserve_emergency_memory() set aside is given back first.
 int internal_failure(const RunArgs* a, std::string_view what) noexcept;
+void reserve_emergency_memory() noexcept;
+
+// One collision check for every command: no output may be a file the run
+// reads, nor another output. `what` names the file in the message
+// ("--report", "the program", "--csv", ...).
+struct NamedFile {
+  std::string what;
+  std::string name;
+};
+// kUsage naming both files when an output is an input or another output
+// (*output_is_input set in the first case). Nothing is written.
+[[nodiscard]] Result<void> refuse_collisions(const std::vector<NamedFile>& outputs,
+                                             const std::vector<NamedFile>& inputs,
+                                             bool* output_is_input = nullptr);
+// The files a session read: the machine file and its `extends` chain, the
+// scene file and its STL meshes.
+std::vector<NamedFile> session_inputs(const run::Session& s);
+// The files directly in -I folders (a subprogram may be any of them).
+std::vector<NamedFile> include_inputs(const std::vector<std::string>& folders);
 
 // Refuses, before anything runs, two outputs (report, trace, plots, DPRNT
 // file, persistent variables) that are one file, or an output that is one of

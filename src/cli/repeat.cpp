@@ -45,6 +45,8 @@ int repeat_command(const RunArgs& a) {
   // A run that cannot start writes the report with its alarm too, as `run`
   // without --repeat does.
   if (!o) return start_failure(a, o.error(), &s);
+  // The same outputs check as a single run: no report over the program.
+  if (auto c = check_outputs(a, s); !c) return start_failure(a, c.error(), &s);
   run::RepeatRequest rq;
   for (const auto& v : a.vars) {
     auto r = run::parse_var_ref(v);

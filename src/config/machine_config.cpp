@@ -9,6 +9,7 @@
 
 #include "config/toml_util.hpp"
 #include "core/embedded.hpp"
+#include "core/file.hpp"
 
 namespace skipnc::config {
 namespace {
@@ -248,18 +249,17 @@ Result<MachineConfig> extended_machine(const toml::node& n, std::string_view ori
       file = real.parent_path() / file;
     }
     where = file.lexically_normal().string();
-    std::ifstream in(where, std::ios::binary);
-    if (!in) {
+    std::error_code exists_ec;
+    if (!std::filesystem::exists(where, exists_ec)) {
       std::string known;
       for (const auto& b : builtin_machine_names()) known += (known.empty() ? "" : ", ") + b;
       return config_error(n, origin,
                           "extends: '" + *name + "' is neither a built-in machine (" + known +
                               ") nor a readable file ('" + where + "')");
     }
-    std::stringstream ss;
-    ss << in.rdbuf();
-    const std::string text = ss.str();
-    base = parse_machine_at(text, where, depth + 1);
+    auto text = read_input_file(where, kMachineFileInput);
+    if (!text) return config_error(n, origin, "extends: " + text.error().detail);
+    base = parse_machine_at(*text, where, depth + 1);
   }
   if (!base) {
     const Error& e = base.error();
@@ -288,6 +288,8 @@ Result<MachineConfig> parse_machine_at(std::string_view text, std::string_view o
     if (!base) return std::unexpected(base.error());
     m = std::move(*base);
     m.extends = m.origin;
+    if (!m.origin.starts_with("built-in "))
+      m.extends_files.insert(m.extends_files.begin(), m.origin);
   }
   m.origin = std::string(origin);
   if (const auto* n = t.get("name")) {
@@ -341,7 +343,13 @@ Result<MachineConfig> parse_machine_at(std::string_view text, std::string_view o
   if (const auto* n = t.get("persistent_variables")) {
     auto s = get_string(*n, origin, "persistent_variables");
     if (!s) return std::unexpected(s.error());
-    m.persistent_vars = *s;
+    // Relative to the machine file's folder, as `extends` and meshes are (not
+    // to the folder the command runs in).
+    std::filesystem::path pv(*s);
+    if (pv.is_relative() && !s->empty() && !origin.starts_with("machines/")) {
+      pv = std::filesystem::path(origin).parent_path() / pv;
+    }
+    m.persistent_vars = pv.lexically_normal().string();
   }
   // [[axis]]: a name the extended machine has changes that axis; a new name
   // adds an axis after the others.
@@ -495,11 +503,9 @@ Result<MachineConfig> parse_machine(std::string_view text, std::string_view orig
 }
 
 Result<MachineConfig> load_machine_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return fail(AlarmId::kConfig, "cannot read machine file '" + path + "'");
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return parse_machine(ss.str(), path);
+  auto text = read_input_file(path, kMachineFileInput);
+  if (!text) return fail(AlarmId::kConfig, text.error().detail);
+  return parse_machine(*text, path);
 }
 
 Result<MachineConfig> builtin_machine(std::string_view name) {

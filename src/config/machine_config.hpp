@@ -86,6 +86,8 @@ struct MachineConfig {
   std::string name = "mill3";
   std::string origin;   // file it came from, or "built-in mill3"
   std::string extends;  // the machine it extends (`extends`), as its origin; empty: none
+  std::vector<std::string>
+      extends_files;  // the machine files of the `extends` chain, nearest first
   std::string dialect = "fanuc";
   MachineType type = MachineType::kMill;
   double spindle_max_rpm = 10000.0;  // the spindle's own top speed

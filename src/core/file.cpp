@@ -175,7 +175,7 @@ OutputFile& OutputFile::operator=(OutputFile&& o) noexcept {
   return *this;
 }
 
-Result<OutputFile> OutputFile::open(const std::string& name) {
+Result<OutputFile> OutputFile::open(const std::string& name, std::string_view fixed_temporary) {
   auto t = resolve_output(name);
   if (!t) return std::unexpected(t.error());
   OutputFile f;
@@ -206,8 +206,17 @@ Result<OutputFile> OutputFile::open(const std::string& name) {
   int err = EEXIST;
   for (int attempt = 0; attempt < kTemporaryAttempts && err == EEXIST; ++attempt) {
     std::string tmp = f.target_.path;
-    tmp += kTemporaryInfix;
-    tmp += random_suffix();
+    if (fixed_temporary.empty()) {
+      tmp += kTemporaryInfix;
+      tmp += random_suffix();
+    } else {
+      tmp += fixed_temporary;
+      // An earlier run's leftover (or a link planted there) goes; the file
+      // is then made anew with O_EXCL.
+      struct stat ls {};
+      if (attempt == 0 && ::lstat(tmp.c_str(), &ls) == 0 && !S_ISDIR(ls.st_mode))
+        (void)::unlink(tmp.c_str());
+    }
     // O_EXCL with O_CREAT never follows a link; O_NOFOLLOW says so twice.
     const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0666);
     if (fd < 0) {
@@ -218,7 +227,9 @@ Result<OutputFile> OutputFile::open(const std::string& name) {
       // The replaced file keeps its permissions, and its owner and group
       // where this process may set them.
       (void)::fchown(fd, old.st_uid, old.st_gid);
-      (void)::fchmod(fd, old.st_mode & 07777);
+      // Never the set-user-ID, set-group-ID or sticky bits: a replaced output
+      // is data, not a program.
+      (void)::fchmod(fd, old.st_mode & 0777);
     }
     f.fd_ = fd;
     f.own_fd_ = true;
@@ -290,6 +301,62 @@ void OutputFile::discard() noexcept {
     ::unlink(tmp_.c_str());
     tmp_.clear();
   }
+}
+
+Result<std::uint64_t> check_input_file(const std::string& path, InputKind kind, int* fd_out) {
+  const std::string what = "cannot read the " + std::string(kind.what) + " '" + path + "': ";
+  // O_NONBLOCK: opening a FIFO that no one writes must not wait.
+  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK | O_NOCTTY);
+  if (fd < 0) return fail(AlarmId::kFileAccess, what + reason(errno));
+  struct stat st {};
+  if (::fstat(fd, &st) != 0) {
+    const int e = errno;
+    ::close(fd);
+    return fail(AlarmId::kFileAccess, what + reason(e));
+  }
+  std::string why;
+  if (S_ISDIR(st.st_mode)) {
+    why = reason(EISDIR);
+  } else if (!S_ISREG(st.st_mode)) {
+    why = "not a regular file (a device, a FIFO or a socket)";
+  } else if (static_cast<std::uint64_t>(st.st_size) > kind.max_bytes) {
+    why = std::to_string(st.st_size) + " bytes, more than the " + std::to_string(kind.max_bytes) +
+          " a " + std::string(kind.what) + " may have";
+  }
+  if (!why.empty() || fd_out == nullptr) {
+    ::close(fd);
+    if (!why.empty()) return fail(AlarmId::kFileAccess, what + why);
+  } else {
+    // Reads wait for the disk as usual.
+    (void)::fcntl(fd, F_SETFL, ::fcntl(fd, F_GETFL) & ~O_NONBLOCK);
+    *fd_out = fd;
+  }
+  return static_cast<std::uint64_t>(st.st_size);
+}
+
+Result<std::string> read_input_file(const std::string& path, InputKind kind) {
+  int fd = -1;
+  auto size = check_input_file(path, kind, &fd);
+  if (!size) return std::unexpected(size.error());
+  std::string text;
+  text.resize(static_cast<std::size_t>(*size));
+  std::size_t done = 0;
+  // A file that grows while it is read is read up to its size when opened.
+  while (done < text.size()) {
+    const ssize_t r = ::read(fd, text.data() + done, text.size() - done);
+    if (r < 0 && errno == EINTR) continue;
+    if (r < 0) {
+      const int e = errno;
+      ::close(fd);
+      return fail(AlarmId::kFileAccess,
+                  "cannot read the " + std::string(kind.what) + " '" + path + "': " + reason(e));
+    }
+    if (r == 0) break;
+    done += static_cast<std::size_t>(r);
+  }
+  ::close(fd);
+  text.resize(done);
+  return text;
 }
 
 Result<void> write_file_atomic(const std::string& name, std::string_view text) {

@@ -62,7 +62,12 @@ class OutputFile {
   OutputFile(OutputFile&& o) noexcept;
   OutputFile& operator=(OutputFile&& o) noexcept;
 
-  [[nodiscard]] static Result<OutputFile> open(const std::string& name);
+  // `fixed_temporary`: a replaced file is written to "<name><fixed_temporary>"
+  // (e.g. ".partial"), a name the user can find when the process is killed
+  // before commit(); one left by an earlier run is replaced. Empty: a unique
+  // random name.
+  [[nodiscard]] static Result<OutputFile> open(const std::string& name,
+                                               std::string_view fixed_temporary = {});
   // Writes all of `text` (retrying short writes and EINTR).
   [[nodiscard]] Result<void> write(std::string_view text);
   // Ends the output: a replaced file is flushed and renamed into place; an
@@ -87,6 +92,31 @@ class OutputFile {
   std::string error_;
   std::uint64_t bytes_ = 0;
 };
+
+// Inputs. Every file a run reads besides the program (machine files and
+// their `extends` chain, scenes, STL meshes, sweep specs, variable and
+// parameter files) is read through read_input_file: only a regular file is
+// read (a device such as /dev/zero, a FIFO, a socket or a folder is refused
+// with its name, without waiting for a writer), and a file larger than the
+// cap of its kind is refused before a byte of it is read (docs/bad-input.md).
+struct InputKind {
+  std::string_view what;    // "machine file", "scene file", ...
+  std::uint64_t max_bytes;  // the cap
+};
+inline constexpr InputKind kMachineFileInput{"machine file", 1u << 20};
+inline constexpr InputKind kSceneFileInput{"scene file", 16u << 20};
+inline constexpr InputKind kSweepSpecInput{"sweep spec", 1u << 20};
+inline constexpr InputKind kVariableFileInput{"variable file", 1u << 20};
+inline constexpr InputKind kParameterFileInput{"parameter file", 16u << 20};
+// 256 MiB: a binary STL of 5.3 million facets.
+inline constexpr InputKind kStlFileInput{"STL mesh", 256u << 20};
+
+// The file's size when it can be read as `kind` (kFileAccess naming it and
+// why not otherwise); with `fd_out`, the open descriptor is handed over.
+[[nodiscard]] Result<std::uint64_t> check_input_file(const std::string& path, InputKind kind,
+                                                     int* fd_out = nullptr);
+// The whole file, read once.
+[[nodiscard]] Result<std::string> read_input_file(const std::string& path, InputKind kind);
 
 // Writes `text` to `name` as above: whole or not at all for a regular file.
 [[nodiscard]] Result<void> write_file_atomic(const std::string& name, std::string_view text);

@@ -1,17 +1,22 @@
 #include "interpreter/variables.hpp"
 
 #include <fcntl.h>
+#include <fmt/format.h>
 #include <sys/file.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <cerrno>
+#include <charconv>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <fstream>
 #include <sstream>
+#include <string_view>
 #include <thread>
+#include <vector>
 
 #include "core/file.hpp"
 
@@ -77,77 +82,129 @@ void VariableStore::clear_common() noexcept {
   common_.fill(Value::null());
 }
 
+namespace {
+
+// A whole decimal number, nothing else (no sign, no hex, no overflow).
+bool whole_number(std::string_view t, int& out) {
+  const auto r = std::from_chars(t.data(), t.data() + t.size(), out);
+  return !t.empty() && t.front() != '-' && r.ec == std::errc{} && r.ptr == t.data() + t.size();
+}
+
+// A finite decimal number ("1.5", "-2e3"; no hex, no inf or nan).
+bool finite_number(std::string_view t, double& out) {
+  if (!t.empty() && t.front() == '+') t.remove_prefix(1);
+  const auto r = std::from_chars(t.data(), t.data() + t.size(), out, std::chars_format::general);
+  return !t.empty() && r.ec == std::errc{} && r.ptr == t.data() + t.size() && std::isfinite(out);
+}
+
+// "A B" or "A = B" split at blanks (and '=' when `equals`): the two words.
+bool two_words(std::string_view line, bool equals, std::string_view& a, std::string_view& b) {
+  auto blank = [&](char c) { return c == ' ' || c == '\t' || c == '\r' || (equals && c == '='); };
+  std::vector<std::string_view> words;
+  std::size_t i = 0;
+  int eqs = 0;
+  while (i < line.size()) {
+    while (i < line.size() && blank(line[i])) eqs += line[i++] == '=' ? 1 : 0;
+    const std::size_t start = i;
+    while (i < line.size() && !blank(line[i])) ++i;
+    if (i > start) words.push_back(line.substr(start, i - start));
+  }
+  if (words.size() != 2 || (equals && eqs != 1)) return false;
+  a = words[0];
+  b = words[1];
+  return true;
+}
+
+// The file's text; "" for a file that does not exist yet (nothing kept yet).
+Result<std::string> read_kept_file(const std::string& path, InputKind kind) {
+  struct stat st {};
+  if (::stat(path.c_str(), &st) != 0 && errno == ENOENT) return std::string();
+  auto text = read_input_file(path, kind);
+  if (!text) return fail(AlarmId::kConfig, text.error().detail);
+  return text;
+}
+
+}  // namespace
+
+// LinuxCNC's parameter file: "NUMBER VALUE" per line. A line that is not
+// (a sign, hex, a number that overflows, a number given twice) is an error
+// with its place: a damaged file is never half-used.
 Result<void> load_var_file(const std::string& path, std::vector<int>& numbers,
                            std::vector<double>& values) {
   numbers.clear();
   values.clear();
-  std::ifstream in(path);
-  if (!in) {
-    if (errno == ENOENT) return {};  // a new file: written at the end
-    return fail(AlarmId::kConfig, "cannot read the parameter file '" + path + "'");
-  }
+  auto text = read_kept_file(path, kParameterFileInput);
+  if (!text) return std::unexpected(text.error());
+  std::vector<bool> seen(static_cast<std::size_t>(VariableStore::kNgcParams), false);
+  std::istringstream in(*text);
   std::string line;
   std::uint32_t lineno = 0;
   while (std::getline(in, line)) {
     ++lineno;
     std::size_t i = line.find_first_not_of(" \t\r");
     if (i == std::string::npos) continue;
+    std::string_view a, b;
     int n = 0;
     double v = 0.0;
-    char tail = 0;
-    if (std::sscanf(line.c_str() + i, "%d %lf %c", &n, &v, &tail) != 2 || n < 1 ||
-        n >= VariableStore::kNgcParams || !std::isfinite(v)) {
+    const bool ok = two_words(line, false, a, b) && whole_number(a, n) && finite_number(b, v) &&
+                    n >= 1 && n < VariableStore::kNgcParams;
+    if (!ok || seen[static_cast<std::size_t>(n)]) {
       return std::unexpected(Error{AlarmId::kConfig,
-                                   "a parameter file line is \"NUMBER VALUE\" with NUMBER 1-" +
-                                       std::to_string(VariableStore::kNgcParams - 1),
+                                   ok ? "parameter " + std::to_string(n) + " is given twice"
+                                      : "a parameter file line is \"NUMBER VALUE\" with NUMBER 1-" +
+                                            std::to_string(VariableStore::kNgcParams - 1) +
+                                            " and a finite decimal VALUE",
                                    SourceLoc{path, lineno, static_cast<std::uint32_t>(i + 1)}, -1});
     }
+    seen[static_cast<std::size_t>(n)] = true;
     numbers.push_back(n);
     values.push_back(v);
   }
   return {};
 }
 
+// Every value is written whole, whatever its size (%.6f as LinuxCNC writes
+// it: 1e60 takes 68 characters).
 Result<void> save_var_file(const std::string& path, const std::vector<int>& numbers,
                            const std::vector<double>& values) {
   std::string text;
-  char buf[64];
   for (std::size_t i = 0; i < numbers.size() && i < values.size(); ++i) {
-    std::snprintf(buf, sizeof buf, "%d\t%.6f\n", numbers[i], values[i]);
-    text += buf;
+    text += fmt::format("{}\t{:.6f}\n", numbers[i], values[i]);
   }
   return write_file_atomic(path, text);
 }
 
 // File format: one line per non-vacant variable, "#<n> = <value>" with 17
-// significant digits; comment lines start with ';'. Unknown content is an
-// error with its line, so a damaged file is never half-used.
+// significant digits; comment lines start with ';'. Unknown content (hex, an
+// overflowing number, a variable given twice) is an error with its line, so
+// a damaged file is never half-used.
 Result<void> load_persistent(const std::string& path, std::array<Value, 500>& out) {
-  std::ifstream in(path);
-  if (!in) {
-    if (errno == ENOENT) return {};  // first run: nothing kept yet
-    return fail(AlarmId::kConfig, "cannot read persistent variables '" + path + "'");
-  }
+  auto text = read_kept_file(path, kVariableFileInput);
+  if (!text) return std::unexpected(text.error());
   std::array<Value, 500> vals{};
+  std::istringstream in(*text);
   std::string line;
   std::uint32_t lineno = 0;
   while (std::getline(in, line)) {
     ++lineno;
     if (line.empty() || line[0] == ';') continue;
+    std::string_view a, b;
     int n = 0;
     double v = 0.0;
-    char tail = 0;
-    if (std::sscanf(line.c_str(), "#%d = %lf %c", &n, &v, &tail) != 2 || n < 500 || n > 999) {
+    const bool ok = two_words(line, true, a, b) && a.starts_with('#') &&
+                    whole_number(a.substr(1), n) && n >= 500 && n <= 999;
+    if (!ok) {
       return fail(AlarmId::kConfig,
                   "persistent variable file '" + path + "': line " + std::to_string(lineno) +
                       " is not '#<500-999> = <number>'",
                   SourceLoc{{}, lineno, 1});
     }
-    if (!std::isfinite(v)) {
-      // NaN or a number beyond the double range: never a value a run wrote.
+    if (!finite_number(b, v) || !vals[static_cast<std::size_t>(n - 500)].vacant) {
+      // NaN, hex or a number beyond the double range: never a value a run wrote.
       return fail(AlarmId::kConfig,
                   "persistent variable file '" + path + "': line " + std::to_string(lineno) +
-                      ": #" + std::to_string(n) + " is not a finite number",
+                      ": #" + std::to_string(n) +
+                      (finite_number(b, v) ? " is given twice" : " is not a finite decimal number"),
                   SourceLoc{{}, lineno, 1});
     }
     vals[static_cast<std::size_t>(n - 500)] = Value::of(v);
@@ -158,11 +215,9 @@ Result<void> load_persistent(const std::string& path, std::array<Value, 500>& ou
 
 Result<void> save_persistent(const std::string& path, const std::array<Value, 500>& values) {
   std::string text = "; skipnc persistent macro variables #500-#999\n";
-  char buf[64];
   for (std::size_t i = 0; i < values.size(); ++i) {
     if (values[i].vacant) continue;
-    std::snprintf(buf, sizeof buf, "#%zu = %.17g\n", i + 500, values[i].v);
-    text += buf;
+    text += fmt::format("#{} = {:.17g}\n", i + 500, values[i].v);
   }
   return write_file_atomic(path, text);
 }
@@ -187,11 +242,20 @@ void PersistentLock::release() noexcept {
 Result<PersistentLock> PersistentLock::acquire(const std::string& path, double wait_s) {
   PersistentLock lock;
   const std::string name = path + ".lock";
-  const int fd = ::open(name.c_str(), O_RDWR | O_CREAT | O_CLOEXEC | O_NOFOLLOW, 0644);
+  // A device or a FIFO is never a persistent file (nor is "<it>.lock" made).
+  if (struct stat st{}; ::stat(path.c_str(), &st) == 0) {
+    if (auto c = check_input_file(path, kVariableFileInput); !c) return std::unexpected(c.error());
+  }
+  int fd = ::open(name.c_str(), O_RDWR | O_CREAT | O_CLOEXEC | O_NOFOLLOW, 0644);
+  // A lock file this user may not write (made by another user in a shared
+  // folder): flock() holds on a descriptor open for reading too.
+  if (fd < 0 && (errno == EACCES || errno == EROFS || errno == EPERM))
+    fd = ::open(name.c_str(), O_RDONLY | O_CLOEXEC | O_NOFOLLOW);
   if (fd < 0) {
-    if (errno == EACCES || errno == EROFS || errno == EPERM) return lock;  // read-only: no lock
-    return fail(AlarmId::kFileAccess,
-                "cannot open the lock '" + name + "': " + std::strerror(errno));
+    // No lock can be held: two runs at once could lose an update. Refused.
+    return fail(AlarmId::kFileAccess, "cannot hold the lock '" + name +
+                                          "' of the persistent file (" + std::strerror(errno) +
+                                          "): two runs at once could lose updates");
   }
   lock.fd_ = fd;
   // Poll rather than block: a run that holds the file for ever (a bug, a

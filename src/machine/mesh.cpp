@@ -10,6 +10,8 @@
 #include <limits>
 #include <sstream>
 
+#include "core/file.hpp"
+
 namespace skipnc::machine::geo {
 namespace {
 
@@ -527,12 +529,11 @@ Result<std::vector<Triangle>> parse_stl(std::string_view bytes, std::string_view
 }
 
 Result<std::vector<Triangle>> read_stl(const std::string& path, double scale) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return stl_error(path, "cannot be read");
-  std::stringstream ss;
-  ss << in.rdbuf();
-  const std::string bytes = ss.str();
-  return parse_stl(bytes, path, scale);
+  // Read once, into the one string parsed: a file over the cap (or not a
+  // regular file) is refused from its size, before a byte is read.
+  auto bytes = read_input_file(path, kStlFileInput);
+  if (!bytes) return stl_error(path, bytes.error().detail);
+  return parse_stl(*bytes, path, scale);
 }
 
 }  // namespace skipnc::machine::geo

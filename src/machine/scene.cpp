@@ -5,6 +5,7 @@
 
 #include "config/skip_inputs.hpp"
 #include "config/toml_util.hpp"
+#include "core/file.hpp"
 #include "machine/scene_actions.hpp"
 
 namespace skipnc::machine {
@@ -123,11 +124,9 @@ Result<Scene> parse_scene(std::string_view text, std::string_view origin,
 
 Result<Scene> load_scene_file(const std::string& path, const config::MachineConfig& m,
                               const config::Dialect& d, const config::Parameters& p) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return fail(AlarmId::kConfig, "cannot read scene file '" + path + "'");
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return parse_scene(ss.str(), path, m, d, p);
+  auto text = read_input_file(path, kSceneFileInput);
+  if (!text) return fail(AlarmId::kConfig, text.error().detail);
+  return parse_scene(*text, path, m, d, p);
 }
 
 }  // namespace skipnc::machine

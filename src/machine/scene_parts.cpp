@@ -271,6 +271,7 @@ class Frames {
 class PartSet {
  public:
   explicit PartSet(const Frames& frames) : frames_(frames) {}
+  std::vector<std::string> mesh_files;
 
   geo::Part& get(const toml::table& t, std::string_view origin, Result<void>& err) {
     std::string name;
@@ -404,6 +405,7 @@ Result<void> parse_parts(const toml::table& root, const Reader& rd, PartSet& par
     // Relative to the scene file's folder.
     std::filesystem::path path(*file);
     if (path.is_relative()) path = std::filesystem::path(origin).parent_path() / path;
+    parts.mesh_files.push_back(path.string());
     auto tris = geo::read_stl(path.string(), *scale);
     if (!tris) return config_error(*fn, origin, tris.error().detail);
     auto mesh = std::make_shared<const geo::TriMesh>(std::move(*tris));
@@ -728,6 +730,7 @@ Result<Probing> parse_probing(const toml::table& root, std::string_view origin,
   if (!r) return std::unexpected(r.error());
   r = parts.check_solids(origin);
   if (!r) return std::unexpected(r.error());
+  out.mesh_files = parts.mesh_files;
   out.parts = parts.take();
   for (const char* key : {"probe", "tool_setter", "stock"}) {
     const auto* n = root.get(key);

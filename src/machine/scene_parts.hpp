@@ -100,7 +100,8 @@ struct Probing {
   std::optional<ToolSetterSpec> tool_setter;
   std::vector<ToolSpec> tools;
   std::vector<GaugeSpec> gauges;
-  int spindle_tool = 0;  // in the spindle at the start (the probe's T by default)
+  int spindle_tool = 0;                 // in the spindle at the start (the probe's T by default)
+  std::vector<std::string> mesh_files;  // the STL files read, as opened (outputs never these)
 
   const ToolSpec* tool(int number) const noexcept {
     for (const auto& t : tools) {

@@ -1,4 +1,5 @@
-// --expect: assertions on the outcome of a run, for CI.
+// --expect (skipnc run) and a sweep spec's expect = [...]: assertions on the
+// outcome of a run, for CI. One parser for both.
 //   #140=-0.05+-0.001   variable #140 within 0.001 of -0.05
 //   #140=-0.05          within 1e-9 (float noise) of -0.05
 //   #<name>=1.5+-0.01   a named variable

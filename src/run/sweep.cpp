@@ -6,13 +6,18 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <condition_variable>
 #include <filesystem>
 #include <limits>
 #include <map>
+#include <mutex>
 #include <nlohmann/json.hpp>
 #include <numbers>
 #include <thread>
 
+#include "config/toml_util.hpp"
+#include "core/file.hpp"
+#include "core/utf8.hpp"
 #include "interpreter/variables.hpp"
 
 namespace skipnc::run {
@@ -221,65 +226,49 @@ double draw_value(const VaryRule& r, std::uint64_t seed, std::int64_t index, std
   return v[0];
 }
 
+// A parameter's drawn values are refused as `-p N=V` refuses them: every
+// listed value, and both ends of a range (a normal draw is checked per
+// scenario: a value out of range makes that row an error).
+Result<void> check_param_values(const VaryRule& r, const config::Parameters& base) {
+  if (r.target != VaryRule::Target::kParam || r.draw == VaryRule::Draw::kNormal) return {};
+  config::Parameters p = base;
+  for (double x : r.values) {
+    if (auto a = p.apply(config::ParamSetting{r.number, r.bit, x, {}}); !a) {
+      return fail(AlarmId::kConfig,
+                  "[[vary]] " + r.name + " = " + fmt::format("{}", x) + ": " + a.error().detail);
+    }
+  }
+  return {};
+}
+
 }  // namespace
 
 Result<Check> parse_check(const std::string& text, std::vector<VarRef>& vars) {
-  Check c;
-  c.text = text;
-  const auto eq = text.find('=');
-  if (eq == std::string::npos || eq == 0) {
-    return fail(AlarmId::kUsage, "expect '" + text +
-                                     "': expected #N=VALUE[+-TOL], status=completed|alarm or "
-                                     "alarm=NUMBER");
-  }
-  const std::string key = text.substr(0, eq);
-  const std::string rhs = text.substr(eq + 1);
-  if (key == "status") {
-    if (rhs != "completed" && rhs != "alarm" && rhs != "interrupted") {
-      return fail(AlarmId::kUsage,
-                  "expect '" + text + "': status is completed, alarm or interrupted");
-    }
-    c.kind = Check::Kind::kStatus;
-    c.status = rhs;
-    return c;
-  }
-  auto number = [](std::string_view t, double& out) {
-    auto r = std::from_chars(t.data(), t.data() + t.size(), out);
-    return r.ec == std::errc{} && r.ptr == t.data() + t.size() && std::isfinite(out);
-  };
-  if (key == "alarm") {
-    double n = 0.0;
-    if (!number(rhs, n)) return fail(AlarmId::kUsage, "expect '" + text + "': alarm=NUMBER");
-    c.kind = Check::Kind::kAlarm;
-    c.value = n;
-    return c;
-  }
-  auto ref = parse_var_ref(key);
-  if (!ref) return fail(AlarmId::kUsage, "expect '" + text + "': " + ref.error().detail);
-  const auto pm = rhs.find("+-");
-  if (!number(std::string_view(rhs).substr(0, pm), c.value) ||
-      (pm != std::string::npos &&
-       (!number(std::string_view(rhs).substr(pm + 2), c.tolerance) || c.tolerance < 0.0))) {
-    return fail(AlarmId::kUsage, "expect '" + text + "': expected #N=VALUE or #N=VALUE+-TOL");
-  }
+  auto e = parse_expectation(text);
+  if (!e) return std::unexpected(e.error());
+  Check c{std::move(*e), 0};
+  if (c.e.kind != Expectation::Kind::kVariable) return c;
+  auto ref = parse_var_ref("#" + c.e.var);
+  if (!ref) return std::unexpected(ref.error());
   const auto it =
       std::find_if(vars.begin(), vars.end(), [&](const VarRef& v) { return v.key == ref->key; });
   c.var = static_cast<std::size_t>(it - vars.begin());
   if (it == vars.end()) vars.push_back(*ref);
+  // The report and the checks key a variable alike (#<name> or N).
+  c.e.var = ref->key;
   return c;
 }
 
 Result<void> load_sweep(const std::string& spec_path, const SweepOverrides& o, SweepPlan& plan) {
   plan.spec_path = spec_path;
   const std::string& path = plan.spec_path;
-  toml::parse_result parsed = toml::parse_file(path);
-  if (!parsed) {
-    const auto& err = parsed.error();
-    if (err.source().begin.line == 0)
-      return fail(AlarmId::kConfig, "cannot read sweep spec '" + path + "'");
-    return std::unexpected(spec_error(path, err.source(), std::string(err.description())));
-  }
-  const toml::table& root = parsed.table();
+  auto spec_text = read_input_file(path, kSweepSpecInput);
+  if (!spec_text) return fail(AlarmId::kConfig, spec_text.error().detail);
+  // The same checked parser as machine and scene files (toml++ asserts on
+  // some malformed input that the precheck refuses).
+  auto parsed = config::parse_toml(*spec_text, path);
+  if (!parsed) return std::unexpected(parsed.error());
+  const toml::table& root = *parsed;
   static constexpr std::string_view kKeys[] = {"program", "machine", "scene",     "dialect",
                                                "include", "params",  "scenarios", "seed",
                                                "workers", "vars",    "expect",    "vary"};
@@ -327,9 +316,10 @@ Result<void> load_sweep(const std::string& spec_path, const SweepOverrides& o, S
     }
     return *v;
   };
-  auto scenarios = integer("scenarios", 1, 100'000'000, 1);
-  auto seed = integer("seed", 0, std::numeric_limits<std::int64_t>::max(), 1);
-  auto workers = integer("workers", 0, 4096, 0);
+  auto scenarios = integer("scenarios", 1, kMaxScenarios, 1);
+  // The command line's ranges (-n, --seed, -j): a value run refuses is refused here.
+  auto seed = integer("seed", 0, kMaxSeed, 1);
+  auto workers = integer("workers", 0, kMaxWorkers, 0);
   for (auto* r : {&scenarios, &seed, &workers}) {
     if (!*r) return std::unexpected(r->error());
   }
@@ -347,6 +337,13 @@ Result<void> load_sweep(const std::string& spec_path, const SweepOverrides& o, S
   RunRequest& rq = plan.request;
   rq.program_path = relative_to(dir, *program);
   rq.program_name = rq.program_path;
+  // A program that cannot be read stops the sweep before any scenario (was:
+  // every row an error).
+  if (auto p = check_input_file(rq.program_path,
+                                InputKind{"program", std::numeric_limits<std::uint64_t>::max()});
+      !p) {
+    return std::unexpected(spec_error(path, root.get("program")->source(), p.error().detail));
+  }
   for (const auto& inc : *include) rq.include_dirs.push_back(relative_to(dir, inc));
   for (const auto& v : *vars) {
     auto ref = parse_var_ref(v);
@@ -381,6 +378,9 @@ Result<void> load_sweep(const std::string& spec_path, const SweepOverrides& o, S
         return std::unexpected(spec_error(path, t.get("what")->source(), rule.error().detail));
       }
       if (auto d = parse_draw(t, path, *rule); !d) return std::unexpected(d.error());
+      if (auto c = check_param_values(*rule, *plan.session.params); !c) {
+        return std::unexpected(spec_error(path, t.source(), c.error().detail));
+      }
       plan.vary.push_back(std::move(*rule));
     }
   }
@@ -422,6 +422,49 @@ Variation scenario_variation(const SweepPlan& plan, std::int64_t index, std::vec
   return v;
 }
 
+namespace {
+
+// Whether the checks expect a run that did not complete (status= other than
+// completed, or alarm=): only then may such a run pass.
+bool expects_an_end(const SweepPlan& plan) {
+  for (const Check& c : plan.checks) {
+    if (c.e.kind == Expectation::Kind::kAlarm) return true;
+    if (c.e.kind == Expectation::Kind::kStatus && c.e.status != "completed") return true;
+  }
+  return false;
+}
+
+void check_row(const SweepPlan& plan, ScenarioRow& row) {
+  ObservedRun o;
+  o.status = row.status;
+  o.alarm = row.alarm;
+  for (std::size_t i = 0; i < plan.request.vars.size(); ++i)
+    o.variables.emplace_back(plan.request.vars[i].key, row.values[i]);
+  bool all = true;
+  for (const Check& c : plan.checks) {
+    const bool ok = check_expectation(c.e, o).empty();
+    row.checks.push_back(ok);
+    all = all && ok;
+  }
+  const bool ran =
+      row.status == "completed" || row.status == "alarm" || row.status == "interrupted";
+  row.pass = all && ran && (row.status == "completed" || expects_an_end(plan));
+}
+
+// A scenario the sweep did not take: its values, no run.
+ScenarioRow not_run_row(const SweepPlan& plan, std::int64_t index) {
+  ScenarioRow row;
+  row.index = index;
+  (void)scenario_variation(plan, index, row.chosen, row.probe_seed);
+  row.values.assign(plan.request.vars.size(), std::nullopt);
+  row.status = "not_run";
+  row.checks.assign(plan.checks.size(), false);
+  row.pass = false;
+  return row;
+}
+
+}  // namespace
+
 ScenarioRow run_scenario(const SweepPlan& plan, std::int64_t index,
                          const std::atomic<bool>* interrupt) {
   ScenarioRow row;
@@ -440,44 +483,58 @@ ScenarioRow run_scenario(const SweepPlan& plan, std::int64_t index,
     row.alarm_text = res->alarm_text;
     for (std::size_t i = 0; i < row.values.size(); ++i) row.values[i] = res->variables[i].second;
   }
-  row.pass = true;
-  for (const Check& c : plan.checks) {
-    bool ok = false;
-    switch (c.kind) {
-      case Check::Kind::kStatus:
-        ok = row.status == c.status;
-        break;
-      case Check::Kind::kAlarm:
-        ok = row.alarm == static_cast<int>(c.value);
-        break;
-      case Check::Kind::kVariable:
-        ok = row.values[c.var] && std::fabs(*row.values[c.var] - c.value) <= c.tolerance;
-        break;
-    }
-    row.checks.push_back(ok);
-    row.pass = row.pass && ok;
-  }
+  // A message or a file name in the alarm may hold any bytes: the table is
+  // UTF-8, as the run report is (core/utf8.hpp).
+  row.alarm_text = utf8::make_valid(row.alarm_text);
+  check_row(plan, row);
   return row;
 }
 
-std::vector<ScenarioRow> run_scenarios(const SweepPlan& plan, std::int64_t begin, std::int64_t end,
-                                       int workers, const std::atomic<bool>* interrupt) {
+void run_scenarios(const SweepPlan& plan, std::int64_t begin, std::int64_t end, int workers,
+                   const RowSink& sink, SweepStop stop) {
   const std::int64_t n = std::max<std::int64_t>(0, end - begin);
-  std::vector<ScenarioRow> rows(static_cast<std::size_t>(n));
   if (workers <= 0) workers = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   workers = static_cast<int>(std::min<std::int64_t>(workers, std::max<std::int64_t>(n, 1)));
-  // Each worker takes the next index; a row goes to its own slot, so the
-  // table's order is the index order whatever finished first.
-  std::atomic<std::int64_t> next{0};
+  std::mutex m;
+  std::condition_variable cv;
+  std::map<std::int64_t, ScenarioRow> done;  // finished, waiting for an earlier row
+  std::int64_t next_take = 0, next_emit = 0;
+  auto stopped = [&] { return stop.stop_taking != nullptr && stop.stop_taking->load(); };
   auto work = [&] {
-    for (std::int64_t i = next.fetch_add(1); i < n; i = next.fetch_add(1)) {
-      rows[static_cast<std::size_t>(i)] = run_scenario(plan, begin + i, interrupt);
+    for (;;) {
+      std::int64_t i = 0;
+      {
+        std::unique_lock lock(m);
+        cv.wait(lock, [&] { return next_take >= n || next_take < next_emit + kSweepWindow; });
+        if (next_take >= n) return;
+        i = next_take++;
+      }
+      ScenarioRow row =
+          stopped() ? not_run_row(plan, begin + i) : run_scenario(plan, begin + i, stop.interrupt);
+      {
+        std::lock_guard lock(m);
+        done.emplace(i, std::move(row));
+        // Each row leaves as soon as every row before it has.
+        for (auto it = done.begin(); it != done.end() && it->first == next_emit;
+             it = done.erase(it), ++next_emit) {
+          sink(it->second);
+        }
+      }
+      cv.notify_all();
     }
   };
   std::vector<std::jthread> pool;
   for (int w = 1; w < workers; ++w) pool.emplace_back(work);
   work();
-  pool.clear();
+}
+
+std::vector<ScenarioRow> run_scenarios(const SweepPlan& plan, std::int64_t begin, std::int64_t end,
+                                       int workers, const std::atomic<bool>* interrupt) {
+  std::vector<ScenarioRow> rows;
+  rows.reserve(static_cast<std::size_t>(std::max<std::int64_t>(0, end - begin)));
+  run_scenarios(
+      plan, begin, end, workers, [&](const ScenarioRow& r) { rows.push_back(r); },
+      SweepStop{nullptr, interrupt});
   return rows;
 }
 
@@ -497,126 +554,152 @@ std::string number(double v) {
   return std::isfinite(v) ? fmt::format("{}", v) : std::string();
 }
 
-struct VarSummary {
-  std::size_t count = 0;
-  double min = 0.0, max = 0.0, sum = 0.0;
-  std::optional<std::size_t> check;  // the first check on this variable
-  double worst = -1.0;               // largest |value - reference|
-  std::size_t worst_row = 0;
-};
-
-// Per reported variable: count, min, max, mean, and the worst case: the
-// largest deviation from the expected value when a check names the variable,
-// else from the mean.
-std::vector<VarSummary> summarise(const SweepPlan& plan, const std::vector<ScenarioRow>& rows) {
-  std::vector<VarSummary> out(plan.request.vars.size());
-  for (std::size_t c = 0; c < plan.checks.size(); ++c) {
-    const Check& ch = plan.checks[c];
-    if (ch.kind == Check::Kind::kVariable && !out[ch.var].check) out[ch.var].check = c;
-  }
-  for (std::size_t v = 0; v < out.size(); ++v) {
-    VarSummary& s = out[v];
-    for (const auto& r : rows) {
-      if (!r.values[v]) continue;
-      const double x = *r.values[v];
-      s.min = s.count == 0 ? x : std::min(s.min, x);
-      s.max = s.count == 0 ? x : std::max(s.max, x);
-      s.sum += x;
-      ++s.count;
-    }
-    if (s.count == 0) continue;
-    const double ref = s.check ? plan.checks[*s.check].value : s.sum / static_cast<double>(s.count);
-    for (std::size_t i = 0; i < rows.size(); ++i) {
-      if (!rows[i].values[v]) continue;
-      const double d = std::fabs(*rows[i].values[v] - ref);
-      if (d > s.worst) {
-        s.worst = d;
-        s.worst_row = i;
-      }
-    }
+// `text` (a dump of a JSON value) indented by `by` more spaces after its
+// first line.
+std::string indented(const std::string& text, std::string_view by) {
+  std::string out;
+  for (char c : text) {
+    out += c;
+    if (c == '\n') out += by;
   }
   return out;
 }
 
 }  // namespace
 
-std::string sweep_csv(const SweepPlan& plan, const std::vector<ScenarioRow>& rows) {
-  std::string out = "scenario,probe_seed,status,alarm";
-  for (const auto& r : plan.vary) out += "," + csv_field(r.name);
-  for (const auto& v : plan.request.vars) out += ",#" + csv_field(v.key);
-  for (const auto& c : plan.checks) out += "," + csv_field(c.text);
-  out += ",pass,time_s\n";
-  for (const auto& r : rows) {
-    out += fmt::format("{},{},{},{}", r.index, r.probe_seed, r.status,
-                       r.alarm != 0 ? std::to_string(r.alarm) : std::string());
-    for (double x : r.chosen) out += "," + number(x);
-    for (const auto& x : r.values) out += "," + (x ? number(*x) : std::string());
-    for (bool ok : r.checks) out += ok ? ",pass" : ",fail";
-    out += r.pass ? ",pass," : ",fail,";
-    out += number(r.time_s) + "\n";
+SweepTable::SweepTable(const SweepPlan& plan, std::int64_t scenarios)
+    : plan_(plan),
+      scenarios_(scenarios < 0 ? plan.scenarios : scenarios),
+      vars_(plan.request.vars.size()) {
+  for (std::size_t c = 0; c < plan.checks.size(); ++c) {
+    const Check& ch = plan.checks[c];
+    if (ch.e.kind == Expectation::Kind::kVariable && !ch.e.vacant && !vars_[ch.var].check)
+      vars_[ch.var].check = c;
   }
-  return out;
 }
 
-std::string sweep_json(const SweepPlan& plan, const std::vector<ScenarioRow>& rows) {
+std::string SweepTable::csv_header() const {
+  std::string out = "scenario,probe_seed,status,alarm";
+  for (const auto& r : plan_.vary) out += "," + csv_field(r.name);
+  for (const auto& v : plan_.request.vars) out += ",#" + csv_field(v.key);
+  for (const auto& c : plan_.checks) out += "," + csv_field(c.e.text);
+  return out + ",pass,time_s\n";
+}
+
+std::string SweepTable::csv_row(const ScenarioRow& r) const {
+  std::string out = fmt::format("{},{},{},{}", r.index, r.probe_seed, r.status,
+                                r.alarm != 0 ? std::to_string(r.alarm) : std::string());
+  for (double x : r.chosen) out += "," + number(x);
+  for (const auto& x : r.values) out += "," + (x ? number(*x) : std::string());
+  for (bool ok : r.checks) out += ok ? ",pass" : ",fail";
+  out += r.pass ? ",pass," : ",fail,";
+  return out + number(r.time_s) + "\n";
+}
+
+std::string SweepTable::json_head() const {
   using nlohmann::ordered_json;
   ordered_json j;
   j["format"] = "skipnc-sweep/1";
-  j["spec"] = plan.spec_path;
-  j["program"] = plan.request.program_name;
-  j["machine"] = plan.session.machine.name;
-  j["dialect"] = plan.session.dialect.name;
-  j["seed"] = plan.seed;
-  j["scenarios"] = rows.size();
+  j["spec"] = utf8::make_valid(plan_.spec_path);
+  j["program"] = utf8::make_valid(plan_.request.program_name);
+  j["machine"] = utf8::make_valid(plan_.session.machine.name);
+  j["dialect"] = plan_.session.dialect.name;
+  j["seed"] = plan_.seed;
+  j["scenarios"] = scenarios_;
   ordered_json vary = ordered_json::array();
-  for (const auto& r : plan.vary) vary.push_back(r.name);
+  for (const auto& r : plan_.vary) vary.push_back(utf8::make_valid(r.name));
   j["vary"] = vary;
   ordered_json vars = ordered_json::array();
-  for (const auto& v : plan.request.vars) vars.push_back(v.key);
+  for (const auto& v : plan_.request.vars) vars.push_back(utf8::make_valid(v.key));
   j["variables"] = vars;
   ordered_json checks = ordered_json::array();
-  for (const auto& c : plan.checks) checks.push_back(c.text);
+  for (const auto& c : plan_.checks) checks.push_back(utf8::make_valid(c.e.text));
   j["expect"] = checks;
-  ordered_json jrows = ordered_json::array();
-  std::size_t passed = 0;
-  std::map<std::string, std::size_t> statuses;
-  for (const auto& r : rows) {
-    ordered_json o;
-    o["scenario"] = r.index;
-    o["probe_seed"] = r.probe_seed;
-    o["status"] = r.status;
-    o["alarm"] = r.alarm != 0 ? ordered_json(r.alarm) : ordered_json(nullptr);
-    if (!r.alarm_text.empty()) o["alarm_text"] = r.alarm_text;
-    ordered_json chosen = ordered_json::object();
-    for (std::size_t k = 0; k < plan.vary.size(); ++k) chosen[plan.vary[k].name] = r.chosen[k];
-    o["chosen"] = chosen;
-    ordered_json values = ordered_json::object();
-    for (std::size_t k = 0; k < plan.request.vars.size(); ++k) {
-      values[plan.request.vars[k].key] =
-          r.values[k] ? ordered_json(*r.values[k]) : ordered_json(nullptr);
-    }
-    o["variables"] = values;
-    ordered_json ch = ordered_json::object();
-    for (std::size_t k = 0; k < plan.checks.size(); ++k)
-      ch[plan.checks[k].text] = bool(r.checks[k]);
-    o["checks"] = ch;
-    o["pass"] = r.pass;
-    o["time"] = r.time_s;
-    jrows.push_back(std::move(o));
-    passed += r.pass ? 1 : 0;
-    ++statuses[r.status];
+  std::string out = j.dump(2);
+  out.resize(out.size() - 2);  // "\n}"
+  return out + ",\n  \"rows\": [";
+}
+
+std::string SweepTable::json_row(const ScenarioRow& r, bool first) const {
+  using nlohmann::ordered_json;
+  ordered_json o;
+  o["scenario"] = r.index;
+  o["probe_seed"] = r.probe_seed;
+  o["status"] = r.status;
+  o["alarm"] = r.alarm != 0 ? ordered_json(r.alarm) : ordered_json(nullptr);
+  if (!r.alarm_text.empty()) o["alarm_text"] = utf8::make_valid(r.alarm_text);
+  ordered_json chosen = ordered_json::object();
+  for (std::size_t k = 0; k < plan_.vary.size(); ++k)
+    chosen[utf8::make_valid(plan_.vary[k].name)] = r.chosen[k];
+  o["chosen"] = chosen;
+  ordered_json values = ordered_json::object();
+  for (std::size_t k = 0; k < plan_.request.vars.size(); ++k) {
+    values[utf8::make_valid(plan_.request.vars[k].key)] =
+        r.values[k] ? ordered_json(*r.values[k]) : ordered_json(nullptr);
   }
-  j["rows"] = std::move(jrows);
+  o["variables"] = values;
+  ordered_json ch = ordered_json::object();
+  for (std::size_t k = 0; k < plan_.checks.size(); ++k)
+    ch[utf8::make_valid(plan_.checks[k].e.text)] = bool(r.checks[k]);
+  o["checks"] = ch;
+  o["pass"] = r.pass;
+  o["time"] = r.time_s;
+  // One row per line: a table cut short keeps its finished rows readable.
+  return (first ? "\n    " : ",\n    ") + o.dump();
+}
+
+void SweepTable::add(const ScenarioRow& r) {
+  ++rows_;
+  passed_ += r.pass ? 1 : 0;
+  ++statuses_[r.status];
+  if (!r.pass && !first_failure_ && r.status != "not_run") first_failure_ = r;
+  for (std::size_t v = 0; v < vars_.size(); ++v) {
+    if (!r.values[v]) continue;
+    VarSummary& s = vars_[v];
+    const double x = *r.values[v];
+    if (s.count == 0 || x < s.min) s.min = x, s.min_row = r.index;
+    if (s.count == 0 || x > s.max) s.max = x, s.max_row = r.index;
+    s.sum += x;
+    ++s.count;
+    if (s.check) {
+      const double d = std::fabs(x - plan_.checks[*s.check].e.value);
+      if (d > s.worst) s.worst = d, s.worst_row = r.index, s.worst_value = x;
+    }
+  }
+}
+
+// The worst case: the largest deviation from the expected value when a check
+// names the variable, else from the mean (then the minimum or the maximum).
+SweepTable::Worst SweepTable::worst(const VarSummary& s) const {
+  if (s.check) return {s.worst_row, s.worst_value, s.worst};
+  const double mean = s.sum / static_cast<double>(s.count);
+  if (s.max - mean > mean - s.min) return {s.max_row, s.max, s.max - mean};
+  return {s.min_row, s.min, mean - s.min};
+}
+
+std::int64_t SweepTable::count(const std::string& status) const noexcept {
+  const auto it = statuses_.find(status);
+  return it == statuses_.end() ? 0 : it->second;
+}
+
+int SweepTable::exit_status() const noexcept {
+  if (rows_ > 0 && errors() == rows_) return 2;
+  return passed_ == rows_ ? 0 : 1;
+}
+
+std::string SweepTable::json_tail() const {
+  using nlohmann::ordered_json;
   ordered_json sum;
-  sum["passed"] = passed;
-  sum["failed"] = rows.size() - passed;
+  sum["passed"] = passed_;
+  sum["failed"] = rows_ - passed_ - errors() - not_run();
+  sum["errors"] = errors();
+  sum["not_run"] = not_run();
   ordered_json st = ordered_json::object();
-  for (const auto& [k, n] : statuses) st[k] = n;
+  for (const auto& [k, n] : statuses_) st[k] = n;
   sum["statuses"] = st;
   ordered_json vs = ordered_json::object();
-  const auto summary = summarise(plan, rows);
-  for (std::size_t v = 0; v < summary.size(); ++v) {
-    const VarSummary& s = summary[v];
+  for (std::size_t v = 0; v < vars_.size(); ++v) {
+    const VarSummary& s = vars_[v];
     ordered_json o;
     o["count"] = s.count;
     if (s.count > 0) {
@@ -624,48 +707,68 @@ std::string sweep_json(const SweepPlan& plan, const std::vector<ScenarioRow>& ro
       o["max"] = s.max;
       o["mean"] = s.sum / static_cast<double>(s.count);
       o["reference"] = s.check ? "expect" : "mean";
-      o["worst"] = {{"scenario", rows[s.worst_row].index},
-                    {"value", *rows[s.worst_row].values[v]},
-                    {"deviation", s.worst}};
+      const Worst w = worst(s);
+      o["worst"] = {{"scenario", w.row}, {"value", w.value}, {"deviation", w.deviation}};
     }
-    vs[plan.request.vars[v].key] = std::move(o);
+    vs[utf8::make_valid(plan_.request.vars[v].key)] = std::move(o);
   }
   sum["variables"] = std::move(vs);
-  j["summary"] = std::move(sum);
-  return j.dump(2) + "\n";
+  return std::string(rows_ > 0 ? "\n  ]" : "]") +
+         ",\n  \"summary\": " + indented(sum.dump(2), "  ") + "\n}\n";
 }
 
-std::string sweep_summary_text(const SweepPlan& plan, const std::vector<ScenarioRow>& rows) {
-  std::size_t passed = 0;
-  for (const auto& r : rows) passed += r.pass ? 1 : 0;
-  std::string out =
-      fmt::format("{}: {} scenarios (seed {}): {} passed, {} failed\n", plan.spec_path, rows.size(),
-                  plan.seed, passed, rows.size() - passed);
-  const auto summary = summarise(plan, rows);
-  if (!summary.empty()) {
+std::string SweepTable::summary_text() const {
+  std::string out = fmt::format("{}: {} scenarios (seed {}): {} passed, {} failed", plan_.spec_path,
+                                rows_, plan_.seed, passed_, rows_ - passed_ - errors() - not_run());
+  if (errors() > 0) out += fmt::format(", {} could not start (error)", errors());
+  if (not_run() > 0) out += fmt::format(", {} not run (stopped)", not_run());
+  out += "\n";
+  if (!vars_.empty()) {
     out += fmt::format("  {:<24} {:>7} {:>14} {:>14} {:>14} {:>12} {:>9}\n", "variable", "count",
                        "min", "max", "mean", "worst", "scenario");
   }
-  for (std::size_t v = 0; v < summary.size(); ++v) {
-    const VarSummary& s = summary[v];
+  for (std::size_t v = 0; v < vars_.size(); ++v) {
+    const VarSummary& s = vars_[v];
     if (s.count == 0) {
-      out += fmt::format("  {:<24} {:>7}\n", "#" + plan.request.vars[v].key, 0);
+      out += fmt::format("  {:<24} {:>7}\n", "#" + plan_.request.vars[v].key, 0);
       continue;
     }
+    const Worst w = worst(s);
     out += fmt::format("  {:<24} {:>7} {:>14.6f} {:>14.6f} {:>14.6f} {:>12.6f} {:>9}\n",
-                       "#" + plan.request.vars[v].key, s.count, s.min, s.max,
-                       s.sum / static_cast<double>(s.count), s.worst, rows[s.worst_row].index);
+                       "#" + plan_.request.vars[v].key, s.count, s.min, s.max,
+                       s.sum / static_cast<double>(s.count), w.deviation, w.row);
   }
-  if (!summary.empty())
+  if (!vars_.empty())
     out += "  worst: the largest |value - expected| (|value - mean| without an expect)\n";
-  for (const auto& r : rows) {
-    if (!r.pass) {
-      out += fmt::format("  first failure: scenario {} ({}{}{})\n", r.index, r.status,
-                         r.alarm_text.empty() ? "" : ": ", r.alarm_text);
-      break;
-    }
+  if (first_failure_) {
+    const ScenarioRow& r = *first_failure_;
+    out += fmt::format("  first failure: scenario {} ({}{}{})\n", r.index, r.status,
+                       r.alarm_text.empty() ? "" : ": ", r.alarm_text);
   }
   return out;
+}
+
+std::string sweep_csv(const SweepPlan& plan, const std::vector<ScenarioRow>& rows) {
+  const SweepTable t(plan);
+  std::string out = t.csv_header();
+  for (const auto& r : rows) out += t.csv_row(r);
+  return out;
+}
+
+std::string sweep_json(const SweepPlan& plan, const std::vector<ScenarioRow>& rows) {
+  SweepTable t(plan, static_cast<std::int64_t>(rows.size()));
+  std::string out = t.json_head();
+  for (const auto& r : rows) {
+    out += t.json_row(r, t.rows() == 0);
+    t.add(r);
+  }
+  return out + t.json_tail();
+}
+
+std::string sweep_summary_text(const SweepPlan& plan, const std::vector<ScenarioRow>& rows) {
+  SweepTable t(plan);
+  for (const auto& r : rows) t.add(r);
+  return t.summary_text();
 }
 
 }  // namespace skipnc::run

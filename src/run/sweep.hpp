@@ -11,10 +11,13 @@
 
 #include <atomic>
 #include <cstdint>
+#include <functional>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "run/expect.hpp"
 #include "run/scenario.hpp"
 #include "run/session.hpp"
 
@@ -41,17 +44,21 @@ struct VaryRule {
   std::vector<double> values;  // kValues: cycled; otherwise [a, b]
 };
 
-// One --expect-style check: "#140=-0.05+-0.001", "status=completed",
-// "alarm=9061".
+// One check of the spec's `expect`, parsed by run --expect's parser
+// (run/expect.hpp); `var` is the index of its variable among the reported
+// ones (kVariable).
 struct Check {
-  std::string text;
-  enum class Kind : std::uint8_t { kVariable, kStatus, kAlarm } kind = Kind::kVariable;
-  std::size_t var = 0;  // index into the sweep's reported variables
-  double value = 0.0;
-  double tolerance = 0.0;
-  std::string status;
+  Expectation e;
+  std::size_t var = 0;
 };
+// Parses `text`; a variable it names joins `vars` when not there yet.
 [[nodiscard]] Result<Check> parse_check(const std::string& text, std::vector<VarRef>& vars);
+
+// The ranges of the spec's and the command line's numbers (one place, so
+// that a value the command refuses is refused in a spec).
+inline constexpr std::int64_t kMaxScenarios = 100'000'000;
+inline constexpr std::int64_t kMaxSeed = 9'000'000'000'000'000'000;
+inline constexpr int kMaxWorkers = 4096;
 
 struct SweepPlan {
   std::string spec_path;
@@ -79,13 +86,18 @@ struct SweepOverrides {
 struct ScenarioRow {
   std::int64_t index = 0;
   std::uint64_t probe_seed = 0;
-  std::string status;          // completed, alarm, interrupted, error (could not start)
+  // completed, alarm, interrupted; error (could not start); not_run (the
+  // sweep was stopped before it took this scenario).
+  std::string status;
   int alarm = 0;               // the dialect's alarm number, 0 without one
-  std::string alarm_text;      // "file:line:column: alarm CODE (N): message"
+  std::string alarm_text;      // "file:line:column: alarm CODE (N): message", valid UTF-8
   std::vector<double> chosen;  // one per vary rule
   std::vector<std::optional<double>> values;  // one per reported variable
   std::vector<bool> checks;                   // one per check
-  bool pass = true;
+  // All checks hold, and the run completed; a run that alarmed or was
+  // interrupted passes only when a status= or alarm= check expects it; an
+  // error or a scenario not run never passes.
+  bool pass = false;
   double time_s = 0.0;  // simulated
 };
 
@@ -94,11 +106,80 @@ Variation scenario_variation(const SweepPlan& plan, std::int64_t index, std::vec
                              std::uint64_t& probe_seed);
 ScenarioRow run_scenario(const SweepPlan& plan, std::int64_t index,
                          const std::atomic<bool>* interrupt = nullptr);
-// Scenarios [begin, end) on `workers` threads (0: every core), in index order.
+
+// How a sweep is stopped early: `stop_taking` set, no scenario is started
+// any more (the rest are rows with status not_run); `interrupt` set, the
+// running ones stop at their next servo period (status interrupted).
+struct SweepStop {
+  const std::atomic<bool>* stop_taking = nullptr;
+  const std::atomic<bool>* interrupt = nullptr;
+};
+// Receives the rows in index order, each as soon as it and every row before
+// it are done; called from one thread at a time.
+using RowSink = std::function<void(const ScenarioRow&)>;
+// Scenarios [begin, end) on `workers` threads (0: every core). Memory is
+// bounded by the number of workers, not of scenarios: a worker does not
+// start a scenario more than kSweepWindow rows ahead of the oldest one
+// still running.
+inline constexpr std::int64_t kSweepWindow = 256;
+void run_scenarios(const SweepPlan& plan, std::int64_t begin, std::int64_t end, int workers,
+                   const RowSink& sink, SweepStop stop = {});
+// The same, the rows kept (the Python module, tests).
 std::vector<ScenarioRow> run_scenarios(const SweepPlan& plan, std::int64_t begin, std::int64_t end,
                                        int workers, const std::atomic<bool>* interrupt = nullptr);
 
-// The table and its summary.
+// The table, written as the rows come: CSV lines and JSON (a head, one row
+// per line, the summary at the end), and the summary's counts and per
+// variable figures, kept in constant memory.
+class SweepTable {
+ public:
+  // `scenarios`: the table's announced size (-1: the plan's).
+  explicit SweepTable(const SweepPlan& plan, std::int64_t scenarios = -1);
+  std::string csv_header() const;
+  std::string csv_row(const ScenarioRow& r) const;
+  std::string json_head() const;
+  // `first`: no comma before it.
+  std::string json_row(const ScenarioRow& r, bool first) const;
+  // Counts `r` in the summary.
+  void add(const ScenarioRow& r);
+  std::string json_tail() const;
+  std::string summary_text() const;
+
+  std::int64_t rows() const noexcept { return rows_; }
+  std::int64_t passed() const noexcept { return passed_; }
+  std::int64_t errors() const noexcept { return count("error"); }
+  std::int64_t not_run() const noexcept { return count("not_run"); }
+  // 0: every scenario ran and passed; 2: none could start (every row an
+  // error); else 1.
+  int exit_status() const noexcept;
+
+ private:
+  struct VarSummary {
+    std::int64_t count = 0;
+    double min = 0.0, max = 0.0, sum = 0.0;
+    std::int64_t min_row = 0, max_row = 0;
+    std::optional<std::size_t> check;  // the first check on this variable
+    double worst = -1.0;               // largest |value - expected| (with a check)
+    std::int64_t worst_row = 0;
+    double worst_value = 0.0;
+  };
+  struct Worst {
+    std::int64_t row = 0;
+    double value = 0.0, deviation = 0.0;
+  };
+  Worst worst(const VarSummary& s) const;
+  std::int64_t count(const std::string& status) const noexcept;
+
+  const SweepPlan& plan_;
+  std::int64_t scenarios_;
+  std::int64_t rows_ = 0;
+  std::int64_t passed_ = 0;
+  std::map<std::string, std::int64_t> statuses_;
+  std::vector<VarSummary> vars_;
+  std::optional<ScenarioRow> first_failure_;
+};
+
+// The whole table at once (the Python module, tests): as SweepTable writes it.
 std::string sweep_csv(const SweepPlan& plan, const std::vector<ScenarioRow>& rows);
 std::string sweep_json(const SweepPlan& plan, const std::vector<ScenarioRow>& rows);
 std::string sweep_summary_text(const SweepPlan& plan, const std::vector<ScenarioRow>& rows);

@@ -27,6 +27,8 @@
 #include "gcode/parser.hpp"
 #include "gcode/source.hpp"
 #include "interpreter/interpreter.hpp"
+#include "interpreter/variables.hpp"
+#include "machine/mesh.hpp"
 #include "machine/scene.hpp"
 #include "report/report.hpp"
 #include "sim/simulator.hpp"
@@ -525,6 +527,77 @@ inline std::string check_scene(std::string_view data) {
   interp::Setup setup = make_setup(e, d, std::string(kProbeProgram));
   setup.machine = &m;
   return check_run(m, d.dialect, *d.params, *sc, setup);
+}
+
+// An STL file, binary or ASCII: a refusal names the file; a mesh that loads
+// has finite vertices, and its hierarchy answers a distance and a contact
+// query with finite numbers.
+inline std::string check_stl(std::string_view data) {
+  auto tris = machine::geo::parse_stl(data, "fuzz.stl", 1.0);
+  if (!tris) {
+    if (tris.error().detail.find("fuzz.stl") == std::string::npos)
+      return "STL error that does not name the file: " + tris.error().detail;
+    return {};
+  }
+  for (const auto& t : *tris) {
+    for (const auto& v : {t.a, t.b, t.c}) {
+      if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z))
+        return "STL vertex not finite";
+    }
+  }
+  const machine::geo::TriMesh mesh(std::move(*tris));
+  if (mesh.size() == 0) return {};
+  const double d = mesh.surface_distance({0.0, 0.0, 0.0});
+  if (std::isnan(d)) return "surface distance is NaN";
+  double t = 0.0;
+  machine::geo::Vec3 point, normal;
+  if (mesh.first_contact({-1e3, -1e3, -1e3}, {1e3, 1e3, 1e3}, 1.0, t, point, normal) &&
+      !(t >= 0.0 && t <= 1.0)) {
+    return "contact outside [0, 1]";
+  }
+  return {};
+}
+
+// LinuxCNC's parameter file: a refusal has its line; a file that loads has
+// each number once, in 1-5601, with finite values, and what is saved reads
+// back the same numbers with values within the %.6f rounding.
+inline std::string check_ngc_params(std::string_view data) {
+  MemFile in(data);
+  if (!in.ok()) return {};
+  std::vector<int> numbers;
+  std::vector<double> values;
+  auto r = interp::load_var_file(in.path(), numbers, values);
+  if (!r) {
+    if (r.error().loc.line == 0 && r.error().detail.find("parameter file") == std::string::npos)
+      return "parameter file error without a line: " + r.error().detail;
+    return {};
+  }
+  std::vector<bool> seen(interp::VariableStore::kNgcParams, false);
+  for (std::size_t i = 0; i < numbers.size(); ++i) {
+    if (numbers[i] < 1 || numbers[i] >= interp::VariableStore::kNgcParams)
+      return "number out of range";
+    if (seen[static_cast<std::size_t>(numbers[i])]) return "a number loaded twice";
+    seen[static_cast<std::size_t>(numbers[i])] = true;
+    if (!std::isfinite(values[i])) return "a value not finite";
+  }
+  static const std::string dir = [] {
+    std::string tmpl =
+        (std::filesystem::temp_directory_path() / "skipnc-fuzz-params-XXXXXX").string();
+    if (::mkdtemp(tmpl.data()) == nullptr) std::abort();
+    return tmpl;
+  }();
+  const std::string saved = (std::filesystem::path(dir) / "params.var").string();
+  if (!interp::save_var_file(saved, numbers, values)) return "the parameter file was not saved";
+  std::vector<int> n2;
+  std::vector<double> v2;
+  auto back = interp::load_var_file(saved, n2, v2);
+  if (!back) return "a saved parameter file does not load: " + back.error().detail;
+  if (n2 != numbers) return "a saved parameter file reads back other numbers";
+  for (std::size_t i = 0; i < v2.size(); ++i) {
+    if (!(std::fabs(v2[i] - values[i]) <= 5e-7 + std::fabs(values[i]) * 1e-15))
+      return "a saved value reads back as another";
+  }
+  return {};
 }
 
 }  // namespace skipnc::fuzz

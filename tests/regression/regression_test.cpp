@@ -28,7 +28,7 @@ struct Case {
 std::vector<Case> kept_inputs() {
   std::vector<Case> out;
   const fs::path root = fs::path(SKIPNC_SOURCE_DIR) / "tests" / "regression";
-  for (const char* h : {"parser", "expr", "interp", "machine", "scene"}) {
+  for (const char* h : {"parser", "expr", "interp", "machine", "scene", "stl", "ngc_params"}) {
     std::error_code ec;
     for (const auto& e : fs::directory_iterator(root / h, ec)) {
       if (e.is_regular_file()) out.push_back({h, e.path()});
@@ -44,6 +44,8 @@ std::string replay(const Case& c) {
   if (c.harness == "expr") return check_expr(data);
   if (c.harness == "interp") return check_interp(data);
   if (c.harness == "machine") return check_machine(data);
+  if (c.harness == "stl") return check_stl(data);
+  if (c.harness == "ngc_params") return check_ngc_params(data);
   return check_scene(data);
 }
 

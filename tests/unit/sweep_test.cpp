@@ -122,14 +122,20 @@ TEST(Sweep, ChecksParseAsTheExpectOption) {
   std::vector<VarRef> vars;
   auto c = parse_check("#140=-0.05+-0.001", vars);
   ASSERT_TRUE(c);
-  EXPECT_EQ(c->kind, Check::Kind::kVariable);
-  EXPECT_EQ(c->value, -0.05);
-  EXPECT_EQ(c->tolerance, 0.001);
+  EXPECT_EQ(c->e.kind, Expectation::Kind::kVariable);
+  EXPECT_EQ(c->e.value, -0.05);
+  EXPECT_EQ(c->e.tolerance, 0.001);
+  EXPECT_EQ(c->var, 0u);
   ASSERT_EQ(vars.size(), 1u);
   EXPECT_EQ(vars[0].number, 140);
   auto s = parse_check("status=completed", vars);
   ASSERT_TRUE(s);
-  EXPECT_EQ(s->kind, Check::Kind::kStatus);
+  EXPECT_EQ(s->e.kind, Expectation::Kind::kStatus);
+  // The forms of run --expect (one parser): vacant.
+  auto v = parse_check("#141=vacant", vars);
+  ASSERT_TRUE(v);
+  EXPECT_TRUE(v->e.vacant);
+  EXPECT_EQ(v->var, 1u);
   EXPECT_FALSE(parse_check("status=done", vars));
   EXPECT_FALSE(parse_check("#140=abc", vars));
   EXPECT_FALSE(parse_check("#140=1+-", vars));

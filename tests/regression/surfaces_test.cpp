@@ -1,0 +1,369 @@
+// Bad input on the surfaces added after plain `run` (issue 31, and the sweep
+// bullet of issue 30): the last-resort report, sweeps, every file a run
+// reads, the collision check, the LinuxCNC parameter file, locks, limits.
+// Each test runs the skipnc binary as a user would and checks what the user
+// sees: the exit status, the files left, the message.
+#include <gtest/gtest.h>
+#include <sys/stat.h>
+#include <sys/types.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdlib>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "support/child_process.hpp"
+#include "support/report_run.hpp"
+#include "support/run_cli.hpp"
+
+namespace skipnc::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+int count_lines(const std::string& s) {
+  int n = 0;
+  for (char c : s) n += c == '\n' ? 1 : 0;
+  return n;
+}
+
+// ---- 1. The last resort -------------------------------------------------
+
+// An exception that leaves the command (out of memory, a bug) still writes
+// the report the user asked for, whole, with the internal alarm; the
+// handler once read the arguments of the frame the exception unwound.
+TEST(SurfacesLastResort, AnyExceptionWritesTheInternalReportWhole) {
+  TempDir dir;
+  const auto prog = dir.write("p.nc", "G0 X1.\nM30\n");
+  for (const char* kind : {"bad_alloc", "runtime_error", "int"}) {
+    ::setenv("SKIPNC_TEST_THROW", kind, 1);
+    const auto r = run_with_report(dir, prog);
+    ::unsetenv("SKIPNC_TEST_THROW");
+    ASSERT_TRUE(r.exit.exited) << kind << ": ended by signal " << r.exit.signal;
+    EXPECT_EQ(r.exit.code, 1) << kind;
+    ASSERT_TRUE(r.report_ok) << kind << ": " << r.err;
+    EXPECT_EQ(r.report.value("status", ""), "alarm") << kind;
+    EXPECT_EQ(r.alarm().value("code", ""), alarm_code(AlarmId::kInternal)) << kind;
+    EXPECT_NE(r.err.find("internal error"), std::string::npos) << kind;
+  }
+}
+
+// ---- 2. Sweeps ------------------------------------------------------------
+
+struct Sweep {
+  TempDir dir;
+  fs::path spec;
+  fs::path csv() const { return dir.path / "s.sweep.csv"; }
+  fs::path json() const { return dir.path / "s.sweep.json"; }
+
+  Sweep(const std::string& program, const std::string& spec_tail) {
+    if (!program.empty()) dir.write("p.nc", program);
+    spec = dir.write("s.sweep.toml", "program = \"p.nc\"\n" + spec_tail);
+  }
+  CliResult run(std::vector<std::string> extra = {}) const {
+    std::vector<std::string> args{"sweep", spec.string()};
+    args.insert(args.end(), extra.begin(), extra.end());
+    return run_cli(args, (dir.path / "err.txt").string());
+  }
+  std::string err() const { return read_file(dir.path / "err.txt"); }
+  nlohmann::json table() const { return nlohmann::json::parse(read_file(json()), nullptr, false); }
+};
+
+TEST(SurfacesSweep, MissingProgramExitsTwoAndWritesNothing) {
+  Sweep s("", "scenarios = 3\n");
+  const auto r = s.run();
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(s.err().find("p.nc"), std::string::npos) << s.err();
+  EXPECT_FALSE(fs::exists(s.csv()));
+  EXPECT_FALSE(fs::exists(s.json()));
+}
+
+// Every scenario could not start (a parameter bit drawn as 5): nothing ran,
+// exit 2, and the rows count as errors, never as passed.
+TEST(SurfacesSweep, EveryRowAnErrorExitsTwoAndCountsErrorsApart) {
+  Sweep s("G0 X1.\nM30\n",
+          "scenarios = 4\n[[vary]]\nwhat = \"param.6200#7\"\nnormal = [5.0, 0.0]\n");
+  const auto r = s.run({"-q"});
+  EXPECT_EQ(r.exit_code, 2) << s.err();
+  const auto j = s.table();
+  ASSERT_FALSE(j.is_discarded());
+  EXPECT_EQ(j["summary"]["passed"], 0);
+  EXPECT_EQ(j["summary"]["errors"], 4);
+  EXPECT_EQ(j["summary"]["failed"], 0);
+  for (const auto& row : j["rows"]) {
+    EXPECT_EQ(row["status"], "error");
+    EXPECT_FALSE(row["pass"].get<bool>());
+  }
+}
+
+// A listed value out of range is refused when the spec is read, as `-p`
+// refuses it.
+TEST(SurfacesSweep, OutOfRangeParameterValueIsRefusedAtLoad) {
+  Sweep s("G0 X1.\nM30\n", "[[vary]]\nwhat = \"param.6200#7\"\nvalues = [0, 5]\n");
+  const auto r = s.run({"-q"});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(s.err().find("s.sweep.toml:"), std::string::npos) << s.err();
+  EXPECT_FALSE(fs::exists(s.csv()));
+}
+
+// A run that alarms is not a pass without a check that expects it; with
+// alarm=N it is. The alarm text is valid UTF-8 in the JSON whatever bytes
+// the message held.
+TEST(SurfacesSweep, AlarmsFailUnlessExpectedAndTextsAreUtf8) {
+  const std::string prog = "#3000=1(BAD \xe9 BYTE)\nM30\n";
+  Sweep plain(prog, "scenarios = 2\n");
+  EXPECT_EQ(plain.run({"-q"}).exit_code, 1);
+  const auto j = plain.table();
+  ASSERT_FALSE(j.is_discarded()) << read_file(plain.json());
+  EXPECT_EQ(j["summary"]["failed"], 2);
+  EXPECT_EQ(j["rows"][0]["status"], "alarm");
+  EXPECT_NE(j["rows"][0]["alarm_text"].get<std::string>().find("\xef\xbf\xbd"), std::string::npos);
+
+  Sweep expected(prog, "scenarios = 2\nexpect = [\"alarm=3001\"]\n");
+  EXPECT_EQ(expected.run({"-q"}).exit_code, 0) << read_file(expected.csv());
+}
+
+// The spec's expect is read by run --expect's parser: its forms (vacant)
+// work, and its refusals are the same.
+TEST(SurfacesSweep, ExpectUsesTheRunParser) {
+  Sweep ok("#101=1\nM30\n", "scenarios = 1\nexpect = [\"#102=vacant\", \"#101=1\"]\n");
+  EXPECT_EQ(ok.run({"-q"}).exit_code, 0) << ok.err();
+  Sweep bad("M30\n", "expect = [\"status=finished\"]\n");
+  EXPECT_EQ(bad.run({"-q"}).exit_code, 2);
+  EXPECT_NE(bad.err().find("unknown status 'finished'"), std::string::npos) << bad.err();
+}
+
+// No table over an input: the spec, the program, each other. Nothing runs,
+// every file stays as it was.
+TEST(SurfacesSweep, TablesNeverReplaceAnInput) {
+  Sweep s("G0 X1.\nM30\n", "scenarios = 2\n");
+  const std::string program = read_file(s.dir.path / "p.nc");
+  const std::string spec = read_file(s.spec);
+  for (const auto& extra : std::vector<std::vector<std::string>>{
+           {"--csv", (s.dir.path / "p.nc").string()},
+           {"--json", s.spec.string()},
+           {"--csv", (s.dir.path / "t").string(), "--json", (s.dir.path / "t").string()}}) {
+    EXPECT_EQ(s.run(extra).exit_code, 2) << extra[1];
+    EXPECT_NE(s.err().find("same file"), std::string::npos) << s.err();
+  }
+  EXPECT_EQ(read_file(s.dir.path / "p.nc"), program);
+  EXPECT_EQ(read_file(s.spec), spec);
+  EXPECT_FALSE(fs::exists(s.dir.path / "t"));
+}
+
+// The tables go beside the spec by default, not into the current folder.
+TEST(SurfacesSweep, DefaultTablesGoBesideTheSpec) {
+  Sweep s("G0 X1.\nM30\n", "scenarios = 2\n");
+  ASSERT_EQ(s.run({"-q"}).exit_code, 0) << s.err();
+  EXPECT_EQ(count_lines(read_file(s.csv())), 3);
+  EXPECT_FALSE(fs::exists(fs::current_path() / "s.sweep.csv"));
+}
+
+// SIGTERM stops taking scenarios: the table is whole, with every finished
+// row and the rest not_run; exit 1.
+TEST(SurfacesSweep, SigtermKeepsFinishedRowsAndMarksTheRestNotRun) {
+  Sweep s("G04 X0.3\nM30\n", "scenarios = 100000\nworkers = 1\n");
+  Child c({"sweep", s.spec.string(), "-q"}, "/dev/null", (s.dir.path / "err.txt").string());
+  // Some rows finished: the .partial file has more than its header.
+  const fs::path partial = s.csv().string() + ".partial";
+  for (int i = 0; i < 400 && count_lines(read_file(partial)) < 3; ++i)
+    std::this_thread::sleep_for(std::chrono::milliseconds(25));
+  c.signal(SIGTERM);
+  const auto e = c.wait(60.0);
+  ASSERT_TRUE(e.exited) << "ended by signal " << e.signal;
+  EXPECT_EQ(e.code, 1);
+  const auto j = s.table();
+  ASSERT_FALSE(j.is_discarded());
+  const auto& sum = j["summary"];
+  EXPECT_GT(sum["passed"].get<int>(), 0);
+  EXPECT_GT(sum["not_run"].get<int>(), 0);
+  EXPECT_EQ(sum["passed"].get<int>() + sum["not_run"].get<int>() +
+                sum["statuses"].value("interrupted", 0),
+            100000);
+  EXPECT_EQ(count_lines(read_file(s.csv())), 100001);
+  EXPECT_FALSE(fs::exists(partial));
+}
+
+// ---- 3. Every file the run reads is checked --------------------------------
+
+TEST(SurfacesInputs, DevicesAndFifosAreRefusedByName) {
+  TempDir dir;
+  const auto prog = dir.write("p.nc", "G0 X1.\nM30\n");
+  const auto fifo = dir.path / "fifo";
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  const auto extends = dir.write("m.toml", "extends = \"/dev/zero\"\n");
+  const auto stl_scene = dir.write("s.toml", "[[mesh]]\nfile = \"fifo\"\n");
+  const auto pv =
+      dir.write("pv.toml", "extends = \"mill3\"\npersistent_variables = \"/dev/null\"\n");
+  const std::vector<std::pair<std::vector<std::string>, std::string>> cases = {
+      {{"-m", "/dev/zero"}, "/dev/zero"},   {{"-m", fifo.string()}, "fifo"},
+      {{"-s", fifo.string()}, "fifo"},      {{"-m", extends.string()}, "/dev/zero"},
+      {{"-s", stl_scene.string()}, "fifo"}, {{"-m", pv.string()}, "/dev/null"},
+  };
+  for (const auto& [opts, name] : cases) {
+    std::vector<std::string> args{"run", prog.string(), "-q"};
+    args.insert(args.end(), opts.begin(), opts.end());
+    const auto t0 = std::chrono::steady_clock::now();
+    const auto r = run_cli(args, (dir.path / "err.txt").string());
+    const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    const std::string err = read_file(dir.path / "err.txt");
+    EXPECT_EQ(r.exit_code, 2) << opts[1] << ": " << err;
+    EXPECT_NE(err.find(name), std::string::npos) << err;
+    EXPECT_NE(err.find("not a regular file"), std::string::npos) << err;
+    EXPECT_LT(s, 10.0) << opts[1];
+  }
+  EXPECT_FALSE(fs::exists("/dev/null.lock"));
+  Sweep sw("G0 X1.\nM30\n", "");
+  const auto r = run_cli({"sweep", "/dev/zero", "-q"}, (sw.dir.path / "err.txt").string());
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(sw.err().find("not a regular file"), std::string::npos) << sw.err();
+}
+
+// ---- 4. One collision check for every command and mode ---------------------
+
+TEST(SurfacesCollisions, RepeatNeverReplacesTheProgram) {
+  TempDir dir;
+  const auto prog = dir.write("p.nc", "G0 X1.\nM30\n");
+  const auto r = run_cli({"run", prog.string(), "--repeat", "3", "--report", prog.string(), "-q"},
+                         (dir.path / "err.txt").string());
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(read_file(prog), "G0 X1.\nM30\n");
+  EXPECT_NE(read_file(dir.path / "err.txt").find("same file"), std::string::npos);
+}
+
+// A usage error found before the outputs are checked (a bad --var) does not
+// write its report over the persistent file, nor over the scene.
+TEST(SurfacesCollisions, UsageErrorReportNeverReplacesAnInput) {
+  TempDir dir;
+  const auto prog = dir.write("p.nc", "G0 X1.\nM30\n");
+  const auto vars = dir.write("kept.vars", "#500 = 1\n");
+  const auto m = dir.write("m.toml", "extends = \"mill3\"\npersistent_variables = \"kept.vars\"\n");
+  const auto r = run_cli(
+      {"run", prog.string(), "-m", m.string(), "--var", "#x", "--report", vars.string(), "-q"},
+      (dir.path / "err.txt").string());
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(read_file(vars), "#500 = 1\n");
+}
+
+// ---- 5. The LinuxCNC parameter file -----------------------------------------
+
+TEST(SurfacesNgcParams, HugeValuesAreWrittenWholeAndReadBack) {
+  TempDir dir;
+  const auto m = dir.write("m.toml",
+                           "extends = \"mill3\"\ndialect = \"linuxcnc\"\n"
+                           "persistent_variables = \"m.var\"\n");
+  const auto prog = dir.write("p.ngc", "#5221 = [10 ** 60]\nM2\n");
+  auto r = run_cli({"run", prog.string(), "-m", m.string(), "-q"}, (dir.path / "e1").string());
+  EXPECT_EQ(r.exit_code, 0) << read_file(dir.path / "e1");
+  const std::string text = read_file(dir.path / "m.var");
+  EXPECT_NE(text.find("5221\t1000000000000000"), std::string::npos) << text;
+  // The next run starts from it.
+  const auto prog2 = dir.write("q.ngc", "#1 = #5221\nM2\n");
+  r = run_cli({"run", prog2.string(), "-m", m.string(), "-q"}, (dir.path / "e2").string());
+  EXPECT_EQ(r.exit_code, 0) << read_file(dir.path / "e2");
+}
+
+TEST(SurfacesNgcParams, DamagedFilesAreRefusedWithTheirLine) {
+  TempDir dir;
+  const auto m = dir.write("m.toml",
+                           "extends = \"mill3\"\ndialect = \"linuxcnc\"\n"
+                           "persistent_variables = \"m.var\"\n");
+  const auto prog = dir.write("p.ngc", "M2\n");
+  for (const std::string bad :
+       {"5221 1\n5221 2\n", "5221 0x10\n", "4294972517 1\n", "-5221 1\n", "5221 1e999\n"}) {
+    dir.write("m.var", bad);
+    const auto r =
+        run_cli({"run", prog.string(), "-m", m.string(), "-q"}, (dir.path / "err.txt").string());
+    EXPECT_EQ(r.exit_code, 2) << bad;
+    EXPECT_NE(read_file(dir.path / "err.txt").find("m.var:"), std::string::npos)
+        << bad << read_file(dir.path / "err.txt");
+  }
+}
+
+// The persistent file's path is relative to the machine file, not to the
+// folder the command runs in.
+TEST(SurfacesNgcParams, PersistentPathResolvesAgainstTheMachineFile) {
+  TempDir dir;
+  fs::create_directory(dir.path / "cfg");
+  const auto m =
+      dir.write("cfg/m.toml", "extends = \"mill3\"\npersistent_variables = \"k.vars\"\n");
+  const auto prog = dir.write("p.nc", "#500 = 7\nM30\n");
+  const auto r = run_cli({"run", prog.string(), "-m", m.string(), "-q"});
+  EXPECT_EQ(r.exit_code, 0);
+  EXPECT_NE(read_file(dir.path / "cfg" / "k.vars").find("#500 = 7"), std::string::npos);
+  EXPECT_FALSE(fs::exists(fs::current_path() / "k.vars"));
+}
+
+// ---- 6. Locks ---------------------------------------------------------------
+
+// Eight runs at once in a shared folder (mode 1777), each adding 1 to #500:
+// no update is lost. As root the runs are another user's (65534), and the
+// lock file is root's, read-only to them: the lock is held through a
+// descriptor open for reading.
+TEST(SurfacesLocks, ParallelRunsAsAnotherUserLoseNoUpdate) {
+  TempDir dir;
+  ::chmod(dir.path.c_str(), 01777);
+  const auto m = dir.write("m.toml", "extends = \"mill3\"\npersistent_variables = \"k.vars\"\n");
+  const auto prog = dir.write("p.nc", "IF[#500NE#0]GOTO1\n#500=0\nN1 #500=#500+1\nM30\n");
+  const auto lock = dir.write("k.vars.lock", "");
+  ::chmod(lock.c_str(), 0444);
+  for (const auto& f : {m, prog}) ::chmod(f.c_str(), 0644);
+  const std::string as_other =
+      ::geteuid() == 0 ? "setpriv --reuid=65534 --regid=65534 --clear-groups " : "";
+  constexpr int kRuns = 8;
+  std::string cmd;
+  for (int i = 0; i < kRuns; ++i) {
+    cmd += "(" + as_other + shell_quote(SKIPNC_BINARY) + " run " + shell_quote(prog.string()) +
+           " -m " + shell_quote(m.string()) + " -q 2>/dev/null; echo $? >" +
+           shell_quote((dir.path / ("rc" + std::to_string(i))).string()) + ") & ";
+  }
+  cmd += "wait";
+  ASSERT_EQ(std::system(cmd.c_str()), 0);
+  for (int i = 0; i < kRuns; ++i)
+    EXPECT_EQ(read_file(dir.path / ("rc" + std::to_string(i))), "0\n");
+  EXPECT_NE(read_file(dir.path / "k.vars").find("#500 = " + std::to_string(kRuns)),
+            std::string::npos)
+      << read_file(dir.path / "k.vars");
+}
+
+// ---- 7. Limits --------------------------------------------------------------
+
+// A trace larger than `ulimit -f` allows: an alarm and a report, not SIGXFSZ.
+TEST(SurfacesLimits, FileSizeLimitIsAnAlarmWithAReport) {
+  TempDir dir;
+  const auto prog = dir.write("p.nc", "G04 X5.\nM30\n");
+  const auto report = dir.path / "r.json";
+  const std::string cmd = "ulimit -f 64; " + shell_quote(SKIPNC_BINARY) + " run " +
+                          shell_quote(prog.string()) + " --trace " +
+                          shell_quote((dir.path / "t.csv").string()) + " --report " +
+                          shell_quote(report.string()) + " -q 2>/dev/null";
+  const int st = std::system(cmd.c_str());
+  ASSERT_TRUE(WIFEXITED(st)) << "ended by a signal";
+  EXPECT_EQ(WEXITSTATUS(st), 1);
+  const auto j = nlohmann::json::parse(read_file(report), nullptr, false);
+  ASSERT_FALSE(j.is_discarded());
+  EXPECT_EQ(j.value("status", ""), "alarm");
+}
+
+// ---- 8. Words and outputs ---------------------------------------------------
+
+// A replaced output keeps its permissions, never the set-user-ID or
+// set-group-ID bit.
+TEST(SurfacesOutputs, ReplacedOutputLosesSetuidBits) {
+  TempDir dir;
+  const auto prog = dir.write("p.nc", "G0 X1.\nM30\n");
+  const auto report = dir.write("r.json", "old");
+  ASSERT_EQ(::chmod(report.c_str(), 06755), 0);
+  const auto r = run_cli({"run", prog.string(), "--report", report.string(), "-q"});
+  EXPECT_EQ(r.exit_code, 0);
+  struct stat st {};
+  ASSERT_EQ(::stat(report.c_str(), &st), 0);
+  EXPECT_EQ(st.st_mode & 07777, 0755u);
+}
+
+}  // namespace
+}  // namespace skipnc::test
