@@ -240,6 +240,7 @@ interp::Setup make_setup(const RunArgs& a, run::Session& s) {
   setup.program_name = program_name_of(a.program);
   setup.include_dirs = a.include;
   setup.dprnt_path = a.dprnt;
+  setup.log_dir = a.log_dir;
   setup.strict = a.strict;
   return setup;
 }

@@ -133,6 +133,7 @@ int repeat_command(const RunArgs& a) {
   setup.program_name = a.program;
   setup.include_dirs = a.include;
   setup.dprnt_path = a.dprnt;
+  setup.log_dir = a.log_dir;
   setup.strict = a.strict;
 
   // Offsets as the machine starts, to tell which ones the program wrote.
