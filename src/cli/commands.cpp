@@ -293,6 +293,7 @@ interp::Setup make_setup(const RunArgs& a, run::Session& s) {
   set_program(a, setup);
   setup.include_dirs = a.include;
   setup.dprnt_path = a.dprnt;
+  setup.log_dir = a.log_dir;
   setup.strict = a.strict;
   setup.strict_allow = a.allow;
   return setup;

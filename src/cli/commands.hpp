@@ -21,6 +21,7 @@ struct RunArgs {
   std::vector<std::string> plot;  // --plot FILE: .svg or .html pictures of the run
   std::vector<std::string> include;
   std::string dprnt;
+  std::string log_dir;  // --log-dir
   bool quiet = false;
   int repeat = 0;                  // --repeat N: N runs with the probe's scatter (cli/repeat.hpp)
   long long seed = -1;             // --seed S: first seed of those runs (-1: the scene's)

@@ -64,6 +64,8 @@ int run_main(int argc, char** argv, Parsed& p) {
   run->add_option("--plot", run_args.plot, "write pictures of the run: FILE.svg and/or FILE.html");
   run->add_option("-I,--include", run_args.include, "subprogram folder (repeatable)");
   run->add_option("--dprnt", run_args.dprnt, "file for DPRNT output (POPEN/PCLOS)");
+  run->add_option("--log-dir", run_args.log_dir,
+                  "folder for the files of LinuxCNC's (LOGOPEN,name) and (PROBEOPEN name)");
   run->add_flag("-q,--quiet", run_args.quiet, "no summary on standard output");
   run->add_flag("--progress", run_args.progress,
                 "a progress line on standard error every 2 s (also without a terminal)");

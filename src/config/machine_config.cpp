@@ -7,6 +7,7 @@
 #include <sstream>
 #include <type_traits>
 
+#include "config/machine_ini.hpp"
 #include "config/toml_util.hpp"
 #include "core/embedded.hpp"
 #include "core/file.hpp"
@@ -279,7 +280,7 @@ Result<MachineConfig> parse_machine_at(std::string_view text, std::string_view o
       t,
       {"extends", "name", "type", "dialect", "servo_period_ms", "inch", "in_position_mm",
        "in_position_timeout_s", "spindle_max_rpm", "persistent_variables", "latch", "axis",
-       "parameters", "work_offsets", "tool_offsets", "limits", "reference_points"},
+       "parameters", "work_offsets", "tool_offsets", "limits", "reference_points", "ini", "hal"},
       origin, "a machine file");
   if (!keys) return std::unexpected(keys.error());
   MachineConfig m;
@@ -430,6 +431,7 @@ Result<MachineConfig> parse_machine_at(std::string_view text, std::string_view o
       m.servo_delay_comp = *v;
     }
   }
+  if (auto r = load_ini_hal(t, m, origin); !r) return std::unexpected(r.error());
   if (const auto* n = t.get("parameters")) {
     const auto* pt = n->as_table();
     if (!pt) return config_error(*n, origin, "[parameters] must be a table");

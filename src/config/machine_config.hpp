@@ -110,6 +110,11 @@ struct MachineConfig {
   double in_position_timeout_s = 1.0;
   std::string persistent_vars;  // file for #500-#999; empty: not kept
   Limits limits;
+  // LinuxCNC's INI file and HAL pins as an RS274NGC program reads them
+  // (#<_ini[SECTION]NAME>, #<_hal[pin]>): [ini.SECTION] NAME = value and
+  // [hal] "pin" = value (machine_ini.cpp). Keys as written.
+  std::map<std::string, std::map<std::string, double>> ini;
+  std::map<std::string, double> hal;
 
   int axis_count() const noexcept { return static_cast<int>(axes.size()); }
   bool lathe() const noexcept { return type == MachineType::kLathe; }

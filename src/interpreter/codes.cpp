@@ -89,6 +89,8 @@ constexpr CodeDef kG[] = {
     {950, Group::k05, kMill, setter<&ModalState::feed_mode, FeedMode::kPerRev>, Action::kNone, "feed per revolution"},
     {960, Group::k02, kLathe, setter<&ModalState::spindle_mode, SpindleMode::kSurfaceSpeed>, Action::kNone, "constant surface speed (lathe)"},
     {970, Group::k02, kLathe, setter<&ModalState::spindle_mode, SpindleMode::kRpm>, Action::kNone, "constant surface speed cancel (lathe)"},
+    // Safe-start blocks of mill posts write G97 (Fanuc M series: group 13).
+    {970, Group::k13, kMill, setter<&ModalState::spindle_mode, SpindleMode::kRpm>, Action::kNone, "constant surface speed cancel (spindle speed in rpm)"},
     {980, Group::k10, kMill, setter<&ModalState::ret, ReturnLevel::kInitial>, Action::kNone, "canned cycle return to initial level"},
     {980, Group::k05, kLathe, setter<&ModalState::feed_mode, FeedMode::kPerMinute>, Action::kNone, "feed per minute (lathe)"},
     {990, Group::k10, kMill, setter<&ModalState::ret, ReturnLevel::kR>, Action::kNone, "canned cycle return to R level"},

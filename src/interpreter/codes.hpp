@@ -28,6 +28,7 @@ enum class Group : std::uint8_t {
   k10 = 10,
   k11 = 11,
   k12 = 12,
+  k13 = 13,  // machining centre: G96/G97 (Fanuc M series, constant surface speed)
   k14 = 14,
   k15 = 15,
   k16 = 16,

@@ -34,6 +34,7 @@
 #include "interpreter/cutter_comp.hpp"
 #include "interpreter/cycles.hpp"
 #include "interpreter/interpreter.hpp"
+#include "interpreter/ngc_room.hpp"
 #include "interpreter/skip_rules.hpp"
 #include "interpreter/transform.hpp"
 
@@ -413,6 +414,7 @@ struct Interpreter::Impl {
   // oword.cpp: RS274NGC O-word statements and parameter settings
   Flow<Step> execute_oword(CommandSink& out);
   Flow<void> oword_call(const std::string& label, SourceLoc where);
+  std::string sub_not_found(const std::string& label) const;
   Flow<bool> find_sub(const std::string& label, ProgramFile*& file, gcode::SourcePos& at,
                       SourceLoc where);
   Flow<void> skip_to_oword(const std::string& label, std::uint32_t kinds, SourceLoc where);
@@ -435,6 +437,15 @@ struct Interpreter::Impl {
   void ngc_start();
   Flow<void> load_ngc_var_file();
   int ngc_axis_index(char letter) const noexcept;  // X0 Y1 Z2 A3 B4 C5 U6 V7 W8, -1 else
+  // ngc_room.cpp: M70-M73, log files, INI/HAL values (ngc_room.hpp)
+  NgcRoom room;
+  Flow<void> ngc_state_codes(const Words& words, const ModalState& before, SourceLoc where);
+  void ngc_restore_state(const NgcSavedState& s);
+  void ngc_state_on_return();
+  Flow<void> ngc_log_comment(std::string_view text, SourceLoc where);
+  void ngc_probe_log();
+  Result<void> write_ngc_logs();
+  std::optional<Flow<Value>> ngc_ini_hal(const std::string& n, SourceLoc where);
   // ngc_codes.cpp: LinuxCNC's and grbl's own codes
   Flow<void> ngc_action(const Words& words, int code, CommandSink& out);
   void ngc_store_g92();
@@ -506,6 +517,9 @@ struct Interpreter::Impl {
   BlockUndo save_block_state() const;
   void restore_block_state(const BlockUndo& u);
   double unit_mm() const noexcept { return modal.units == Units::kInch ? 25.4 : 1.0; }
+  // mm per unit of the values an RS274NGC control stores (#5161-#5390): the
+  // machine's unit, not the program's (ngc_codes.cpp).
+  double stored_mm() const noexcept { return mc.inch_machine ? 25.4 : 1.0; }
   double word_length(const WordVal& w, bool rotary) const noexcept;  // program units
   double offset_total(int axis) const noexcept;                      // mm
   double work_of(int axis, double machine_mm) const noexcept;        // program units

@@ -396,6 +396,7 @@ Result<void> Interpreter::save_persistent() {
   // The DPRNT file (--dprnt) is written here too, whole, once per run.
   auto d = impl_->write_dprnt();
   if (!d) return d;
+  if (auto l = impl_->write_ngc_logs(); !l) return l;
   Result<void> r;
   if (!impl_->mc.persistent_vars.empty() && impl_->ngc) {
     std::vector<double> values;

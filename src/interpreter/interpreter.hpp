@@ -30,6 +30,7 @@ struct Setup {
   std::string program_text;               // used instead of the file when program_path is empty
   std::string program_name = "program";   // shown in errors and reports
   std::vector<std::string> include_dirs;  // subprogram lookup; the program's folder when empty
+  std::string log_dir;     // RS274NGC (LOGOPEN,..)/(PROBEOPEN ..) files; empty: not written
   std::string dprnt_path;  // DPRNT output file; empty: DPRNT lines go to messages only
   // Macro variables set before the first block (#1-#33 of the main program,
   // #100-#199, #500-#999; a #500-#999 value replaces the persistent file's

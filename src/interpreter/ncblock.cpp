@@ -728,6 +728,7 @@ Flow<std::optional<Step>> Interpreter::Impl::commit_m_codes(const Words& words, 
   for (int i = 0; i < words.m_count; ++i) {
     const int m = words.m[static_cast<std::size_t>(i)];
     modal.last_m = m;
+    if (ngc && m >= 70 && m <= 73) continue;  // ngc_state_codes
     switch (m_action(m)) {
       case MAction::kProgramStop:
         emit(out, canon::Stop{canon::StopKind::kProgramStop});
@@ -805,6 +806,10 @@ Flow<Step> Interpreter::Impl::commit_block(const Words& words, const BlockPlan& 
   commit_modal(words, plan, out);
   if (auto t = commit_tool(words, plan, before, out); !t) return std::unexpected(t.error());
   commit_spindle(words, plan.spindle_changed, out);
+  if (ngc) {
+    if (auto s = ngc_state_codes(words, before, loc(cur_col)); !s)
+      return std::unexpected(s.error());
+  }
   if (plan.mill.polar) polar = *plan.mill.polar;
   skip_step = plan.mill.skip_step;
   commit_cycle_start(before);

@@ -9,9 +9,10 @@
 //   G43.1 Z       a tool length offset given as a value
 //   G92.1 G92.2   G92 off; #5211.. cleared (G92.1) or kept (G92.2)
 //   G92.3         G92 from #5211..
-// Positions kept in parameters are machine coordinates in the program's
-// units at the time they were stored (mm here: the built-in machines are
-// metric).
+// Positions and offsets kept in #5161-#5390 are in the machine's units
+// whatever G20/G21 is in force (stored_mm()): LinuxCNC's rs274 (2.9), whose
+// machine is in inches, stores G21 G10 L2 P1 X25.4 as #5221 = 1.000000 and
+// G21 G28.1 at Z10 as #5163 = 0.393701; grbl keeps them in mm.
 #include <cmath>
 #include <string>
 
@@ -32,7 +33,7 @@ Flow<void> Interpreter::Impl::ngc_action(const Words& words, int code, CommandSi
       const int base = code == 281 ? 5161 : 5181;
       for (int i = 0; i < axis_count; ++i) {
         const int n = axis_param(base, i);
-        if (n > 0) vars.set_ngc_param(n, pos[i] / unit_mm());
+        if (n > 0) vars.set_ngc_param(n, pos[i] / stored_mm());
       }
       return {};
     }
@@ -57,7 +58,7 @@ Flow<void> Interpreter::Impl::ngc_action(const Words& words, int code, CommandSi
     case 923:
       for (int i = 0; i < axis_count; ++i) {
         const int n = axis_param(5211, i);
-        g92_shift[i] = n > 0 ? vars.ngc_param(n) * unit_mm() : 0.0;
+        g92_shift[i] = n > 0 ? vars.ngc_param(n) * stored_mm() : 0.0;
       }
       vars.set_ngc_param(5210, 1.0);
       return {};
@@ -73,7 +74,7 @@ Flow<void> Interpreter::Impl::ngc_action(const Words& words, int code, CommandSi
 void Interpreter::Impl::ngc_store_g92() {
   for (int i = 0; i < axis_count; ++i) {
     const int j = ngc_axis_index(axis_letter[static_cast<std::size_t>(i)]);
-    if (j >= 0) vars.set_ngc_param(5211 + j, g92_shift[i] / unit_mm());
+    if (j >= 0) vars.set_ngc_param(5211 + j, g92_shift[i] / stored_mm());
   }
   vars.set_ngc_param(5210, 1.0);
 }
@@ -90,7 +91,7 @@ Flow<void> Interpreter::Impl::ngc_reference_return(const Words& words, int g, Co
   for (int i = 0; i < axis_count; ++i) {
     if (!moved.empty() && !moved.has(i)) continue;
     const int j = ngc_axis_index(axis_letter[static_cast<std::size_t>(i)]);
-    ref[i] = j < 0 ? pos[i] : vars.ngc_param(base + j) * unit_mm();
+    ref[i] = j < 0 ? pos[i] : vars.ngc_param(base + j) * stored_mm();
   }
   if (!moved.empty()) emit(out, canon::Rapid{mid, true});
   emit(out, canon::Rapid{ref, true});
@@ -134,7 +135,7 @@ Flow<void> Interpreter::Impl::data_setting_ngc(const Words& words, SourceLoc whe
         o[i] = pos[i] * axis_scale[static_cast<std::size_t>(i)] - mm - others;
       }
       const int j = ngc_axis_index(c);
-      if (j >= 0) vars.set_ngc_param(5221 + 20 * (set - 1) + j, o[i] / unit_mm());
+      if (j >= 0) vars.set_ngc_param(5221 + 20 * (set - 1) + j, o[i] / stored_mm());
     }
     return {};
   }

@@ -101,7 +101,7 @@ void Interpreter::Impl::ngc_load_work(int set) {
     const int j = ngc_axis_index(axis_letter[static_cast<std::size_t>(i)]);
     if (j < 0) continue;
     work_offsets[static_cast<std::size_t>(set)][i] =
-        vars.ngc_param(5221 + 20 * (set - 1) + j) * unit_mm();
+        vars.ngc_param(5221 + 20 * (set - 1) + j) * stored_mm();
   }
 }
 
@@ -109,9 +109,9 @@ void Interpreter::Impl::ngc_load_work(int set) {
 // nullopt when `name` is not one of them.
 std::optional<Flow<Value>> Interpreter::Impl::predefined_named(const std::string& name,
                                                                SourceLoc where) {
-  (void)where;
   const std::string n = lower(name);
   if (n.size() < 2 || n[0] != '_') return std::nullopt;
+  if (auto r = ngc_ini_hal(n, where)) return r;
   auto of = [](double x) -> std::optional<Flow<Value>> { return Flow<Value>(Value::of(x + 0.0)); };
   // Positions: #<_x> .. #<_w> in work coordinates (as #5420..), #<_abs_x> ..
   // in machine coordinates.
@@ -280,6 +280,16 @@ Flow<void> Interpreter::Impl::ngc_comments() {
       auto m = ngc_message_text(std::string_view(t).substr(i + 6), loc(c.column));
       if (!m) return std::unexpected(m.error());
       add_message(*m);
+    } else if (head.starts_with("abort,")) {
+      // LinuxCNC "(ABORT, ...)": the run ends with the text (parameters
+      // replaced as in DEBUG) as its error ("Comments" in the G-code overview).
+      auto m = ngc_message_text(std::string_view(t).substr(i + 6), loc(c.column));
+      if (!m) return std::unexpected(m.error());
+      const std::size_t text = std::min(m->find_first_not_of(" \t"), m->size());
+      return fail(AlarmId::kUserAlarm, "(abort) " + m->substr(text), loc(c.column));
+    } else {
+      auto r = ngc_log_comment(std::string_view(t).substr(i), loc(c.column));
+      if (!r) return r;
     }
   }
   return {};
@@ -304,7 +314,7 @@ void Interpreter::Impl::ngc_start() {
       const int j = ngc_axis_index(axis_letter[static_cast<std::size_t>(i)]);
       if (j >= 0) {
         vars.set_ngc_param(5221 + 20 * (set - 1) + j,
-                           work_offsets[static_cast<std::size_t>(set)][i] / unit_mm());
+                           work_offsets[static_cast<std::size_t>(set)][i] / stored_mm());
       }
     }
   }
@@ -338,7 +348,7 @@ Flow<void> Interpreter::Impl::load_ngc_var_file() {
   if (vars.ngc_param(5210) != 0.0) {
     for (int i = 0; i < axis_count; ++i) {
       const int j = ngc_axis_index(axis_letter[static_cast<std::size_t>(i)]);
-      if (j >= 0) g92_shift[i] = vars.ngc_param(5211 + j) * unit_mm();
+      if (j >= 0) g92_shift[i] = vars.ngc_param(5211 + j) * stored_mm();
     }
   }
   for (int n = 5161; n <= 5390; ++n) var_file_numbers.push_back(n);

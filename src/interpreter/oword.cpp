@@ -206,6 +206,19 @@ Flow<bool> Interpreter::Impl::find_sub(const std::string& label, ProgramFile*& f
   return false;
 }
 
+// What a call without its sub says: where it looked. LinuxCNC looks in the
+// running file, then <name>.ngc in the SUBROUTINE_PATH folders (here -I).
+std::string Interpreter::Impl::sub_not_found(const std::string& label) const {
+  std::string text = "no " + shown(label) + " sub: not in " + frames.back().file->display;
+  if (frames.back().file != files.front().get()) text += " nor " + files.front()->display;
+  if (label.size() < 3 || label.front() != '<') return text;
+  std::string name = label.substr(1, label.size() - 2);
+  for (char& c : name) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  text += ", and no " + name + ".ngc in the folders searched:";
+  for (const auto& d : include_dirs()) text += " '" + d + "'";
+  return text + " (a folder is added with -I)";
+}
+
 Flow<void> Interpreter::Impl::oword_call(const std::string& label, SourceLoc where) {
   int levels = 0;
   for (std::size_t i = 1; i < frames.size(); ++i) levels += frames[i].macro ? 1 : 0;
@@ -228,9 +241,7 @@ Flow<void> Interpreter::Impl::oword_call(const std::string& label, SourceLoc whe
   gcode::SourcePos at;
   auto found = find_sub(label, file, at, where);
   if (!found) return std::unexpected(found.error());
-  if (!*found) {
-    return fail(AlarmId::kProgramNotFound, "no " + shown(label) + " sub for this call", where);
-  }
+  if (!*found) return fail(AlarmId::kProgramNotFound, sub_not_found(label), where);
   Frame f;
   f.file = file;
   f.start = at;
@@ -265,6 +276,7 @@ Flow<Step> Interpreter::Impl::oword_return(const gcode::Stmt& s, SourceLoc where
     if (!v) return std::unexpected(v.error());
     value = v->num();
   }
+  ngc_state_on_return();
   frames.pop_back();
   vars.pop_level();
   Frame& caller = frames.back();

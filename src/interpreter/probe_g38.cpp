@@ -95,6 +95,7 @@ Flow<void> Interpreter::Impl::finish_probe(const SyncState& s) {
   const AxisVec latch = record_skip(s);  // skip.cpp
   if (ngc) {
     ngc_store_probe(skip_work, s.triggered);
+    ngc_probe_log();
   } else if (dialect.skip_vars.success_flag > 0) {
     vars.set(dialect.skip_vars.success_flag, Value::of(s.triggered ? 1.0 : 0.0));
   }

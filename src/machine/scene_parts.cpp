@@ -437,11 +437,13 @@ Result<void> parse_parts(const toml::table& root, const Reader& rd, PartSet& par
   });
 }
 
-// The probe's length, gauge line to ball centre, kept in one place: the
-// scene's `length`, or the machine file's tool offset H`offset` (the probe's
-// T number by default; geometry + wear, as G43 applies it). Both may be given
-// only when they agree to 1 nm.
-Result<double> probe_length(const toml::table& t, const Reader& rd, int tool) {
+// The probe's length, gauge line to ball centre: the scene's `length` (the
+// physical stylus), else the machine file's tool offset H`offset` (the
+// probe's T number by default; geometry + wear, as G43 applies it). The two
+// may differ, as on a machine whose H has not been calibrated yet, or holds
+// Renishaw's length to the ball's lowest point: the difference is kept in
+// `p` (h_number, h_length) and said once as a warning (probe_length_differs).
+Result<double> probe_length(const toml::table& t, const Reader& rd, int tool, ProbeSpec& p) {
   std::optional<int> h;
   if (t.get("offset") != nullptr) {
     auto o = rd.integer(t, "offset", 1, rd.m.tool_offset_count, std::nullopt);
@@ -474,11 +476,8 @@ Result<double> probe_length(const toml::table& t, const Reader& rd, int tool) {
   auto v = get_number(*scene, rd.origin, "length", 0.0, kFar);
   if (!v) return v;
   if (std::fabs(*v - table) > 1e-6) {
-    return config_error(*scene, rd.origin,
-                        "the probe's length is " + std::to_string(*v) + " mm here but H" +
-                            std::to_string(it->first) + " of the machine file (" + rd.m.origin +
-                            ") says " + std::to_string(table) +
-                            " mm: keep it in one place (drop this key, or the tool offset)");
+    p.h_number = it->first;
+    p.h_length = table;
   }
   return *v;
 }
@@ -506,7 +505,7 @@ Result<ProbeSpec> parse_probe(const toml::table& t, const Reader& rd) {
     if (!v) return std::unexpected(v.error());
     *field = *v;
   }
-  auto length = probe_length(t, rd, p.tool);
+  auto length = probe_length(t, rd, p.tool, p);
   if (!length) return std::unexpected(length.error());
   p.length = *length;
   auto ball = rd.number(t, "ball_radius", 1e-3, 1000.0);

@@ -27,9 +27,13 @@ namespace skipnc::machine {
 struct ProbeSpec {
   canon::SignalAddr signal;
   std::string signal_name;
-  int tool = 0;                 // the T number that puts the probe in the spindle
-  double ball_radius = 1.0;     // mm
-  double length = 0.0;          // gauge line to ball centre, mm
+  int tool = 0;              // the T number that puts the probe in the spindle
+  double ball_radius = 1.0;  // mm
+  double length = 0.0;       // gauge line to ball centre, mm
+  // The machine file's H of the probe when it differs from `length` (the
+  // control believes it; the scene is the stylus), else h_number 0.
+  int h_number = 0;
+  double h_length = 0.0;
   double stylus_length = 0.0;   // ball centre to the probe body, mm
   double body_radius = 0.0;     // probe body (a column up to the gauge line); 0: none
   double pre_travel = 0.0;      // deflection before the signal switches, mm

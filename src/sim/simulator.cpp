@@ -270,6 +270,40 @@ const interp::Warning* first_refused(const std::vector<interp::Warning>& ws,
     if (std::find(allow.begin(), allow.end(), w.code) == allow.end()) return &w;
   }
   return nullptr;
+
+// The scene's probe is longer or shorter than the H the control believes
+// (an uncalibrated H, or Renishaw's H to the ball's lowest point): never an
+// error, said once with both numbers (docs/scene.md "The probe's length").
+std::optional<interp::Warning> probe_length_warning(const machine::Probing& spec) {
+  if (!spec.probe || spec.probe->h_number == 0) return std::nullopt;
+  const auto& p = *spec.probe;
+  std::string text = fmt::format(
+      "the probe's length (gauge line to ball centre) is {:.4f} mm in the scene, but H{} of the "
+      "machine file holds {:.4f} mm ({:+.4f}): the stored values follow from both",
+      p.length, p.h_number, p.h_length, p.h_length - p.length);
+  if (std::fabs(p.h_length - p.length - p.ball_radius) < 1e-6) {
+    text += "; H is to the ball's lowest point (centre length + ball radius, Renishaw's rule)";
+  }
+  return interp::Warning{"probe_length_differs", 0, 0, std::move(text)};
+}
+
+// grbl drives steppers: its position is the step count and its [PRB:] the
+// commanded position at the switch. On a machine whose axes lag (kp > 0)
+// that is ahead of the tool: said once (the built-in grbl3 has kp = 0).
+std::optional<interp::Warning> grbl_servo_warning(const config::MachineConfig& m,
+                                                  const config::Dialect& d) {
+  if (d.sw.language != config::Language::kGrbl) return std::nullopt;
+  for (const auto& a : m.axes) {
+    if (a.kp_per_s > 0.0) {
+      return interp::Warning{
+          "grbl_servo_lag", 0, 0,
+          fmt::format("the grbl dialect runs on a machine whose {} axis lags its command "
+                      "(kp = {}/s): grbl's position and [PRB:] are its step count, the command, "
+                      "ahead of the tool; grbl machines are steppers (-m grbl3: kp = 0)",
+                      a.name, a.kp_per_s)};
+    }
+  }
+  return std::nullopt;
 }
 
 }  // namespace
@@ -551,11 +585,17 @@ Result<RunResult> Simulator::run(const interp::Setup& setup, const RunOptions& o
   for (const auto& msg : safety.messages()) res.messages.push_back(msg);
   res.warnings = in.warnings();
   for (const auto& w : safety.warnings()) res.warnings.push_back(w);
+  if (auto w = probe_length_warning(plant.probing().spec())) res.warnings.push_back(*w);
+  if (auto w = grbl_servo_warning(m_, d_)) res.warnings.push_back(*w);
   // Every run that ended, by itself, by an alarm or by a signal (SIGTERM,
   // SIGINT: the run stops between periods) writes #500-#999 and the DPRNT
   // file (was: an interrupted run wrote neither).
   {
+    const std::size_t said = in.messages().size();
     auto saved = in.save_persistent();
+    // What saving said (the log files written: ngc_room.cpp).
+    for (std::size_t i = said; i < in.messages().size(); ++i)
+      res.messages.push_back(in.messages()[i]);
     if (!saved && res.status == RunStatus::kCompleted) alarm(saved.error(), 0);
     // After an alarm the run's alarm stays the first one; the failed save is
     // said in the messages (was: not said at all).

@@ -25,13 +25,18 @@ using skipnc::test::run_cli;
 
 namespace {
 
+// tests/golden and the compatibility suite tests/compat (issue 29: programs
+// in the style of public ones, run the same way).
 std::vector<fs::path> golden_cases() {
   std::vector<fs::path> cases;
-  const fs::path root = fs::path(SKIPNC_SOURCE_DIR) / "tests" / "golden";
-  for (const auto& e : fs::recursive_directory_iterator(root)) {
-    if (e.is_regular_file() && e.path().extension() == ".nc" &&
-        e.path().parent_path().filename() != "macros") {
-      cases.push_back(e.path());
+  for (const char* folder : {"golden", "compat"}) {
+    const fs::path root = fs::path(SKIPNC_SOURCE_DIR) / "tests" / folder;
+    if (!fs::exists(root)) continue;
+    for (const auto& e : fs::recursive_directory_iterator(root)) {
+      if (e.is_regular_file() && e.path().extension() == ".nc" &&
+          e.path().parent_path().filename() != "macros") {
+        cases.push_back(e.path());
+      }
     }
   }
   std::sort(cases.begin(), cases.end());
@@ -39,9 +44,10 @@ std::vector<fs::path> golden_cases() {
 }
 
 std::string case_name(const fs::path& p) {
-  const fs::path root = fs::path(SKIPNC_SOURCE_DIR) / "tests" / "golden";
+  const fs::path tests = fs::path(SKIPNC_SOURCE_DIR) / "tests";
   // Lexical: a case may be a symbolic link to an example's program.
-  std::string n = p.lexically_relative(root).replace_extension().string();
+  std::string n = p.lexically_relative(tests).replace_extension().string();
+  if (n.starts_with("golden/")) n = n.substr(7);
   for (char& c : n) {
     if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
   }
