@@ -270,6 +270,7 @@ const interp::Warning* first_refused(const std::vector<interp::Warning>& ws,
     if (std::find(allow.begin(), allow.end(), w.code) == allow.end()) return &w;
   }
   return nullptr;
+}
 
 // The scene's probe is longer or shorter than the H the control believes
 // (an uncalibrated H, or Renishaw's H to the ball's lowest point): never an
