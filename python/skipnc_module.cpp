@@ -192,7 +192,7 @@ class Sweep {
                              ? name
                              : name + " (end)");
     }
-    for (const auto& c : plan_.checks) columns_.push_back(c.text);
+    for (const auto& c : plan_.checks) columns_.push_back(c.e.text);
     columns_.insert(columns_.end(), {"pass", "time_s"});
   }
   std::int64_t count() const { return plan_.scenarios; }
@@ -227,7 +227,7 @@ class Sweep {
   }
   std::vector<std::string> expect() const {
     std::vector<std::string> out;
-    for (const auto& c : plan_.checks) out.push_back(c.text);
+    for (const auto& c : plan_.checks) out.push_back(c.e.text);
     return out;
   }
 

@@ -412,7 +412,7 @@ Flow<void> Interpreter::Impl::plan_addresses(const Words& words) const {
 Flow<int> Interpreter::Impl::offset_number(const Words& words, char letter) const {
   const double v = words.at(letter).value;
   if (v != std::trunc(v) || v < 0 || v > mc.tool_offset_count) {
-    return fail(AlarmId::kIllegalOffsetNumber, std::string(1, letter) + std::to_string(v),
+    return fail(AlarmId::kIllegalOffsetNumber, std::string(1, letter) + fmt::format("{}", v),
                 loc(words.at(letter).column));
   }
   return static_cast<int>(v);
