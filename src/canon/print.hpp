@@ -3,10 +3,10 @@
 // exactly. Used by `skipnc canon` and the golden tests.
 #pragma once
 
+#include <fmt/format.h>
+
 #include <string>
 #include <string_view>
-
-#include <fmt/format.h>
 
 #include "canon/canon.hpp"
 

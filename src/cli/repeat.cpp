@@ -82,14 +82,14 @@ int repeat_command(const RunArgs& a) {
     std::vector<JunitCase> cases;  // one per run
     double total = 0.0;
     for (const run::RepeatRun& r : out->log) {
-      cases.push_back(JunitCase{r.run == 0 ? std::string("nominal run")
-                                           : fmt::format("run {} (seed {})", r.run, r.seed),
-                                "skipnc.repeat." + a.program,
-                                r.time_s,
-                                r.alarm,
-                                "alarm",
-                                r.alarm_text,
-                                {}});
+      cases.push_back(JunitCase{
+          r.run == 0 ? std::string("nominal run") : fmt::format("run {} (seed {})", r.run, r.seed),
+          "skipnc.repeat." + a.program,
+          r.time_s,
+          r.alarm,
+          "alarm",
+          r.alarm_text,
+          {}});
       total += r.time_s;
     }
     if (auto w = write_junit(a.junit, a.program, total, cases); !w) {

@@ -9,7 +9,7 @@
 namespace skipnc {
 
 struct EmbeddedFile {
-  std::string_view path;     // relative to data/, e.g. "dialects/fanuc.toml"
+  std::string_view path;  // relative to data/, e.g. "dialects/fanuc.toml"
   std::string_view content;
 };
 

@@ -18,8 +18,8 @@
 #include "config/dialect.hpp"
 #include "config/machine_config.hpp"
 #include "machine/scene.hpp"
-#include "sim/simulator.hpp"
 #include "plot/recorder.hpp"
+#include "sim/simulator.hpp"
 
 namespace skipnc::plot {
 

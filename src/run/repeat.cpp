@@ -200,10 +200,9 @@ Result<RepeatOutcome> repeat_runs(const Session& s, const RepeatRequest& rq,
       out.runs = run > 0 ? run - 1 : 0;  // this run is cut short: not counted
       break;
     }
-    out.log.push_back(RepeatRun{
-        run, nominal ? 0 : out.seed + static_cast<std::uint64_t>(run - 1), res->time_s,
-        res->status != sim::RunStatus::kCompleted,
-        res->alarm ? describe(*res->alarm, &s.dialect) : std::string()});
+    out.log.push_back(RepeatRun{run, nominal ? 0 : out.seed + static_cast<std::uint64_t>(run - 1),
+                                res->time_s, res->status != sim::RunStatus::kCompleted,
+                                res->alarm ? describe(*res->alarm, &s.dialect) : std::string()});
     if (res->status != sim::RunStatus::kCompleted) {
       if (!nominal) ++out.alarms;
       if (out.first_alarm.empty() && res->alarm) {

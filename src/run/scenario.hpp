@@ -49,8 +49,8 @@ struct RunRequest {
   std::string program_text;
   std::string program_name;  // in errors and the report
   std::vector<std::string> include_dirs;
-  std::vector<VarRef> vars;  // reported after the run
-  bool strict = false;       // --strict: a warning is an alarm (strict_warning)
+  std::vector<VarRef> vars;        // reported after the run
+  bool strict = false;             // --strict: a warning is an alarm (strict_warning)
   std::vector<std::string> allow;  // --allow CODE: warnings that stay warnings under --strict
   // --expect: checked on the run's outcome (run/expect.hpp), as `skipnc run`.
   std::vector<Expectation> expect;

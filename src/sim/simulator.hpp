@@ -18,7 +18,6 @@
 
 namespace skipnc::sim {
 
-
 // One servo period as the trace shows it.
 struct TraceRow {
   Tick tick = 0;
@@ -32,9 +31,9 @@ struct TraceRow {
   // The actual position in the running block's work coordinates (program
   // units, as #5041.. reads it); null when not computed.
   const AxisVec* work = nullptr;
-  std::string_view file;            // file of the active block (valid during the call)
-  const machine::Plant* plant = nullptr;     // signal levels
-  kernel::SkipHandshake handshake;  // the skip block's handshake
+  std::string_view file;                  // file of the active block (valid during the call)
+  const machine::Plant* plant = nullptr;  // signal levels
+  kernel::SkipHandshake handshake;        // the skip block's handshake
   const config::SkipHandshakeNames* handshake_names = nullptr;  // null: not shown
 };
 

@@ -13,10 +13,11 @@ namespace skipnc::property {
 namespace {
 
 // Words that a block may hold without an alarm (mill3, fanuc, tools 1-3).
-const std::vector<std::string> kGood = {"S1200", "T2",  "G43 H1",   "G49",    "G91", "G20",
-                                        "M08",   "G55", "F500.",    "G17",    "G61", "M09 (MSG,SEEN)",
-                                        "M03",   "D2",  "G54.1 P2", "G1 X1.", "E3.", "G0 Z-1.",
-                                        "G98",   "G94", "N77"};
+const std::vector<std::string> kGood = {
+    "S1200", "T2",  "G43 H1",   "G49",    "G91", "G20",
+    "M08",   "G55", "F500.",    "G17",    "G61", "M09 (MSG,SEEN)",
+    "M03",   "D2",  "G54.1 P2", "G1 X1.", "E3.", "G0 Z-1.",
+    "G98",   "G94", "N77"};
 
 // One bad word each, with where it fails: in the plan (values, groups,
 // addresses) or in the commit (arc geometry, dwell, G10, M98).

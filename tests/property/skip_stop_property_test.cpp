@@ -33,8 +33,8 @@
 
 #include "config/skip_inputs.hpp"
 #include "machine/scene.hpp"
-#include "sim/simulator.hpp"
 #include "property/program_gen.hpp"
+#include "sim/simulator.hpp"
 
 namespace skipnc::property {
 namespace {

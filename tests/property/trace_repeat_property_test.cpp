@@ -15,8 +15,8 @@
 #include <vector>
 
 #include "machine/scene.hpp"
-#include "sim/simulator.hpp"
 #include "property/program_gen.hpp"
+#include "sim/simulator.hpp"
 
 namespace skipnc::property {
 namespace {

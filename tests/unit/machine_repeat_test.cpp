@@ -5,9 +5,8 @@
 #include <cmath>
 #include <filesystem>
 #include <map>
-#include <string>
-
 #include <nlohmann/json.hpp>
+#include <string>
 
 #include "support/run_cli.hpp"
 
@@ -24,9 +23,9 @@ json repeat(int runs, int seed, const skipnc::test::TempDir& tmp, int* exit_code
   const fs::path report = tmp.path / "repeat.json";
   const auto r = run_cli({"run", (kExamples / "bore_centre.nc").string(), "-s",
                           (kExamples / "fixture_real.scene.toml").string(), "-m",
-                          (kExamples / "mill3_probe.machine.toml").string(), "--var", "130", "--var",
-                          "131", "--var", "132", "--repeat", std::to_string(runs), "--seed",
-                          std::to_string(seed), "--report", report.string(), "-q"});
+                          (kExamples / "mill3_probe.machine.toml").string(), "--var", "130",
+                          "--var", "131", "--var", "132", "--repeat", std::to_string(runs),
+                          "--seed", std::to_string(seed), "--report", report.string(), "-q"});
   if (exit_code != nullptr) *exit_code = r.exit_code;
   return json::parse(read_file(report));
 }

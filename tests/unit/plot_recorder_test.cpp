@@ -10,8 +10,8 @@
 
 #include "config/dialect.hpp"
 #include "config/machine_config.hpp"
-#include "sim/simulator.hpp"
 #include "plot/recorder.hpp"
+#include "sim/simulator.hpp"
 
 namespace skipnc {
 namespace {
