@@ -13,7 +13,7 @@
 #include <numbers>
 #include <thread>
 
-#include "interpreter/variables.hpp"
+#include "interpreter/interpreter.hpp"
 
 namespace skipnc::run {
 namespace {

@@ -14,9 +14,9 @@
 #include <vector>
 
 #include "config/machine_config.hpp"
-#include "interpreter/interpreter.hpp"
 #include "kernel/kernel.hpp"
 #include "machine/plant.hpp"
+#include "record/record.hpp"
 
 namespace skipnc::sim {
 
@@ -32,8 +32,8 @@ struct SafetyAlarm {
 
 class ProbeSafety final : public canon::CommandSink {
  public:
-  ProbeSafety(const config::MachineConfig& m, const config::Parameters& p, const machine::Plant& plant,
-              canon::CommandSink* next);
+  ProbeSafety(const config::MachineConfig& m, const config::Parameters& p,
+              const machine::Plant& plant, canon::CommandSink* next);
 
   // The command stream (forwarded to `next`).
   void emit(const canon::Stamped& c) override;
@@ -43,19 +43,21 @@ class ProbeSafety final : public canon::CommandSink {
     return tool_change_.has_value() || power_change_.has_value();
   }
   // After each kernel tick. `line` is the line the kernel shows now.
-  [[nodiscard]] std::optional<SafetyAlarm> after_period(machine::Plant& plant, const kernel::Kernel& k,
-                                                        std::uint32_t line, std::string_view file) {
+  [[nodiscard]] std::optional<SafetyAlarm> after_period(machine::Plant& plant,
+                                                        const kernel::Kernel& k, std::uint32_t line,
+                                                        std::string_view file) {
     const machine::ProbeScene& ps = plant.probing();
     if (!tool_change_ && !power_change_ && power_on_at_s_ < 0.0 &&
-        ps.fault().kind == machine::PlantFault::Kind::kNone && !(protection_ && ps.touch_switched_on())) {
+        ps.fault().kind == machine::PlantFault::Kind::kNone &&
+        !(protection_ && ps.touch_switched_on())) {
       period_line_ = line;  // nothing to do (most periods)
       return std::nullopt;
     }
     return check_period(plant, k, line, file);
   }
   const std::vector<std::string>& messages() const noexcept { return messages_; }
-  // Structured warnings (skip_braking), interp::Warning.
-  const std::vector<interp::Warning>& warnings() const noexcept { return warnings_; }
+  // Structured warnings (skip_braking), record::Warning.
+  const std::vector<record::Warning>& warnings() const noexcept { return warnings_; }
 
   // Distance the axes travel after a switch at this feed before they stop:
   // following error plus one period (immediate stop) or v^2/2a plus the
@@ -63,8 +65,8 @@ class ProbeSafety final : public canon::CommandSink {
   double braking_distance(const canon::Skip& s, const AxisVec& from) const noexcept;
 
  private:
-  std::optional<SafetyAlarm> check_period(machine::Plant& plant, const kernel::Kernel& k, std::uint32_t line,
-                                          std::string_view file);
+  std::optional<SafetyAlarm> check_period(machine::Plant& plant, const kernel::Kernel& k,
+                                          std::uint32_t line, std::string_view file);
   std::string where(const AxisVec& machine) const;
   void warn_braking(const canon::Skip& s, const canon::Stamped& at);
   void warn_unreachable(const canon::Skip& s, const canon::Stamped& at);
@@ -96,7 +98,7 @@ class ProbeSafety final : public canon::CommandSink {
   bool warn_probe_off(const canon::Skip& s, const canon::Stamped& at);
   std::uint32_t period_line_ = 0;
   std::vector<std::string> messages_;
-  std::vector<interp::Warning> warnings_;
+  std::vector<record::Warning> warnings_;
 };
 
 }  // namespace skipnc::sim

@@ -10,8 +10,8 @@
 
 #include "config/dialect.hpp"
 #include "config/machine_config.hpp"
-#include "sim/simulator.hpp"
 #include "plot/recorder.hpp"
+#include "sim/simulator.hpp"
 
 namespace skipnc {
 namespace {
@@ -179,7 +179,7 @@ TEST(PlotRecorder, SignalEdgesAndLatchesSurviveThinningOfARealRun) {
   d.max_samples = 300;  // a tight budget forces thinning
   plot::Recorder rec(m, d);
   sim::Simulator sim(m, *dl, p, scene);
-  interp::Setup setup;
+  record::Setup setup;
   setup.machine = &m;
   setup.dialect = &*dl;
   setup.params = &p;

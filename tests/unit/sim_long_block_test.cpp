@@ -32,7 +32,7 @@ TEST(MachineLongBlock, PeckCycleWithMoreMovesThanTheQueueReachesTheBottom) {
   ASSERT_TRUE(m && d);
   config::Parameters p(&*d);
   machine::Scene scene;
-  interp::Setup setup;
+  record::Setup setup;
   setup.machine = &*m;
   setup.dialect = &*d;
   setup.params = &p;
@@ -51,8 +51,7 @@ TEST(MachineLongBlock, PeckCycleWithMoreMovesThanTheQueueReachesTheBottom) {
   opts.trace = &trace;
   auto r = sim.run(setup, opts);
   ASSERT_TRUE(r);
-  ASSERT_EQ(r->status, sim::RunStatus::kCompleted)
-      << (r->alarm ? r->alarm->detail : std::string());
+  ASSERT_EQ(r->status, sim::RunStatus::kCompleted) << (r->alarm ? r->alarm->detail : std::string());
   // Sampled once a period: the turn at the bottom falls inside a period, and
   // within 1 ms of rest the command is within a micrometre of it.
   EXPECT_NEAR(trace.lowest_cmd, -50.0, 1e-3);
