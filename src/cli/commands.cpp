@@ -15,6 +15,7 @@
 #include "cli/outputs.hpp"
 #include "config/skip_inputs.hpp"
 #include "core/embedded.hpp"
+#include "interpreter/interpreter.hpp"
 #include "report/report.hpp"
 #include "run/expect.hpp"
 #include "run/plot.hpp"

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "core/file.hpp"
+#include "interpreter/interpreter.hpp"
 
 namespace skipnc::cli {
 namespace {

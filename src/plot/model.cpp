@@ -82,7 +82,7 @@ std::vector<ViewDef> views_for(const std::array<int, 3>& xyz, const std::vector<
 
 // Machine position where a skip block's axes came to rest, and when: the end
 // of the block run that holds the latch.
-const BlockRun* skip_block(const std::vector<BlockRun>& blocks, const interp::SkipRecord& s) {
+const BlockRun* skip_block(const std::vector<BlockRun>& blocks, const record::SkipRecord& s) {
   const BlockRun* best = nullptr;
   for (const auto& b : blocks) {
     if (b.line != s.line || b.source != s.context) continue;
@@ -120,7 +120,7 @@ void build_listing(const PlotInput& in, PlotModel& pm) {
   std::vector<std::string> paths{contexts.empty() ? std::string() : contexts[0].path};
   pm.contexts.push_back(PlaceContext{0, ""});
   for (std::size_t c = 1; c < contexts.size(); ++c) {
-    const interp::CallContext& cc = contexts[c];
+    const record::CallContext& cc = contexts[c];
     std::uint32_t f = 0;
     while (f < pm.files.size() && !(pm.files[f].name == cc.file && paths[f] == cc.path)) ++f;
     if (f == pm.files.size()) {
@@ -176,7 +176,7 @@ void build_skips(const PlotInput& in, PlotModel& pm) {
   const auto& blocks = rec.blocks();
   std::size_t next_move = 0;
   for (std::size_t k = 0; k < in.result->skips.size(); ++k) {
-    const interp::SkipRecord& s = in.result->skips[k];
+    const record::SkipRecord& s = in.result->skips[k];
     SkipMark sk;
     sk.index = k;
     sk.line = s.line;

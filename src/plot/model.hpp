@@ -160,7 +160,7 @@ struct ListingFile {
   std::vector<std::string> lines;  // 1-based: lines[line - 1]; empty when unknown
 };
 
-// A call context of the run (interp::CallContext): the file its lines are
+// A call context of the run (record::CallContext): the file its lines are
 // in, and how a place in it is named ("L12" in the main program,
 // "O9810.nc:12" in another file).
 struct PlaceContext {

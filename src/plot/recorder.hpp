@@ -20,7 +20,6 @@
 
 #include "config/machine_config.hpp"
 #include "core/axes.hpp"
-#include "interpreter/interpreter.hpp"
 #include "sim/simulator.hpp"
 
 namespace skipnc::plot {
@@ -31,7 +30,7 @@ const char* move_kind_name(MoveKind k) noexcept;
 struct Sample {
   double t = 0.0;  // simulated seconds
   std::uint32_t line = 0;
-  std::uint32_t source = 0;   // call context of the block (interp::CallContext)
+  std::uint32_t source = 0;   // call context of the block (record::CallContext)
   std::uint32_t signals = 0;  // bit i: signal i (signal_names()[i]) on
   double feed_mm_min = 0.0;   // commanded path speed
   AxisVec cmd;                // machine coordinates, mm

@@ -50,10 +50,10 @@ double clean(double v) noexcept {
   return std::round(v * 1e9) / 1e9 + 0.0;
 }
 
-std::string where(const std::vector<interp::CallContext>& contexts, std::uint32_t context,
+std::string where(const std::vector<record::CallContext>& contexts, std::uint32_t context,
                   std::uint32_t line, int n) {
   if (context >= contexts.size()) return "line " + std::to_string(line);
-  const interp::CallContext& here = contexts[context];
+  const record::CallContext& here = contexts[context];
   std::string out = here.file + ":" + std::to_string(line);
   if (here.program > 0 || n >= 0) {
     out += " (";
@@ -64,7 +64,7 @@ std::string where(const std::vector<interp::CallContext>& contexts, std::uint32_
   // Each context knows the block that called it, in its parent.
   std::uint32_t c = context;
   for (std::size_t depth = 0; depth < contexts.size(); ++depth) {
-    const interp::CallContext& callee = contexts[c];
+    const record::CallContext& callee = contexts[c];
     if (callee.parent >= contexts.size()) break;
     out += " called from " + contexts[callee.parent].file + ":" + std::to_string(callee.call_line) +
            " (" + callee.call + ")";
@@ -86,12 +86,12 @@ ordered_json axes_json(const AxisVec& v, const config::MachineConfig* m) {
 
 // The call stack of a block, innermost first: where each level runs, and
 // the call that started it.
-ordered_json stack_json(const std::vector<interp::CallContext>& cs, std::uint32_t ctx,
+ordered_json stack_json(const std::vector<record::CallContext>& cs, std::uint32_t ctx,
                         std::uint32_t line) {
   ordered_json a = ordered_json::array();
   std::uint32_t at = line;
   for (std::size_t depth = 0; ctx < cs.size() && depth < cs.size(); ++depth) {
-    const interp::CallContext& c = cs[ctx];
+    const record::CallContext& c = cs[ctx];
     ordered_json o;
     o["file"] = c.file;
     o["line"] = at;
@@ -105,14 +105,14 @@ ordered_json stack_json(const std::vector<interp::CallContext>& cs, std::uint32_
   return a;
 }
 
-ordered_json program_json(const std::vector<interp::CallContext>& cs, std::uint32_t ctx) {
+ordered_json program_json(const std::vector<record::CallContext>& cs, std::uint32_t ctx) {
   if (ctx >= cs.size() || cs[ctx].program <= 0) return nullptr;
   return "O" + std::to_string(cs[ctx].program);
 }
 
 // Where a block is, as skips and warnings give it: line, file, program
 // (O number), N number (skips), where ("file:line (O..) called from ...").
-void place_json(ordered_json& o, const std::vector<interp::CallContext>& cs,
+void place_json(ordered_json& o, const std::vector<record::CallContext>& cs,
                 const std::string& program, std::uint32_t ctx, std::uint32_t line, int n,
                 bool with_n) {
   const bool known = ctx < cs.size();
@@ -164,7 +164,7 @@ ordered_json block_times_json(const sim::RunResult& r, const std::string& progra
   return times;
 }
 
-const char* ended_by(const interp::SkipRecord& s) {
+const char* ended_by(const record::SkipRecord& s) {
   if (s.ended_by_alarm) return "alarm";
   if (!s.triggered) return "end_point";
   return s.signal == "TORQUE" ? "torque" : "signal";

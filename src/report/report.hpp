@@ -59,7 +59,7 @@ AlarmView view_alarm(const Error& e, const config::Dialect* d);
 
 // Where a block is, for people: "O9023.nc:38 (O9023 N30) called from
 // bore.nc:9 (G65 P9023)". `n` < 0: the block has no N number.
-std::string where(const std::vector<interp::CallContext>& contexts, std::uint32_t context,
+std::string where(const std::vector<record::CallContext>& contexts, std::uint32_t context,
                   std::uint32_t line, int n = -1);
 
 // A report number without float noise: rounded to 1e-9 (a nanometre, a

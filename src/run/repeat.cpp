@@ -7,7 +7,7 @@
 #include <map>
 
 #include "core/utf8.hpp"
-#include "interpreter/variables.hpp"
+#include "interpreter/interpreter.hpp"
 #include "sim/simulator.hpp"
 
 namespace skipnc::run {

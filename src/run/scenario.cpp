@@ -6,7 +6,7 @@
 #include <memory>
 
 #include "config/skip_inputs.hpp"
-#include "interpreter/variables.hpp"
+#include "interpreter/interpreter.hpp"
 #include "run/plot.hpp"
 
 namespace skipnc::run {

@@ -11,6 +11,7 @@
 #include <utility>
 #include <vector>
 
+#include "interpreter/interpreter.hpp"
 #include "report/report.hpp"
 #include "run/expect.hpp"
 #include "run/session.hpp"

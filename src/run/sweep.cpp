@@ -18,6 +18,7 @@
 #include "config/toml_util.hpp"
 #include "core/file.hpp"
 #include "core/utf8.hpp"
+#include "interpreter/interpreter.hpp"
 #include "interpreter/variables.hpp"
 
 namespace skipnc::run {

@@ -82,8 +82,8 @@ bool ProbeSafety::warn_probe_off(const canon::Skip& s, const canon::Stamped& at)
   for (int i = 0; i < s.spec.input_count; ++i)
     listens = listens || s.spec.inputs[i] == probe->signal;
   if (!listens) return false;
-  interp::add_warning(
-      warnings_, interp::Warning{"probe_off", at.source, at.line,
+  record::add_warning(
+      warnings_, record::Warning{"probe_off", at.source, at.line,
                                  fmt::format("the skip listens to the probe's input {}, but the "
                                              "probe is switched off (M{} switches it on)",
                                              config::signal_name(probe->signal), probe->on_m)});
@@ -171,9 +171,9 @@ void ProbeSafety::warn_unreachable(const canon::Skip& s, const canon::Stamped& a
     heading += fmt::format("{}{}{}", heading.empty() ? "" : " ", dir[i] > 0.0 ? "+" : "-",
                            m_.axes[static_cast<std::size_t>(i)].name);
   }
-  interp::add_warning(
+  record::add_warning(
       warnings_,
-      interp::Warning{"skip_unreachable", at.source, at.line,
+      record::Warning{"skip_unreachable", at.source, at.line,
                       fmt::format("the skip move from {} along {} leads away from everything in "
                                   "the scene that switches {}: it can only run to its end point",
                                   where(last_target_), heading, inputs)});
@@ -239,8 +239,8 @@ void ProbeSafety::warn_braking(const canon::Skip& s, const canon::Stamped& at) {
       immediate ? "immediate stop: following error + one servo period"
                 : "deceleration: v^2/2a + following error",
       limit, what);
-  interp::add_warning(warnings_,
-                      interp::Warning{"skip_braking", at.source, at.line, std::move(text)});
+  record::add_warning(warnings_,
+                      record::Warning{"skip_braking", at.source, at.line, std::move(text)});
 }
 
 std::optional<SafetyAlarm> ProbeSafety::check_period(Plant& plant, const kernel::Kernel& k,
@@ -273,9 +273,9 @@ std::optional<SafetyAlarm> ProbeSafety::check_period(Plant& plant, const kernel:
     // a skip running then stores where the probe was, past the surface.
     const TouchProbe* probe = ps.probe_in_spindle() ? ps.probe() : nullptr;
     if (probe != nullptr && probe->deflection() > 0.0) {
-      interp::add_warning(
+      record::add_warning(
           warnings_,
-          interp::Warning{"probe_start_deflected", power_source_, power_line_,
+          record::Warning{"probe_start_deflected", power_source_, power_line_,
                           fmt::format("the probe switched on here became ready at {:.4f} s with "
                                       "its stylus already deflected {:.4f} mm: its input came on "
                                       "at once, wherever the axes were",

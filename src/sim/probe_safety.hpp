@@ -14,9 +14,9 @@
 #include <vector>
 
 #include "config/machine_config.hpp"
-#include "interpreter/interpreter.hpp"
 #include "kernel/kernel.hpp"
 #include "machine/plant.hpp"
+#include "record/record.hpp"
 
 namespace skipnc::sim {
 
@@ -56,8 +56,8 @@ class ProbeSafety final : public canon::CommandSink {
     return check_period(plant, k, line, file);
   }
   const std::vector<std::string>& messages() const noexcept { return messages_; }
-  // Structured warnings (skip_braking), interp::Warning.
-  const std::vector<interp::Warning>& warnings() const noexcept { return warnings_; }
+  // Structured warnings (skip_braking), record::Warning.
+  const std::vector<record::Warning>& warnings() const noexcept { return warnings_; }
 
   // Distance the axes travel after a switch at this feed before they stop:
   // following error plus one period (immediate stop) or v^2/2a plus the
@@ -98,7 +98,7 @@ class ProbeSafety final : public canon::CommandSink {
   bool warn_probe_off(const canon::Skip& s, const canon::Stamped& at);
   std::uint32_t period_line_ = 0;
   std::vector<std::string> messages_;
-  std::vector<interp::Warning> warnings_;
+  std::vector<record::Warning> warnings_;
 };
 
 }  // namespace skipnc::sim

@@ -11,6 +11,7 @@
 #include <unordered_map>
 
 #include "config/skip_inputs.hpp"
+#include "interpreter/interpreter.hpp"
 #include "kernel/kernel_config.hpp"
 #include "sim/probe_safety.hpp"
 
@@ -312,6 +313,8 @@ std::optional<interp::Warning> grbl_servo_warning(const config::MachineConfig& m
 Simulator::Simulator(const config::MachineConfig& m, const config::Dialect& d,
                      const config::Parameters& p, const Scene& scene)
     : m_(m), d_(d), p_(p), scene_(scene) {}
+
+Simulator::~Simulator() = default;
 
 Result<RunResult> Simulator::run(const interp::Setup& setup, const RunOptions& opts) {
   RunResult res;

@@ -11,10 +11,14 @@
 
 #include "config/dialect.hpp"
 #include "config/machine_config.hpp"
-#include "interpreter/interpreter.hpp"
 #include "kernel/kernel.hpp"
 #include "machine/plant.hpp"
 #include "machine/scene.hpp"
+#include "record/record.hpp"
+
+namespace skipnc::interp {
+class Interpreter;
+}  // namespace skipnc::interp
 
 namespace skipnc::sim {
 
@@ -27,7 +31,7 @@ struct TraceRow {
   const AxisVec* torque = nullptr;
   double feed_mm_per_min = 0.0;
   std::uint32_t line = 0;
-  std::uint32_t source = 0;  // call context of the active block (interp::CallContext)
+  std::uint32_t source = 0;  // call context of the active block (record::CallContext)
   // The actual position in the running block's work coordinates (program
   // units, as #5041.. reads it); null when not computed.
   const AxisVec* work = nullptr;
@@ -77,13 +81,13 @@ struct RunResult {
   AxisVec final_work;
   double time_s = 0.0;
   Tick ticks = 0;
-  std::vector<interp::SkipRecord> skips;  // the last one ended_by_alarm when an alarm cut it short
+  std::vector<record::SkipRecord> skips;  // the last one ended_by_alarm when an alarm cut it short
   // Where the alarm was raised: its call context (index into contexts).
   std::uint32_t alarm_context = 0;
-  std::vector<interp::CallContext> contexts;
+  std::vector<record::CallContext> contexts;
   bool program_inch = false;  // G20 in effect at the end of the run
   std::vector<std::string> messages;
-  std::vector<interp::Warning> warnings;  // the interpreter's, then the machine's
+  std::vector<record::Warning> warnings;  // the interpreter's, then the machine's
   std::vector<BlockTime> block_times;     // in the order the places first ran
   double period_s = 0.0;                  // servo period: ticks to seconds
   std::vector<std::pair<std::string, std::optional<double>>> variables;  // filled by the caller
@@ -103,10 +107,11 @@ class Simulator {
  public:
   Simulator(const config::MachineConfig& m, const config::Dialect& d, const config::Parameters& p,
             const machine::Scene& scene);
+  ~Simulator();
 
   // Runs the program. Errors that stop the run are in the result (alarm);
   // the returned error is for a run that could not start.
-  [[nodiscard]] Result<RunResult> run(const interp::Setup& setup, const RunOptions& opts);
+  [[nodiscard]] Result<RunResult> run(const record::Setup& setup, const RunOptions& opts);
   // The interpreter of the last run (for variables after the run).
   interp::Interpreter* interpreter() noexcept { return interp_.get(); }
 

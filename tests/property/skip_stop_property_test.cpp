@@ -90,7 +90,7 @@ RC_GTEST_PROP(SkipStop, StopsWithinTheBrakingDistanceForItsFeed, ()) {
   RC_ASSERT(run.has_value());
   RC_ASSERT(run->status == sim::RunStatus::kCompleted);
   RC_ASSERT(run->skips.size() == 1u);
-  const interp::SkipRecord& sk = run->skips.front();
+  const record::SkipRecord& sk = run->skips.front();
   RC_ASSERT(sk.triggered);
 
   // Work coordinates are machine coordinates here (no offsets, metric).

@@ -4,6 +4,7 @@
 #include <limits>
 
 #include "config/skip_inputs.hpp"
+#include "interpreter/interpreter.hpp"
 
 namespace skipnc::rules {
 
@@ -65,7 +66,7 @@ Outcome Rig::run(const std::string& program) const {
   EXPECT_TRUE(sc) << (sc ? "" : sc.error().detail);
   o.scene = std::make_unique<machine::Scene>(sc ? std::move(*sc) : machine::Scene{});
   o.sim = std::make_unique<sim::Simulator>(*o.machine, *o.dialect, *o.params, *o.scene);
-  interp::Setup setup;
+  record::Setup setup;
   setup.machine = o.machine.get();
   setup.dialect = o.dialect.get();
   setup.params = o.params.get();

@@ -67,7 +67,7 @@ struct Outcome {
   AlarmId alarm_id() const { return r.alarm ? r.alarm->id : AlarmId::kCount; }
   std::uint32_t alarm_line() const { return r.alarm ? r.alarm->loc.line : 0; }
   std::size_t skip_count() const { return r.skips.size(); }
-  const interp::SkipRecord& skip(std::size_t i = 0) const { return r.skips.at(i); }
+  const record::SkipRecord& skip(std::size_t i = 0) const { return r.skips.at(i); }
   // #n as a macro reads it after the run; NaN when vacant or not a variable.
   double var(int n) const;
   double named(const std::string& name) const;

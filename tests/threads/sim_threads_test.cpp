@@ -37,7 +37,7 @@ Outcome run_cycle(std::uint64_t seed) {
       std::to_string(seed) + "\n";
   auto scene = machine::parse_scene(scene_text, "threads.scene.toml", *m, *d, p);
   if (!scene) return o;
-  interp::Setup setup;
+  record::Setup setup;
   setup.machine = &*m;
   setup.dialect = &*d;
   setup.params = &p;

@@ -33,7 +33,7 @@ Outcome probe_at(double feed, canon::SkipLatch mode, double delay_s, double plan
   t.at = plane;
   scene.triggers.push_back(t);
   sim::Simulator sim(*m, *d, p, scene);
-  interp::Setup setup;
+  record::Setup setup;
   setup.machine = &*m;
   setup.dialect = &*d;
   setup.params = &p;

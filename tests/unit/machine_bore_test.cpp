@@ -11,6 +11,7 @@
 
 #include "config/dialect.hpp"
 #include "config/machine_config.hpp"
+#include "interpreter/interpreter.hpp"
 #include "sim/simulator.hpp"
 
 namespace skipnc {

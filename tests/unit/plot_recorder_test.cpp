@@ -179,7 +179,7 @@ TEST(PlotRecorder, SignalEdgesAndLatchesSurviveThinningOfARealRun) {
   d.max_samples = 300;  // a tight budget forces thinning
   plot::Recorder rec(m, d);
   sim::Simulator sim(m, *dl, p, scene);
-  interp::Setup setup;
+  record::Setup setup;
   setup.machine = &m;
   setup.dialect = &*dl;
   setup.params = &p;

@@ -32,7 +32,7 @@ TEST(MachineLongBlock, PeckCycleWithMoreMovesThanTheQueueReachesTheBottom) {
   ASSERT_TRUE(m && d);
   config::Parameters p(&*d);
   machine::Scene scene;
-  interp::Setup setup;
+  record::Setup setup;
   setup.machine = &*m;
   setup.dialect = &*d;
   setup.params = &p;

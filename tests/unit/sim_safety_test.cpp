@@ -37,7 +37,7 @@ struct Rig {
   }
   Result<sim::RunResult> run(const std::string& program) {
     sim::Simulator sim(m, d, p, scene);
-    interp::Setup setup;
+    record::Setup setup;
     setup.machine = &m;
     setup.dialect = &d;
     setup.params = &p;
