@@ -1,0 +1,13 @@
+%
+O9753 (SKIPNC PROBING LIBRARY - TOLERANCE CHECK, INTERNAL)
+(G65 P9753 H.. M..: #148 = 1 when the size error #143 is larger than H,)
+(+ 2 when the true position error #145 is larger than M; then alarm 3088)
+(OUT OF TOLERANCE, or 3089 OUT OF POSITION when only the position is.)
+#148=0
+#149=0
+IF[[#11NE#0]AND[ABS[#143]GT#11]]THEN#148=1
+IF[[#13NE#0]AND[#145GT#13]]THEN#148=#148+2
+IF[[#148EQ1]OR[#148EQ3]]THEN#3000=88(OUT OF TOLERANCE)
+IF[#148EQ2]THEN#3000=89(OUT OF POSITION)
+M99
+%

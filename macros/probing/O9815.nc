@@ -1,0 +1,33 @@
+%
+O9815 (SKIPNC PROBING LIBRARY - INNER CORNER)
+(G65 P9815 X.. Y.. [Q..] [S..] [H..] [M..]: the probe stands inside the)
+(corner; X and Y are the nominal positions of its two walls, the wall)
+(across X and the wall across Y, work coordinates. Touches the first along)
+(X from here, returns, touches the second along Y, returns. Q: overtravel,)
+(default 10. S: work offset to correct by both errors, see O9751. H: on)
+(the larger error, alarm 3088; M: on the true position, alarm 3089.)
+(Results: #135 #136 the walls found: the corner, #140 #141 their errors,)
+(#145 true position error, #148, #149 0. I J angle touches: not done.)
+(Written for skipnc from the call interface only: docs/probing-cycles.md.)
+#30=#4001
+#31=#4003
+IF[#550EQ#0]THEN#3000=95(PROBE STYLUS NOT CALIBRATED)
+IF[[#24EQ#0]OR[#25EQ#0]]THEN#3000=91(FORMAT ERROR)
+IF[[#24EQ#5001]OR[#25EQ#5002]]THEN#3000=91(FORMAT ERROR)
+IF[#17EQ#0]THEN#17=10.
+#14=#5001
+#15=#5002
+#10=1
+IF[#24LT#14]THEN#10=-1
+#12=1
+IF[#25LT#15]THEN#12=-1
+G65 P9750 X[#24+#10*[#17-#550]]
+#27=#170+#10*#550
+G65 P9810 X#14
+G65 P9750 Y[#25+#12*[#17-#550]]
+#28=#171+#12*#550
+G65 P9810 Y#15
+G65 P9754 X#27 Y#28 I#24 J#25 H#11 M#13 S#19
+G#30 G#31
+M99
+%

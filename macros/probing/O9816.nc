@@ -1,0 +1,35 @@
+%
+O9816 (SKIPNC PROBING LIBRARY - OUTER CORNER)
+(G65 P9816 X.. Y.. [Q..] [S..] [H..] [M..]: the probe stands outside the)
+(corner, off it in X and in Y, at the height of the touches; X and Y are)
+(the nominal positions of its two faces, work coordinates. The face across)
+(X is touched along X as far past the corner in Y as the probe starts off)
+(it, the face across Y likewise; the probe returns to the start between)
+(them and at the end. Q, S, H, M and the results as in O9815.)
+(Written for skipnc from the call interface only: docs/probing-cycles.md.)
+#30=#4001
+#31=#4003
+IF[#550EQ#0]THEN#3000=95(PROBE STYLUS NOT CALIBRATED)
+IF[[#24EQ#0]OR[#25EQ#0]]THEN#3000=91(FORMAT ERROR)
+IF[[#24EQ#5001]OR[#25EQ#5002]]THEN#3000=91(FORMAT ERROR)
+IF[#17EQ#0]THEN#17=10.
+#14=#5001
+#15=#5002
+#10=1
+IF[#24LT#14]THEN#10=-1
+#12=1
+IF[#25LT#15]THEN#12=-1
+G65 P9810 Y[2*#25-#15]
+G65 P9750 X[#24+#10*[#17-#550]]
+#27=#170+#10*#550
+G65 P9810 X#14
+G65 P9810 Y#15
+G65 P9810 X[2*#24-#14]
+G65 P9750 Y[#25+#12*[#17-#550]]
+#28=#171+#12*#550
+G65 P9810 Y#15
+G65 P9810 X#14
+G65 P9754 X#27 Y#28 I#24 J#25 H#11 M#13 S#19
+G#30 G#31
+M99
+%

@@ -1,0 +1,15 @@
+%
+O4 (O9812 WITH Z: THE WEB ACROSS X, FROM OUTSIDE)
+(The web: machine X100.2..112.7, top Z-209.87; in G54 X180.2..192.7, top)
+(Z19.63: 12.5 wide, centre X186.45. Started above it at X186.5 Y20 Z25,)
+(touched at Z10 with R5 outside each wall: #135 = 186.45, #138 = 12.5,)
+(#140 = -0.05, #143 = 0, #146 = #143 = 0; S2 sets G55 X: #5241 = 0 - 0.05.)
+N10 G21 G90 G17 G40 G49 G80 G54
+N20 #550=1.
+N30 G53 G0 Z0
+N40 G43 H20 G0 X186.5 Y20.
+N50 G65 P9810 Z25. F3000.
+N60 G65 P9812 X12.5 Z10. Q5. R5. S2.
+N70 G65 P9810 Z50.
+N80 M30
+%

@@ -1,0 +1,29 @@
+%
+O15 (O9815 AND O9816: THE POCKET'S INNER CORNER, THE PLATE'S OUTER CORNER)
+(The pocket's +X wall is at G54 X90.35, its +Y wall at Y-70.5. From X85)
+(Y-75, 10 mm down, O9815 X90.3 Y-70.6 finds #135 = 90.35, #136 = -70.5,)
+(#140 = 0.05, #141 = 0.1, #145 = 2 SQRT[0.05^2 + 0.1^2] = 0.223606798;)
+(S1: G54 X #5221 = -80 + 0.05 = -79.95, Y #5222 = 30.5 + 0.1 = 30.6.)
+(The plate's corner, machine X150 Y100, is in the corrected G54 at)
+(X150 + 79.95 = 229.95, Y100 - 30.6 = 69.4. From X235 Y75, 5 mm under)
+(the top, O9816 X230. Y69.5 touches the X face at Y2 x 69.5 - 75 = 64)
+(and the Y face at X225: #135 = 229.95, #136 = 69.4, #140 = -0.05,)
+(#141 = -0.1; no S.)
+N10 G21 G90 G17 G40 G49 G80 G54
+N20 #550=1.
+N30 G53 G0 Z0
+N40 G43 H20 G0 X85. Y-75.
+N50 G65 P9810 Z-10. F3000.
+N60 G65 P9815 X90.3 Y-70.6 Q5. S1.
+N70 #101=#135
+N80 #102=#136
+N90 #103=#140
+N100 #104=#141
+N110 #105=#145
+N120 G65 P9810 Z50.
+N130 G0 X235. Y75.
+N140 G65 P9810 Z-5.
+N150 G65 P9816 X230. Y69.5 Q5.
+N160 G65 P9810 Z50.
+N170 M30
+%

@@ -1,0 +1,47 @@
+%
+O14 (THE CYCLES WITH A REAL PROBE: WITHIN THE LATCH BOUND)
+(part_real.scene.toml: 4 um pre-travel, 3-lobed lobing of 2 um, 0.5 um)
+(1 sigma scatter. #550 = 0.996: the ball's radius less the pre-travel, as)
+(a calibration on a ring gauge would give it. O9801 first calibrates H20)
+(on the top face, G54 Z-0.37, which takes the Z pre-travel into H20. Then)
+(each wall reads within the lobing + 5 sigma = 4.5 um of its place: a)
+(centre within 4.5 um, a size within 9 um, the top face within 2 x 5)
+(sigma = 5 um, of the ideal probe's values in the other cases.)
+N10 G21 G90 G17 G40 G49 G80 G54
+N20 #550=0.996
+N30 G53 G0 Z0
+N40 G43 H20 G0 X20. Y-20.
+N50 G65 P9810 Z5. F3000.
+N60 G65 P9801 Z-0.37 T20 Q5.
+N70 #112=#142 (H20's correction: the pre-travel, about 0.004)
+N80 G65 P9811 Z0 Q5.
+N90 #101=#137
+N100 G65 P9810 Z50.
+N110 G0 X0 Y0
+N120 G65 P9810 Z-10.
+N130 G65 P9814 D40. Q5.
+N140 #102=#135
+N150 #103=#136
+N160 #104=#138
+N170 G65 P9810 Z50.
+N180 G0 X140.8 Y-70.8
+N190 G65 P9810 Z25.
+N200 G65 P9814 D30. Z10. Q5. R5.
+N210 #105=#135
+N220 #106=#136
+N230 #107=#138
+N240 G65 P9810 Z50.
+N250 G0 X65. Y-90.4
+N260 G65 P9810 Z-10.
+N270 G65 P9812 X50.6 Q5.
+N280 #108=#135
+N290 #109=#138
+N300 G65 P9810 Z50.
+N310 G0 X186.5 Y20.
+N320 G65 P9810 Z25.
+N330 G65 P9812 X12.5 Z10. Q5. R5.
+N340 #110=#135
+N350 #111=#138
+N360 G65 P9810 Z50.
+N370 M30
+%
