@@ -5,8 +5,9 @@ O14 (THE CYCLES WITH A REAL PROBE: WITHIN THE LATCH BOUND)
 (a calibration on a ring gauge would give it. O9801 first calibrates H20)
 (on the top face, G54 Z-0.37, which takes the Z pre-travel into H20. Then)
 (each wall reads within the lobing + 5 sigma = 4.5 um of its place: a)
-(centre within 4.5 um, a size within 9 um, the top face within 2 x 5)
-(sigma = 5 um, of the ideal probe's values in the other cases.)
+(centre or a corner's wall within 4.5 um, a size within 9 um, the top)
+(face within 2 x 5 sigma = 5 um, of the ideal probe's values in the)
+(other cases.)
 N10 G21 G90 G17 G40 G49 G80 G54
 N20 #550=0.996
 N30 G53 G0 Z0
@@ -43,5 +44,17 @@ N330 G65 P9812 X12.5 Z10. Q5. R5.
 N340 #110=#135
 N350 #111=#138
 N360 G65 P9810 Z50.
-N370 M30
+N370 G0 X85. Y-75.
+N380 G65 P9810 Z-10.
+N390 G65 P9815 X90.35 Y-70.5 Q5.
+N400 #113=#135
+N410 #114=#136
+N420 G65 P9810 Z50.
+N430 G0 X235. Y75.
+N440 G65 P9810 Z-5.
+N450 G65 P9816 X230. Y69.5 Q5.
+N460 #115=#135
+N470 #116=#136
+N480 G65 P9810 Z50.
+N490 M30
 %

@@ -1,0 +1,1 @@
+../../../examples/probing_cycles/posted_bore_top.nc
