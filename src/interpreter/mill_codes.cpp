@@ -197,6 +197,20 @@ Flow<bool> Interpreter::Impl::apply_frame_code(const Words& words, const MillReq
           angle += frame.rotating ? rotation_angle : 0.0;
         }
       }
+      // The 3-D form `G68 X Y Z I J K R` turns about the vector I J K
+      // through X Y Z. Along Z it is the rotation above (Z0 I0 J0 K1 is what
+      // CAM posts write after an angle probing cycle); K < 0 turns the
+      // other way. Any other vector would be a 3-D conversion: not simulated.
+      if (words.has('I') || words.has('J') || words.has('K')) {
+        auto vec = [&](char l) { return words.has(l) ? word_length(words.at(l), false) : 0.0; };
+        if (vec('I') != 0.0 || vec('J') != 0.0 || vec('K') == 0.0) {
+          return fail(AlarmId::kNotSimulated,
+                      "G68 with a rotation vector I J K not along Z (3-D coordinate conversion) "
+                      "is not simulated by skipnc",
+                      req.frame_at);
+        }
+        if (vec('K') < 0.0) angle = -angle;
+      }
       next.rotating = true;
       next.angle_deg = angle;
       next.rotation_center = {c[0], c[1]};
