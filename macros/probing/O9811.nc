@@ -6,7 +6,9 @@ O9811 (SKIPNC PROBING LIBRARY - SINGLE SURFACE X, Y OR Z)
 (Q: overtravel past the nominal surface, default 10. S: work offset to)
 (correct by the error, see O9751. H: tolerance of the surface position,)
 (alarm 3088 OUT OF TOLERANCE; M: position tolerance, alarm 3089 OUT OF)
-(POSITION; both checked before the offset is changed.)
+(POSITION; both checked before the offset is changed. T: a tool offset)
+(whose wear takes the error, see O9756: Z the length, X Y the radius;)
+(V its dead band, F the fraction fed back.)
 (Results: #135 #136 or #137 the surface, #140 #141 or #142 its error,)
 (#145 2 x the error's size, #146 metal condition, #147 the axis 1 2 3,)
 (#148 0 or 1 size 2 position out of tolerance, #149 0.)
@@ -69,5 +71,11 @@ IF[#10LT3]THEN#[27+#10]=#33-#14
 IF[#10EQ3]THEN#32=#33-#14
 G65 P9751 S#19 X#28 Y#29 Z#32
 N90G#30 G#31
-M99
+IF[#20EQ#0]GOTO95
+#12=2 (the radius wear, by the material left)
+#16=#146
+IF[#10EQ3]THEN#12=1
+IF[#10EQ3]THEN#16=#142 (the length wear, by how high the face is)
+G65 P9756 T#20 E#16 K#12 V#22 F#9
+N95M99
 %

@@ -9,6 +9,8 @@ O9812 (SKIPNC PROBING LIBRARY - WEB OR POCKET)
 (S: work offset to correct by the centre's error, see O9751. H: size)
 (tolerance, alarm 3088 OUT OF TOLERANCE; M: position tolerance on the)
 (true position #145, alarm 3089 OUT OF POSITION; checked before S.)
+(T V F: the radius wear of tool offset T takes half the width's metal)
+(condition, see O9756.)
 (Results: #135 or #136 the centre, #138 the width, #140 or #141 the)
 (centre's error, #143 the width's error, #145 true position error, #146)
 (metal condition, #147 the axis 1 2, #148 0 or 1 size 2 position, #149 0.)
@@ -43,5 +45,7 @@ IF[#19EQ#0]GOTO90
 #[14+#10]=#173-#14
 G65 P9751 S#19 X#15 Y#16
 N90G#30 G#31
-M99
+IF[#20EQ#0]GOTO95
+G65 P9756 T#20 E[#146/2] K2. V#22 F#9 (radius wear: half the size's metal)
+N95M99
 %

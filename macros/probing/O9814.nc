@@ -6,8 +6,8 @@ O9814 (SKIPNC PROBING LIBRARY - BORE OR BOSS)
 (touched from outside at Z, R the clearance outside the wall, default 5.)
 (With Z and R < 0: a bore with an island, touched from inside at Z.)
 (Q: overtravel, default 10. Touches X+ X- at the start, Y+ Y- at the X)
-(centre, X+ X- again at the Y centre, and returns to the start. S, H, M)
-(as in O9812, on the diameter and the true position.)
+(centre, X+ X- again at the Y centre, and returns to the start. S, H, M,)
+(T V F as in O9812, on the diameter and the true position.)
 (Results: #135 #136 the centre, #138 the diameter: the mean of the last)
 (two passes, #140 #141 the centre's error, #143 the diameter's error,)
 (#145 true position error, #146 metal condition, #148, #149 0.)
@@ -44,5 +44,7 @@ G65 P9753 H#11 M#13
 IF[#19EQ#0]GOTO90
 G65 P9751 S#19 X#140 Y#141
 N90G#30 G#31
-M99
+IF[#20EQ#0]GOTO95
+G65 P9756 T#20 E[#146/2] K2. V#22 F#9 (radius wear: half the size's metal)
+N95M99
 %

@@ -6,7 +6,7 @@ O9823 (SKIPNC PROBING LIBRARY - BORE OR BOSS FROM THREE POINTS)
 (+X. Z and R as in O9814: without Z a bore at this height, Z and R >= 0)
 (a boss from outside, Z and R < 0 a bore with an island. The circle)
 (through the three ball centres gives the centre and the diameter. Q, S,)
-(H, M and the results as in O9814. Returns to the start.)
+(H, M, T, V, F and the results as in O9814. Returns to the start.)
 (Written for skipnc from the call interface only: docs/probing-cycles.md.)
 #4=#4001 (modes to restore: I J K are not arguments here)
 #5=#4003
@@ -46,5 +46,7 @@ G65 P9753 H#11 M#13
 IF[#19EQ#0]GOTO90
 G65 P9751 S#19 X#140 Y#141
 N90G#4 G#5
-M99
+IF[#20EQ#0]GOTO95
+G65 P9756 T#20 E[#146/2] K2. V#22 F#9 (radius wear: half the size's metal)
+N95M99
 %
