@@ -15,7 +15,7 @@ O9752 (SKIPNC PROBING LIBRARY - TWO OPPOSITE TOUCHES, INTERNAL)
 #6=1 (1: touched from inside, 0: from outside)
 IF[#26NE#0]THEN#6=0
 IF[[#26NE#0]AND[#18LT0]]THEN#6=1
-IF[[#26NE#0]AND[#18EQ#0]]THEN#18=5.
+IF[[#26NE#0]AND[#18EQ#0]]THEN#18=5./#175
 #8=#[1+#1] (the start on the axis)
 #9=1 (the side: +1, then -1)
 WHILE[#9GE-1]DO1

@@ -14,7 +14,7 @@ O9755 (SKIPNC PROBING LIBRARY - ONE TOUCH ALONG A RADIUS, INTERNAL)
 #8=#7/2-#550+#17 (from the centre to the touch's end, inside)
 #9=#7/2-#550+#18 (to the clearance point inside, R < 0)
 IF[#26EQ#0]GOTO10
-IF[#18EQ#0]THEN#18=5.
+IF[#18EQ#0]THEN#18=5./#175
 IF[#18LT0]GOTO10
 #8=#7/2+#550-#17 (outside)
 #9=#7/2+#550+#18

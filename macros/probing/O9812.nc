@@ -23,7 +23,9 @@ IF[[#24NE#0]XOR[#25EQ#0]]THEN#3000=91(FORMAT ERROR)
 #12=#24
 IF[#25NE#0]THEN#10=2
 IF[#25NE#0]THEN#12=#25
-IF[#17EQ#0]THEN#17=10.
+#175=1. (mm per program unit: 25.4 after G20)
+IF[#4006EQ20]THEN#175=25.4
+IF[#17EQ#0]THEN#17=10./#175
 #14=#[5000+#10] (the nominal centre: the start)
 G65 P9752 A#10 D#12 Z#26 R#18 Q#17
 #135=#0
