@@ -1,15 +1,16 @@
 %
 O14 (THE CYCLES WITH A REAL PROBE: WITHIN THE LATCH BOUND)
 (part_real.scene.toml: 4 um pre-travel, 3-lobed lobing of 2 um, 0.5 um)
-(1 sigma scatter. #550 = 0.996: the ball's radius less the pre-travel, as)
-(a calibration on a ring gauge would give it. O9801 first calibrates H20)
-(on the top face, G54 Z-0.37, which takes the Z pre-travel into H20. Then)
+(1 sigma scatter. O9801 first calibrates H20 on the top face, G54)
+(Z-0.37, which takes the Z pre-travel into H20; O9802 then takes the)
+(ball's effective radius #550 from the 40 mm bore as a ring gauge: 1)
+(less the 4 um pre-travel less the mean lobing of its touches, 1 um,)
+(#117 = 0.995 within 1.5 um. Then)
 (each wall reads within the lobing + 5 sigma = 4.5 um of its place: a)
 (centre or a corner's wall within 4.5 um, a size within 9 um, the top)
 (face within 2 x 5 sigma = 5 um, of the ideal probe's values in the)
 (other cases.)
 N10 G21 G90 G17 G40 G49 G80 G54
-N20 #550=0.996
 N30 G53 G0 Z0
 N40 G43 H20 G0 X20. Y-20.
 N50 G65 P9810 Z5. F3000.
@@ -20,6 +21,8 @@ N90 #101=#137
 N100 G65 P9810 Z50.
 N110 G0 X0 Y0
 N120 G65 P9810 Z-10.
+N125 G65 P9802 D40. Q5.
+N127 #117=#550
 N130 G65 P9814 D40. Q5.
 N140 #102=#135
 N150 #103=#136
