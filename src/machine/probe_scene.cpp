@@ -56,21 +56,6 @@ ProbeScene::ProbeScene(const Probing& spec, const config::MachineConfig& m)
   senses_ = probe_ || setter_ || !gauges_.empty() || !material_.empty() || !stock_.empty();
 }
 
-geo::Vec3 ProbeScene::point(const AxisVec& p) const noexcept {
-  return geo::Vec3{ix_ >= 0 ? p[ix_] : 0.0, iy_ >= 0 ? p[iy_] : 0.0, iz_ >= 0 ? p[iz_] : 0.0};
-}
-
-geo::Vec3 ProbeScene::ball_at(const AxisVec& machine) const noexcept {
-  geo::Vec3 b = point(machine);
-  if (spec_.probe) b.z -= spec_.probe->length;
-  return b;
-}
-
-geo::Column ProbeScene::tool_column(const ToolSpec& t, const AxisVec& machine) const noexcept {
-  const geo::Vec3 p = point(machine);
-  return geo::Column{p.x, p.y, t.radius, p.z - t.length, p.z};
-}
-
 // An edge at the start of the period (a tool change, a switch).
 constexpr double kAtOnce = 1e-9;
 
@@ -89,6 +74,7 @@ void ProbeScene::reset(const AxisVec& actual) noexcept {
   cutting_ = settling_ = cuts_now_ = false;
   edge_count_ = 0;
   touch_on_ = false;
+  column_anchor_clear_ = -1.0;
   pending_tool_.reset();
   pending_power_.reset();
   powered_ = !(spec_.probe && spec_.probe->on_m != 0);
@@ -115,6 +101,7 @@ void ProbeScene::reset(const AxisVec& actual) noexcept {
 void ProbeScene::change_tool(const AxisVec& at) noexcept {
   spindle_tool_ = *pending_tool_;
   pending_tool_.reset();
+  column_anchor_clear_ = -1.0;
   if (probe_) {
     bool now = false;
     if (probe_in_spindle()) {
@@ -173,7 +160,11 @@ void ProbeScene::advance_sensors(const AxisVec& before, const AxisVec& after) no
   }
   if (touch_on_) touch_at_ = lerp(before, after, touch_frac_);
   cuts_now_ = cut_stock(before, after);
-  check_crash(before, after);
+  // Most periods: no fault yet and nothing pressed beyond its overtravel.
+  if (fault_.kind != PlantFault::Kind::kNone || (probe_ && probe_->overshoot() > 0.0) ||
+      (setter_ && setter_->overshoot() > 0.0)) {
+    check_crash(before, after);
+  }
   check_collision(before, after);
 }
 
@@ -260,7 +251,7 @@ void ProbeScene::check_collision(const AxisVec& before, const AxisVec& after) no
            (stock_hits && stock_.column_hits(col, kCollisionTol));
   };
   geo::Column c;
-  if (!column_at(after, c) || !hits(c)) return;
+  if (!column_at(after, c) || column_clear(c) || !hits(c)) return;
   const int part = material_.column_hits(c, kCollisionTol);
   const double t = first_true([&](double s) {
     geo::Column cs;
@@ -273,6 +264,28 @@ void ProbeScene::check_collision(const AxisVec& before, const AxisVec& after) no
   fault_.stock = part < 0;
   const ToolSpec* tool = tool_in_spindle();
   fault_.tool = tool != nullptr ? tool->number : -1;
+}
+
+// The column lies inside the sphere about its middle of radius
+// sqrt(half height^2 + radius^2); a point moved by s from the anchor has a
+// clearance of at least the anchor's less s (Material::clearance is a lower
+// bound of the distance to the parts' bounding boxes; the stock's likewise,
+// and cutting only removes stock). Parts on a turning table have none.
+bool ProbeScene::column_clear(const geo::Column& c) noexcept {
+  constexpr double kSpare = 1e-6;  // mm
+  const double h = 0.5 * (c.top - c.bottom);
+  const double need = std::sqrt(h * h + c.radius * c.radius) + kCollisionTol + kSpare;
+  const geo::Vec3 mid{c.x, c.y, c.bottom + h};
+  const auto holds = [&] {
+    const double m = column_anchor_clear_ - need;
+    const geo::Vec3 d = mid - column_anchor_;
+    return m > 0.0 && geo::dot(d, d) < m * m;
+  };
+  if (column_anchor_clear_ >= 0.0 && holds()) return true;
+  column_anchor_ = mid;
+  column_anchor_clear_ = material_.clearance(mid);
+  if (!stock_.empty()) column_anchor_clear_ = std::min(column_anchor_clear_, stock_.clearance(mid));
+  return holds();
 }
 
 }  // namespace skipnc::machine

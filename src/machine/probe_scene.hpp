@@ -115,12 +115,23 @@ class ProbeScene {
   const SetterSensor* setter() const noexcept { return setter_ ? &*setter_ : nullptr; }
   const std::vector<GaugeSensor>& gauges() const noexcept { return gauges_; }
 
-  // A machine position's X, Y, Z (0 for an axis the machine lacks).
-  geo::Vec3 point(const AxisVec& machine) const noexcept;
+  // A machine position's X, Y, Z (0 for an axis the machine lacks). Inline:
+  // the sensors ask for it several times a period.
+  geo::Vec3 point(const AxisVec& machine) const noexcept {
+    return geo::Vec3{ix_ >= 0 ? machine[ix_] : 0.0, iy_ >= 0 ? machine[iy_] : 0.0,
+                     iz_ >= 0 ? machine[iz_] : 0.0};
+  }
   // Where the ball centre is for a machine position.
-  geo::Vec3 ball_at(const AxisVec& machine) const noexcept;
+  geo::Vec3 ball_at(const AxisVec& machine) const noexcept {
+    geo::Vec3 b = point(machine);
+    if (spec_.probe) b.z -= spec_.probe->length;
+    return b;
+  }
   // The tool's column for a machine position (tool in the spindle).
-  geo::Column tool_column(const ToolSpec& t, const AxisVec& machine) const noexcept;
+  geo::Column tool_column(const ToolSpec& t, const AxisVec& machine) const noexcept {
+    const geo::Vec3 p = point(machine);
+    return geo::Column{p.x, p.y, t.radius, p.z - t.length, p.z};
+  }
 
  private:
   // advance() after its bookkeeping: tool change and the sensors.
@@ -141,6 +152,10 @@ class ProbeScene {
   void apply_power() noexcept;
   void change_tool(const AxisVec& at) noexcept;
   void check_collision(const AxisVec& before, const AxisVec& after) noexcept;
+  // True when the column cannot touch a part or the stock: its bounding
+  // sphere is inside the clearance of an anchor point it has not left (as
+  // TouchProbe::far_from_material does for the ball).
+  bool column_clear(const geo::Column& c) noexcept;
   // Whether the tool cuts in this period; if so, the stock it passes through
   // is removed.
   bool cut_stock(const AxisVec& before, const AxisVec& after) noexcept;
@@ -169,6 +184,10 @@ class ProbeScene {
   // Something to sense or to hit: a probe, a setter, gauges or parts.
   bool senses_ = false;
   double touch_frac_ = 1.0;
+  // column_clear's anchor and its clearance (< 0: none; reset when what is in
+  // the spindle changes).
+  geo::Vec3 column_anchor_;
+  double column_anchor_clear_ = -1.0;
   AxisVec touch_at_;
   PlantFault fault_;
 };
