@@ -1,4 +1,4 @@
-#include "machine/scene_actions.hpp"
+#include "machine/scene_toml.hpp"
 
 #include <algorithm>
 
