@@ -213,8 +213,9 @@ def run(program=None, *, program_text=None, machine="mill3", scene=None, dialect
         "#<name>"; --var).
     trace: the trace's columns in Run.trace (--trace).
     strict: a warning is an alarm (--strict).
-    expect: "#140=-3+-0.01", "status=completed", "alarm=3001", or a list
-        (--expect): failures in Run.failed, exit_code 3.
+    expect: "#140=-3+-0.01", "status=completed", "alarm=3001" (or the alarm's
+        code or key), or a list (--expect): failures in Run.failed, exit_code 3,
+        every verdict in Run.report["expectations"].
     repeat, seed: N runs with the probe's scatter and one without, from seed
         `seed` (--repeat N --seed S); Run.report is then their statistics.
     plot: a file or a list of files, .svg or .html: pictures of the run (--plot).

@@ -159,6 +159,18 @@ def test_expectations_as_the_cli_checks_them():
     # An expected alarm holds: exit status 0 (no feed: the alarm on line 5).
     alarm = skipnc.run(TOUCH, scene=scene, expect=["status=alarm"])
     assert alarm.report["status"] == "alarm" and alarm.exit_code == 0
+    # The alarm by the dialect's code or by its key, as --expect takes it, and
+    # the report's checks as the CLI's --report gives them.
+    for name in ("PS0011", "skip_no_feed"):
+        coded = skipnc.run(TOUCH, scene=scene, expect=["alarm=" + name])
+        assert coded.exit_code == 0 and coded.failed == []
+        (check,) = coded.report["expectations"]
+        assert check["expect"] == "alarm=" + name and check["pass"] is True
+        assert check["value"] == "PS0011"
+    wrong = skipnc.run(TOUCH, scene=scene, expect=["alarm=PS0003"])
+    assert wrong.exit_code == 3 and wrong.report["expectations"][0]["pass"] is False
+    with pytest.raises(skipnc.StartError, match="no alarm of the fanuc dialect"):
+        skipnc.run(TOUCH, scene=scene, expect=["alarm=PS9999"])
     with pytest.raises(skipnc.StartError, match="--expect '#140~3'"):
         skipnc.run(TOUCH, scene=scene, expect=["#140~3"])
 

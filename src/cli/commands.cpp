@@ -19,16 +19,16 @@
 #include "report/report.hpp"
 #include "run/expect.hpp"
 #include "run/plot.hpp"
+#include "run/scenario.hpp"
 #include "run/session.hpp"
 #include "sim/simulator.hpp"
 
 namespace skipnc::cli {
 namespace {
 
-// The --expect parser is the run library's: `sweep` specs use the same one.
-using run::check_expectation;
+// The --expect parser and checks are the run library's: `sweep` specs and
+// the Python module use the same ones.
 using run::Expectation;
-using run::ObservedRun;
 using run::parse_expectation;
 
 // Outputs that go to standard output move the summary to standard error.
@@ -113,33 +113,6 @@ void print_summary(std::FILE* f, const sim::RunResult& r, const run::Session& s,
   fmt::print(f, "  final position {}\n", fmt_axes(r.final_work, m));
 }
 
-// Each --expect against what the run gave (the report's "expectations").
-std::vector<report::CheckResult> check_expectations(const std::vector<run::Expectation>& expects,
-                                                    const std::vector<run::VarRef>& expect_vars,
-                                                    const sim::RunResult& r, sim::Simulator& sim,
-                                                    const config::Dialect& d) {
-  run::ObservedRun got;
-  got.status = r.status == sim::RunStatus::kCompleted     ? "completed"
-               : r.status == sim::RunStatus::kInterrupted ? "interrupted"
-                                                          : "alarm";
-  if (r.alarm) {
-    const report::AlarmView v = report::view_alarm(*r.alarm, &d);
-    got.alarm = v.number;
-    got.alarm_code = v.code;
-    got.alarm_key = std::string(alarm_key(r.alarm->id));
-  }
-  for (const auto& v : expect_vars) {
-    Result<interp::Value> val = v.name.empty() ? sim.interpreter()->read_variable(v.number)
-                                               : sim.interpreter()->read_named(v.name);
-    std::optional<double> x;
-    if (val && !val->vacant) x = val->v;
-    got.variables.emplace_back(v.key, x);
-  }
-  std::vector<report::CheckResult> out;
-  for (const auto& e : expects) out.push_back(run::evaluate_expectation(e, got));
-  return out;
-}
-
 // The JUnit test cases of a run: one per --expect; without any, one that
 // passes when the run completed.
 std::vector<JunitCase> run_cases(const RunArgs& a, const report::ReportInput& in,
@@ -162,73 +135,49 @@ std::vector<JunitCase> run_cases(const RunArgs& a, const report::ReportInput& in
   return cases;
 }
 
-struct Outcome {
-  int code = 0;
-  sim::RunResult result;
+// The --var and --expect arguments, read before the run: a bad one stops
+// the start.
+struct RunChecks {
+  std::vector<run::VarRef> vars;
+  std::vector<run::Expectation> expects;
 };
 
-// Runs a loaded session; writes report and trace. Returns the exit code.
-int execute(const RunArgs& a, run::Session& s, interp::Setup setup, bool explain) {
-  std::vector<run::VarRef> vars;
+Result<RunChecks> read_checks(const RunArgs& a, const run::Session& s) {
+  RunChecks c;
   for (const auto& v : a.vars) {
     auto r = run::parse_var_ref(v);
-    if (!r) return start_failure(a, r.error(), &s);
-    vars.push_back(*r);
+    if (!r) return std::unexpected(r.error());
+    c.vars.push_back(*r);
   }
-  std::vector<run::Expectation> expects;
-  std::vector<run::VarRef> expect_vars;
   for (const auto& text : a.expect) {
     auto e = run::parse_expectation(text);
-    if (!e) return start_failure(a, e.error(), &s);
-    if (auto n = run::check_alarm_name(*e, s.dialect); !n) return start_failure(a, n.error(), &s);
+    if (!e) return std::unexpected(e.error());
+    if (auto n = run::check_alarm_name(*e, s.dialect); !n) return std::unexpected(n.error());
     if (e->kind == run::Expectation::Kind::kVariable) {
-      auto r = run::parse_var_ref("#" + e->var);
-      if (!r) return start_failure(a, r.error(), &s);
-      expect_vars.push_back(*r);
+      // Read after the run by run::check_outcome.
+      if (auto r = run::parse_var_ref("#" + e->var); !r) return std::unexpected(r.error());
     }
-    expects.push_back(*e);
+    c.expects.push_back(*e);
   }
-  if (auto c = run::check_plot_files(a.plot); !c) return start_failure(a, c.error(), &s);
-  if (auto c = check_outputs(a, s); !c) return start_failure(a, c.error(), &s);
-  std::unique_ptr<report::CsvTrace> trace;
-  if (!a.trace.empty()) {
-    trace = std::make_unique<report::CsvTrace>(a.trace, s.machine, nullptr);
-    trace->every(a.trace_every);
-    auto o = trace->open();
-    if (!o) return start_failure(a, o.error(), &s);
-    // A trace that cannot go on (a full disk, a closed pipe, its size
-    // limit) stops the run.
-    trace->on_stop([] { run_stop().request(StopReason::kOutput); });
-  }
-  sim::Simulator sim(s.machine, s.dialect, *s.params, s.scene);
-  sim::RunOptions opts;
-  opts.trace = trace.get();
-  opts.interrupt = &run_stop().flag;
-  std::unique_ptr<run::PlotCapture> plot;
-  if (!a.plot.empty()) plot = std::make_unique<run::PlotCapture>(s.machine, opts);
-  std::optional<Watchdog> watchdog;
-  watchdog.emplace(Watchdog::Options{s.machine.limits.max_cpu_s, a.progress,
-                                     ::isatty(STDERR_FILENO) != 0 && !a.quiet && !explain});
-  opts.progress = [&](double t, std::uint32_t line) { watchdog->update(t, line); };
-  auto res = sim.run(setup, opts);
-  watchdog.reset();
-  if (!res) return start_failure(a, res.error(), &s);
-  explain_stop(*res, trace.get(), s.machine);
-  report::ReportInput in;
-  in.program = a.program;
-  in.dialect = s.dialect.name;
-  in.machine = &s.machine;
-  in.dialect_table = &s.dialect;
-  in.result = std::move(*res);
-  for (const auto& v : vars) {
-    Result<interp::Value> val = v.name.empty() ? sim.interpreter()->read_variable(v.number)
-                                               : sim.interpreter()->read_named(v.name);
-    std::optional<double> out;
-    if (val && !val->vacant) out = val->v;
-    in.variables.emplace_back(v.key, out);
-  }
-  // An output that could not be written is an alarm of the run, in the
-  // report too (before, a full disk left "completed").
+  return c;
+}
+
+// The --trace file, open (none without --trace). A trace that cannot go on
+// (a full disk, a closed pipe, its size limit) stops the run.
+Result<std::unique_ptr<report::CsvTrace>> open_trace(const RunArgs& a, const run::Session& s) {
+  if (a.trace.empty()) return nullptr;
+  auto trace = std::make_unique<report::CsvTrace>(a.trace, s.machine, nullptr);
+  trace->every(a.trace_every);
+  if (auto o = trace->open(); !o) return std::unexpected(o.error());
+  trace->on_stop([] { run_stop().request(StopReason::kOutput); });
+  return trace;
+}
+
+// The end of the trace and the pictures. An output that could not be
+// written is an alarm of the run, in the report too (before, a full disk left
+// "completed"). Returns whether one failed.
+bool finish_outputs(const RunArgs& a, const run::Session& s, const interp::Setup& setup,
+                    report::CsvTrace* trace, run::PlotCapture* plot, report::ReportInput& in) {
   bool output_failed = false;
   auto output_error = [&](const Error& e) {
     std::cerr << "skipnc: " << e.detail << "\n";
@@ -238,31 +187,24 @@ int execute(const RunArgs& a, run::Session& s, interp::Setup setup, bool explain
       in.result.alarm = e;
     }
   };
-  if (trace) {
+  if (trace != nullptr) {
     if (auto f = trace->finish(); !f) output_error(f.error());
   }
-  if (plot) {
+  if (plot != nullptr) {
     const std::string text =
         setup.program_path.empty() ? setup.program_text : run::read_program_text(a.program);
     if (auto w = plot->write(a.plot, s, in.result, {a.program, text, in.variables}); !w) {
       output_error(w.error());
     }
   }
-  int rc = in.result.status == sim::RunStatus::kCompleted && !output_failed ? 0 : 1;
-  // --expect: checked on the run's outcome; variables as the control holds them.
-  std::vector<std::string> failed;
-  if (!expects.empty()) {
-    in.expectations = check_expectations(expects, expect_vars, in.result, sim, s.dialect);
-    bool outcome_expected = false;
-    for (const auto& e : expects) outcome_expected |= e.kind != run::Expectation::Kind::kVariable;
-    for (const auto& c : in.expectations) {
-      if (!c.pass) failed.push_back(c.message);
-    }
-    // The run's outcome was asked for and held: an expected alarm is a pass
-    // (an output that could not be written still fails).
-    if (outcome_expected && failed.empty() && !output_failed) rc = 0;
-    if (!failed.empty()) rc = 3;
-  }
+  return output_failed;
+}
+
+// After the run and its checks: the JUnit file, the report, the summary and
+// the failed checks. Returns the exit code (`rc`, or 1 for an output that
+// could not be written).
+int conclude(const RunArgs& a, const run::Session& s, report::ReportInput& in, std::size_t expects,
+             int rc, bool explain) {
   if (!a.junit.empty()) {
     auto j = write_junit(a.junit, a.program, in.result.time_s, run_cases(a, in, s.dialect));
     if (!j) {
@@ -279,11 +221,50 @@ int execute(const RunArgs& a, run::Session& s, interp::Setup setup, bool explain
     std::cerr << "skipnc: " << run::describe(*in.result.alarm, &s.dialect) << "\n";
   in.result.variables = in.variables;  // the summary prints them too
   if (!a.quiet) print_summary(out, in.result, s, a.program);
-  for (const auto& why : failed) std::cerr << "skipnc: " << why << "\n";
-  if (!expects.empty() && failed.empty() && !a.quiet) {
-    fmt::print(out, "  {} expectation{} held\n", expects.size(), expects.size() == 1 ? "" : "s");
+  bool held = true;
+  for (const auto& c : in.expectations) {
+    if (!c.pass) std::cerr << "skipnc: " << c.message << "\n";
+    held = held && c.pass;
+  }
+  if (expects > 0 && held && !a.quiet) {
+    fmt::print(out, "  {} expectation{} held\n", expects, expects == 1 ? "" : "s");
   }
   return rc;
+}
+
+// Runs a loaded session; writes report and trace. Returns the exit code.
+int execute(const RunArgs& a, run::Session& s, interp::Setup setup, bool explain) {
+  auto checks = read_checks(a, s);
+  if (!checks) return start_failure(a, checks.error(), &s);
+  if (auto c = run::check_plot_files(a.plot); !c) return start_failure(a, c.error(), &s);
+  if (auto c = check_outputs(a, s); !c) return start_failure(a, c.error(), &s);
+  auto trace = open_trace(a, s);
+  if (!trace) return start_failure(a, trace.error(), &s);
+  sim::Simulator sim(s.machine, s.dialect, *s.params, s.scene);
+  sim::RunOptions opts;
+  opts.trace = trace->get();
+  opts.interrupt = &run_stop().flag;
+  std::unique_ptr<run::PlotCapture> plot;
+  if (!a.plot.empty()) plot = std::make_unique<run::PlotCapture>(s.machine, opts);
+  std::optional<Watchdog> watchdog;
+  watchdog.emplace(Watchdog::Options{s.machine.limits.max_cpu_s, a.progress,
+                                     ::isatty(STDERR_FILENO) != 0 && !a.quiet && !explain});
+  opts.progress = [&](double t, std::uint32_t line) { watchdog->update(t, line); };
+  auto res = sim.run(setup, opts);
+  watchdog.reset();
+  if (!res) return start_failure(a, res.error(), &s);
+  explain_stop(*res, trace->get(), s.machine);
+  report::ReportInput in = run::report_input(s, a.program, std::move(*res));
+  in.variables = run::read_variables(*sim.interpreter(), checks->vars);
+  const bool output_failed = finish_outputs(a, s, setup, trace->get(), plot.get(), in);
+  // --expect: checked on the run's outcome; variables as the control holds them.
+  if (!checks->expects.empty()) {
+    auto verdicts = run::check_outcome(s.dialect, checks->expects, in.result, *sim.interpreter());
+    if (!verdicts) return start_failure(a, verdicts.error(), &s);
+    in.expectations = std::move(*verdicts);
+  }
+  const int rc = run::exit_code(in.result.status, output_failed, checks->expects, in.expectations);
+  return conclude(a, s, in, checks->expects.size(), rc, explain);
 }
 
 interp::Setup make_setup(const RunArgs& a, run::Session& s) {
@@ -454,14 +435,104 @@ void print_g38_dialect(const config::Dialect& d, const std::string& inputs,
              sw.probe_same_point_all ? " (every G38)" : " (G38.2, G38.4)");
 }
 
+// A parameter as `dialects` names it: "6240 skip feed" ("?" when the
+// dialect has none of that number).
+std::string param_text(const config::Dialect& d, int n) {
+  const config::ParamDef* p = d.param(n);
+  return p == nullptr ? std::string("?") : fmt::format("{} {}", n, p->name);
+}
+
+// How a G31 dialect selects and detects its skip signal.
+void print_skip_signal(const config::Dialect& d, const std::string& inputs) {
+  using config::SkipPMode;
+  const auto& sw = d.sw;
+  const int last = sw.skip_p_first + sw.skip_p_count - 1;
+  fmt::print("  P word      {}\n",
+             sw.skip_p_mode == SkipPMode::kMultiStep
+                 ? fmt::format("multi-step skip P{}-P{}", sw.skip_p_first, last)
+             : sw.skip_p_mode == SkipPMode::kSelect
+                 ? fmt::format("selects skip input P{}-P{} (no P: input 1)", sw.skip_p_first, last)
+             : sw.skip_p_mode == SkipPMode::kBitmask
+                 ? fmt::format("bit mask of inputs 1-{}: P1-P{}", sw.skip_p_count,
+                               (1 << sw.skip_p_count) - 1)
+                 : std::string("none"));
+  fmt::print("  inputs      {}{}\n", inputs,
+             d.param(config::param::kSkipAddressing) != nullptr
+                 ? " (fixed; 3008#2 = 1: parameters 3012, 3020-3025)"
+                 : "");
+  fmt::print("  detection   {}\n",
+             sw.skip_edge_rising_only ? std::string("rising edge only")
+             : sw.skip_signal_param != 0
+                 ? fmt::format("parameter {} (#0 level/edge, #1 polarity)", sw.skip_signal_param)
+                 : std::string("level, active high"));
+  fmt::print("  at start    {}\n", sw.skip_edge_rising_only ? "waits for a new edge"
+                                   : sw.skip_active_at_start_ends
+                                       ? "ends the block at once (level detection)"
+                                       : "waits for a new edge");
+}
+
+// How a G31 dialect's skip block moves, stops and misses.
+void print_skip_motion(const config::Dialect& d) {
+  using config::SkipAccel;
+  using config::SkipFeedRule;
+  using config::SkipOverride;
+  const auto& sw = d.sw;
+  fmt::print("  feed        {}\n",
+             sw.skip_feed == SkipFeedRule::kModal ? std::string("F, else modal F")
+             : sw.skip_feed == SkipFeedRule::kBlockOrParam
+                 ? "F, else " + param_text(d, sw.skip_feed_param) + "; modal F not updated"
+             : sw.skip_feed == SkipFeedRule::kParamSwitch
+                 ? param_text(d, sw.skip_feed_switch_param) +
+                       " = 0: F or modal F; 1: " + param_text(d, sw.skip_feed_param)
+                 : std::string("F, else the last non-rapid feed"));
+  fmt::print("  override    {}; acc/dec {}\n",
+             sw.skip_override == SkipOverride::kSkfParam ? "SKF (6200#7)"
+             : sw.skip_override == SkipOverride::kFixed  ? "fixed 100 % (0 % stops), no dry run"
+                                                         : "as G01",
+             sw.skip_accel == SkipAccel::kSkfParam ? "SKF (6200#7)"
+             : sw.skip_accel == SkipAccel::kNever  ? "none"
+                                                   : "as G01");
+  fmt::print("  stop        {}\n",
+             sw.skip_stop == canon::SkipStop::kImmediate ? "immediate" : "linear deceleration");
+  fmt::print("  miss        {}\n",
+             sw.skip_k_word ? "K1 alarm, K0 none; K omitted: " + param_text(d, sw.skip_miss_param)
+                            : std::string("completes normally"));
+  fmt::print("  torque skip {}\n", sw.torque_skip
+                                       ? "P98/P99, Q or " + param_text(d, sw.torque_q_param) +
+                                             ", delay " + param_text(d, sw.torque_delay_param)
+                                       : std::string("no"));
+}
+
+// A G31 dialect's other skip rules, its result variables and its alarms.
+template <class AlarmText>
+void print_skip_rest(const config::Dialect& d, const AlarmText& alarm) {
+  const auto& sw = d.sw;
+  std::string other;
+  for (const auto& [on, text] :
+       {std::pair{sw.skip_g53_allowed, "G31 G53: target in machine coordinates"},
+        std::pair{sw.skip_ignored_when_locked, "skip ignored in machine lock / Z-axis cancel"},
+        std::pair{!sw.skip_ignored_when_locked && !sw.skip_locked_stores_command,
+                  "a skip in machine lock stores where the machine stands"},
+        std::pair{sw.tool_position_offset, "G45-G48 tool offsets enter #5061.."},
+        std::pair{sw.skip_requires_axis, "G31 without an axis word is a format error"},
+        std::pair{!d.handshake.empty(), "PLC handshake in the trace"}}) {
+    if (on) other += (other.empty() ? "" : "; ") + std::string(text);
+  }
+  fmt::print("  other       {}\n", other.empty() ? "-" : other);
+  fmt::print("  results     {}{}\n",
+             d.skip_vars.work_base != 0 ? fmt::format("#{}.. ", d.skip_vars.work_base) : "",
+             d.skip_vars.named_local.empty()
+                 ? std::string()
+                 : "#<" + d.skip_vars.named_machine + "X> #<" + d.skip_vars.named_local + "X>");
+  fmt::print("  alarms      radius comp {}; no feed {}; P {}; format {}\n",
+             alarm(AlarmId::kSkipInCutterComp), alarm(AlarmId::kSkipNoFeed),
+             alarm(AlarmId::kSkipBadP), alarm(AlarmId::kSkipSyntax));
+}
+
 }  // namespace
 
 // One line per skip feature that differs between the dialects.
 int dialects_command() {
-  using config::SkipAccel;
-  using config::SkipFeedRule;
-  using config::SkipOverride;
-  using config::SkipPMode;
   for (const auto& name : config::builtin_dialect_names()) {
     auto d = config::builtin_dialect(name);
     if (!d) {
@@ -469,10 +540,6 @@ int dialects_command() {
       continue;
     }
     const auto& sw = d->sw;
-    auto param = [&](int n) {
-      const config::ParamDef* p = d->param(n);
-      return p == nullptr ? std::string("?") : fmt::format("{} {}", n, p->name);
-    };
     auto alarm = [&](AlarmId id) {
       const config::AlarmText& a = d->alarm(id);
       return fmt::format("{} {}", a.code, a.message);
@@ -481,7 +548,6 @@ int dialects_command() {
     for (const auto& a : d->fixed_skip_inputs) {
       inputs += (inputs.empty() ? "" : " ") + config::signal_name(a);
     }
-    const int last = sw.skip_p_first + sw.skip_p_count - 1;
     fmt::print("{:<11} {}\n", d->name, d->title);
     fmt::print("  language    {}\n",
                sw.language == config::Language::kRs274ngc
@@ -493,72 +559,9 @@ int dialects_command() {
       print_g38_dialect(*d, inputs, alarm);
       continue;
     }
-    fmt::print(
-        "  P word      {}\n",
-        sw.skip_p_mode == SkipPMode::kMultiStep
-            ? fmt::format("multi-step skip P{}-P{}", sw.skip_p_first, last)
-        : sw.skip_p_mode == SkipPMode::kSelect
-            ? fmt::format("selects skip input P{}-P{} (no P: input 1)", sw.skip_p_first, last)
-        : sw.skip_p_mode == SkipPMode::kBitmask
-            ? fmt::format("bit mask of inputs 1-{}: P1-P{}", sw.skip_p_count,
-                          (1 << sw.skip_p_count) - 1)
-            : std::string("none"));
-    fmt::print("  inputs      {}{}\n", inputs,
-               d->param(config::param::kSkipAddressing) != nullptr
-                   ? " (fixed; 3008#2 = 1: parameters 3012, 3020-3025)"
-                   : "");
-    fmt::print("  detection   {}\n",
-               sw.skip_edge_rising_only ? std::string("rising edge only")
-               : sw.skip_signal_param != 0
-                   ? fmt::format("parameter {} (#0 level/edge, #1 polarity)", sw.skip_signal_param)
-                   : std::string("level, active high"));
-    fmt::print("  at start    {}\n", sw.skip_edge_rising_only ? "waits for a new edge"
-                                     : sw.skip_active_at_start_ends
-                                         ? "ends the block at once (level detection)"
-                                         : "waits for a new edge");
-    fmt::print("  feed        {}\n",
-               sw.skip_feed == SkipFeedRule::kModal ? std::string("F, else modal F")
-               : sw.skip_feed == SkipFeedRule::kBlockOrParam
-                   ? "F, else " + param(sw.skip_feed_param) + "; modal F not updated"
-               : sw.skip_feed == SkipFeedRule::kParamSwitch
-                   ? param(sw.skip_feed_switch_param) +
-                         " = 0: F or modal F; 1: " + param(sw.skip_feed_param)
-                   : std::string("F, else the last non-rapid feed"));
-    fmt::print("  override    {}; acc/dec {}\n",
-               sw.skip_override == SkipOverride::kSkfParam ? "SKF (6200#7)"
-               : sw.skip_override == SkipOverride::kFixed  ? "fixed 100 % (0 % stops), no dry run"
-                                                           : "as G01",
-               sw.skip_accel == SkipAccel::kSkfParam ? "SKF (6200#7)"
-               : sw.skip_accel == SkipAccel::kNever  ? "none"
-                                                     : "as G01");
-    fmt::print("  stop        {}\n",
-               sw.skip_stop == canon::SkipStop::kImmediate ? "immediate" : "linear deceleration");
-    fmt::print("  miss        {}\n",
-               sw.skip_k_word ? "K1 alarm, K0 none; K omitted: " + param(sw.skip_miss_param)
-                              : std::string("completes normally"));
-    fmt::print("  torque skip {}\n", sw.torque_skip ? "P98/P99, Q or " + param(sw.torque_q_param) +
-                                                          ", delay " + param(sw.torque_delay_param)
-                                                    : std::string("no"));
-    std::string other;
-    for (const auto& [on, text] :
-         {std::pair{sw.skip_g53_allowed, "G31 G53: target in machine coordinates"},
-          std::pair{sw.skip_ignored_when_locked, "skip ignored in machine lock / Z-axis cancel"},
-          std::pair{!sw.skip_ignored_when_locked && !sw.skip_locked_stores_command,
-                    "a skip in machine lock stores where the machine stands"},
-          std::pair{sw.tool_position_offset, "G45-G48 tool offsets enter #5061.."},
-          std::pair{sw.skip_requires_axis, "G31 without an axis word is a format error"},
-          std::pair{!d->handshake.empty(), "PLC handshake in the trace"}}) {
-      if (on) other += (other.empty() ? "" : "; ") + std::string(text);
-    }
-    fmt::print("  other       {}\n", other.empty() ? "-" : other);
-    fmt::print("  results     {}{}\n",
-               d->skip_vars.work_base != 0 ? fmt::format("#{}.. ", d->skip_vars.work_base) : "",
-               d->skip_vars.named_local.empty()
-                   ? std::string()
-                   : "#<" + d->skip_vars.named_machine + "X> #<" + d->skip_vars.named_local + "X>");
-    fmt::print("  alarms      radius comp {}; no feed {}; P {}; format {}\n",
-               alarm(AlarmId::kSkipInCutterComp), alarm(AlarmId::kSkipNoFeed),
-               alarm(AlarmId::kSkipBadP), alarm(AlarmId::kSkipSyntax));
+    print_skip_signal(*d, inputs);
+    print_skip_motion(*d);
+    print_skip_rest(*d, alarm);
   }
   return 0;
 }
@@ -613,12 +616,7 @@ bool write_demo_outputs(const RunArgs& a, const run::Session& s, const sim::RunR
                         const std::function<double(int)>& var) {
   bool ok = true;
   if (!a.report.empty()) {
-    report::ReportInput in;
-    in.program = a.program;
-    in.dialect = s.dialect.name;
-    in.machine = &s.machine;
-    in.dialect_table = &s.dialect;
-    in.result = r;
+    report::ReportInput in = run::report_input(s, a.program, r);
     for (int n : kDemoVariables) in.variables.emplace_back(std::to_string(n), var(n));
     ok &= write_report(a, report::to_json(in));
   }

@@ -43,12 +43,8 @@ void test_throw() {
   if (w == "int") throw 42;
 }
 
-int run_main(int argc, char** argv, Parsed& p) {
-  CLI::App app{"skipnc: a CNC kernel and simulated machine built around the G31 skip function"};
-  app.require_subcommand(1);
-  app.set_version_flag("--version", "skipnc 0.1.0");
-
-  auto& run_args = p.run;
+// skipnc run PROGRAM ... (spec/cli.md).
+CLI::App* add_run(CLI::App& app, skipnc::cli::RunArgs& run_args) {
   auto* run = app.add_subcommand("run", "run a part program on a simulated machine");
   run->add_option("program", run_args.program, "part program file (-: standard input)")->required();
   run->add_option("-m,--machine", run_args.machine, "machine file or built-in machine (mill3)");
@@ -83,8 +79,11 @@ int run_main(int argc, char** argv, Parsed& p) {
       ->check(CLI::Range(1, 1000000));
   run->add_option("--seed", run_args.seed, "first seed of the --repeat runs (default: the scene's)")
       ->check(CLI::Range(0LL, 9000000000000000000LL));
+  return run;
+}
 
-  auto& canon_args = p.canon;
+// skipnc canon PROGRAM ...
+CLI::App* add_canon(CLI::App& app, skipnc::cli::RunArgs& canon_args) {
   auto* canon = app.add_subcommand("canon", "print the canonical command stream, without motion");
   canon->add_option("program", canon_args.program, "part program file (-: standard input)")
       ->required();
@@ -94,15 +93,21 @@ int run_main(int argc, char** argv, Parsed& p) {
   canon->add_option("-I,--include", canon_args.include, "subprogram folder (repeatable)");
   canon->add_flag("--strict", canon_args.strict, "a warning is an alarm (SN9076 strict_warning)");
   canon->add_option("--allow", canon_args.allow, "under --strict, warning CODE stays a warning");
+  return canon;
+}
 
-  auto& demo_args = p.demo;
+// skipnc demo ...
+CLI::App* add_demo(CLI::App& app, skipnc::cli::RunArgs& demo_args) {
   auto* demo = app.add_subcommand("demo", "run the built-in probing demo and explain it");
   demo->add_option("--report", demo_args.report, "also write the JSON report here");
   demo->add_option("--trace", demo_args.trace, "also write the per-cycle CSV trace here");
   demo->add_option("--plot", demo_args.plot, "also write pictures: FILE.svg and/or FILE.html");
   demo->add_flag("-q,--quiet", demo_args.quiet, "no explanation on standard output");
+  return demo;
+}
 
-  auto& plot_args = p.plot;
+// skipnc plot PROGRAM ...
+CLI::App* add_plot(CLI::App& app, skipnc::cli::RunArgs& plot_args) {
   auto* plot =
       app.add_subcommand("plot", "run a program and draw it: SVG and an offline HTML page");
   plot->add_option("program", plot_args.program, "part program file")->required();
@@ -121,10 +126,11 @@ int run_main(int argc, char** argv, Parsed& p) {
                  "a progress line on standard error every 2 s (also without a terminal)");
   plot->add_flag("--strict", plot_args.strict, "a warning is an alarm (SN9076 strict_warning)");
   plot->add_option("--allow", plot_args.allow, "under --strict, warning CODE stays a warning");
+  return plot;
+}
 
-  auto* dialects = app.add_subcommand("dialects", "list the dialects and what differs");
-
-  auto& sweep_args = p.sweep;
+// skipnc sweep SPEC ...
+CLI::App* add_sweep(CLI::App& app, skipnc::cli::SweepArgs& sweep_args) {
   auto* sweep = app.add_subcommand("sweep", "run a program in N scenarios on all cores");
   sweep->add_option("spec", sweep_args.spec, "sweep spec (TOML)")->required();
   sweep->add_option("--csv", sweep_args.csv,
@@ -138,44 +144,60 @@ int run_main(int argc, char** argv, Parsed& p) {
   sweep->add_option("--seed", sweep_args.seed, "seed of the draws (default: the spec's)")
       ->check(CLI::Range(0LL, static_cast<long long>(skipnc::run::kMaxSeed)));
   sweep->add_flag("-q,--quiet", sweep_args.quiet, "no summary on standard output");
-  auto& show_args = p.show;
+  return sweep;
+}
+
+// skipnc show WHAT [NAME]
+CLI::App* add_show(CLI::App& app, skipnc::cli::ShowArgs& show_args) {
   auto* show = app.add_subcommand("show", "print a built-in file: machine NAME, machines, demo");
   show->add_option("what", show_args.what, "machine, machines or demo")->required();
   show->add_option("name", show_args.name, "the built-in machine's name (mill3, lathe2, ...)");
+  return show;
+}
 
+int run_main(int argc, char** argv, Parsed& p) {
+  CLI::App app{"skipnc: a CNC kernel and simulated machine built around the G31 skip function"};
+  app.require_subcommand(1);
+  app.set_version_flag("--version", "skipnc 0.1.0");
+  CLI::App* run = add_run(app, p.run);
+  CLI::App* canon = add_canon(app, p.canon);
+  CLI::App* demo = add_demo(app, p.demo);
+  CLI::App* plot = add_plot(app, p.plot);
+  auto* dialects = app.add_subcommand("dialects", "list the dialects and what differs");
+  CLI::App* sweep = add_sweep(app, p.sweep);
+  CLI::App* show = add_show(app, p.show);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     const int rc = app.exit(e);
     return rc == 0 ? 0 : 2;
   }
-  for (auto [cmd, args] : {std::pair{run, &run_args}, std::pair{canon, &canon_args},
-                           std::pair{demo, &demo_args}, std::pair{plot, &plot_args}}) {
+  for (auto [cmd, args] : {std::pair{run, &p.run}, std::pair{canon, &p.canon},
+                           std::pair{demo, &p.demo}, std::pair{plot, &p.plot}}) {
     if (cmd->parsed()) p.active = args;
   }
   test_throw();
   if (run->parsed()) {
-    if (auto r = skipnc::cli::read_stdin_program(run_args); !r) {
-      return skipnc::cli::start_failure(run_args, r.error(), nullptr);
+    if (auto r = skipnc::cli::read_stdin_program(p.run); !r) {
+      return skipnc::cli::start_failure(p.run, r.error(), nullptr);
     }
-    return run_args.repeat > 0 ? skipnc::cli::repeat_command(run_args)
-                               : skipnc::cli::run_command(run_args);
+    return p.run.repeat > 0 ? skipnc::cli::repeat_command(p.run) : skipnc::cli::run_command(p.run);
   }
   if (canon->parsed()) {
-    if (auto r = skipnc::cli::read_stdin_program(canon_args); !r) {
-      return skipnc::cli::start_failure(canon_args, r.error(), nullptr);
+    if (auto r = skipnc::cli::read_stdin_program(p.canon); !r) {
+      return skipnc::cli::start_failure(p.canon, r.error(), nullptr);
     }
-    return skipnc::cli::canon_command(canon_args);
+    return skipnc::cli::canon_command(p.canon);
   }
   if (demo->parsed()) {
-    return skipnc::cli::demo_command(demo_args);
+    return skipnc::cli::demo_command(p.demo);
   }
   if (plot->parsed()) {
-    return skipnc::cli::plot_command(plot_args);
+    return skipnc::cli::plot_command(p.plot);
   }
   if (dialects->parsed()) return skipnc::cli::dialects_command();
-  if (sweep->parsed()) return skipnc::cli::sweep_command(sweep_args);
-  if (show->parsed()) return skipnc::cli::show_command(show_args);
+  if (sweep->parsed()) return skipnc::cli::sweep_command(p.sweep);
+  if (show->parsed()) return skipnc::cli::show_command(p.show);
   return 2;
 }
 

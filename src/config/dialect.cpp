@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <vector>
 
 #include "config/toml_util.hpp"
 #include "core/embedded.hpp"
@@ -55,17 +56,19 @@ Result<void> choose(const toml::node& n, std::string_view origin, std::string_vi
   return config_error(n, origin, std::string(key) + " must be one of " + known);
 }
 
-Result<void> load_switches(const toml::table& t, std::string_view origin, Switches& sw) {
-  struct IntKey {
-    std::string_view key;
-    int* out;
-    double lo, hi;
-  };
-  struct BoolKey {
-    std::string_view key;
-    bool* out;
-  };
-  const IntKey ints[] = {
+struct IntKey {
+  std::string_view key;
+  int* out;
+  double lo, hi;
+};
+struct BoolKey {
+  std::string_view key;
+  bool* out;
+};
+
+// The [switches] keys that are whole numbers, with their ranges.
+std::vector<IntKey> int_keys(Switches& sw) {
+  return {
       {"skip_p_first", &sw.skip_p_first, 0, 1},
       {"skip_p_count", &sw.skip_p_count, 1, canon::SkipSpec::kMaxInputs},
       {"skip_miss_param", &sw.skip_miss_param, 0, 99999},
@@ -86,7 +89,11 @@ Result<void> load_switches(const toml::table& t, std::string_view origin, Switch
       {"probe_invert_param", &sw.probe_invert_param, 0, 99999},
       {"call_levels", &sw.call_levels, 0, 1000},
   };
-  const BoolKey bools[] = {
+}
+
+// The [switches] keys that are true or false.
+std::vector<BoolKey> bool_keys(Switches& sw) {
+  return {
       {"skip_k_word", &sw.skip_k_word},
       {"skip_active_at_start_ends", &sw.skip_active_at_start_ends},
       {"skip_edge_rising_only", &sw.skip_edge_rising_only},
@@ -110,6 +117,12 @@ Result<void> load_switches(const toml::table& t, std::string_view origin, Switch
       {"probe_latch_actual", &sw.probe_latch_actual},
       {"probe_same_point_all", &sw.probe_same_point_all},
   };
+}
+
+// The [switches] keys that name one of a few choices; `known` is set when `k`
+// is one of them.
+Result<void> choose_switch(const toml::node& node, std::string_view origin, std::string_view k,
+                           Switches& sw, bool& known) {
   static constexpr Choice<Language> kLanguages[] = {
       {"macro_b", Language::kMacroB}, {"rs274ngc", Language::kRs274ngc}, {"grbl", Language::kGrbl}};
   static constexpr Choice<SkipPMode> kPModes[] = {{"multi_step", SkipPMode::kMultiStep},
@@ -128,9 +141,22 @@ Result<void> load_switches(const toml::table& t, std::string_view origin, Switch
   static constexpr Choice<SkipAccel> kAccels[] = {{"skf_param", SkipAccel::kSkfParam},
                                                   {"never", SkipAccel::kNever},
                                                   {"always", SkipAccel::kAlways}};
+  known = true;
+  if (k == "skip_p_mode") return choose(node, origin, k, kPModes, sw.skip_p_mode);
+  if (k == "skip_stop") return choose(node, origin, k, kStops, sw.skip_stop);
+  if (k == "skip_feed") return choose(node, origin, k, kFeeds, sw.skip_feed);
+  if (k == "skip_override") return choose(node, origin, k, kOverrides, sw.skip_override);
+  if (k == "skip_accel") return choose(node, origin, k, kAccels, sw.skip_accel);
+  if (k == "language") return choose(node, origin, k, kLanguages, sw.language);
+  known = false;
+  return {};
+}
+
+Result<void> load_switches(const toml::table& t, std::string_view origin, Switches& sw) {
+  const std::vector<IntKey> ints = int_keys(sw);
+  const std::vector<BoolKey> bools = bool_keys(sw);
   for (const auto& [key, node] : t) {
     const auto k = key.str();
-    Result<void> r;
     bool known = false;
     for (const auto& e : ints) {
       if (e.key != k) continue;
@@ -149,26 +175,15 @@ Result<void> load_switches(const toml::table& t, std::string_view origin, Switch
       if (!b) return std::unexpected(b.error());
       *e.out = *b;
     }
-    if (k == "skip_p_mode")
-      r = choose(node, origin, k, kPModes, sw.skip_p_mode);
-    else if (k == "skip_stop")
-      r = choose(node, origin, k, kStops, sw.skip_stop);
-    else if (k == "skip_feed")
-      r = choose(node, origin, k, kFeeds, sw.skip_feed);
-    else if (k == "skip_override")
-      r = choose(node, origin, k, kOverrides, sw.skip_override);
-    else if (k == "skip_accel")
-      r = choose(node, origin, k, kAccels, sw.skip_accel);
-    else if (k == "language")
-      r = choose(node, origin, k, kLanguages, sw.language);
-    else if (!known) {
+    if (known) continue;
+    if (auto r = choose_switch(node, origin, k, sw, known); !r) return r;
+    if (!known) {
       std::string list = "skip_p_mode, skip_stop, skip_feed, skip_override, skip_accel, language";
       for (const auto& e : ints) list += ", " + std::string(e.key);
       for (const auto& e : bools) list += ", " + std::string(e.key);
       return config_error(
           node, origin, "unknown key '" + std::string(k) + "' in [switches] (known: " + list + ")");
     }
-    if (!r) return r;
   }
   return {};
 }

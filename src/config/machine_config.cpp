@@ -115,6 +115,7 @@ constexpr void set_count(MachineConfig& m, double v) {
   using T = std::remove_reference_t<decltype(m.limits.*Member)>;
   m.limits.*Member = static_cast<T>(v);
 }
+
 constexpr LimitKey kLimitKeys[] = {
     // simulated seconds (about 3 years), kept as servo periods
     {"max_time_s", 1e-3, 1e8, false,
@@ -272,27 +273,8 @@ Result<MachineConfig> extended_machine(const toml::node& n, std::string_view ori
   return base;
 }
 
-Result<MachineConfig> parse_machine_at(std::string_view text, std::string_view origin, int depth) {
-  auto parsed = parse_toml(text, origin);
-  if (!parsed) return std::unexpected(parsed.error());
-  const toml::table& t = *parsed;
-  auto keys = check_keys(
-      t,
-      {"extends", "name", "type", "dialect", "servo_period_ms", "inch", "in_position_mm",
-       "in_position_timeout_s", "spindle_max_rpm", "persistent_variables", "latch", "axis",
-       "parameters", "work_offsets", "tool_offsets", "limits", "reference_points", "ini", "hal"},
-      origin, "a machine file");
-  if (!keys) return std::unexpected(keys.error());
-  MachineConfig m;
-  if (const auto* n = t.get("extends")) {
-    auto base = extended_machine(*n, origin, depth);
-    if (!base) return std::unexpected(base.error());
-    m = std::move(*base);
-    m.extends = m.origin;
-    if (!m.origin.starts_with("built-in "))
-      m.extends_files.insert(m.extends_files.begin(), m.origin);
-  }
-  m.origin = std::string(origin);
+// name, dialect and type.
+Result<void> load_identity(const toml::table& t, std::string_view origin, MachineConfig& m) {
   if (const auto* n = t.get("name")) {
     auto s = get_string(*n, origin, "name");
     if (!s) return std::unexpected(s.error());
@@ -313,6 +295,12 @@ Result<MachineConfig> parse_machine_at(std::string_view text, std::string_view o
     else
       return config_error(*n, origin, "type must be \"mill\" or \"lathe\"");
   }
+  return {};
+}
+
+// The servo period, units, in-position check, spindle and persistent
+// variables' file.
+Result<void> load_scalars(const toml::table& t, std::string_view origin, MachineConfig& m) {
   if (const auto* n = t.get("spindle_max_rpm")) {
     auto v = get_number(*n, origin, "spindle_max_rpm", 1.0, 1e6);
     if (!v) return std::unexpected(v.error());
@@ -352,8 +340,12 @@ Result<MachineConfig> parse_machine_at(std::string_view text, std::string_view o
     }
     m.persistent_vars = pv.lexically_normal().string();
   }
-  // [[axis]]: a name the extended machine has changes that axis; a new name
-  // adds an axis after the others.
+  return {};
+}
+
+// [[axis]]: a name the extended machine has changes that axis; a new name
+// adds an axis after the others.
+Result<void> load_axes(const toml::table& t, std::string_view origin, MachineConfig& m) {
   const auto* axes = t.get("axis");
   if (axes == nullptr && m.axes.empty()) {
     return config_error(t, origin, "a machine needs at least one [[axis]]");
@@ -405,59 +397,118 @@ Result<MachineConfig> parse_machine_at(std::string_view text, std::string_view o
     return config_error(axes != nullptr ? *axes : static_cast<const toml::node&>(t), origin,
                         "a lathe needs an X and a Z axis");
   }
+  return {};
+}
+
+// [latch]: the latch mode, its delay, servo-delay compensation.
+Result<void> load_latch(const toml::node& n, std::string_view origin, MachineConfig& m) {
+  const auto* lt = n.as_table();
+  if (!lt) return config_error(n, origin, "[latch] must be a table");
+  auto k = check_keys(*lt, {"mode", "delay_ms", "servo_delay_compensation"}, origin, "[latch]");
+  if (!k) return std::unexpected(k.error());
+  if (const auto* mode = lt->get("mode")) {
+    auto s = get_string(*mode, origin, "mode");
+    if (!s) return std::unexpected(s.error());
+    if (*s == "exact")
+      m.latch = canon::SkipLatch::kExact;
+    else if (*s == "sampled")
+      m.latch = canon::SkipLatch::kSampled;
+    else
+      return config_error(*mode, origin, "latch mode must be \"exact\" or \"sampled\"");
+  }
+  if (const auto* d = lt->get("delay_ms")) {
+    auto v = get_number(*d, origin, "delay_ms", 0.0, 1000.0);
+    if (!v) return std::unexpected(v.error());
+    m.latch_delay_s = *v * 1e-3;
+  }
+  if (const auto* c = lt->get("servo_delay_compensation")) {
+    auto v = get_bool(*c, origin, "servo_delay_compensation");
+    if (!v) return std::unexpected(v.error());
+    m.servo_delay_comp = *v;
+  }
+  return {};
+}
+
+// [parameters]: kept as text "N" or "N#B" = value; checked against the
+// dialect when the run is set up (the dialect may be overridden on the
+// command line).
+Result<void> load_params(const toml::node& n, std::string_view origin, MachineConfig& m) {
+  const auto* pt = n.as_table();
+  if (!pt) return config_error(n, origin, "[parameters] must be a table");
+  for (const auto& [key, node] : *pt) {
+    auto v = get_number(node, origin, key.str(), -1e300, 1e300);
+    if (!v) return std::unexpected(v.error());
+    const auto k = key.str();
+    int number = 0, bit = -1;
+    const auto hash = k.find('#');
+    auto r = std::from_chars(k.data(),
+                             k.data() + (hash == std::string_view::npos ? k.size() : hash), number);
+    bool ok = r.ec == std::errc{} &&
+              r.ptr == k.data() + (hash == std::string_view::npos ? k.size() : hash);
+    if (ok && hash != std::string_view::npos) {
+      auto r2 = std::from_chars(k.data() + hash + 1, k.data() + k.size(), bit);
+      ok = r2.ec == std::errc{} && r2.ptr == k.data() + k.size() && bit >= 0 && bit <= 7 &&
+           (*v == 0 || *v == 1);
+    }
+    if (!ok || number <= 0) {
+      return config_error(node, origin,
+                          "parameter '" + std::string(k) + "' must be N = value or N#B = 0/1");
+    }
+    m.params.push_back(ParamSetting{number, bit, *v, loc_of(node, origin)});
+  }
+  return {};
+}
+
+// [reference_points]: G30 P2-P4, the 2nd-4th reference points, machine
+// coordinates (Fanuc parameters 1241-1243).
+Result<void> load_reference_points(const toml::node& n, std::string_view origin, MachineConfig& m) {
+  const auto* rt = n.as_table();
+  if (!rt) return config_error(n, origin, "[reference_points] must be a table");
+  for (const auto& [key, node] : *rt) {
+    const auto k = key.str();
+    const int idx = k == "P2" ? 0 : k == "P3" ? 1 : k == "P4" ? 2 : -1;
+    if (idx < 0) {
+      return config_error(node, origin,
+                          "unknown reference point '" + std::string(k) + "' (known: P2, P3, P4)");
+    }
+    auto v =
+        load_axis_values(node, m, origin, k, m.reference_points[static_cast<std::size_t>(idx)]);
+    if (!v) return std::unexpected(v.error());
+    m.reference_points[static_cast<std::size_t>(idx)] = *v;
+  }
+  return {};
+}
+
+Result<MachineConfig> parse_machine_at(std::string_view text, std::string_view origin, int depth) {
+  auto parsed = parse_toml(text, origin);
+  if (!parsed) return std::unexpected(parsed.error());
+  const toml::table& t = *parsed;
+  auto keys = check_keys(
+      t,
+      {"extends", "name", "type", "dialect", "servo_period_ms", "inch", "in_position_mm",
+       "in_position_timeout_s", "spindle_max_rpm", "persistent_variables", "latch", "axis",
+       "parameters", "work_offsets", "tool_offsets", "limits", "reference_points", "ini", "hal"},
+      origin, "a machine file");
+  if (!keys) return std::unexpected(keys.error());
+  MachineConfig m;
+  if (const auto* n = t.get("extends")) {
+    auto base = extended_machine(*n, origin, depth);
+    if (!base) return std::unexpected(base.error());
+    m = std::move(*base);
+    m.extends = m.origin;
+    if (!m.origin.starts_with("built-in "))
+      m.extends_files.insert(m.extends_files.begin(), m.origin);
+  }
+  m.origin = std::string(origin);
+  if (auto r = load_identity(t, origin, m); !r) return std::unexpected(r.error());
+  if (auto r = load_scalars(t, origin, m); !r) return std::unexpected(r.error());
+  if (auto r = load_axes(t, origin, m); !r) return std::unexpected(r.error());
   if (const auto* n = t.get("latch")) {
-    const auto* lt = n->as_table();
-    if (!lt) return config_error(*n, origin, "[latch] must be a table");
-    auto k = check_keys(*lt, {"mode", "delay_ms", "servo_delay_compensation"}, origin, "[latch]");
-    if (!k) return std::unexpected(k.error());
-    if (const auto* mode = lt->get("mode")) {
-      auto s = get_string(*mode, origin, "mode");
-      if (!s) return std::unexpected(s.error());
-      if (*s == "exact")
-        m.latch = canon::SkipLatch::kExact;
-      else if (*s == "sampled")
-        m.latch = canon::SkipLatch::kSampled;
-      else
-        return config_error(*mode, origin, "latch mode must be \"exact\" or \"sampled\"");
-    }
-    if (const auto* d = lt->get("delay_ms")) {
-      auto v = get_number(*d, origin, "delay_ms", 0.0, 1000.0);
-      if (!v) return std::unexpected(v.error());
-      m.latch_delay_s = *v * 1e-3;
-    }
-    if (const auto* c = lt->get("servo_delay_compensation")) {
-      auto v = get_bool(*c, origin, "servo_delay_compensation");
-      if (!v) return std::unexpected(v.error());
-      m.servo_delay_comp = *v;
-    }
+    if (auto r = load_latch(*n, origin, m); !r) return std::unexpected(r.error());
   }
   if (auto r = load_ini_hal(t, m, origin); !r) return std::unexpected(r.error());
   if (const auto* n = t.get("parameters")) {
-    const auto* pt = n->as_table();
-    if (!pt) return config_error(*n, origin, "[parameters] must be a table");
-    for (const auto& [key, node] : *pt) {
-      // Kept as text "N" or "N#B" = value; checked against the dialect when the
-      // run is set up (the dialect may be overridden on the command line).
-      auto v = get_number(node, origin, key.str(), -1e300, 1e300);
-      if (!v) return std::unexpected(v.error());
-      const auto k = key.str();
-      int number = 0, bit = -1;
-      const auto hash = k.find('#');
-      auto r = std::from_chars(
-          k.data(), k.data() + (hash == std::string_view::npos ? k.size() : hash), number);
-      bool ok = r.ec == std::errc{} &&
-                r.ptr == k.data() + (hash == std::string_view::npos ? k.size() : hash);
-      if (ok && hash != std::string_view::npos) {
-        auto r2 = std::from_chars(k.data() + hash + 1, k.data() + k.size(), bit);
-        ok = r2.ec == std::errc{} && r2.ptr == k.data() + k.size() && bit >= 0 && bit <= 7 &&
-             (*v == 0 || *v == 1);
-      }
-      if (!ok || number <= 0) {
-        return config_error(node, origin,
-                            "parameter '" + std::string(k) + "' must be N = value or N#B = 0/1");
-      }
-      m.params.push_back(ParamSetting{number, bit, *v, loc_of(node, origin)});
-    }
+    if (auto r = load_params(*n, origin, m); !r) return std::unexpected(r.error());
   }
   if (const auto* n = t.get("work_offsets")) {
     const auto* wt = n->as_table();
@@ -466,22 +517,7 @@ Result<MachineConfig> parse_machine_at(std::string_view text, std::string_view o
     if (!r) return std::unexpected(r.error());
   }
   if (const auto* n = t.get("reference_points")) {
-    // G30 P2-P4: the 2nd-4th reference points, machine coordinates (Fanuc
-    // parameters 1241-1243).
-    const auto* rt = n->as_table();
-    if (!rt) return config_error(*n, origin, "[reference_points] must be a table");
-    for (const auto& [key, node] : *rt) {
-      const auto k = key.str();
-      const int idx = k == "P2" ? 0 : k == "P3" ? 1 : k == "P4" ? 2 : -1;
-      if (idx < 0) {
-        return config_error(node, origin,
-                            "unknown reference point '" + std::string(k) + "' (known: P2, P3, P4)");
-      }
-      auto v =
-          load_axis_values(node, m, origin, k, m.reference_points[static_cast<std::size_t>(idx)]);
-      if (!v) return std::unexpected(v.error());
-      m.reference_points[static_cast<std::size_t>(idx)] = *v;
-    }
+    if (auto r = load_reference_points(*n, origin, m); !r) return std::unexpected(r.error());
   }
   if (const auto* n = t.get("tool_offsets")) {
     const auto* tt = n->as_table();

@@ -6,7 +6,7 @@
 #include "config/skip_inputs.hpp"
 #include "config/toml_util.hpp"
 #include "core/file.hpp"
-#include "machine/scene_actions.hpp"
+#include "machine/scene_toml.hpp"
 
 namespace skipnc::machine {
 

@@ -1,8 +1,7 @@
-#include "machine/scene_actions.hpp"
-
 #include <algorithm>
 
 #include "config/toml_util.hpp"
+#include "machine/scene_toml.hpp"
 
 namespace skipnc::machine {
 

@@ -15,6 +15,7 @@
 #include "config/skip_inputs.hpp"
 #include "config/toml_util.hpp"
 #include "machine/mesh.hpp"
+#include "machine/scene_toml.hpp"
 #include "machine/stock.hpp"
 
 namespace skipnc::machine {

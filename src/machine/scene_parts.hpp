@@ -5,8 +5,6 @@
 // lengths in mm.
 #pragma once
 
-#include <toml++/toml.h>
-
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -122,16 +120,5 @@ struct Probing {
 inline constexpr std::string_view kProbingKeys[] = {
     "box",  "cylinder",    "sphere", "plane",        "bore",  "pocket", "probe",
     "tool", "tool_setter", "gauge",  "spindle_tool", "frame", "mesh",   "stock"};
-
-// The `signal` key of a scene table ("X0.4", "SKIP", "SKIP1".."SKIP12"): its
-// address, and its text in `name`. Errors name the table or the key.
-[[nodiscard]] Result<canon::SignalAddr> scene_signal(const toml::table& t, std::string_view origin,
-                                                     const config::Dialect& d,
-                                                     const config::Parameters& p,
-                                                     std::string& name);
-
-[[nodiscard]] Result<Probing> parse_probing(const toml::table& root, std::string_view origin,
-                                            const config::MachineConfig& m,
-                                            const config::Dialect& d, const config::Parameters& p);
 
 }  // namespace skipnc::machine

@@ -427,17 +427,7 @@ PlotModel build_model(const PlotInput& in) {
   pm.dialect = in.dialect != nullptr ? in.dialect->name : m.dialect;
   pm.time_s = r.time_s;
   pm.periods = rec.periods_seen();
-  switch (r.status) {
-    case sim::RunStatus::kCompleted:
-      pm.status = "completed";
-      break;
-    case sim::RunStatus::kAlarm:
-      pm.status = "alarm";
-      break;
-    case sim::RunStatus::kInterrupted:
-      pm.status = "interrupted";
-      break;
-  }
+  pm.status = report::status_name(r.status);
   if (r.alarm) {
     const report::AlarmView v = report::view_alarm(*r.alarm, in.dialect);
     pm.alarm = fmt::format("{} ({}): {}", v.code, v.number, v.message);

@@ -197,8 +197,7 @@ void Recorder::thin() {
   reset_sleeve(kept_.back());
 }
 
-void Recorder::row(const sim::TraceRow& r) {
-  ++rows_;
+Sample Recorder::sample_of(const sim::TraceRow& r) {
   Sample cur;
   cur.t = r.time_s;
   cur.line = r.line;
@@ -218,6 +217,46 @@ void Recorder::row(const sim::TraceRow& r) {
       if (r.plant->signal_level(i)) cur.signals |= 1U << i;
     }
   }
+  return cur;
+}
+
+void Recorder::keep_edge(Sample& cur, bool prev_kept) {
+  // The periods just before the edge, the edge itself and the next few.
+  std::deque<Sample> before;
+  before.swap(recent_);
+  for (Sample s : before) {
+    s.pin = kPinHard;
+    keep(s);
+  }
+  if (!prev_kept && (before.empty() || before.back().t < prev_.t)) {
+    Sample p = prev_;
+    p.pin = kPinHard;
+    keep(p);
+  } else if (!kept_.empty()) {
+    kept_.back().pin = kPinHard;
+  }
+  cur.pin = kPinHard;
+  keep(cur);
+  reset_sleeve(cur);
+  keep_after_ = d_.keep_around_edge;
+}
+
+void Recorder::keep_block_start(Sample& cur, bool prev_kept) {
+  if (!prev_kept) {
+    Sample p = prev_;
+    p.pin = kPinSoft;
+    keep(p);
+  } else {
+    kept_.back().pin = std::max(kept_.back().pin, kPinSoft);
+  }
+  cur.pin = kPinSoft;
+  keep(cur);
+  reset_sleeve(cur);
+}
+
+void Recorder::row(const sim::TraceRow& r) {
+  ++rows_;
+  Sample cur = sample_of(r);
   if (!have_prev_) {
     have_prev_ = true;
     cur.pin = kPinHard;
@@ -244,35 +283,9 @@ void Recorder::row(const sim::TraceRow& r) {
   }
   const bool prev_kept = !kept_.empty() && kept_.back().t >= prev_.t;
   if (edge) {
-    // The periods just before the edge, the edge itself and the next few.
-    std::deque<Sample> before;
-    before.swap(recent_);
-    for (Sample s : before) {
-      s.pin = kPinHard;
-      keep(s);
-    }
-    if (!prev_kept && (before.empty() || before.back().t < prev_.t)) {
-      Sample p = prev_;
-      p.pin = kPinHard;
-      keep(p);
-    } else if (!kept_.empty()) {
-      kept_.back().pin = kPinHard;
-    }
-    cur.pin = kPinHard;
-    keep(cur);
-    reset_sleeve(cur);
-    keep_after_ = d_.keep_around_edge;
+    keep_edge(cur, prev_kept);
   } else if (new_block) {
-    if (!prev_kept) {
-      Sample p = prev_;
-      p.pin = kPinSoft;
-      keep(p);
-    } else {
-      kept_.back().pin = std::max(kept_.back().pin, kPinSoft);
-    }
-    cur.pin = kPinSoft;
-    keep(cur);
-    reset_sleeve(cur);
+    keep_block_start(cur, prev_kept);
   } else if (keep_after_ > 0) {
     --keep_after_;
     cur.pin = kPinHard;

@@ -106,6 +106,12 @@ class Recorder final : public sim::TraceSink, public canon::CommandSink {
     MoveKind kind;
   };
   void keep(const Sample& s);
+  // One trace row as a sample (time, block, positions, torque, signals).
+  Sample sample_of(const sim::TraceRow& r);
+  // An edge of a signal: the periods before it, it and the next few kept.
+  void keep_edge(Sample& cur, bool prev_kept);
+  // The first period of a block and the last of the one before, kept.
+  void keep_block_start(Sample& cur, bool prev_kept);
   void reset_sleeve(const Sample& anchor);
   bool sleeve_accepts(const Sample& s);
   void thin();

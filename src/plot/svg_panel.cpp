@@ -2,6 +2,7 @@
 // where the axes stopped) with a zoom on its latch, variables, messages.
 #include <algorithm>
 #include <cmath>
+#include <tuple>
 
 #include "plot/svg_util.hpp"
 
@@ -122,11 +123,119 @@ int zoom_axis(const SkipMark& s) {
   return best;
 }
 
+// The zoom's window and plot area: time [ta, tb] across px0..px0+pw, values
+// [vmin, vmax] down py0..py0+ph, the signal's strip of sig_h under it, and
+// the model's samples i0..i1 inside the window.
+struct ZoomFrame {
+  double ta = 0, tb = 0, vmin = 0, vmax = 0;
+  double px0 = 0, pw = 0, py0 = 0, ph = 0, sig_h = 16;
+  std::size_t i0 = 0, i1 = 0;
+  double X(double t) const { return px0 + (t - ta) / (tb - ta) * pw; }
+  double Y(double v) const { return py0 + (vmax - v) / (vmax - vmin) * ph; }
+};
+
+struct ZoomRow {
+  double t, act, cmd;
+};
+
+// Samples inside the window, plus the values at its two ends (the samples
+// just outside may be far away where the trace was thinned); the value range
+// that holds them and the latch and rest values.
+std::vector<ZoomRow> zoom_rows(const PlotModel& m, const SkipMark& s, int axis,
+                               const std::vector<double>& act, const std::vector<double>& err,
+                               ZoomFrame& f) {
+  f.i0 = static_cast<std::size_t>(std::lower_bound(m.t.begin(), m.t.end(), f.ta) - m.t.begin());
+  f.i1 = static_cast<std::size_t>(std::upper_bound(m.t.begin(), m.t.end(), f.tb) - m.t.begin());
+  std::vector<ZoomRow> rows;
+  auto at = [&](double t) {
+    return ZoomRow{t, value_at(m.t, act, t), value_at(m.t, act, t) + value_at(m.t, err, t)};
+  };
+  rows.push_back(at(f.ta));
+  for (std::size_t i = f.i0; i < f.i1; ++i)
+    rows.push_back(ZoomRow{m.t[i], act[i], act[i] + err[i]});
+  rows.push_back(at(f.tb));
+  f.vmin = std::min(s.latch_machine[axis], s.rest_machine[axis]);
+  f.vmax = std::max(s.latch_machine[axis], s.rest_machine[axis]);
+  for (const auto& r : rows) {
+    f.vmin = std::min({f.vmin, r.act, r.cmd});
+    f.vmax = std::max({f.vmax, r.act, r.cmd});
+  }
+  const double span = std::max(f.vmax - f.vmin, 1e-3);
+  f.vmin -= 0.08 * span;
+  f.vmax += 0.08 * span;
+  return rows;
+}
+
+// The skip's signal as a logic trace under the plot.
+void draw_zoom_signal(Svg& o, const PlotModel& m, const SkipMark& s, const ZoomFrame& f) {
+  const auto& names = m.signal_names;
+  auto sig = std::find(names.begin(), names.end(), s.signal);
+  if (sig == names.end()) return;
+  const auto* ch = channel(m, "signal_" + *sig);
+  if (ch == nullptr) return;
+  const auto& v = ch->series.front().v;
+  const double ylo = f.py0 + f.ph + f.sig_h + 2, yhi = f.py0 + f.ph + 6;
+  auto level_y = [&](double t) { return value_at_step(m.t, v, t) > 0.5 ? yhi : ylo; };
+  std::string d = fmt::format("M{:.1f} {:.1f}", f.X(f.ta), level_y(f.ta));
+  for (std::size_t i = f.i0; i < f.i1; ++i)
+    d += fmt::format("H{:.1f}V{:.1f}", f.X(m.t[i]), v[i] > 0.5 ? yhi : ylo);
+  d += fmt::format("H{:.1f}", f.X(f.tb));
+  o.add("<path d=\"{}\" stroke=\"#2e9e4f\" stroke-width=\"1.5\" fill=\"none\"/>\n", d);
+}
+
+// The latch value and the instants of the latch and of rest.
+void draw_zoom_marks(Svg& o, const SkipMark& s, int axis, const ZoomFrame& f) {
+  const double px0 = f.px0, py0 = f.py0;
+  const double lv = f.Y(s.latch_machine[axis]);
+  o.add("<path d=\"M{:.1f} {:.1f}H{:.1f}\" stroke=\"#e0007a\" stroke-dasharray=\"2 3\"/>\n", px0,
+        lv, px0 + f.pw);
+  o.add(
+      "<text x=\"{:.1f}\" y=\"{:.1f}\" font-size=\"10\" fill=\"#b0005f\" "
+      "text-anchor=\"end\">{}</text>\n",
+      px0 - 4, lv + 3, num(s.latch_machine[axis]));
+  const double rv = f.Y(s.rest_machine[axis]);
+  if (std::fabs(rv - lv) > 10) {
+    o.add(
+        "<text x=\"{:.1f}\" y=\"{:.1f}\" font-size=\"10\" fill=\"#111\" "
+        "text-anchor=\"end\">{}</text>\n",
+        px0 - 4, rv + 3, num(s.rest_machine[axis]));
+  }
+  const double xl = f.X(s.latch_t), xr = f.X(s.stop_t);
+  o.add(
+      "<path class=\"zoom-latch\" d=\"M{:.1f} {:.1f}V{:.1f}\" stroke=\"#e0007a\" "
+      "stroke-width=\"1.5\"/>\n",
+      xl, py0, py0 + f.ph + f.sig_h + 4);
+  o.add("<path d=\"M{:.1f} {:.1f}V{:.1f}\" stroke=\"#111\" stroke-dasharray=\"4 3\"/>\n", xr, py0,
+        py0 + f.ph + f.sig_h + 4);
+  o.add("<circle cx=\"{:.1f}\" cy=\"{:.1f}\" r=\"4\" fill=\"#e0007a\" stroke=\"#fff\"/>\n", xl, lv);
+  o.add(
+      "<rect x=\"{:.1f}\" y=\"{:.1f}\" width=\"7\" height=\"7\" fill=\"#fff\" stroke=\"#111\" "
+      "stroke-width=\"1.5\"/>\n",
+      xr - 3.5, rv - 3.5);
+}
+
+// Time ticks in ms from the latch, along the zoom's bottom edge at `y_text`.
+void draw_zoom_ticks(Svg& o, const SkipMark& s, const ZoomFrame& f, double x, double y_text) {
+  const double ta = f.ta, tb = f.tb;
+  const double step = nice_step((tb - ta) * 1000.0, 5);
+  const int dec = step < 1 ? static_cast<int>(std::ceil(-std::log10(step))) : 0;
+  for (double ms = std::ceil((ta - s.latch_t) * 1000.0 / step) * step;
+       ms <= (tb - s.latch_t) * 1000.0; ms += step) {
+    const double tx = f.X(s.latch_t + ms / 1000.0);
+    o.add(
+        "<text x=\"{:.1f}\" y=\"{:.1f}\" font-size=\"9\" fill=\"#666\" "
+        "text-anchor=\"middle\">{}{}</text>\n",
+        tx, y_text, ms > 0 ? "+" : "", num(ms, dec));
+  }
+  o.add("<text x=\"{:.1f}\" y=\"{:.1f}\" font-size=\"9\" fill=\"#666\">ms</text>\n", x + 6, y_text);
+}
+
 // A small scope around one latch: the moving axis (actual and commanded),
 // the skip signal, the latch instant and the instant the axes came to rest.
 void draw_zoom(Svg& o, const PlotModel& m, const SkipMark& s, double x, double y, double w,
                double h) {
-  const auto [ta, tb] = latch_window(m, s);
+  ZoomFrame f;
+  std::tie(f.ta, f.tb) = latch_window(m, s);
   const int axis = zoom_axis(s);
   const Channel* pos =
       channel(m, fmt::format("pos_{}", m.axis_names[static_cast<std::size_t>(axis)]));
@@ -134,34 +243,14 @@ void draw_zoom(Svg& o, const PlotModel& m, const SkipMark& s, double x, double y
   if (pos == nullptr || fe == nullptr || m.t.empty()) return;
   const auto& act = pos->series.front().v;
   const auto& err = fe->series[static_cast<std::size_t>(axis)].v;
-  // Samples inside the window, plus the values at its two ends (the samples
-  // just outside may be far away where the trace was thinned).
-  const auto i0 =
-      static_cast<std::size_t>(std::lower_bound(m.t.begin(), m.t.end(), ta) - m.t.begin());
-  const auto i1 =
-      static_cast<std::size_t>(std::upper_bound(m.t.begin(), m.t.end(), tb) - m.t.begin());
-  struct Row {
-    double t, act, cmd;
-  };
-  std::vector<Row> rows;
-  rows.push_back(Row{ta, value_at(m.t, act, ta), value_at(m.t, act, ta) + value_at(m.t, err, ta)});
-  for (std::size_t i = i0; i < i1; ++i) rows.push_back(Row{m.t[i], act[i], act[i] + err[i]});
-  rows.push_back(Row{tb, value_at(m.t, act, tb), value_at(m.t, act, tb) + value_at(m.t, err, tb)});
-  double vmin = std::min(s.latch_machine[axis], s.rest_machine[axis]);
-  double vmax = std::max(s.latch_machine[axis], s.rest_machine[axis]);
-  for (const auto& r : rows) {
-    vmin = std::min({vmin, r.act, r.cmd});
-    vmax = std::max({vmax, r.act, r.cmd});
-  }
-  const double span = std::max(vmax - vmin, 1e-3);
-  vmin -= 0.08 * span;
-  vmax += 0.08 * span;
-  const double sig_h = 16, left = 62;
-  const double px0 = x + left, pw = w - left - 6, py0 = y + 16, ph = h - 16 - sig_h - 20;
-  auto X = [&](double t) { return px0 + (t - ta) / (tb - ta) * pw; };
-  auto Y = [&](double v) { return py0 + (vmax - v) / (vmax - vmin) * ph; };
+  const std::vector<ZoomRow> rows = zoom_rows(m, s, axis, act, err, f);
+  const double left = 62;
+  f.px0 = x + left;
+  f.pw = w - left - 6;
+  f.py0 = y + 16;
+  f.ph = h - 16 - f.sig_h - 20;
   const char axis_name = m.axis_names[static_cast<std::size_t>(axis)];
-  o.add("<g class=\"latch-zoom\" data-skip=\"{}\" data-window=\"{} {}\">\n", s.index, ta, tb);
+  o.add("<g class=\"latch-zoom\" data-skip=\"{}\" data-window=\"{} {}\">\n", s.index, f.ta, f.tb);
   o.add("<rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\" fill=\"#fff\" stroke=\"#d0d0d0\"/>\n",
         x, y, w, h);
   o.add(
@@ -171,12 +260,12 @@ void draw_zoom(Svg& o, const PlotModel& m, const SkipMark& s, double x, double y
       x + 6, y + 12, axis_name, esc(s.signal.empty() ? std::string("no signal") : s.signal));
   o.add(
       "<clipPath id=\"zclip-{}\"><rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\"/></clipPath>\n",
-      s.index, px0, py0 - 2, pw, ph + sig_h + 6);
+      s.index, f.px0, f.py0 - 2, f.pw, f.ph + f.sig_h + 6);
   o.add("<g clip-path=\"url(#zclip-{})\">\n", s.index);
   std::vector<Pt> a, c;
   for (const auto& r : rows) {
-    a.push_back(Pt{X(r.t), Y(r.act)});
-    c.push_back(Pt{X(r.t), Y(r.cmd)});
+    a.push_back(Pt{f.X(r.t), f.Y(r.act)});
+    c.push_back(Pt{f.X(r.t), f.Y(r.cmd)});
   }
   std::string da, dc;
   append_path(da, a);
@@ -184,63 +273,10 @@ void draw_zoom(Svg& o, const PlotModel& m, const SkipMark& s, double x, double y
   o.add("<path d=\"{}\" stroke=\"#999\" stroke-width=\"1\" fill=\"none\"/>\n", dc);
   o.add("<path d=\"{}\" stroke=\"{}\" stroke-width=\"1.8\" fill=\"none\"/>\n", da,
         axis_colour(axis));
-  // The skip's signal as a logic trace under the plot.
-  const auto& names = m.signal_names;
-  auto sig = std::find(names.begin(), names.end(), s.signal);
-  if (sig != names.end()) {
-    const auto* ch = channel(m, "signal_" + *sig);
-    if (ch != nullptr) {
-      const auto& v = ch->series.front().v;
-      const double ylo = py0 + ph + sig_h + 2, yhi = py0 + ph + 6;
-      auto level_y = [&](double t) { return value_at_step(m.t, v, t) > 0.5 ? yhi : ylo; };
-      std::string d = fmt::format("M{:.1f} {:.1f}", X(ta), level_y(ta));
-      for (std::size_t i = i0; i < i1; ++i)
-        d += fmt::format("H{:.1f}V{:.1f}", X(m.t[i]), v[i] > 0.5 ? yhi : ylo);
-      d += fmt::format("H{:.1f}", X(tb));
-      o.add("<path d=\"{}\" stroke=\"#2e9e4f\" stroke-width=\"1.5\" fill=\"none\"/>\n", d);
-    }
-  }
+  draw_zoom_signal(o, m, s, f);
   o.add("</g>\n");
-  // Latch value, instants.
-  const double lv = Y(s.latch_machine[axis]);
-  o.add("<path d=\"M{:.1f} {:.1f}H{:.1f}\" stroke=\"#e0007a\" stroke-dasharray=\"2 3\"/>\n", px0,
-        lv, px0 + pw);
-  o.add(
-      "<text x=\"{:.1f}\" y=\"{:.1f}\" font-size=\"10\" fill=\"#b0005f\" "
-      "text-anchor=\"end\">{}</text>\n",
-      px0 - 4, lv + 3, num(s.latch_machine[axis]));
-  const double rv = Y(s.rest_machine[axis]);
-  if (std::fabs(rv - lv) > 10) {
-    o.add(
-        "<text x=\"{:.1f}\" y=\"{:.1f}\" font-size=\"10\" fill=\"#111\" "
-        "text-anchor=\"end\">{}</text>\n",
-        px0 - 4, rv + 3, num(s.rest_machine[axis]));
-  }
-  const double xl = X(s.latch_t), xr = X(s.stop_t);
-  o.add(
-      "<path class=\"zoom-latch\" d=\"M{:.1f} {:.1f}V{:.1f}\" stroke=\"#e0007a\" "
-      "stroke-width=\"1.5\"/>\n",
-      xl, py0, py0 + ph + sig_h + 4);
-  o.add("<path d=\"M{:.1f} {:.1f}V{:.1f}\" stroke=\"#111\" stroke-dasharray=\"4 3\"/>\n", xr, py0,
-        py0 + ph + sig_h + 4);
-  o.add("<circle cx=\"{:.1f}\" cy=\"{:.1f}\" r=\"4\" fill=\"#e0007a\" stroke=\"#fff\"/>\n", xl, lv);
-  o.add(
-      "<rect x=\"{:.1f}\" y=\"{:.1f}\" width=\"7\" height=\"7\" fill=\"#fff\" stroke=\"#111\" "
-      "stroke-width=\"1.5\"/>\n",
-      xr - 3.5, rv - 3.5);
-  // Time ticks in ms from the latch.
-  const double step = nice_step((tb - ta) * 1000.0, 5);
-  const int dec = step < 1 ? static_cast<int>(std::ceil(-std::log10(step))) : 0;
-  for (double ms = std::ceil((ta - s.latch_t) * 1000.0 / step) * step;
-       ms <= (tb - s.latch_t) * 1000.0; ms += step) {
-    const double tx = X(s.latch_t + ms / 1000.0);
-    o.add(
-        "<text x=\"{:.1f}\" y=\"{:.1f}\" font-size=\"9\" fill=\"#666\" "
-        "text-anchor=\"middle\">{}{}</text>\n",
-        tx, y + h - 4, ms > 0 ? "+" : "", num(ms, dec));
-  }
-  o.add("<text x=\"{:.1f}\" y=\"{:.1f}\" font-size=\"9\" fill=\"#666\">ms</text>\n", x + 6,
-        y + h - 4);
+  draw_zoom_marks(o, s, axis, f);
+  draw_zoom_ticks(o, s, f, x, y + h - 4);
   o.add("</g>\n");
 }
 

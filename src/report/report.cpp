@@ -208,39 +208,66 @@ ordered_json expectations_json(const std::vector<CheckResult>& checks) {
 
 }  // namespace
 
-std::string to_json(const ReportInput& in) {
-  ordered_json j;
-  j["format"] = "skipnc-report/1";
-  j["program"] = in.program;
-  j["dialect"] = in.dialect;
+const char* status_name(sim::RunStatus s) noexcept {
+  switch (s) {
+    case sim::RunStatus::kCompleted:
+      return "completed";
+    case sim::RunStatus::kAlarm:
+      return "alarm";
+    case sim::RunStatus::kInterrupted:
+      return "interrupted";
+  }
+  return "alarm";
+}
+
+namespace {
+
+// The report's "alarm": the alarm of the run or the error that stopped its
+// start (null when neither).
+ordered_json alarm_json(const ReportInput& in) {
   const sim::RunResult& r = in.result;
   const Error* err = in.start_error ? &*in.start_error : (r.alarm ? &*r.alarm : nullptr);
-  j["status"] = in.start_error                             ? "alarm"
-                : r.status == sim::RunStatus::kCompleted   ? "completed"
-                : r.status == sim::RunStatus::kInterrupted ? "interrupted"
-                                                           : "alarm";
-  if (err != nullptr) {
-    const AlarmView v = view_alarm(*err, in.dialect_table);
-    ordered_json a;
-    a["number"] = v.number;
-    a["code"] = v.code;
-    a["message"] = v.message;
-    a["file"] =
-        err->loc.file.empty() ? ordered_json(nullptr) : ordered_json(std::string(err->loc.file));
-    a["line"] = err->loc.line == 0 ? ordered_json(nullptr) : ordered_json(err->loc.line);
-    a["column"] = err->loc.column == 0 ? ordered_json(nullptr) : ordered_json(err->loc.column);
-    a["key"] = std::string(alarm_key(err->id));
-    if (!in.start_error && r.alarm_position)
-      a["machine_position"] = axes_json(*r.alarm_position, in.machine);
-    if (!in.start_error && !r.contexts.empty()) {
-      a["program"] = program_json(r.contexts, r.alarm_context);
-      a["where"] = where(r.contexts, r.alarm_context, err->loc.line);
-      a["call_stack"] = stack_json(r.contexts, r.alarm_context, err->loc.line);
-    }
-    j["alarm"] = a;
-  } else {
-    j["alarm"] = nullptr;
+  if (err == nullptr) return nullptr;
+  const AlarmView v = view_alarm(*err, in.dialect_table);
+  ordered_json a;
+  a["number"] = v.number;
+  a["code"] = v.code;
+  a["message"] = v.message;
+  a["file"] =
+      err->loc.file.empty() ? ordered_json(nullptr) : ordered_json(std::string(err->loc.file));
+  a["line"] = err->loc.line == 0 ? ordered_json(nullptr) : ordered_json(err->loc.line);
+  a["column"] = err->loc.column == 0 ? ordered_json(nullptr) : ordered_json(err->loc.column);
+  a["key"] = std::string(alarm_key(err->id));
+  if (!in.start_error && r.alarm_position)
+    a["machine_position"] = axes_json(*r.alarm_position, in.machine);
+  if (!in.start_error && !r.contexts.empty()) {
+    a["program"] = program_json(r.contexts, r.alarm_context);
+    a["where"] = where(r.contexts, r.alarm_context, err->loc.line);
+    a["call_stack"] = stack_json(r.contexts, r.alarm_context, err->loc.line);
   }
+  return a;
+}
+
+// The skip in progress when the alarm stopped the run: the latch when the
+// input came, where the alarm was raised, and how far past the latch that was.
+void crash_json(ordered_json& o, const record::SkipRecord& s, const config::MachineConfig* m) {
+  o["crash_machine_position"] =
+      s.crash_machine ? axes_json(*s.crash_machine, m) : ordered_json(nullptr);
+  if (s.triggered && s.crash_machine && m != nullptr) {
+    double d2 = 0.0;
+    for (int i = 0; i < m->axis_count(); ++i) {
+      const double d = (*s.crash_machine)[i] - s.machine_position[i];
+      d2 += d * d;
+    }
+    o["overtravel_mm"] = clean(std::sqrt(d2));
+  } else {
+    o["overtravel_mm"] = nullptr;
+  }
+}
+
+// The report's "skips": one object per skip block run.
+ordered_json skips_json(const ReportInput& in) {
+  const sim::RunResult& r = in.result;
   ordered_json skips = ordered_json::array();
   for (const auto& s : r.skips) {
     ordered_json o;
@@ -265,26 +292,23 @@ std::string to_json(const ReportInput& in) {
         latched ? axes_json(s.machine_position, in.machine) : ordered_json(nullptr);
     o["end_position"] = axes_json(s.end_position, in.machine);
     o["ended_by"] = ended_by(s);
-    if (s.ended_by_alarm) {
-      // The skip in progress when the alarm stopped the run: the latch when
-      // the input came, where the alarm was raised, and how far past the
-      // latch that was.
-      o["crash_machine_position"] =
-          s.crash_machine ? axes_json(*s.crash_machine, in.machine) : ordered_json(nullptr);
-      if (s.triggered && s.crash_machine && in.machine != nullptr) {
-        double d2 = 0.0;
-        for (int i = 0; i < in.machine->axis_count(); ++i) {
-          const double d = (*s.crash_machine)[i] - s.machine_position[i];
-          d2 += d * d;
-        }
-        o["overtravel_mm"] = clean(std::sqrt(d2));
-      } else {
-        o["overtravel_mm"] = nullptr;
-      }
-    }
+    if (s.ended_by_alarm) crash_json(o, s, in.machine);
     skips.push_back(o);
   }
-  j["skips"] = skips;
+  return skips;
+}
+
+}  // namespace
+
+std::string to_json(const ReportInput& in) {
+  ordered_json j;
+  j["format"] = "skipnc-report/1";
+  j["program"] = in.program;
+  j["dialect"] = in.dialect;
+  const sim::RunResult& r = in.result;
+  j["status"] = in.start_error ? "alarm" : status_name(r.status);
+  j["alarm"] = alarm_json(in);
+  j["skips"] = skips_json(in);
   ordered_json vars = ordered_json::object();
   for (const auto& [k, v] : in.variables)
     vars[k] = v ? ordered_json(clean(*v)) : ordered_json(nullptr);

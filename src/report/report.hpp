@@ -45,6 +45,10 @@ struct ReportInput {
 
 std::string to_json(const ReportInput& in);
 
+// How a run ended, as the report's "status", a sweep row, --expect status=
+// and the plot name it: "completed", "alarm" or "interrupted".
+const char* status_name(sim::RunStatus s) noexcept;
+
 // Writes `text` to `path` atomically ("-": standard output; a device or a
 // FIFO in place): write_file_atomic (core/file.hpp).
 [[nodiscard]] Result<void> write_atomic(const std::string& path, const std::string& text);

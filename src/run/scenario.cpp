@@ -77,10 +77,17 @@ Result<void> apply_offsets(config::MachineConfig& m, const Variation& v) {
 
 }  // namespace
 
-namespace {
+report::ReportInput report_input(const Session& s, std::string program, sim::RunResult result) {
+  report::ReportInput in;
+  in.program = std::move(program);
+  in.dialect = s.dialect.name;
+  in.machine = &s.machine;
+  in.dialect_table = &s.dialect;
+  in.result = std::move(result);
+  return in;
+}
 
-// Variables as the control holds them after the run (vacant: no value).
-std::vector<std::pair<std::string, std::optional<double>>> read_vars(
+std::vector<std::pair<std::string, std::optional<double>>> read_variables(
     const interp::Interpreter& in, const std::vector<VarRef>& refs) {
   std::vector<std::pair<std::string, std::optional<double>>> out;
   for (const auto& var : refs) {
@@ -93,32 +100,45 @@ std::vector<std::pair<std::string, std::optional<double>>> read_vars(
   return out;
 }
 
-// The --expect checks on a finished run: the lines of those that failed,
-// and the exit status as `skipnc run` gives it.
-Result<void> check_outcome(const Session& s, const RunRequest& rq, const sim::RunResult& r,
-                           const interp::Interpreter& in, RunOutcome& out) {
+Result<std::vector<ExpectResult>> check_outcome(const config::Dialect& d,
+                                                const std::vector<Expectation>& expects,
+                                                const sim::RunResult& r,
+                                                const interp::Interpreter& in) {
   ObservedRun got;
-  got.status = r.status == sim::RunStatus::kCompleted     ? "completed"
-               : r.status == sim::RunStatus::kInterrupted ? "interrupted"
-                                                          : "alarm";
-  if (r.alarm) got.alarm = report::view_alarm(*r.alarm, &s.dialect).number;
+  got.status = report::status_name(r.status);
+  if (r.alarm) {
+    const report::AlarmView v = report::view_alarm(*r.alarm, &d);
+    got.alarm = v.number;
+    got.alarm_code = v.code;
+    got.alarm_key = std::string(alarm_key(r.alarm->id));
+  }
   std::vector<VarRef> refs;
-  bool outcome_expected = false;
-  for (const auto& e : rq.expect) {
-    outcome_expected |= e.kind != Expectation::Kind::kVariable;
+  for (const auto& e : expects) {
     if (e.kind != Expectation::Kind::kVariable) continue;
     auto ref = parse_var_ref("#" + e.var);
     if (!ref) return std::unexpected(ref.error());
     refs.push_back(*ref);
   }
-  got.variables = read_vars(in, refs);
-  for (const auto& e : rq.expect) {
-    if (auto why = check_expectation(e, got); !why.empty()) out.failed_expectations.push_back(why);
-  }
-  if (outcome_expected && out.failed_expectations.empty() && !out.output_failed) out.exit_code = 0;
-  if (!out.failed_expectations.empty()) out.exit_code = 3;
-  return {};
+  got.variables = read_variables(in, refs);
+  std::vector<ExpectResult> checks;
+  for (const auto& e : expects) checks.push_back(evaluate_expectation(e, got));
+  return checks;
 }
+
+int exit_code(sim::RunStatus status, bool output_failed, const std::vector<Expectation>& expects,
+              const std::vector<ExpectResult>& checks) {
+  int rc = status == sim::RunStatus::kCompleted && !output_failed ? 0 : 1;
+  if (expects.empty()) return rc;
+  bool outcome_expected = false;
+  for (const auto& e : expects) outcome_expected |= e.kind != Expectation::Kind::kVariable;
+  bool all_held = true;
+  for (const auto& c : checks) all_held = all_held && c.pass;
+  if (outcome_expected && all_held && !output_failed) rc = 0;
+  if (!all_held) rc = 3;
+  return rc;
+}
+
+namespace {
 
 Result<void> prepare(const Session& s, const RunRequest& rq, const Variation& v,
                      config::MachineConfig& m, config::Parameters& params, interp::Setup& setup) {
@@ -128,6 +148,10 @@ Result<void> prepare(const Session& s, const RunRequest& rq, const Variation& v,
   }
   if (!v.params.empty()) {
     if (auto r = config::check_skip_addresses(s.dialect, params); !r) return r;
+  }
+  // alarm=NAME names an alarm of the dialect (as `skipnc run --expect`).
+  for (const auto& e : rq.expect) {
+    if (auto r = check_alarm_name(e, s.dialect); !r) return r;
   }
   if (auto r = check_plot_files(rq.plot_files); !r) return r;
   if (auto r = take_persistent(m, setup); !r) return r;
@@ -177,13 +201,8 @@ Result<RunOutcome> run_variation(const Session& s, const RunRequest& rq, const V
   if (!rq.plot_files.empty()) plot = std::make_unique<PlotCapture>(m, opts);
   auto res = sim.run(setup, opts);
   if (!res) return std::unexpected(res.error());
-  report::ReportInput in;
-  in.program = setup.program_name;
-  in.dialect = s.dialect.name;
-  in.machine = &s.machine;
-  in.dialect_table = &s.dialect;
-  in.result = std::move(*res);
-  in.variables = read_vars(*sim.interpreter(), rq.vars);
+  report::ReportInput in = report_input(s, setup.program_name, std::move(*res));
+  in.variables = read_variables(*sim.interpreter(), rq.vars);
   RunOutcome out;
   if (plot) {
     const std::string text =
@@ -202,15 +221,21 @@ Result<RunOutcome> run_variation(const Session& s, const RunRequest& rq, const V
   out.status = in.result.status;
   out.time_s = in.result.time_s;
   if (in.result.alarm) {
-    out.alarm = report::view_alarm(*in.result.alarm, &s.dialect).number;
+    const report::AlarmView view = report::view_alarm(*in.result.alarm, &s.dialect);
+    out.alarm = view.number;
+    out.alarm_code = view.code;
+    out.alarm_key = std::string(alarm_key(in.result.alarm->id));
     out.alarm_text = describe(*in.result.alarm, &s.dialect);
   }
-  out.exit_code = in.result.status == sim::RunStatus::kCompleted ? 0 : 1;
   if (!rq.expect.empty()) {
-    if (auto c = check_outcome(s, rq, in.result, *sim.interpreter(), out); !c) {
-      return std::unexpected(c.error());
+    auto checks = check_outcome(s.dialect, rq.expect, in.result, *sim.interpreter());
+    if (!checks) return std::unexpected(checks.error());
+    for (const auto& c : *checks) {
+      if (!c.pass) out.failed_expectations.push_back(c.message);
     }
+    in.expectations = std::move(*checks);
   }
+  out.exit_code = exit_code(in.result.status, out.output_failed, rq.expect, in.expectations);
   out.report_json = report::to_json(in);
   out.variables = std::move(in.variables);
   return out;

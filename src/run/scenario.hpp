@@ -66,6 +66,8 @@ struct RunOutcome {
   sim::RunStatus status = sim::RunStatus::kCompleted;
   int alarm = 0;           // the dialect's number, 0 without an alarm
   std::string alarm_text;  // describe(): "file:line:column: alarm CODE (N): message"
+  std::string alarm_code;  // the dialect's code (PS0011), empty without an alarm
+  std::string alarm_key;   // the alarm's key (skip_no_feed), empty without an alarm
   double time_s = 0.0;     // simulated
   std::vector<std::pair<std::string, std::optional<double>>> variables;  // rq.vars, in order
   // The expectations that failed, one line each ("expectation failed: ...").
@@ -83,6 +85,32 @@ struct RunOutcome {
 [[nodiscard]] Result<RunOutcome> run_variation(const Session& s, const RunRequest& rq,
                                                const Variation& v, sim::TraceSink* trace = nullptr,
                                                const std::atomic<bool>* interrupt = nullptr);
+
+// What the report of a finished run of session `s` is made from: the
+// program's name, the dialect, the machine and the result (variables and
+// expectations are the caller's to add).
+report::ReportInput report_input(const Session& s, std::string program, sim::RunResult result);
+
+// The variables `refs` names as the interpreter holds them after a run, keyed
+// as VarRef::key (vacant: no value).
+std::vector<std::pair<std::string, std::optional<double>>> read_variables(
+    const interp::Interpreter& in, const std::vector<VarRef>& refs);
+
+// The --expect checks on a finished run, each with its verdict (the report's
+// "expectations", one JUnit case each): how the run ended, its alarm (the
+// dialect's number, its code, its key) and the variables the checks name, as
+// the interpreter holds them after the run. An error: a check names a
+// variable that cannot be read as one (parse_var_ref).
+[[nodiscard]] Result<std::vector<ExpectResult>> check_outcome(
+    const config::Dialect& d, const std::vector<Expectation>& expects, const sim::RunResult& r,
+    const interp::Interpreter& in);
+
+// The exit status as `skipnc run` gives it: 0 completed, 1 alarm or
+// interrupted (or an output that could not be written), 3 a check failed; a
+// run whose expected outcome (status=, alarm=) held is 0, an expected alarm
+// too, unless an output could not be written.
+int exit_code(sim::RunStatus status, bool output_failed, const std::vector<Expectation>& expects,
+              const std::vector<ExpectResult>& checks);
 
 // The program part of an interpreter setup: file or text, name, include
 // folders, strict.

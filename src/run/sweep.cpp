@@ -43,9 +43,11 @@ constexpr std::uint64_t mix(std::uint64_t z) noexcept {
   z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
   return z ^ (z >> 31);
 }
+
 std::uint64_t draw_bits(std::uint64_t seed, std::int64_t index, std::uint64_t stream) noexcept {
   return mix(seed ^ mix(static_cast<std::uint64_t>(index) * 0x100000001B3ULL + stream));
 }
+
 // (0, 1]
 double unit(std::uint64_t bits) noexcept {
   return static_cast<double>((bits >> 11) + 1) * 0x1.0p-53;
@@ -193,18 +195,6 @@ std::string relative_to(const fs::path& dir, const std::string& p) {
   return (dir / p).lexically_normal().string();
 }
 
-std::string status_name(sim::RunStatus s) {
-  switch (s) {
-    case sim::RunStatus::kCompleted:
-      return "completed";
-    case sim::RunStatus::kAlarm:
-      return "alarm";
-    case sim::RunStatus::kInterrupted:
-      return "interrupted";
-  }
-  return "alarm";
-}
-
 double draw_value(const VaryRule& r, std::uint64_t seed, std::int64_t index, std::size_t k,
                   std::int64_t count) {
   const auto& v = r.values;
@@ -260,83 +250,102 @@ Result<Check> parse_check(const std::string& text, std::vector<VarRef>& vars) {
   return c;
 }
 
-Result<void> load_sweep(const std::string& spec_path, const SweepOverrides& o, SweepPlan& plan) {
-  plan.spec_path = spec_path;
-  const std::string& path = plan.spec_path;
+namespace {
+
+// The spec as a table; its keys are the known ones. The same checked parser
+// as machine and scene files (toml++ asserts on some malformed input that the
+// precheck refuses).
+Result<toml::table> read_spec(const std::string& path) {
   auto spec_text = read_input_file(path, kSweepSpecInput);
   if (!spec_text) return fail(AlarmId::kConfig, spec_text.error().detail);
-  // The same checked parser as machine and scene files (toml++ asserts on
-  // some malformed input that the precheck refuses).
   auto parsed = config::parse_toml(*spec_text, path);
   if (!parsed) return std::unexpected(parsed.error());
-  const toml::table& root = *parsed;
   static constexpr std::string_view kKeys[] = {"program", "machine", "scene",     "dialect",
                                                "include", "params",  "scenarios", "seed",
                                                "workers", "vars",    "expect",    "vary"};
-  for (const auto& [k, node] : root) {
+  for (const auto& [k, node] : *parsed) {
     if (std::find(std::begin(kKeys), std::end(kKeys), k.str()) == std::end(kKeys)) {
       return std::unexpected(
           spec_error(path, k.source(), "unknown key '" + std::string(k.str()) + "'"));
     }
   }
-  const fs::path dir = fs::path(path).parent_path();
-  auto text = [&](std::string_view key) -> Result<std::string> {
-    const toml::node* n = root.get(key);
-    if (n == nullptr) return std::string();
-    auto s = n->value<std::string>();
-    if (!s)
-      return std::unexpected(
-          spec_error(path, n->source(), std::string(key) + ": expected a string"));
-    return *s;
-  };
-  auto program = text("program");
+  return parsed;
+}
+
+// A string key of the spec ("" when absent).
+Result<std::string> spec_string(const toml::table& root, std::string_view key,
+                                const std::string& path) {
+  const toml::node* n = root.get(key);
+  if (n == nullptr) return std::string();
+  auto s = n->value<std::string>();
+  if (!s)
+    return std::unexpected(spec_error(path, n->source(), std::string(key) + ": expected a string"));
+  return *s;
+}
+
+// An integer key of the spec within [lo, hi] (`def` when absent).
+Result<std::int64_t> spec_integer(const toml::table& root, std::string_view key, std::int64_t lo,
+                                  std::int64_t hi, std::int64_t def, const std::string& path) {
+  const toml::node* n = root.get(key);
+  if (n == nullptr) return def;
+  auto v = n->value<std::int64_t>();
+  if (!v || *v < lo || *v > hi) {
+    return std::unexpected(
+        spec_error(path, n->source(), fmt::format("{}: expected an integer {}-{}", key, lo, hi)));
+  }
+  return *v;
+}
+
+// The spec's string keys and string arrays, read before anything is opened.
+struct SpecStrings {
+  std::string program, machine, scene, dialect;
+  std::vector<std::string> include, params, vars, expect;
+};
+
+Result<SpecStrings> read_strings(const toml::table& root, const std::string& path) {
+  SpecStrings out;
+  auto program = spec_string(root, "program", path);
   if (!program) return std::unexpected(program.error());
   if (program->empty())
     return std::unexpected(spec_error(path, root.source(), "program: required"));
-  auto machine = text("machine");
-  auto scene = text("scene");
-  auto dialect = text("dialect");
-  for (auto* r : {&machine, &scene, &dialect}) {
-    if (!*r) return std::unexpected(r->error());
+  out.program = *program;
+  for (auto [key, to] : {std::pair{"machine", &out.machine}, std::pair{"scene", &out.scene},
+                         std::pair{"dialect", &out.dialect}}) {
+    auto r = spec_string(root, key, path);
+    if (!r) return std::unexpected(r.error());
+    *to = *r;
   }
-  auto include = string_array(root, "include", path);
-  auto params = string_array(root, "params", path);
-  auto vars = string_array(root, "vars", path);
-  auto expect = string_array(root, "expect", path);
-  for (auto* r : {&include, &params, &vars, &expect}) {
-    if (!*r) return std::unexpected(r->error());
+  for (auto [key, to] : {std::pair{"include", &out.include}, std::pair{"params", &out.params},
+                         std::pair{"vars", &out.vars}, std::pair{"expect", &out.expect}}) {
+    auto r = string_array(root, key, path);
+    if (!r) return std::unexpected(r.error());
+    *to = *r;
   }
-  auto integer = [&](std::string_view key, std::int64_t lo, std::int64_t hi,
-                     std::int64_t def) -> Result<std::int64_t> {
-    const toml::node* n = root.get(key);
-    if (n == nullptr) return def;
-    auto v = n->value<std::int64_t>();
-    if (!v || *v < lo || *v > hi) {
-      return std::unexpected(
-          spec_error(path, n->source(), fmt::format("{}: expected an integer {}-{}", key, lo, hi)));
-    }
-    return *v;
-  };
-  auto scenarios = integer("scenarios", 1, kMaxScenarios, 1);
-  // The command line's ranges (-n, --seed, -j): a value run refuses is refused here.
-  auto seed = integer("seed", 0, kMaxSeed, 1);
-  auto workers = integer("workers", 0, kMaxWorkers, 0);
+  return out;
+}
+
+// Scenarios, seed and workers: the command line's ranges (-n, --seed, -j), a
+// value run refuses is refused here; the command line's values win.
+Result<void> read_counts(const toml::table& root, const std::string& path, const SweepOverrides& o,
+                         SweepPlan& plan) {
+  auto scenarios = spec_integer(root, "scenarios", 1, kMaxScenarios, 1, path);
+  auto seed = spec_integer(root, "seed", 0, kMaxSeed, 1, path);
+  auto workers = spec_integer(root, "workers", 0, kMaxWorkers, 0, path);
   for (auto* r : {&scenarios, &seed, &workers}) {
     if (!*r) return std::unexpected(r->error());
   }
   plan.scenarios = o.scenarios.value_or(*scenarios);
   plan.seed = o.seed.value_or(static_cast<std::uint64_t>(*seed));
   plan.workers = static_cast<int>(*workers);
+  return {};
+}
 
-  std::string mname = machine->empty() ? "mill3" : *machine;
-  if (mname.find('/') != std::string::npos || mname.ends_with(".toml"))
-    mname = relative_to(dir, mname);
-  auto opened = open_session(SessionOptions{mname, *dialect, relative_to(dir, *scene), *params},
-                             plan.session);
-  if (!opened) return opened;
-
+// The program, include folders, reported variables and checks of every run.
+Result<void> read_request(const toml::table& root, const std::string& path, const SpecStrings& sp,
+                          SweepPlan& plan) {
+  const fs::path dir = fs::path(path).parent_path();
   RunRequest& rq = plan.request;
-  rq.program_path = relative_to(dir, *program);
+  rq.program_path = relative_to(dir, sp.program);
   rq.program_name = rq.program_path;
   // A program that cannot be read stops the sweep before any scenario (was:
   // every row an error).
@@ -345,45 +354,73 @@ Result<void> load_sweep(const std::string& spec_path, const SweepOverrides& o, S
       !p) {
     return std::unexpected(spec_error(path, root.get("program")->source(), p.error().detail));
   }
-  for (const auto& inc : *include) rq.include_dirs.push_back(relative_to(dir, inc));
-  for (const auto& v : *vars) {
+  for (const auto& inc : sp.include) rq.include_dirs.push_back(relative_to(dir, inc));
+  for (const auto& v : sp.vars) {
     auto ref = parse_var_ref(v);
     if (!ref) return std::unexpected(ref.error());
     rq.vars.push_back(*ref);
   }
-  for (const auto& e : *expect) {
+  for (const auto& e : sp.expect) {
     auto c = parse_check(e, rq.vars);
     if (!c) return std::unexpected(c.error());
+    // alarm=NAME names an alarm of the session's dialect (as run --expect).
+    if (auto n = check_alarm_name(c->e, plan.session.dialect); !n) {
+      return std::unexpected(spec_error(path, root.get("expect")->source(), n.error().detail));
+    }
     plan.checks.push_back(*c);
   }
-  if (const toml::node* n = root.get("vary")) {
-    const toml::array* arr = n->as_array();
-    if (arr == nullptr || !arr->is_array_of_tables()) {
-      return std::unexpected(spec_error(path, n->source(), "vary: expected [[vary]] tables"));
+  return {};
+}
+
+// One [[vary]] table: what changes and how it is drawn.
+Result<VaryRule> read_vary(const toml::table& t, const std::string& path, const SweepPlan& plan) {
+  static constexpr std::string_view kVaryKeys[] = {"what", "values", "uniform", "normal", "steps"};
+  for (const auto& [k, node] : t) {
+    if (std::find(std::begin(kVaryKeys), std::end(kVaryKeys), k.str()) == std::end(kVaryKeys)) {
+      return std::unexpected(
+          spec_error(path, k.source(), "[[vary]]: unknown key '" + std::string(k.str()) + "'"));
     }
-    for (const auto& e : *arr) {
-      const toml::table& t = *e.as_table();
-      for (const auto& [k, node] : t) {
-        static constexpr std::string_view kVaryKeys[] = {"what", "values", "uniform", "normal",
-                                                         "steps"};
-        if (std::find(std::begin(kVaryKeys), std::end(kVaryKeys), k.str()) == std::end(kVaryKeys)) {
-          return std::unexpected(
-              spec_error(path, k.source(), "[[vary]]: unknown key '" + std::string(k.str()) + "'"));
-        }
-      }
-      auto what = t["what"].value<std::string>();
-      if (!what)
-        return std::unexpected(spec_error(path, t.source(), "[[vary]]: what = \"...\" required"));
-      auto rule = parse_target(*what, plan.session.machine);
-      if (!rule) {
-        return std::unexpected(spec_error(path, t.get("what")->source(), rule.error().detail));
-      }
-      if (auto d = parse_draw(t, path, *rule); !d) return std::unexpected(d.error());
-      if (auto c = check_param_values(*rule, *plan.session.params); !c) {
-        return std::unexpected(spec_error(path, t.source(), c.error().detail));
-      }
-      plan.vary.push_back(std::move(*rule));
-    }
+  }
+  auto what = t["what"].value<std::string>();
+  if (!what)
+    return std::unexpected(spec_error(path, t.source(), "[[vary]]: what = \"...\" required"));
+  auto rule = parse_target(*what, plan.session.machine);
+  if (!rule) return std::unexpected(spec_error(path, t.get("what")->source(), rule.error().detail));
+  if (auto d = parse_draw(t, path, *rule); !d) return std::unexpected(d.error());
+  if (auto c = check_param_values(*rule, *plan.session.params); !c) {
+    return std::unexpected(spec_error(path, t.source(), c.error().detail));
+  }
+  return rule;
+}
+
+}  // namespace
+
+Result<void> load_sweep(const std::string& spec_path, const SweepOverrides& o, SweepPlan& plan) {
+  plan.spec_path = spec_path;
+  const std::string& path = plan.spec_path;
+  auto root = read_spec(path);
+  if (!root) return std::unexpected(root.error());
+  auto sp = read_strings(*root, path);
+  if (!sp) return std::unexpected(sp.error());
+  if (auto c = read_counts(*root, path, o, plan); !c) return c;
+  const fs::path dir = fs::path(path).parent_path();
+  std::string mname = sp->machine.empty() ? "mill3" : sp->machine;
+  if (mname.find('/') != std::string::npos || mname.ends_with(".toml"))
+    mname = relative_to(dir, mname);
+  auto opened = open_session(
+      SessionOptions{mname, sp->dialect, relative_to(dir, sp->scene), sp->params}, plan.session);
+  if (!opened) return opened;
+  if (auto r = read_request(*root, path, *sp, plan); !r) return r;
+  const toml::node* n = root->get("vary");
+  if (n == nullptr) return {};
+  const toml::array* arr = n->as_array();
+  if (arr == nullptr || !arr->is_array_of_tables()) {
+    return std::unexpected(spec_error(path, n->source(), "vary: expected [[vary]] tables"));
+  }
+  for (const auto& e : *arr) {
+    auto rule = read_vary(*e.as_table(), path, plan);
+    if (!rule) return std::unexpected(rule.error());
+    plan.vary.push_back(std::move(*rule));
   }
   return {};
 }
@@ -439,6 +476,8 @@ void check_row(const SweepPlan& plan, ScenarioRow& row) {
   ObservedRun o;
   o.status = row.status;
   o.alarm = row.alarm;
+  o.alarm_code = row.alarm_code;
+  o.alarm_key = row.alarm_key;
   for (std::size_t i = 0; i < plan.request.vars.size(); ++i)
     o.variables.emplace_back(plan.request.vars[i].key, row.values[i]);
   bool all = true;
@@ -475,12 +514,17 @@ ScenarioRow run_scenario(const SweepPlan& plan, std::int64_t index,
   auto res = run_variation(plan.session, plan.request, v, nullptr, interrupt);
   if (!res) {
     row.status = "error";
-    row.alarm = report::view_alarm(res.error(), &plan.session.dialect).number;
+    const report::AlarmView view = report::view_alarm(res.error(), &plan.session.dialect);
+    row.alarm = view.number;
+    row.alarm_code = view.code;
+    row.alarm_key = std::string(alarm_key(res.error().id));
     row.alarm_text = describe(res.error(), &plan.session.dialect);
   } else {
-    row.status = status_name(res->status);
+    row.status = report::status_name(res->status);
     row.time_s = res->time_s;
     row.alarm = res->alarm;
+    row.alarm_code = res->alarm_code;
+    row.alarm_key = res->alarm_key;
     row.alarm_text = res->alarm_text;
     for (std::size_t i = 0; i < row.values.size(); ++i) row.values[i] = res->variables[i].second;
   }

@@ -91,6 +91,8 @@ struct ScenarioRow {
   std::string status;
   int alarm = 0;               // the dialect's alarm number, 0 without one
   std::string alarm_text;      // "file:line:column: alarm CODE (N): message", valid UTF-8
+  std::string alarm_code;      // the dialect's code (PS0011) and the alarm's key
+  std::string alarm_key;       // (skip_no_feed), for alarm= checks; not in the tables
   std::vector<double> chosen;  // one per vary rule
   std::vector<std::optional<double>> values;  // one per reported variable
   std::vector<bool> checks;                   // one per check

@@ -141,6 +141,31 @@ TEST(Sweep, ChecksParseAsTheExpectOption) {
   EXPECT_FALSE(parse_check("#140=1+-", vars));
 }
 
+// alarm= checks by the dialect's code and by the key, as run --expect takes
+// them: without a feed (#101 vacant) every scenario ends in PS0011
+// skip_no_feed (fanuc) and passes.
+TEST(Sweep, AlarmChecksTakeTheCodeAndTheKey) {
+  SweepPlan plan = load("touch.sweep.toml");
+  plan.vary.clear();
+  plan.checks.clear();
+  for (const char* text : {"alarm=PS0011", "alarm=skip_no_feed", "alarm=11"}) {
+    auto c = parse_check(text, plan.request.vars);
+    ASSERT_TRUE(c) << text;
+    plan.checks.push_back(*c);
+  }
+  const ScenarioRow row = run_scenario(plan, 0);
+  EXPECT_EQ(row.status, "alarm");
+  EXPECT_EQ(row.alarm, 11);
+  EXPECT_EQ(row.checks, (std::vector<bool>{true, true, true}));
+  EXPECT_TRUE(row.pass);
+  auto other = parse_check("alarm=PS0003", plan.request.vars);
+  ASSERT_TRUE(other);
+  plan.checks = {*other};
+  const ScenarioRow miss = run_scenario(plan, 0);
+  EXPECT_EQ(miss.checks, std::vector<bool>{false});
+  EXPECT_FALSE(miss.pass);
+}
+
 TEST(SweepCli, WritesBothTablesAndExitsOneWhenAScenarioFails) {
   test::TempDir tmp;
   const auto csv = (tmp.path / "t.csv").string();
