@@ -150,7 +150,9 @@ namespace {
 // reads the end point #5001-#5008 (compared with the skip position, a miss
 // shows as equality).
 bool block_checks_skip(std::string_view text) {
-  auto word_char = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) != 0; };
+  // A letter next to the operator makes it part of a word (WHILE, ENDIF);
+  // a digit or a bracket does not: IF[#1GT0] compares as IF [#1 GT 0] does.
+  auto word_char = [](char c) { return std::isalpha(static_cast<unsigned char>(c)) != 0; };
   for (std::size_t i = 0; i + 1 < text.size(); ++i) {
     const char a = static_cast<char>(std::toupper(static_cast<unsigned char>(text[i])));
     const char b = static_cast<char>(std::toupper(static_cast<unsigned char>(text[i + 1])));
