@@ -120,10 +120,11 @@ std::vector<JunitCase> run_cases(const RunArgs& a, const report::ReportInput& in
   std::vector<JunitCase> cases;
   const std::string cls = "skipnc.run." + a.program;
   for (const auto& c : in.expectations) {
-    cases.push_back(JunitCase{c.text, cls, 0.0, !c.pass, "expectation", c.message, {}});
+    cases.push_back(JunitCase{
+        c.text, cls, 0.0, !c.pass, "expectation", c.message, {}, JunitProblem::kFailure, {}});
   }
   if (cases.empty()) {
-    JunitCase c{"completes", cls, in.result.time_s, false, {}, {}, {}};
+    JunitCase c{"completes", cls, in.result.time_s, false, {}, {}, {}, JunitProblem::kFailure, {}};
     if (in.result.status != sim::RunStatus::kCompleted) {
       c.failed = true;
       c.failure_type = in.result.alarm ? "alarm" : "interrupted";
@@ -277,7 +278,7 @@ interp::Setup make_setup(const RunArgs& a, run::Session& s) {
   setup.dprnt_path = a.dprnt;
   setup.log_dir = a.log_dir;
   setup.strict = a.strict;
-  setup.strict_allow = a.allow;
+  setup.strict_allow = run::allowed_warnings(s, a.allow);
   return setup;
 }
 
@@ -335,6 +336,7 @@ int run_command(const RunArgs& a) {
   run::Session s;
   auto o = run::open_session(run::SessionOptions{a.machine, a.dialect, a.scene, a.params}, s);
   if (!o) return start_failure(a, o.error(), &s);
+  if (auto c = run::check_allow(a.allow); !c) return start_failure(a, c.error(), &s);
   return execute(a, s, make_setup(a, s), false);
 }
 
@@ -342,6 +344,7 @@ int canon_command(const RunArgs& a) {
   run::Session s;
   auto o = run::open_session(run::SessionOptions{a.machine, a.dialect, "", a.params}, s);
   if (!o) return start_failure(a, o.error(), &s);
+  if (auto c = run::check_allow(a.allow); !c) return start_failure(a, c.error(), &s);
   auto in = interp::Interpreter::create(make_setup(a, s), AxisVec{});
   if (!in) return start_failure(a, in.error(), &s);
   PrintSink sink(s.machine);

@@ -42,9 +42,10 @@ int plot_command(RunArgs a);
 // `skipnc sweep SPEC`: the scenarios of run/sweep.hpp, a table and a summary.
 struct SweepArgs {
   std::string spec;
-  std::string csv;   // default: <spec stem>.sweep.csv here
-  std::string json;  // default: <spec stem>.sweep.json here
-  int workers = -1;  // -1: the spec's
+  std::string csv;    // default: <spec stem>.sweep.csv here
+  std::string json;   // default: <spec stem>.sweep.json here
+  std::string junit;  // JUnit XML, one test case per scenario; empty: none
+  int workers = -1;   // -1: the spec's
   std::int64_t scenarios = -1;
   long long seed = -1;
   bool quiet = false;

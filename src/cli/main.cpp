@@ -137,6 +137,8 @@ CLI::App* add_sweep(CLI::App& app, skipnc::cli::SweepArgs& sweep_args) {
                     "the table as CSV (default: SPEC.sweep.csv beside the spec)");
   sweep->add_option("--json", sweep_args.json,
                     "table and summary as JSON (SPEC.sweep.json beside the spec)");
+  sweep->add_option("--junit", sweep_args.junit,
+                    "JUnit XML: one test case per scenario, its failed checks as failures");
   sweep->add_option("-j,--workers", sweep_args.workers, "threads (0: every core; default: spec's)")
       ->check(CLI::Range(0, skipnc::run::kMaxWorkers));
   sweep->add_option("-n,--scenarios", sweep_args.scenarios, "scenarios (default: the spec's)")

@@ -45,6 +45,7 @@ int repeat_command(const RunArgs& a) {
   // A run that cannot start writes the report with its alarm too, as `run`
   // without --repeat does.
   if (!o) return start_failure(a, o.error(), &s);
+  if (auto c = run::check_allow(a.allow); !c) return start_failure(a, c.error(), &s);
   // The same outputs check as a single run: no report over the program.
   if (auto c = check_outputs(a, s); !c) return start_failure(a, c.error(), &s);
   run::RepeatRequest rq;
@@ -89,6 +90,8 @@ int repeat_command(const RunArgs& a) {
           r.alarm,
           "alarm",
           r.alarm_text,
+          {},
+          JunitProblem::kFailure,
           {}});
       total += r.time_s;
     }

@@ -11,10 +11,12 @@
 
 #include <atomic>
 #include <chrono>
+#include <cstdio>
 #include <filesystem>
 #include <iostream>
 
 #include "cli/commands.hpp"
+#include "cli/junit.hpp"
 #include "cli/outputs.hpp"
 #include "core/file.hpp"
 #include "run/sweep.hpp"
@@ -115,13 +117,107 @@ class Progress {
   clock::time_point next_ = start_ + std::chrono::seconds(1);
 };
 
+// --junit FILE: one test case per scenario. The cases go to an unnamed
+// temporary file as the rows come (memory does not grow with the sweep);
+// the file itself is written whole at the end, its head announcing the counts.
+class JunitSweep {
+ public:
+  JunitSweep(const run::SweepPlan& plan, std::string name)
+      : plan_(plan), name_(std::move(name)), body_(name_.empty() ? nullptr : std::tmpfile()) {}
+  JunitSweep(const JunitSweep&) = delete;
+  JunitSweep& operator=(const JunitSweep&) = delete;
+  ~JunitSweep() {
+    if (body_ != nullptr) std::fclose(body_);
+  }
+  bool wanted() const { return !name_.empty(); }
+  bool ok() const { return !wanted() || (body_ != nullptr && !failed_); }
+
+  void row(const run::ScenarioRow& r) {
+    if (!wanted() || failed_) return;
+    const JunitCase c = scenario_case(r);
+    counts_.add(c);
+    time_s_ += c.time_s;
+    const std::string x = junit_case(c);
+    failed_ = body_ == nullptr || std::fwrite(x.data(), 1, x.size(), body_) != x.size();
+  }
+
+  // Writes the file (whole or not at all), copying the cases in chunks;
+  // false, with the reason on standard error, when it could not be.
+  bool write() {
+    if (!wanted()) return true;
+    if (body_ == nullptr || failed_ || std::fflush(body_) != 0) {
+      std::cerr << "skipnc: junit: the test cases could not be kept in a temporary file\n";
+      return false;
+    }
+    auto f = OutputFile::open(name_);
+    if (!f) {
+      std::cerr << "skipnc: junit: " << f.error().detail << "\n";
+      return false;
+    }
+    Result<void> w = f->write(junit_head(plan_.spec_path, time_s_, counts_));
+    std::rewind(body_);
+    char buf[65536];
+    for (std::size_t n; w && (n = std::fread(buf, 1, sizeof buf, body_)) > 0;)
+      w = f->write(std::string_view(buf, n));
+    if (w) w = f->write(junit_tail());
+    if (w && std::ferror(body_) != 0)
+      w = fail(AlarmId::kFileAccess, "the test cases' temporary file could not be read");
+    if (w) w = f->commit();
+    if (!w) {
+      f->discard();
+      std::cerr << "skipnc: junit: " << w.error().detail << "\n";
+      return false;
+    }
+    return true;
+  }
+
+ private:
+  JunitCase scenario_case(const run::ScenarioRow& r) const {
+    JunitCase c{fmt::format("scenario {}", r.index),
+                "skipnc.sweep." + plan_.spec_path,
+                r.time_s,
+                !r.pass,
+                {},
+                {},
+                {},
+                JunitProblem::kFailure,
+                {}};
+    std::string out;
+    for (std::size_t k = 0; k < plan_.vary.size() && k < r.chosen.size(); ++k)
+      out += fmt::format("{} = {}\n", plan_.vary[k].name, r.chosen[k]);
+    for (std::size_t k = 0; k < plan_.request.vars.size() && k < r.values.size(); ++k) {
+      out += fmt::format("#{} = {}\n", plan_.request.vars[k].key,
+                         r.values[k] ? fmt::format("{}", *r.values[k]) : std::string("vacant"));
+    }
+    c.output = fmt::format("status {}\n{}", r.status, out);
+    if (!c.failed) return c;
+    const std::vector<std::string> why = run::row_failures(plan_, r);
+    c.problem = r.status == "error"     ? JunitProblem::kError
+                : r.status == "not_run" ? JunitProblem::kSkipped
+                                        : JunitProblem::kFailure;
+    c.failure_type = r.status == "completed" ? "expectation" : r.status;
+    for (const std::string& w : why) {
+      c.failure_message += (c.failure_message.empty() ? "" : "; ") + w;
+      c.failure_text += w + "\n";
+    }
+    return c;
+  }
+
+  const run::SweepPlan& plan_;
+  std::string name_;
+  std::FILE* body_;
+  JunitCounts counts_;
+  double time_s_ = 0.0;
+  bool failed_ = false;
+};
+
 // Opens both table files after checking them against the inputs and each
 // other: nothing runs when one cannot be written.
-Result<void> open_tables(const run::SweepPlan& plan, TableFile& csv, TableFile& json) {
-  if (auto r = refuse_collisions({{"--csv", csv.name}, {"--json", json.name}}, sweep_inputs(plan));
-      !r) {
-    return r;
-  }
+Result<void> open_tables(const run::SweepPlan& plan, TableFile& csv, TableFile& json,
+                         const std::string& junit) {
+  std::vector<NamedFile> outputs{{"--csv", csv.name}, {"--json", json.name}};
+  if (!junit.empty()) outputs.push_back({"--junit", junit});
+  if (auto r = refuse_collisions(outputs, sweep_inputs(plan)); !r) return r;
   for (TableFile* t : {&csv, &json}) {
     auto f = OutputFile::open(t->name, ".partial");
     if (!f) return std::unexpected(f.error());
@@ -143,8 +239,13 @@ int sweep_command(const SweepArgs& a) {
   }
   TableFile csv{a.csv.empty() ? default_output(a.spec, "csv") : a.csv, {}};
   TableFile json{a.json.empty() ? default_output(a.spec, "json") : a.json, {}};
-  if (auto r = open_tables(plan, csv, json); !r) {
+  if (auto r = open_tables(plan, csv, json, a.junit); !r) {
     std::cerr << "skipnc: " << run::describe(r.error(), &plan.session.dialect) << "\n";
+    return 2;
+  }
+  JunitSweep junit(plan, a.junit);
+  if (!junit.ok()) {
+    std::cerr << "skipnc: junit: no temporary file for the test cases\n";
     return 2;
   }
   install_sweep_signals();
@@ -159,11 +260,13 @@ int sweep_command(const SweepArgs& a) {
         csv.write(table.csv_row(r));
         json.write(table.json_row(r, table.rows() == 0));
         table.add(r);
+        junit.row(r);
         progress.row(table.rows());
       },
       run::SweepStop{&g_stop_taking, &g_interrupt});
   json.write(table.json_tail());
   int rc = table.exit_status();
+  if (!junit.write()) rc = std::max(rc, 1);
   for (TableFile* t : {&csv, &json}) {
     if (auto c = t->file.commit(); !c) {
       if (!t->failed) std::cerr << "skipnc: " << c.error().detail << "\n";

@@ -5,6 +5,7 @@
 
 #include "config/skip_inputs.hpp"
 #include "config/toml_util.hpp"
+#include "config/warning_codes.hpp"
 #include "core/file.hpp"
 #include "machine/scene_toml.hpp"
 
@@ -44,6 +45,32 @@ Result<double> number_of(const toml::table& t, std::string_view key, std::string
   return get_number(*n, origin, key, min, max);
 }
 
+// [strict] allow = ["probe_length_differs", ...]: warnings that stay
+// warnings under --strict, as `--allow CODE` (docs/scene.md).
+Result<std::vector<std::string>> parse_strict(const toml::table& root, std::string_view origin) {
+  std::vector<std::string> out;
+  const toml::node* n = root.get("strict");
+  if (n == nullptr) return out;
+  const toml::table* t = n->as_table();
+  if (t == nullptr) return config_error(*n, origin, "[strict] must be a table");
+  if (auto k = check_keys(*t, {"allow"}, origin, "[strict]"); !k) return std::unexpected(k.error());
+  const toml::node* a = t->get("allow");
+  if (a == nullptr) return out;
+  const toml::array* arr = a->as_array();
+  if (arr == nullptr) return config_error(*a, origin, "allow must be an array of warning codes");
+  for (const auto& e : *arr) {
+    auto code = config::get_string(e, origin, "allow's element");
+    if (!code) return std::unexpected(code.error());
+    if (!config::is_warning_code(*code)) {
+      return config_error(e, origin,
+                          "allow: no warning has the code '" + *code +
+                              "' (codes: " + config::warning_code_list() + ")");
+    }
+    out.push_back(*code);
+  }
+  return out;
+}
+
 }  // namespace
 
 Result<Scene> parse_scene(std::string_view text, std::string_view origin,
@@ -53,9 +80,9 @@ Result<Scene> parse_scene(std::string_view text, std::string_view origin,
   if (!parsed) return std::unexpected(parsed.error());
   const toml::table& root = *parsed;
   auto keys = check_keys(
-      root,
-      {"trigger", "pulse", "stop", "load", "operator", "box", "cylinder", "sphere", "plane", "bore",
-       "pocket", "probe", "tool", "tool_setter", "gauge", "spindle_tool", "frame", "mesh", "stock"},
+      root, {"trigger", "pulse",        "stop",  "load",   "operator", "box",   "cylinder",
+             "sphere",  "plane",        "bore",  "pocket", "probe",    "tool",  "tool_setter",
+             "gauge",   "spindle_tool", "frame", "mesh",   "stock",    "strict"},
       origin, "a scene file");
   if (!keys) return std::unexpected(keys.error());
   Scene s;
@@ -119,6 +146,9 @@ Result<Scene> parse_scene(std::string_view text, std::string_view origin,
   auto probing = parse_probing(root, origin, m, d, p);
   if (!probing) return std::unexpected(probing.error());
   s.probing = std::move(*probing);
+  auto allow = parse_strict(root, origin);
+  if (!allow) return std::unexpected(allow.error());
+  s.strict_allow = std::move(*allow);
   return s;
 }
 

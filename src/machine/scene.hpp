@@ -64,6 +64,9 @@ struct Scene {
   std::vector<Load> loads;
   std::vector<OperatorAction> operator_actions;  // in time order
   Probing probing;  // parts, probe, tools, tool setter, gauges (scene_parts.hpp)
+  // [strict] allow: warning codes that stay warnings under --strict, with
+  // those of --allow (config/warning_codes.hpp).
+  std::vector<std::string> strict_allow;
 };
 
 [[nodiscard]] Result<Scene> parse_scene(std::string_view toml_text, std::string_view origin,

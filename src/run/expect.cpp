@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cctype>
 #include <charconv>
 #include <cmath>
@@ -150,6 +151,15 @@ Result<void> check_alarm_name(const Expectation& e, const config::Dialect& d) {
         same_word(std::string(alarm_key(id)), e.alarm_name))
       return {};
   }
+  // A user alarm (#3000 = n) is shown with its own code, the dialect's
+  // prefix and n in four digits (MC0001: report::view_alarm).
+  const std::string& user = d.alarm(AlarmId::kUserAlarm).code;
+  const std::string prefix = user.empty() ? std::string("MC") : user;
+  const std::string& n = e.alarm_name;
+  if (n.size() == prefix.size() + 4 && same_word(n.substr(0, prefix.size()), prefix) &&
+      std::all_of(n.begin() + static_cast<std::ptrdiff_t>(prefix.size()), n.end(),
+                  [](char c) { return c >= '0' && c <= '9'; }))
+    return {};
   return std::unexpected(bad(
       e.text, "no alarm of the " + d.name + " dialect has the code or key '" + e.alarm_name + "'"));
 }

@@ -165,6 +165,7 @@ Result<RepeatOutcome> repeat_runs(const Session& s, const RepeatRequest& rq,
   setup.dialect = &s.dialect;
   setup.params = s.params.get();
   setup_program(rq.program, setup);
+  setup.strict_allow = allowed_warnings(s, rq.program.allow);
   setup.dprnt_path = rq.dprnt_path;
   OffsetWatch offsets;  // offsets as the machine starts, to tell which ones the program wrote
   if (auto r = offsets.start(setup); !r) return std::unexpected(r.error());

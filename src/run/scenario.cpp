@@ -160,6 +160,7 @@ Result<void> prepare(const Session& s, const RunRequest& rq, const Variation& v,
   setup.dialect = &s.dialect;
   setup.params = &params;
   setup_program(rq, setup);
+  setup.strict_allow = allowed_warnings(s, rq.allow);
   return {};
 }
 

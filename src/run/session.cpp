@@ -1,9 +1,11 @@
 #include "run/session.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <filesystem>
 
 #include "config/skip_inputs.hpp"
+#include "config/warning_codes.hpp"
 #include "report/report.hpp"
 
 namespace skipnc::run {
@@ -55,6 +57,26 @@ Result<void> open_session(const SessionOptions& o, const SessionTexts& texts, Se
     auto sc = machine::load_scene_file(s.scene_file, s.machine, s.dialect, *s.params);
     if (!sc) return std::unexpected(sc.error());
     s.scene = std::move(*sc);
+  }
+  return {};
+}
+
+std::vector<std::string> allowed_warnings(const Session& s, const std::vector<std::string>& cli) {
+  std::vector<std::string> out;
+  for (const auto* list : {&cli, &s.scene.strict_allow}) {
+    for (const auto& c : *list) {
+      if (std::find(out.begin(), out.end(), c) == out.end()) out.push_back(c);
+    }
+  }
+  return out;
+}
+
+Result<void> check_allow(const std::vector<std::string>& cli) {
+  for (const auto& c : cli) {
+    if (!config::is_warning_code(c)) {
+      return fail(AlarmId::kUsage, "--allow " + c + ": no warning has this code (codes: " +
+                                       config::warning_code_list() + ")");
+    }
   }
   return {};
 }

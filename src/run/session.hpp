@@ -48,6 +48,12 @@ struct Session {
 [[nodiscard]] Result<void> open_session(const SessionOptions& o, const SessionTexts& texts,
                                         Session& s);
 
+// The warnings that stay warnings under --strict: those the command line
+// names (--allow) and the scene's [strict] allow, each once.
+std::vector<std::string> allowed_warnings(const Session& s, const std::vector<std::string>& cli);
+// kUsage naming the codes when one of --allow is no warning's code.
+[[nodiscard]] Result<void> check_allow(const std::vector<std::string>& cli);
+
 // "#5061", "5061", "#<NC.SysVars.G31.LCS.X>" -> number or name.
 struct VarRef {
   std::string key;  // as reported (without '#')

@@ -472,7 +472,8 @@ bool expects_an_end(const SweepPlan& plan) {
   return false;
 }
 
-void check_row(const SweepPlan& plan, ScenarioRow& row) {
+// What the checks see of a row.
+ObservedRun observed(const SweepPlan& plan, const ScenarioRow& row) {
   ObservedRun o;
   o.status = row.status;
   o.alarm = row.alarm;
@@ -480,6 +481,11 @@ void check_row(const SweepPlan& plan, ScenarioRow& row) {
   o.alarm_key = row.alarm_key;
   for (std::size_t i = 0; i < plan.request.vars.size(); ++i)
     o.variables.emplace_back(plan.request.vars[i].key, row.values[i]);
+  return o;
+}
+
+void check_row(const SweepPlan& plan, ScenarioRow& row) {
+  const ObservedRun o = observed(plan, row);
   bool all = true;
   for (const Check& c : plan.checks) {
     const bool ok = check_expectation(c.e, o).empty();
@@ -533,6 +539,21 @@ ScenarioRow run_scenario(const SweepPlan& plan, std::int64_t index,
   row.alarm_text = utf8::make_valid(row.alarm_text);
   check_row(plan, row);
   return row;
+}
+
+std::vector<std::string> row_failures(const SweepPlan& plan, const ScenarioRow& row) {
+  if (row.status == "not_run") return {"not run: the sweep was stopped before this scenario"};
+  if (row.status == "error") return {"could not start: " + row.alarm_text};
+  std::vector<std::string> out;
+  const ObservedRun o = observed(plan, row);
+  for (std::size_t k = 0; k < plan.checks.size() && k < row.checks.size(); ++k) {
+    if (!row.checks[k]) out.push_back(evaluate_expectation(plan.checks[k].e, o).message);
+  }
+  if (!row.pass && out.empty()) {
+    out.push_back(row.status == "alarm" ? "the scenario ended in an alarm: " + row.alarm_text
+                                        : "the scenario ended " + row.status);
+  }
+  return out;
 }
 
 void run_scenarios(const SweepPlan& plan, std::int64_t begin, std::int64_t end, int workers,

@@ -109,6 +109,11 @@ Variation scenario_variation(const SweepPlan& plan, std::int64_t index, std::vec
 ScenarioRow run_scenario(const SweepPlan& plan, std::int64_t index,
                          const std::atomic<bool>* interrupt = nullptr);
 
+// Why a row did not pass, one line each (empty when it passed): each check
+// that failed (as `skipnc run --expect` says it), else the alarm or status
+// that failed it; an error or a scenario not run, said as such.
+std::vector<std::string> row_failures(const SweepPlan& plan, const ScenarioRow& row);
+
 // How a sweep is stopped early: `stop_taking` set, no scenario is started
 // any more (the rest are rows with status not_run); `interrupt` set, the
 // running ones stop at their next servo period (status interrupted).

@@ -193,15 +193,16 @@ Error fault_alarm(const config::MachineConfig& m, const kernel::Fault& f, std::s
     case kernel::Fault::Kind::kStrokeLimit: {
       const bool plus = f.value > a.max_mm;
       e.id = AlarmId::kStrokeLimit;
-      e.detail = std::string(plus ? "+" : "-") + a.name + " at " + std::to_string(f.value) +
-                 " mm, beyond the stroke limit " + std::to_string(plus ? a.max_mm : a.min_mm) +
-                 " mm";
+      e.detail = fmt::format("{}{} at {:.4f} mm, beyond the stroke limit {:g} mm", plus ? "+" : "-",
+                             a.name, f.value, plus ? a.max_mm : a.min_mm);
       break;
     }
     case kernel::Fault::Kind::kExcessError:
       e.id = AlarmId::kServoExcessError;
-      e.detail = std::string("axis ") + a.name + ": following error " + std::to_string(f.value) +
-                 " mm exceeds " + std::to_string(f.limit) + " mm";
+      // The limit as docs/skip-dialects.md gives it (1.5 x rapid / kp + 1
+      // mm: 16 mm on mill3), a whole number without decimals.
+      e.detail = fmt::format("axis {}: following error {:.4f} mm exceeds {:g} mm", a.name, f.value,
+                             f.limit);
       break;
     case kernel::Fault::Kind::kInPositionTimeout:
     case kernel::Fault::Kind::kNone:
@@ -388,6 +389,19 @@ Result<RunResult> Simulator::run(const interp::Setup& setup, const RunOptions& o
   std::optional<Error> program_alarm;
   BlockClock times;
   std::uint32_t program_alarm_context = 0;
+  // --strict: a warning of the set-up (the probe's length against its H,
+  // grbl on a lagging servo) is an alarm before the first block unless
+  // --allow or the scene's [strict] allow names it.
+  if (setup.strict) {
+    std::vector<interp::Warning> setup_warnings;
+    if (auto w = probe_length_warning(plant.probing().spec())) setup_warnings.push_back(*w);
+    if (auto w = grbl_servo_warning(m_, d_)) setup_warnings.push_back(*w);
+    if (const interp::Warning* w = first_refused(setup_warnings, setup.strict_allow)) {
+      program_alarm =
+          Error{AlarmId::kStrictWarning, w->code + ": " + w->text, SourceLoc{file_of(0), 0, 1}, -1};
+      ending = true;
+    }
+  }
 
   for (;;) {
     // Feed the kernel until it is full or the interpreter must wait: first

@@ -188,6 +188,63 @@ TEST(SurfacesSweep, SigtermKeepsFinishedRowsAndMarksTheRestNotRun) {
   EXPECT_FALSE(fs::exists(partial));
 }
 
+// Ctrl-C (SIGINT) stops taking scenarios as SIGTERM does: the scenarios
+// not taken are not_run, never counted as failed; the table is whole.
+TEST(SurfacesSweep, CtrlCLeavesUnrunScenariosNotRunNotFailed) {
+  Sweep s("G04 X0.3\nM30\n", "scenarios = 100000\nworkers = 1\n");
+  Child c({"sweep", s.spec.string(), "-q"}, "/dev/null", (s.dir.path / "err.txt").string());
+  const fs::path partial = s.csv().string() + ".partial";
+  for (int i = 0; i < 400 && count_lines(read_file(partial)) < 3; ++i)
+    std::this_thread::sleep_for(std::chrono::milliseconds(25));
+  c.signal(SIGINT);
+  const auto e = c.wait(60.0);
+  ASSERT_TRUE(e.exited) << "ended by signal " << e.signal;
+  EXPECT_EQ(e.code, 1);
+  const auto j = s.table();
+  ASSERT_FALSE(j.is_discarded());
+  const auto& sum = j["summary"];
+  EXPECT_GT(sum["passed"].get<int>(), 0);
+  EXPECT_GT(sum["not_run"].get<int>(), 0);
+  EXPECT_EQ(sum["failed"].get<int>(), sum["statuses"].value("interrupted", 0));
+  EXPECT_EQ(sum["errors"].get<int>(), 0);
+  int not_run = 0;
+  for (const auto& row : j["rows"]) {
+    if (row["status"] != "not_run") continue;
+    ++not_run;
+    EXPECT_FALSE(row["pass"].get<bool>());
+  }
+  EXPECT_EQ(not_run, sum["not_run"].get<int>());
+}
+
+// alarm= by code or key holds in a sweep as in `skipnc run` (the rows keep
+// the alarm's code and key, not only its number).
+TEST(SurfacesSweep, AlarmNamesInExpectMatchAsInRun) {
+  const std::string prog = "#3000=1(BAD)\nM30\n";
+  for (const char* name : {"alarm=MC0001", "alarm=user_alarm", "alarm=3001"}) {
+    Sweep s(prog, std::string("scenarios = 2\nexpect = [\"") + name + "\"]\n");
+    EXPECT_EQ(s.run({"-q"}).exit_code, 0) << name << ": " << read_file(s.csv());
+  }
+  Sweep other(prog, "scenarios = 1\nexpect = [\"alarm=probe_crash\"]\n");
+  EXPECT_EQ(other.run({"-q"}).exit_code, 1);
+  Sweep typo(prog, "scenarios = 1\nexpect = [\"alarm=probe_crsh\"]\n");
+  EXPECT_EQ(typo.run({"-q"}).exit_code, 2);
+  EXPECT_NE(typo.err().find("s.sweep.toml:"), std::string::npos) << typo.err();
+  EXPECT_NE(typo.err().find("probe_crsh"), std::string::npos) << typo.err();
+}
+
+// --junit is an output like the tables: never over an input or a table.
+TEST(SurfacesSweep, JunitFileNeverReplacesAnInput) {
+  Sweep s("G0 X1.\nM30\n", "scenarios = 2\n");
+  const std::string program = read_file(s.dir.path / "p.nc");
+  for (const auto& extra : std::vector<std::vector<std::string>>{
+           {"--junit", (s.dir.path / "p.nc").string()}, {"--junit", s.csv().string()}}) {
+    EXPECT_EQ(s.run(extra).exit_code, 2) << extra[1];
+    EXPECT_NE(s.err().find("same file"), std::string::npos) << s.err();
+  }
+  EXPECT_EQ(read_file(s.dir.path / "p.nc"), program);
+  EXPECT_FALSE(fs::exists(s.csv()));
+}
+
 // ---- 3. Every file the run reads is checked --------------------------------
 
 TEST(SurfacesInputs, DevicesAndFifosAreRefusedByName) {

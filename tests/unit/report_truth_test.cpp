@@ -98,6 +98,17 @@ TEST(Truth, AlarmExpectationAcceptsCodesAndKeys) {
   EXPECT_NE(read_file(tmp.path / "err").find("no alarm of the fanuc dialect"), std::string::npos);
 }
 
+// A user alarm (#3000 = 1) is named by the code the report shows, MC0001,
+// as well as by its number and key; another user alarm's code fails.
+TEST(Truth, AlarmExpectationAcceptsAUserAlarmsCode) {
+  skipnc::test::TempDir tmp;
+  const auto nc = tmp.write("u.nc", "#3000 = 1 (CLAMP OPEN)\nM30\n");
+  for (const std::string e : {"alarm=MC0001", "alarm=mc0001", "alarm=user_alarm", "alarm=3001"}) {
+    EXPECT_EQ(run_cli({"run", nc.string(), "-q", "--expect", e}).exit_code, 0) << e;
+  }
+  EXPECT_EQ(run_cli({"run", nc.string(), "-q", "--expect", "alarm=MC0002"}).exit_code, 3);
+}
+
 TEST(Truth, MessagesWholeNumbersPrintWithoutSixDecimals) {
   skipnc::test::TempDir tmp;
   const auto nc = tmp.write("p.nc", "G21 G90\nG31 P5. X1. F100\nM30\n");
