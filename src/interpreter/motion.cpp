@@ -78,6 +78,16 @@ Flow<Step> Interpreter::Impl::motion(const Words& words, CommandSink& out, bool 
   AxisMask moved;
   auto t = axis_targets(words, g53, target, moved);
   if (!t) return std::unexpected(t.error());
+  // LinuxCNC and grbl move in machine coordinates only with G0 or G1: G53
+  // with G38.n or an arc is refused (LinuxCNC rs274ngc check_g_codes,
+  // "Must use G0 or G1 with G53"; grbl gcode.c, error 30).
+  if (g53 && (ngc || grbl) &&
+      (skip || (modal.motion != Motion::kRapid && modal.motion != Motion::kLinear))) {
+    return fail(AlarmId::kG53Motion,
+                skip ? "G53 with a probe move (G38.n): G53 moves only with G0 or G1"
+                     : "G53 with an arc (G02/G03 modal): G53 moves only with G0 or G1",
+                loc(cur_col));
+  }
   // G53 G01 is a feed in machine coordinates on LinuxCNC and grbl.
   if (g53 && !skip && !((ngc || grbl) && modal.motion == Motion::kLinear)) {
     // G53 positions at rapid traverse whatever the modal motion (B-63944EN
