@@ -548,6 +548,7 @@ Flow<Step> Interpreter::Impl::g37_block(const Words& words, CommandSink& out) {
     text.remove_prefix(1);
   }
   rec.block = std::string(text);
+  rec.code = "G37";
   rec.kind = spec.kind;
   pending_skip.target = sk.target;
   pending_skip.loc = at;

@@ -139,6 +139,7 @@ Flow<Step> Interpreter::Impl::queue_skip(const canon::Skip& sk, SourceLoc at, Co
   }
   while (!text.empty() && (text.front() == ' ' || text.front() == '\t')) text.remove_prefix(1);
   rec.block = std::string(text);
+  rec.code = pending_skip.g38 != 0 ? "G38." + std::to_string(pending_skip.g38 - 380) : "G31";
   rec.kind = spec.kind;
   rec.p = spec.p;
   pending_skip.target = target;

@@ -200,6 +200,8 @@ void write_meta(Json& j, const PlotModel& m) {
   j.key("axes");
   j.array(m.axis_names, [&](char c) { j.str(std::string(1, c)); });
   j.boolean("tipPath", m.tip_path);
+  j.str("tipNote", m.tip_note);
+  j.str("skipLegend", m.skip_legend);
   j.value_raw("xyz", fmt::format("[{},{},{}]", m.xyz[0], m.xyz[1], m.xyz[2]));
   j.close('}');
   j.key("inks");

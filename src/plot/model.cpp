@@ -182,6 +182,7 @@ void build_skips(const PlotInput& in, PlotModel& pm) {
     sk.line = s.line;
     sk.ctx = s.context;
     sk.block = s.block;
+    sk.code = s.code;
     sk.signal = s.signal;
     sk.triggered = s.triggered;
     sk.ended_by_alarm = s.ended_by_alarm;
@@ -417,6 +418,31 @@ void frame_views(const PlotInput& in, PlotModel& pm) {
 
 }  // namespace
 
+// The header's words on the path, the skip ink's legend with the codes that
+// ran, and where a crash, collision or protection alarm happened.
+void describe_path(const PlotInput& in, const ToolLengths& tools, PlotModel& pm) {
+  const bool probe = in.scene != nullptr && in.scene->probing.probe.has_value();
+  if (pm.tip_path)
+    pm.tip_note = probe ? "path of the tool tip (probe: ball centre)" : "path of the tool tip";
+  std::vector<std::string> codes;
+  bool g38 = false;
+  for (const auto& s : pm.skips) {
+    g38 = g38 || s.code.starts_with("G38");
+    if (std::find(codes.begin(), codes.end(), s.code) == codes.end()) codes.push_back(s.code);
+  }
+  std::sort(codes.begin(), codes.end());
+  std::string list;
+  for (const auto& c : codes) list += (list.empty() ? "" : ", ") + c;
+  if (list.empty()) list = in.dialect != nullptr && in.dialect->sw.probe_g38 ? "G38.n" : "G31";
+  pm.skip_legend = fmt::format("{} move ({})", g38 ? "probe" : "skip", list);
+  const sim::RunResult& r = *in.result;
+  if (r.alarm && r.alarm_position) {
+    pm.alarm_at = tip(to3(*r.alarm_position, pm.xyz), tools.at(r.time_s));
+    pm.alarm_key = std::string(alarm_key(r.alarm->id));
+    pm.extent.add(*pm.alarm_at);
+  }
+}
+
 PlotModel build_model(const PlotInput& in) {
   PlotModel pm;
   const auto& m = *in.machine;
@@ -479,6 +505,7 @@ PlotModel build_model(const PlotInput& in) {
     pm.blocks.push_back(v);
   }
   build_skips(in, pm);
+  describe_path(in, tools, pm);
   frame_views(in, pm);
   if (in.scene != nullptr) {
     pm.shapes = scene_shapes(*in.scene, m, pm.xyz, pm.full_extent);

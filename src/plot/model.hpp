@@ -121,6 +121,7 @@ struct SkipMark {
   std::uint32_t line = 0;
   std::uint32_t ctx = 0;
   std::string block, signal, kind;
+  std::string code;  // G31, G37, G38.2-G38.5
   bool triggered = false;
   int p = -1;
   double latch_t = 0.0;             // instant of the signal (or of the sync when none came)
@@ -194,6 +195,16 @@ struct PlotModel {
   // point minus the length of the tool in the spindle along Z. True when a
   // tool with a length was in the spindle at some time.
   bool tip_path = false;
+  // What the header says of the path: "path of the tool tip", with "(probe:
+  // ball centre)" only when the scene has a probe; "" when not tip_path.
+  std::string tip_note;
+  // The legend of the skip ink: the codes of the skip moves that ran
+  // ("skip move (G31)", "probe move (G38.2, G38.4)").
+  std::string skip_legend;
+  // A probe crash, collision or probe-protection alarm: where it happened
+  // (x, y, z of the machine, the tool tip as the path), drawn as a marker.
+  std::optional<Vec3> alarm_at;
+  std::string alarm_key;  // "probe_crash", "collision", "probe_protection"
 };
 
 struct PlotInput {

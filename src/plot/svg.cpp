@@ -10,6 +10,8 @@
 #include <cmath>
 #include <iterator>
 #include <optional>
+#include <string>
+#include <vector>
 
 #include "plot/plot.hpp"
 #include "plot/svg_util.hpp"
@@ -22,6 +24,36 @@ constexpr double kWidth = 1600;
 constexpr double kMargin = 16;
 constexpr double kCellW = 500, kCellH = 380, kGap = 12;
 constexpr double kHeaderH = 64;
+// Characters of the alarm's 13 px bold text on one line of the picture's
+// width (text_width's 0.6 em per character, 0.66 for bold).
+constexpr std::size_t kAlarmChars = static_cast<std::size_t>((kWidth - 2 * kMargin) / (0.66 * 13));
+
+// `text` in lines of at most `n` characters, broken at spaces (a longer
+// word is cut).
+std::vector<std::string> wrap_words(const std::string& text, std::size_t n) {
+  std::vector<std::string> lines;
+  std::string cur;
+  std::size_t i = 0;
+  while (i < text.size()) {
+    std::size_t j = text.find(' ', i);
+    if (j == std::string::npos) j = text.size();
+    std::string word = text.substr(i, j - i);
+    i = j + 1;
+    while (word.size() > n) {
+      if (!cur.empty()) lines.push_back(std::move(cur));
+      cur.clear();
+      lines.push_back(word.substr(0, n));
+      word.erase(0, n);
+    }
+    if (!cur.empty() && cur.size() + 1 + word.size() > n) {
+      lines.push_back(std::move(cur));
+      cur.clear();
+    }
+    cur += (cur.empty() ? "" : " ") + word;
+  }
+  if (!cur.empty()) lines.push_back(std::move(cur));
+  return lines;
+}
 
 void draw_path(Svg& o, const PlotModel& m, const ViewDef& v, const Frame& f, LabelPlacer& labels) {
   // One <path> per kind, rapids under feeds under skips.
@@ -189,6 +221,7 @@ void draw_markers(Svg& o, const PlotModel& m, const ViewDef& v, const Frame& f, 
     bool leader = false;
     const double w = text_width(text, 11);
     const Box2 b = labels.place(a.x, a.y, w, 13, leader);
+    if (b.w <= 0) return;  // no room left in the view: the marker's tooltip has it
     if (leader) {
       const double lx = std::clamp(a.x, b.x, b.x + b.w), ly = std::clamp(a.y, b.y, b.y + b.h);
       o.add("<path d=\"M{:.1f} {:.1f}L{:.1f} {:.1f}\" stroke=\"{}\" stroke-width=\"0.8\"/>\n", a.x,
@@ -215,6 +248,10 @@ void draw_markers(Svg& o, const PlotModel& m, const ViewDef& v, const Frame& f, 
         "height=\"8\" stroke=\"{}\" fill=\"{}\" stroke-width=\"{}\"><title>{}</title></rect>\n",
         s.index, r.x - 4, r.y - 4, ink(Ink::kRest).stroke, ink(Ink::kRest).fill,
         ink(Ink::kRest).width, esc(s.rest_label));
+  }
+  if (m.alarm_at) {
+    const Pt a = P(*m.alarm_at);
+    o.add("{}", alarm_marker(a.x, a.y, alarm_marker_legend(m.alarm_key) + ": " + m.alarm));
   }
   for (const auto& s : m.skips) {
     const Pt p = P(s.latch);
@@ -251,6 +288,9 @@ void draw_view(Svg& o, const PlotModel& m, const ViewDef& v, double x, double y)
     for (const Vec3& p : {s.latch, s.rest}) {
       labels.block(Box2{f.px(dot(p, v.u)) - 6, f.py(dot(p, v.v)) - 6, 12, 12});
     }
+  }
+  if (m.alarm_at) {
+    labels.block(Box2{f.px(dot(*m.alarm_at, v.u)) - 8, f.py(dot(*m.alarm_at, v.v)) - 8, 16, 16});
   }
   std::vector<LabelRequest> shape_labels;
   draw_shapes(o, m, v, f, notes, labels, shape_labels);
@@ -319,6 +359,21 @@ std::string stroke_attrs(Ink i) {
   return a;
 }
 
+std::string alarm_marker(double x, double y, const std::string& title) {
+  return fmt::format(
+      "<g class=\"alarm-marker\"><circle cx=\"{0:.1f}\" cy=\"{1:.1f}\" r=\"7\" stroke=\"#c00000\" "
+      "fill=\"#ffffff\" stroke-width=\"2\"/><path d=\"M{2:.1f} {3:.1f}l8 8m0 -8l-8 8\" "
+      "stroke=\"#c00000\" stroke-width=\"2\"/>{4}</g>\n",
+      x, y, x - 4, y - 4, title.empty() ? std::string() : "<title>" + esc(title) + "</title>");
+}
+
+std::string alarm_marker_legend(const std::string& key) {
+  const std::string what = key == "probe_crash" ? "probe crash"
+                           : key == "collision" ? "collision"
+                                                : "probe protection";
+  return what + ": where the alarm came";
+}
+
 std::string to_svg(const PlotModel& m) {
   Svg body;
   // Header.
@@ -330,24 +385,27 @@ std::string to_svg(const PlotModel& m) {
       "machine {} \u00b7 dialect {} \u00b7 {} after {} s of machine time \u00b7 {} skip{}",
       m.machine, m.dialect, m.status, num(m.time_s, 3), m.skips.size(),
       m.skips.size() == 1 ? "" : "s");
-  if (m.tip_path) sub += " \u00b7 path of the tool tip (probe: ball centre)";
+  if (!m.tip_note.empty()) sub += " \u00b7 " + m.tip_note;
   body.add("<text x=\"{}\" y=\"50\" font-size=\"13\" fill=\"#444\">{}</text>\n", kMargin, esc(sub));
-  if (!m.alarm.empty()) {
+  // The alarm on lines of its own below, wrapped to the picture's width.
+  double header_h = kHeaderH;
+  for (const std::string& line : wrap_words("ALARM " + m.alarm, kAlarmChars)) {
+    if (m.alarm.empty()) break;
     body.add(
-        "<text x=\"{}\" y=\"50\" font-size=\"13\" font-weight=\"bold\" fill=\"#c00000\" "
-        "text-anchor=\"end\">"
-        "ALARM {}</text>\n",
-        kWidth - kMargin, esc(m.alarm));
+        "<text class=\"alarm\" x=\"{}\" y=\"{}\" font-size=\"13\" font-weight=\"bold\" "
+        "fill=\"#c00000\">{}</text>\n",
+        kMargin, header_h + 6, esc(line));
+    header_h += 18;
   }
-  double views_bottom = kHeaderH;
+  double views_bottom = header_h;
   for (std::size_t i = 0; i < m.views.size(); ++i) {
     const double x = kMargin + static_cast<double>(i % 2) * (kCellW + kGap);
-    const double y = kHeaderH + static_cast<double>(i / 2) * (kCellH + kGap);
+    const double y = header_h + static_cast<double>(i / 2) * (kCellH + kGap);
     draw_view(body, m, m.views[i], x, y);
     views_bottom = std::max(views_bottom, y + kCellH);
   }
   const double px = kMargin + 2 * kCellW + kGap + 20;
-  const double panel_bottom = draw_panel(body, m, px, kHeaderH, kWidth - kMargin - px);
+  const double panel_bottom = draw_panel(body, m, px, header_h, kWidth - kMargin - px);
   const double ty = std::max(views_bottom, panel_bottom) + 24;
   const double bottom = draw_more_zooms(
       body, m, kMargin, draw_timeline(body, m, kMargin, ty, kWidth - 2 * kMargin) + 24,

@@ -43,7 +43,7 @@ std::string fit_text(const std::string& s, double w, double font_px) {
   return s.size() <= max ? s : s.substr(0, max - 3) + "...";
 }
 
-void legend_item(Svg& o, Ink i, double x, double y) {
+void legend_item(Svg& o, Ink i, double x, double y, const std::string& text) {
   const InkStyle& st = ink(i);
   switch (i) {
     case Ink::kLatch:
@@ -76,8 +76,7 @@ void legend_item(Svg& o, Ink i, double x, double y) {
     default:
       o.add("<path d=\"M{} {}h28\" {}/>", x, y - 4, stroke_attrs(i));
   }
-  o.add("<text x=\"{}\" y=\"{}\" font-size=\"11\" fill=\"#333\">{}</text>\n", x + 36, y,
-        esc(st.legend));
+  o.add("<text x=\"{}\" y=\"{}\" font-size=\"11\" fill=\"#333\">{}</text>\n", x + 36, y, esc(text));
 }
 
 double draw_legend(Svg& o, const PlotModel& m, double x, double y, double w) {
@@ -103,7 +102,15 @@ double draw_legend(Svg& o, const PlotModel& m, double x, double y, double w) {
       x, y + 14);
   y += 34;
   for (std::size_t i = 0; i < used.size(); ++i) {
-    legend_item(o, used[i], x, y);
+    const Ink k = used[i];
+    legend_item(o, k, x, y,
+                k == Ink::kSkip && !m.skip_legend.empty() ? m.skip_legend : ink(k).legend);
+    y += 17;
+  }
+  if (m.alarm_at) {
+    o.add("{}", alarm_marker(x + 14, y - 4, ""));
+    o.add("<text x=\"{}\" y=\"{}\" font-size=\"11\" fill=\"#333\">{}</text>\n", x + 36, y,
+          esc(alarm_marker_legend(m.alarm_key)));
     y += 17;
   }
   (void)w;

@@ -168,6 +168,7 @@ void draw_skip_instants(Svg& o, const PlotModel& m, const TimeFrame& tf, double 
     Box2 b{xl - tw / 2, band, tw, 12};
     bool leader = false;
     b = labels.place(xl, band + 6, tw, 12, leader);
+    if (b.w <= 0) continue;
     o.add("<text x=\"{:.1f}\" y=\"{:.1f}\" font-size=\"10\" fill=\"#b0005f\">{}</text>\n", b.x,
           b.y + 10, esc(text));
   }

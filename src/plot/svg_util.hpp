@@ -35,6 +35,12 @@ std::string stroke_attrs(Ink i);
 inline constexpr const char* kHalo =
     "stroke=\"#ffffff\" stroke-width=\"3\" stroke-opacity=\"0.85\" paint-order=\"stroke\"";
 
+// The marker of a crash, collision or protection alarm at (x, y): a red
+// cross in a circle (class "alarm-marker"), with `title` as its tooltip.
+std::string alarm_marker(double x, double y, const std::string& title);
+// Its legend: "probe crash: where the alarm came" ...
+std::string alarm_marker_legend(const std::string& key);
+
 // Legend, skip cards with a zoom on each latch, variables and messages, from
 // (x, y) in a column `w` wide. Returns the bottom.
 double draw_panel(Svg& o, const PlotModel& m, double x, double y, double w);

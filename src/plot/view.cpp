@@ -181,10 +181,27 @@ Box2 LabelPlacer::place(double ax, double ay, double w, double h, bool& leader) 
       return b;
     }
   }
-  leader = false;
-  const Box2 b = clamp_box(Box2{ax + cands[0].dx, ay + cands[0].dy, w, h});
-  used_.push_back(b);
-  return b;
+  // Every place of the view on a grid of half a label's height, the one
+  // nearest to the anchor; none free: no label (labels never stack).
+  std::optional<Box2> best;
+  double best_d = 0.0;
+  const double step = std::max(4.0, h / 2);
+  for (double y = clip_.y + 2; y + h <= clip_.y + clip_.h - 2; y += step) {
+    for (double x = clip_.x + 2; x + w <= clip_.x + clip_.w - 2; x += step) {
+      const Box2 b{x, y, w, h};
+      if (std::any_of(used_.begin(), used_.end(), [&](const Box2& u) { return u.overlaps(b); }))
+        continue;
+      const double d = std::hypot(x + w / 2 - ax, y + h / 2 - ay);
+      if (!best || d < best_d) {
+        best = b;
+        best_d = d;
+      }
+    }
+  }
+  leader = best.has_value();
+  if (!best) return Box2{ax, ay, 0, 0};
+  used_.push_back(*best);
+  return *best;
 }
 
 }  // namespace skipnc::plot

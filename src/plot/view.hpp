@@ -61,7 +61,11 @@ class LabelPlacer {
   void block(Box2 b) { used_.push_back(b); }
   // Marks the cells a drawn line crosses.
   void line(Pt a, Pt b);
-  // Top-left of the label box; `leader` is true when it sits away from the anchor.
+  // The label's box; `leader` is true when it sits away from the anchor.
+  // Never over another label or marker: beside the anchor, on rings
+  // further out, else the free place of the view nearest to it; with none
+  // left, an empty box (w = 0): the label is not drawn (its marker keeps
+  // the text as a tooltip).
   Box2 place(double ax, double ay, double w, double h, bool& leader);
 
  private:

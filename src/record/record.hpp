@@ -97,6 +97,7 @@ struct SkipRecord {
   std::uint32_t context = 0;  // CallContext of the block
   std::int32_t n = -1;        // N number of the block, -1 when none
   std::string block;          // the block's text
+  std::string code = "G31";   // the move's code: G31, G37, G38.2-G38.5 (modal G38 too)
   canon::SkipKind kind = canon::SkipKind::kSkip;
   int p = -1;
   std::string signal;  // input that ended the block, "" when none

@@ -177,9 +177,21 @@
         return b;
       }
     }
-    var f = clampBox({x: ax + 8, y: ay - h / 2, w: w, h: h});
-    used.push(f);
-    return f;
+    // The free place of the view nearest to the anchor (as view.cpp); none:
+    // no label (labels never stack).
+    var best = null, bestD = 0, step = Math.max(4, h / 2);
+    for (var y = c.y + 2; y + h <= c.y + c.h - 2; y += step) {
+      for (var x = c.x + 2; x + w <= c.x + c.w - 2; x += step) {
+        var q = {x: x, y: y, w: w, h: h};
+        if (used.some(function (u) { return overlaps(u, q); })) continue;
+        var d = Math.hypot(x + w / 2 - ax, y + h / 2 - ay);
+        if (!best || d < bestD) { best = q; bestD = d; }
+      }
+    }
+    if (!best) return null;
+    best.leader = true;
+    used.push(best);
+    return best;
   };
 
   function haloText(ctx, text, x, y, colour) {

@@ -82,7 +82,8 @@
       } else {
         K.stroke(ctx, st); ctx.beginPath(); ctx.moveTo(2, 7); ctx.lineTo(32, 7); ctx.stroke();
       }
-      box.appendChild(K.el('div', {cls: 'item'}, [c, K.el('span', {text: st.legend})]));
+      var text = name === 'skip' && D.meta.skipLegend ? D.meta.skipLegend : st.legend;
+      box.appendChild(K.el('div', {cls: 'item'}, [c, K.el('span', {text: text})]));
     });
     return box;
   }
@@ -178,7 +179,7 @@
       K.el('div', {cls: 'meta', text: 'machine ' + m.machine + ' \u00b7 dialect ' + m.dialect + ' \u00b7 ' + m.status +
                  ' after ' + K.num(m.time, 3) + ' s of machine time \u00b7 ' + D.skips.length + ' skip' +
                  (D.skips.length === 1 ? '' : 's') + ' \u00b7 ' + m.periods + ' servo periods, ' + D.t.length + ' drawn' +
-                 (m.tipPath ? ' \u00b7 path of the tool tip (probe: ball centre)' : '')}),
+                 (m.tipNote ? ' \u00b7 ' + m.tipNote : '')}),
       m.alarm ? K.el('div', {cls: 'alarm', text: 'ALARM ' + m.alarm}) : null
     ]);
     var toolbar = K.el('div', {cls: 'toolbar'}, [

@@ -244,6 +244,7 @@
     ctx.font = '11px ' + FONT;
     function label(p, text, colour) {
       var w = ctx.measureText(text).width, b = placer.place(p.x, p.y, w, 13);
+      if (!b) return;  // no room left in the view
       if (b.leader) {
         ctx.strokeStyle = colour; ctx.lineWidth = 0.8; ctx.setLineDash([]);
         ctx.beginPath(); ctx.moveTo(p.x, p.y);
