@@ -163,20 +163,27 @@ TEST(SurfacesSweep, DefaultTablesGoBesideTheSpec) {
   EXPECT_FALSE(fs::exists(fs::current_path() / "s.sweep.csv"));
 }
 
-// SIGTERM stops taking scenarios: the table is whole, with every finished
-// row and the rest not_run; exit 1.
-TEST(SurfacesSweep, SigtermKeepsFinishedRowsAndMarksTheRestNotRun) {
-  Sweep s("G04 X0.3\nM30\n", "scenarios = 100000\nworkers = 1\n");
+// A long sweep stopped by `sig` once some rows are done: exit 1, and the
+// JSON table (whole: the .partial file renamed into place).
+nlohmann::json stopped_sweep(const Sweep& s, int sig) {
   Child c({"sweep", s.spec.string(), "-q"}, "/dev/null", (s.dir.path / "err.txt").string());
   // Some rows finished: the .partial file has more than its header.
   const fs::path partial = s.csv().string() + ".partial";
   for (int i = 0; i < 400 && count_lines(read_file(partial)) < 3; ++i)
     std::this_thread::sleep_for(std::chrono::milliseconds(25));
-  c.signal(SIGTERM);
+  c.signal(sig);
   const auto e = c.wait(60.0);
-  ASSERT_TRUE(e.exited) << "ended by signal " << e.signal;
+  EXPECT_TRUE(e.exited) << "ended by signal " << e.signal;
   EXPECT_EQ(e.code, 1);
-  const auto j = s.table();
+  EXPECT_FALSE(fs::exists(partial));
+  return s.table();
+}
+
+// SIGTERM stops taking scenarios: the table is whole, with every finished
+// row and the rest not_run; exit 1.
+TEST(SurfacesSweep, SigtermKeepsFinishedRowsAndMarksTheRestNotRun) {
+  Sweep s("G04 X0.3\nM30\n", "scenarios = 100000\nworkers = 1\n");
+  const auto j = stopped_sweep(s, SIGTERM);
   ASSERT_FALSE(j.is_discarded());
   const auto& sum = j["summary"];
   EXPECT_GT(sum["passed"].get<int>(), 0);
@@ -185,22 +192,13 @@ TEST(SurfacesSweep, SigtermKeepsFinishedRowsAndMarksTheRestNotRun) {
                 sum["statuses"].value("interrupted", 0),
             100000);
   EXPECT_EQ(count_lines(read_file(s.csv())), 100001);
-  EXPECT_FALSE(fs::exists(partial));
 }
 
 // Ctrl-C (SIGINT) stops taking scenarios as SIGTERM does: the scenarios
 // not taken are not_run, never counted as failed; the table is whole.
 TEST(SurfacesSweep, CtrlCLeavesUnrunScenariosNotRunNotFailed) {
   Sweep s("G04 X0.3\nM30\n", "scenarios = 100000\nworkers = 1\n");
-  Child c({"sweep", s.spec.string(), "-q"}, "/dev/null", (s.dir.path / "err.txt").string());
-  const fs::path partial = s.csv().string() + ".partial";
-  for (int i = 0; i < 400 && count_lines(read_file(partial)) < 3; ++i)
-    std::this_thread::sleep_for(std::chrono::milliseconds(25));
-  c.signal(SIGINT);
-  const auto e = c.wait(60.0);
-  ASSERT_TRUE(e.exited) << "ended by signal " << e.signal;
-  EXPECT_EQ(e.code, 1);
-  const auto j = s.table();
+  const auto j = stopped_sweep(s, SIGINT);
   ASSERT_FALSE(j.is_discarded());
   const auto& sum = j["summary"];
   EXPECT_GT(sum["passed"].get<int>(), 0);

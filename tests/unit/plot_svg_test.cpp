@@ -9,6 +9,7 @@
 #include <string>
 
 #include "support/run_cli.hpp"
+#include "support/svg_json.hpp"
 
 namespace skipnc {
 namespace {
@@ -115,12 +116,7 @@ Proj projection(const std::string& id) {
 }
 
 json read_svg(const TempDir& dir, const std::string& svg) {
-  const auto script = dir.write("svg_reader.py", kSvgReader);
-  const auto out_file = dir.path / "svg.json";
-  const std::string cmd = "python3 " + test::shell_quote(script.string()) + " " +
-                          test::shell_quote(svg) + " > " + test::shell_quote(out_file.string());
-  EXPECT_EQ(std::system(cmd.c_str()), 0) << "the SVG is not well-formed XML";
-  return json::parse(read_file(out_file));
+  return test::read_svg_with(dir, kSvgReader, svg);
 }
 
 // Checks that every view has one marker per skip, at the projection of the

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "support/run_cli.hpp"
+#include "support/svg_json.hpp"
 
 namespace skipnc {
 namespace {
@@ -59,12 +60,7 @@ print(json.dumps(out))
 )";
 
 json read_svg(const TempDir& dir, const std::string& svg) {
-  const auto script = dir.write("reader.py", kReader);
-  const auto out = dir.path / "svg.json";
-  const std::string cmd = "python3 " + test::shell_quote(script.string()) + " " +
-                          test::shell_quote(svg) + " > " + test::shell_quote(out.string());
-  EXPECT_EQ(std::system(cmd.c_str()), 0) << "the SVG is not well-formed XML";
-  return json::parse(read_file(out));
+  return test::read_svg_with(dir, kReader, svg);
 }
 
 // Every text the header and legend hold, joined.

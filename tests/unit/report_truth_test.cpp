@@ -132,4 +132,19 @@ TEST(Truth, MessagesG92_1IsNamedAsItself) {
   EXPECT_EQ(err.find("straight probe"), std::string::npos) << err;
 }
 
+// CI output: the README's "In CI" section says how to use --expect,
+// --strict (with --allow), --junit for run, repeat and sweep, and each exit
+// status the command gives.
+TEST(Truth, ReadmeSaysHowToUseExpectStrictJunitAndExitCodesInCi) {
+  const std::string readme = read_file(fs::path(SKIPNC_SOURCE_DIR) / "README.md");
+  const auto at = readme.find("\n## In CI\n");
+  ASSERT_NE(at, std::string::npos);
+  const auto end = readme.find("\n## ", at + 1);
+  const std::string ci = readme.substr(at, end - at);
+  for (const char* words : {"--expect", "--strict", "--allow", "--junit", "--repeat",
+                            "skipnc sweep", "Exit status", "`0`", "`1`", "`2`", "`3`"}) {
+    EXPECT_NE(ci.find(words), std::string::npos) << words;
+  }
+}
+
 }  // namespace
