@@ -13,7 +13,9 @@
 //                       (extended) with V, a #500-#999 file beside the case,
 //                       copied to the run's temporary folder as the control's
 //                       kept commons (a probe calibrated before the program);
-//                       "memory_after" checks that file's lines after the run.
+//                       "memory_after" checks that file's lines after the run;
+//   <case>.dprnt        the file DPRNT writes between POPEN and PCLOS
+//                       (--dprnt), byte for byte (optional).
 // Programs in a folder named "macros" are called by the cases (-I), not cases.
 #include <gtest/gtest.h>
 
@@ -130,6 +132,8 @@ TEST_P(Golden, MatchesStoredResult) {
     if (want.contains("memory")) {
       args.insert(args.end(), {"-m", memory_machine(want["memory"], nc, tmp.path)});
     }
+    const fs::path dprnt = fs::path(nc).replace_extension(".dprnt");
+    if (fs::exists(dprnt)) args.insert(args.end(), {"--dprnt", (tmp.path / "out.dprnt").string()});
     if (want.contains("args")) {
       for (const auto& a : want["args"]) {
         // ${SOURCE_DIR}: the source tree (examples/...); ${TMP}: the run's temp folder.
@@ -150,6 +154,9 @@ TEST_P(Golden, MatchesStoredResult) {
     const json got = json::parse(read_file(report));
     const double tol = want.value("tolerance", 1e-6);
     if (want.contains("report")) expect_subset(want["report"], got, "report", tol);
+    if (fs::exists(dprnt)) {
+      EXPECT_EQ(read_file(tmp.path / "out.dprnt"), read_file(dprnt)) << "DPRNT file of " << nc;
+    }
     if (want.contains("memory_after")) {
       EXPECT_EQ(read_file(tmp.path / "memory.vars"), want["memory_after"].get<std::string>())
           << "kept commons after " << nc;
