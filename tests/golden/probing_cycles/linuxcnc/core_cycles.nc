@@ -17,7 +17,8 @@
 (the clamp, machine Y60, G54 Y29.544, with the ball at 28.544: the run)
 (ends with PATH OBSTRUCTED. LinuxCNC samples the probe input once a servo)
 (period, 1 ms: a touch at the slow 100 mm/min reads up to 100 / 60000 =)
-(0.00167 mm past the surface, so every value is checked within 0.002.)
+(0.00167 mm past the surface, a size read from two touches up to twice)
+(that: every value is checked within 0.004.)
 G21 G90 G17 G40 G49 G80 G54
 #<_probe_radius> = 1
 G53 G0 Z0
