@@ -40,6 +40,7 @@ G65 P9752 A#10 D#12 Z#26 R#18 Q#17
 #146=#143 (from outside: a web wider than nominal is more metal)
 IF[[#26EQ#0]OR[#18LT0]]THEN#146=-#143
 #147=#10
+G65 P9757 W#23 D1. K#10
 G65 P9753 H#11 M#13
 IF[#19EQ#0]GOTO90
 #15=#0

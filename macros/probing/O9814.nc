@@ -42,6 +42,7 @@ G65 P9810 X#14 Y#15
 #145=2*SQRT[#140*#140+#141*#141]
 #146=#143 (from outside: a boss larger than nominal is more metal)
 IF[[#26EQ#0]OR[#18LT0]]THEN#146=-#143
+G65 P9757 W#23 D1. X1. Y1.
 G65 P9753 H#11 M#13
 IF[#19EQ#0]GOTO90
 G65 P9751 S#19 X#140 Y#141

@@ -8,12 +8,20 @@
 //                       which ${SOURCE_DIR} and ${TMP} name the source tree and
 //                       the run's temporary folder);
 //   <case>.scene.toml   the scene for the run (optional);
-//   <case>.machine.toml the machine for the run and for canon (optional).
+//   <case>.machine.toml the machine for the run and for canon (optional);
+//   "memory" in the .json: {"machine": M, "vars": V}: the run's machine is M
+//                       (extended) with V, a #500-#999 file beside the case,
+//                       copied to the run's temporary folder as the control's
+//                       kept commons (a probe calibrated before the program);
+//                       "memory_after" checks that file's lines after the run;
+//   <case>.dprnt        the file DPRNT writes between POPEN and PCLOS
+//                       (--dprnt), byte for byte (optional).
 // Programs in a folder named "macros" are called by the cases (-I), not cases.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <filesystem>
+#include <fstream>
 #include <nlohmann/json.hpp>
 
 #include "support/run_cli.hpp"
@@ -25,11 +33,12 @@ using skipnc::test::run_cli;
 
 namespace {
 
-// tests/golden and the compatibility suite tests/compat (issue 29: programs
-// in the style of public ones, run the same way).
+// tests/golden, the compatibility suite tests/compat (issue 29: programs
+// in the style of public ones, run the same way) and tests/posts (issue 33:
+// probing programs in the output format of public CAM posts).
 std::vector<fs::path> golden_cases() {
   std::vector<fs::path> cases;
-  for (const char* folder : {"golden", "compat"}) {
+  for (const char* folder : {"golden", "compat", "posts"}) {
     const fs::path root = fs::path(SKIPNC_SOURCE_DIR) / "tests" / folder;
     if (!fs::exists(root)) continue;
     for (const auto& e : fs::recursive_directory_iterator(root)) {
@@ -76,6 +85,19 @@ void expect_subset(const json& want, const json& got, const std::string& path, d
   }
 }
 
+// The machine file of a case with "memory": extends the named machine and keeps
+// #500-#999 in a copy of the case's vars file, in the run's temporary folder.
+std::string memory_machine(const json& memory, const fs::path& nc, const fs::path& tmp) {
+  std::string m = memory.at("machine").get<std::string>();
+  const std::string key = "${SOURCE_DIR}";
+  if (m.starts_with(key)) m = SKIPNC_SOURCE_DIR + m.substr(key.size());
+  fs::copy_file(nc.parent_path() / memory.at("vars").get<std::string>(), tmp / "memory.vars");
+  const fs::path machine = tmp / "memory.machine.toml";
+  std::ofstream(machine) << "extends = " << json(m).dump()
+                         << "\npersistent_variables = \"memory.vars\"\n";
+  return machine.string();
+}
+
 class Golden : public ::testing::TestWithParam<fs::path> {};
 
 TEST_P(Golden, MatchesStoredResult) {
@@ -107,6 +129,11 @@ TEST_P(Golden, MatchesStoredResult) {
     std::vector<std::string> args = {"run", nc.string(), "--report", report.string(), "-q"};
     if (fs::exists(scene)) args.insert(args.end(), {"--scene", scene.string()});
     if (fs::exists(machine)) args.insert(args.end(), {"-m", machine.string()});
+    if (want.contains("memory")) {
+      args.insert(args.end(), {"-m", memory_machine(want["memory"], nc, tmp.path)});
+    }
+    const fs::path dprnt = fs::path(nc).replace_extension(".dprnt");
+    if (fs::exists(dprnt)) args.insert(args.end(), {"--dprnt", (tmp.path / "out.dprnt").string()});
     if (want.contains("args")) {
       for (const auto& a : want["args"]) {
         // ${SOURCE_DIR}: the source tree (examples/...); ${TMP}: the run's temp folder.
@@ -127,6 +154,13 @@ TEST_P(Golden, MatchesStoredResult) {
     const json got = json::parse(read_file(report));
     const double tol = want.value("tolerance", 1e-6);
     if (want.contains("report")) expect_subset(want["report"], got, "report", tol);
+    if (fs::exists(dprnt)) {
+      EXPECT_EQ(read_file(tmp.path / "out.dprnt"), read_file(dprnt)) << "DPRNT file of " << nc;
+    }
+    if (want.contains("memory_after")) {
+      EXPECT_EQ(read_file(tmp.path / "memory.vars"), want["memory_after"].get<std::string>())
+          << "kept commons after " << nc;
+    }
   }
 }
 

@@ -1,0 +1,1 @@
+../../../../macros/probing/grbl/xy_corner.nc

@@ -1,0 +1,1 @@
+../../../../macros/probing/grbl/z_touchoff.nc

@@ -1,0 +1,24 @@
+%
+O2022 (PROBING-Y-PLANE-ANGLE)
+(Written for skipnc in the output format of the Autodesk Fusion generic)
+(Fanuc post [fanuc.cps, its probing case for this operation], run)
+(unmodified with -I macros/probing; probe.vars is the control memory:)
+(#550 = 1 [the ball calibrated]. The part [part.scene.toml] sits off)
+(its CAD place by X-0.123 Y-0.044 Z-0.37 in G54 X-80 Y30.5 Z-229.5,)
+(the CAD features below are the true ones + [0.123, 0.044, 0.37]:)
+(the plate -Y face, along X: touches 20. apart along X, A0.: #136 =)
+(-130.5, #141 = -0.044, #139 = 0, #144 = 0; G54 Y stays 30.5.)
+N10 G90 G94 G17 G49 G40 G80
+N15 G21
+N20 G53 G0 Z0.
+N25 T20 M6
+N30 G54 G0 X0. Y-136.456
+N35 G43 Z50. H20
+N40 G65 P9832
+N45 G65 P9810 Z-5. F1000.
+N50 G65 P9843 Y-130.456 D20. Q5. A0.
+N55 G65 P9810 Z50.
+N60 G65 P9833
+N65 G53 G0 Z0.
+N70 M30
+%
