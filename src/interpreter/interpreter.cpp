@@ -53,6 +53,7 @@ Flow<void> Interpreter::Impl::init(const AxisVec& start) {
   for (const auto& [n, t] : mc.tool_offsets) tools[static_cast<std::size_t>(n)] = t;
   modal.units = mc.inch_machine ? Units::kInch : Units::kMetric;
   if (ngc || grbl) ngc_start();  // ngc_params.cpp
+  if (grbl) grbl_start();        // grbl_system.cpp
   if (!mc.persistent_vars.empty()) {
     // Locked until the run has written them back (save_persistent), so that
     // runs sharing the file do not lose each other's updates.
@@ -260,6 +261,14 @@ Flow<Step> Interpreter::Impl::execute(CommandSink& out) {
       auto c = ngc_comments();
       if (!c) return std::unexpected(c.error());
       return execute_oword(out);  // oword.cpp
+    }
+    if (grbl) {
+      if (blk.stmt.kind != gcode::StmtKind::kNone) return execute_grbl_system(out);
+      if (grbl_locked && !blk.words.empty()) {
+        return fail(AlarmId::kGrblLocked,
+                    "grbl is in alarm until $H or $X ($22 = 1: homing is required at start)",
+                    loc(blk.words.front().column));
+      }
     }
     cur_words.clear();
     auto w = collect_words(cur_words);
