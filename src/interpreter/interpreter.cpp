@@ -5,6 +5,7 @@
 #include <filesystem>
 
 #include "interpreter/impl.hpp"
+#include "interpreter/offset_units.hpp"
 
 namespace skipnc::interp {
 
@@ -12,6 +13,25 @@ namespace fs = std::filesystem;
 
 // How long a run waits for another that holds the persistent-variable file.
 constexpr double kPersistentLockWaitS = 60.0;
+
+namespace {
+
+// The machine file's offsets are in mm; the Fanuc family keeps their numbers
+// in the input unit (offset_units.hpp): the power-on unit's.
+void scale_offsets(std::vector<AxisVec>& work, std::vector<config::ToolOffset>& tools, int axes,
+                   double per) {
+  for (AxisVec& o : work) {
+    for (int i = 0; i < axes; ++i) o[i] /= per;
+  }
+  for (config::ToolOffset& t : tools) {
+    for (double* f : {&t.length_geometry, &t.length_wear, &t.radius_geometry, &t.radius_wear,
+                      &t.x_geometry, &t.z_geometry, &t.x_wear, &t.z_wear}) {
+      *f /= per;
+    }
+  }
+}
+
+}  // namespace
 
 Interpreter::Impl::Impl(const Setup& s)
     : setup(s), mc(*s.machine), dialect(*s.dialect), params(*s.params) {}
@@ -52,6 +72,7 @@ Flow<void> Interpreter::Impl::init(const AxisVec& start) {
   tools.assign(static_cast<std::size_t>(mc.tool_offset_count) + 1, config::ToolOffset{});
   for (const auto& [n, t] : mc.tool_offsets) tools[static_cast<std::size_t>(n)] = t;
   modal.units = mc.inch_machine ? Units::kInch : Units::kMetric;
+  if (offset_unit_mm(*this) != 1.0) scale_offsets(work_offsets, tools, axis_count, unit_mm());
   if (ngc || grbl) ngc_start();  // ngc_params.cpp
   if (grbl) grbl_start();        // grbl_system.cpp
   if (!mc.persistent_vars.empty()) {
