@@ -122,9 +122,16 @@ struct Stop {
 struct Message {
   std::string text;
 };
+// A change of one axis's rate and acceleration from the next move on (grbl's
+// $110-$112, $120-$122); 0 leaves that value as it is. Sent at rest.
+struct AxisRate {
+  int axis = 0;
+  double rate_mm_per_min = 0.0;  // rapid and highest feed of the axis
+  double accel_mm_s2 = 0.0;
+};
 
-using Command =
-    std::variant<Rapid, Feed, Arc, Dwell, Skip, Spindle, ToolSelect, MCode, Stop, Message>;
+using Command = std::variant<Rapid, Feed, Arc, Dwell, Skip, Spindle, ToolSelect, MCode, Stop,
+                             Message, AxisRate>;
 
 struct Stamped {
   Command cmd;

@@ -183,6 +183,9 @@ void format_to(fmt::memory_buffer& out, const Stamped& s, const AxisNames& axes)
           fmt::format_to(it, "STOP {}", stop_name(c.kind));
         } else if constexpr (std::is_same_v<T, Message>) {
           fmt::format_to(it, "MESSAGE {}", c.text);
+        } else if constexpr (std::is_same_v<T, AxisRate>) {
+          fmt::format_to(it, "AXIS_RATE {} RATE={} ACCEL={}", axes.names[c.axis], c.rate_mm_per_min,
+                         c.accel_mm_s2);
         }
       },
       s.cmd);

@@ -120,6 +120,11 @@ enum class StmtKind : std::uint8_t {
   kDprnt,   // DPRNT[...]  (items in Block::print_items)
   kBprnt,   // BPRNT[...]
   kOword,   // o<label> keyword [args] (RS274NGC; okind, label, Block::args)
+  // grbl's '$' system line: the text after '$' (upper case, without spaces
+  // and comments) in Block::names[label]; "$J=" keeps the jog's words in
+  // Block::words (kGrblJog).
+  kGrblSystem,
+  kGrblJog,
 };
 
 // One item of DPRNT/BPRNT: text to print, or a variable with a format.

@@ -433,6 +433,11 @@ inline Result<void> Parser::run() {
     }
     return {};
   }
+  if (grbl_) [[unlikely]] {
+    const char* const at = skip(p_);
+    if (at != end_ && *at == '$' && !parse_grbl_system(at))
+      return std::unexpected(std::move(*err_));
+  }
   for (;;) {
     const char* const at = skip(p_);
     p_ = at;
@@ -479,6 +484,32 @@ inline Result<void> Parser::run() {
   }
   if (err_) return std::unexpected(std::move(*err_));  // never expected: errors stop the parse
   return {};
+}
+
+// grbl's system line ("Grbl v1.1 Commands"): `$` then a command, the
+// pre-parser having removed spaces and comments and raised the case. The
+// text goes to the block whole; `$J=` goes on as a block of words (the jog).
+bool Parser::parse_grbl_system(const char* at) {
+  if (!begin_stmt(StmtKind::kGrblSystem, at)) return false;
+  std::string text;
+  const char* q = at + 1;
+  int depth = 0;
+  for (; q < end_; ++q) {
+    const char c = *q;
+    if (depth == 0 && c == ';') break;
+    if (c == '(') ++depth;
+    if (depth == 0 && !is_space(c)) text.push_back(static_cast<char>(to_upper(c)));
+    if (c == ')' && depth > 0) --depth;
+    if (depth == 0 && text == "J=") {
+      out_.stmt.kind = StmtKind::kGrblJog;
+      ++q;
+      break;
+    }
+  }
+  out_.stmt.label = static_cast<std::int32_t>(out_.names.size());
+  out_.names.push_back(std::move(text));
+  p_ = out_.stmt.kind == StmtKind::kGrblJog ? q : end_;
+  return true;
 }
 
 // A character that cannot start anything in a block.

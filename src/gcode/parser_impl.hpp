@@ -390,6 +390,7 @@ class Parser {
 
   // ---- statements
   bool begin_stmt(StmtKind kind, const char* at);
+  bool parse_grbl_system(const char* at);
   bool parse_assign_tail(ExprId lhs);
   bool parse_goto_target();
   bool parse_loop_number(std::string_view what);

@@ -19,6 +19,7 @@
 #include <bit>
 #include <cstdio>
 #include <filesystem>
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -435,6 +436,25 @@ struct Interpreter::Impl {
   void ngc_store_probe(const AxisVec& latch_work, bool triggered);
   void ngc_load_work(int set);
   void ngc_start();
+  // grbl's '$' system lines (grbl_system.cpp, docs/languages.md).
+  std::map<int, double> grbl_settings;      // $n: the dialect's table, the axes, what `$n=` set
+  std::string grbl_build_info;              // `$I=text`
+  std::array<std::string, 2> grbl_startup;  // `$N0=` `$N1=` (kept, not run)
+  bool grbl_locked = false;                 // $22 = 1: in alarm until `$H` or `$X`
+  AxisVec grbl_prb;                         // the last probe's [PRB:], machine mm
+  bool grbl_prb_ok = false;
+  void grbl_start();
+  double grbl_setting(int n) const noexcept;
+  bool probe_inverted() const noexcept;
+  std::string grbl_coords(const AxisVec& mm) const;
+  Flow<Step> execute_grbl_system(CommandSink& out);
+  Flow<Step> grbl_report(const std::string& text);
+  Flow<Step> grbl_store_setting(const std::string& text, CommandSink& out);
+  Flow<Step> grbl_home(CommandSink& out);
+  Flow<Step> grbl_jog(CommandSink& out);
+  void grbl_list_settings();
+  void grbl_list_offsets();
+  void grbl_modal_line();
   Flow<void> load_ngc_var_file();
   int ngc_axis_index(char letter) const noexcept;  // X0 Y1 Z2 A3 B4 C5 U6 V7 W8, -1 else
   // ngc_room.cpp: M70-M73, log files, INI/HAL values (ngc_room.hpp)
@@ -519,7 +539,9 @@ struct Interpreter::Impl {
   double unit_mm() const noexcept { return modal.units == Units::kInch ? 25.4 : 1.0; }
   // mm per unit of the values an RS274NGC control stores (#5161-#5390): the
   // machine's unit, not the program's (ngc_codes.cpp).
-  double stored_mm() const noexcept { return mc.inch_machine ? 25.4 : 1.0; }
+  // The unit of #5161-#5390: the machine's (LinuxCNC); grbl keeps mm whatever
+  // the machine file says (its internal unit; $13 changes only the reports).
+  double stored_mm() const noexcept { return mc.inch_machine && !grbl ? 25.4 : 1.0; }
   double word_length(const WordVal& w, bool rotary) const noexcept;  // program units
   double offset_total(int axis) const noexcept;                      // mm
   double work_of(int axis, double machine_mm) const noexcept;        // program units

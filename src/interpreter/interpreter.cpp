@@ -5,6 +5,7 @@
 #include <filesystem>
 
 #include "interpreter/impl.hpp"
+#include "interpreter/offset_units.hpp"
 
 namespace skipnc::interp {
 
@@ -12,6 +13,25 @@ namespace fs = std::filesystem;
 
 // How long a run waits for another that holds the persistent-variable file.
 constexpr double kPersistentLockWaitS = 60.0;
+
+namespace {
+
+// The machine file's offsets are in mm; the Fanuc family keeps their numbers
+// in the input unit (offset_units.hpp): the power-on unit's.
+void scale_offsets(std::vector<AxisVec>& work, std::vector<config::ToolOffset>& tools, int axes,
+                   double per) {
+  for (AxisVec& o : work) {
+    for (int i = 0; i < axes; ++i) o[i] /= per;
+  }
+  for (config::ToolOffset& t : tools) {
+    for (double* f : {&t.length_geometry, &t.length_wear, &t.radius_geometry, &t.radius_wear,
+                      &t.x_geometry, &t.z_geometry, &t.x_wear, &t.z_wear}) {
+      *f /= per;
+    }
+  }
+}
+
+}  // namespace
 
 Interpreter::Impl::Impl(const Setup& s)
     : setup(s), mc(*s.machine), dialect(*s.dialect), params(*s.params) {}
@@ -52,7 +72,9 @@ Flow<void> Interpreter::Impl::init(const AxisVec& start) {
   tools.assign(static_cast<std::size_t>(mc.tool_offset_count) + 1, config::ToolOffset{});
   for (const auto& [n, t] : mc.tool_offsets) tools[static_cast<std::size_t>(n)] = t;
   modal.units = mc.inch_machine ? Units::kInch : Units::kMetric;
+  if (offset_unit_mm(*this) != 1.0) scale_offsets(work_offsets, tools, axis_count, unit_mm());
   if (ngc || grbl) ngc_start();  // ngc_params.cpp
+  if (grbl) grbl_start();        // grbl_system.cpp
   if (!mc.persistent_vars.empty()) {
     // Locked until the run has written them back (save_persistent), so that
     // runs sharing the file do not lose each other's updates.
@@ -260,6 +282,14 @@ Flow<Step> Interpreter::Impl::execute(CommandSink& out) {
       auto c = ngc_comments();
       if (!c) return std::unexpected(c.error());
       return execute_oword(out);  // oword.cpp
+    }
+    if (grbl) {
+      if (blk.stmt.kind != gcode::StmtKind::kNone) return execute_grbl_system(out);
+      if (grbl_locked && !blk.words.empty()) {
+        return fail(AlarmId::kGrblLocked,
+                    "grbl is in alarm until $H or $X ($22 = 1: homing is required at start)",
+                    loc(blk.words.front().column));
+      }
     }
     cur_words.clear();
     auto w = collect_words(cur_words);

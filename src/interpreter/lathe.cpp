@@ -10,6 +10,7 @@
 #include <string>
 
 #include "interpreter/impl.hpp"
+#include "interpreter/offset_units.hpp"
 
 namespace skipnc::interp {
 
@@ -143,11 +144,12 @@ Flow<void> Interpreter::Impl::lathe_tool(const Words& words, ModalState& next) {
   const auto& g = tools[static_cast<std::size_t>(tool)];
   const auto& w = tools[static_cast<std::size_t>(wear)];
   AxisVec off;
+  const double per = offset_unit_mm(*this);
   if (const int x = mc.axis_index('X'); x >= 0) {
-    off[x] = (tool != 0 ? g.x_geometry : 0.0) + (wear != 0 ? w.x_wear : 0.0);
+    off[x] = ((tool != 0 ? g.x_geometry : 0.0) + (wear != 0 ? w.x_wear : 0.0)) * per;
   }
   if (const int z = mc.axis_index('Z'); z >= 0) {
-    off[z] = (tool != 0 ? g.z_geometry : 0.0) + (wear != 0 ? w.z_wear : 0.0);
+    off[z] = ((tool != 0 ? g.z_geometry : 0.0) + (wear != 0 ? w.z_wear : 0.0)) * per;
   }
   for (int i = 0; i < axis_count; ++i) {
     tool_offset_pending[i] +=
@@ -258,8 +260,9 @@ Flow<void> Interpreter::Impl::lathe_offset_setting(const Words& words, SourceLoc
                   std::string(1, f.set) + " and " + f.add + " in one G10 block",
                   loc(words.at(f.add).column));
     }
-    if (words.has(f.set)) *f.value = word_length(words.at(f.set), false) * unit_mm();
-    if (f.add != 0 && words.has(f.add)) *f.value += word_length(words.at(f.add), false) * unit_mm();
+    const double per = unit_mm() / offset_unit_mm(*this);  // stored numbers (offset_units.hpp)
+    if (words.has(f.set)) *f.value = word_length(words.at(f.set), false) * per;
+    if (f.add != 0 && words.has(f.add)) *f.value += word_length(words.at(f.add), false) * per;
   }
   if (words.has('Q')) {
     const WordVal& q = words.at('Q');

@@ -198,7 +198,9 @@ Flow<Step> Interpreter::Impl::execute_statement(CommandSink& out) {
       if (!p) return std::unexpected(p.error());
       return Step::kContinue;
     }
-    case StmtKind::kOword:  // RS274NGC only (execute runs it: oword.cpp)
+    case StmtKind::kOword:       // RS274NGC only (execute runs it: oword.cpp)
+    case StmtKind::kGrblSystem:  // grbl only (execute runs it: grbl_system.cpp)
+    case StmtKind::kGrblJog:
     case StmtKind::kNone:
       break;
   }

@@ -18,6 +18,7 @@
 #include "config/skip_inputs.hpp"
 #include "interpreter/codes.hpp"
 #include "interpreter/impl.hpp"
+#include "interpreter/offset_units.hpp"
 
 namespace skipnc::interp {
 namespace {
@@ -317,7 +318,7 @@ Flow<crc::BlockMode> Interpreter::Impl::comp_mode(const BlockPlan& plan) const {
   m.side = modal.cutter == CutterComp::kLeft ? 1 : modal.cutter == CutterComp::kRight ? -1 : 0;
   if (modal.d > 0) {
     const auto& t = tools[static_cast<std::size_t>(modal.d)];
-    m.radius = t.radius_geometry + t.radius_wear;
+    m.radius = (t.radius_geometry + t.radius_wear) * offset_unit_mm(*this);
   }
   auto idx = [&](char c) { return axis_of_letter[static_cast<std::size_t>(c - 'A')]; };
   switch (modal.plane) {
@@ -583,7 +584,8 @@ Flow<void> Interpreter::Impl::finish_g37(const SyncState& s) {
                 ps.loc);
   }
   auto& t = tools[static_cast<std::size_t>(modal.h)];
-  t.length_wear += modal.length == LengthComp::kMinus ? -diff_mm : diff_mm;
+  const double diff = diff_mm / offset_unit_mm(*this);  // stored numbers (offset_units.hpp)
+  t.length_wear += modal.length == LengthComp::kMinus ? -diff : diff;
   Words none;
   return set_tool_length(none, modal.length);
 }

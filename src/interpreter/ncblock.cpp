@@ -27,6 +27,7 @@
 
 #include "interpreter/codes.hpp"
 #include "interpreter/impl.hpp"
+#include "interpreter/offset_units.hpp"
 
 namespace skipnc::interp {
 namespace {
@@ -74,7 +75,8 @@ double Interpreter::Impl::word_length(const WordVal& w, bool rotary) const noexc
 }
 
 double Interpreter::Impl::offset_total(int axis) const noexcept {
-  double o = work_offsets[0][axis] + work_offsets[static_cast<std::size_t>(modal.work)][axis] +
+  double o = (work_offsets[0][axis] + work_offsets[static_cast<std::size_t>(modal.work)][axis]) *
+                 offset_unit_mm(*this) +
              local_shift[axis] + g92_shift[axis] + tool_pos_offset[axis] + lathe_tool_offset[axis];
   if (axis == length_axis) o += length_offset;
   return o;
@@ -201,7 +203,7 @@ Flow<void> Interpreter::Impl::set_tool_length(const Words& words, LengthComp mod
   }
   modal.h = h;
   const auto& t = tools[static_cast<std::size_t>(h)];
-  const double len = h == 0 ? 0.0 : t.length_geometry + t.length_wear;
+  const double len = h == 0 ? 0.0 : (t.length_geometry + t.length_wear) * offset_unit_mm(*this);
   length_offset = mode == LengthComp::kPlus ? len : -len;
   return {};
 }
@@ -232,8 +234,8 @@ Flow<void> Interpreter::Impl::data_setting(const Words& words, SourceLoc where) 
     for (int i = 0; i < axis_count; ++i) {
       const char c = axis_letter[static_cast<std::size_t>(i)];
       if (!words.has(c)) continue;
-      const double mm = word_length(words.at(c), false) * unit_mm();
-      o[i] = inc ? o[i] + mm : mm;
+      const double v = word_length(words.at(c), false) * unit_mm() / offset_unit_mm(*this);
+      o[i] = inc ? o[i] + v : v;
     }
     return {};
   }
@@ -249,8 +251,8 @@ Flow<void> Interpreter::Impl::data_setting(const Words& words, SourceLoc where) 
                 : l == 11 || l == 1 ? &t.length_wear
                 : l == 12           ? &t.radius_geometry
                                     : &t.radius_wear;
-    const double mm = word_length(words.at('R'), false) * unit_mm();
-    *f = inc ? *f + mm : mm;
+    const double v = word_length(words.at('R'), false) * unit_mm() / offset_unit_mm(*this);
+    *f = inc ? *f + v : v;
     return {};
   }
   return fail(AlarmId::kBadValue, "G10 L" + std::to_string(l) + " is not supported", where);
@@ -618,7 +620,7 @@ void Interpreter::Impl::commit_shift(const Words& words, bool local) {
 // #5061.. are in programmed coordinates.
 void Interpreter::Impl::commit_tool_pos_offset(const Words& words, int g) {
   const auto& t = tools[static_cast<std::size_t>(modal.d)];
-  const double r = modal.d == 0 ? 0.0 : t.radius_geometry + t.radius_wear;
+  const double r = modal.d == 0 ? 0.0 : (t.radius_geometry + t.radius_wear) * offset_unit_mm(*this);
   const double k = (g == 45 ? 1.0 : g == 46 ? -1.0 : g == 47 ? 2.0 : -2.0) * r;
   const bool inc = modal.distance == Distance::kIncremental;
   for (int i = 0; i < axis_count; ++i) {

@@ -60,7 +60,7 @@ Flow<Step> Interpreter::Impl::probe_block(const Words& words, const AxisVec& tar
   spec.input_count = 1;  // the probe input: the dialect's first
   spec.inputs[0] = in->addr[0];
   pending_skip.input_names[0] = config::signal_name(in->addr[0]);
-  const bool invert = sw.probe_invert_param != 0 && params.bit(sw.probe_invert_param, 0);
+  const bool invert = probe_inverted();  // grbl_system.cpp: $6 as the program set it
   // Away from the part the move waits for the input to go inactive: the
   // input's active state is the other one.
   spec.active_low = toward == invert;
@@ -100,15 +100,11 @@ Flow<void> Interpreter::Impl::finish_probe(const SyncState& s) {
     vars.set(dialect.skip_vars.success_flag, Value::of(s.triggered ? 1.0 : 0.0));
   }
   if (dialect.sw.probe_report_line) {
-    // grbl: "[PRB:x,y,z:1]", machine coordinates in mm, 3 decimals.
-    std::string line = "[PRB:";
-    char buf[48];
-    for (int i = 0; i < axis_count; ++i) {
-      std::snprintf(buf, sizeof buf, "%s%.3f", i == 0 ? "" : ",", latch[i] + 0.0);
-      line += buf;
-    }
-    line += s.triggered ? ":1]" : ":0]";
-    add_message(line);
+    // grbl: "[PRB:x,y,z:1]", machine coordinates in mm, 3 decimals (inches,
+    // 4 decimals, with $13 = 1); kept for `$#`.
+    grbl_prb = latch;
+    grbl_prb_ok = s.triggered;
+    add_message("[PRB:" + grbl_coords(latch) + (s.triggered ? ":1]" : ":0]"));
   }
   if (!s.triggered && ps.alarm_on_miss) {
     return fail(toward ? AlarmId::kProbeNoContact : AlarmId::kProbeNoBreak,

@@ -8,6 +8,7 @@
 #include <ctime>
 
 #include "interpreter/impl.hpp"
+#include "interpreter/offset_units.hpp"
 #include "interpreter/sysvar_table.hpp"
 
 namespace skipnc::interp {
@@ -136,9 +137,11 @@ Flow<Value> Interpreter::Impl::read_var(int n, SourceLoc where) {
     int set = 0, axis = 0;
     work_offset_var(*r, k, set, axis);
     if (axis >= axis_count) return Value::null();
-    return Value::of(work_offsets[static_cast<std::size_t>(set)][axis] / unit_mm() + 0.0);
+    return Value::of(work_offsets[static_cast<std::size_t>(set)][axis] * offset_unit_mm(*this) /
+                         unit_mm() +
+                     0.0);
   }
-  if (tool != nullptr) return Value::of(*tool / unit_mm() + 0.0);
+  if (tool != nullptr) return Value::of(*tool * offset_unit_mm(*this) / unit_mm() + 0.0);
   if (k >= 5000) return read_position(*r, k - r->first, where);
   if (k >= 4000) return read_modal(*r, k - r->first);
   return read_control(*r, k);
@@ -344,12 +347,13 @@ Flow<void> Interpreter::Impl::write_var(int n, Value v, SourceLoc where) {
             "#" + std::to_string(n) + ": the machine has no axis " + std::to_string(axis + 1),
             where);
       }
-      work_offsets[static_cast<std::size_t>(set)][axis] = v.num() * unit_mm();
+      work_offsets[static_cast<std::size_t>(set)][axis] =
+          v.num() * unit_mm() / offset_unit_mm(*this);
       return {};
     }
     if (!is_tool(*r)) return write_control(*r, k, v, where);
     if (double* f = tool_field(*r, k)) {
-      *f = v.num() * unit_mm();
+      *f = v.num() * unit_mm() / offset_unit_mm(*this);
       return {};
     }
   }

@@ -16,6 +16,25 @@ Kernel::Kernel(const KernelConfig& cfg)
   }
 }
 
+void Kernel::set_axis_rate(const canon::AxisRate& r) noexcept {
+  if (r.axis < 0 || r.axis >= cfg_.limits.axis_count) return;
+  planner::AxisLimits& a = cfg_.limits.axes[static_cast<std::size_t>(r.axis)];
+  if (r.rate_mm_per_min > 0.0) {
+    a.max_velocity_mm_s = r.rate_mm_per_min / 60.0;
+    a.rapid_mm_s = r.rate_mm_per_min / 60.0;
+  }
+  if (r.accel_mm_s2 > 0.0) a.max_accel_mm_s2 = r.accel_mm_s2;
+  double feed = 0.0;
+  min_accel_mm_s2_ = 1e300;
+  for (int i = 0; i < cfg_.limits.axis_count; ++i) {
+    const planner::AxisLimits& l = cfg_.limits.axes[static_cast<std::size_t>(i)];
+    feed = std::fmax(feed, l.max_velocity_mm_s);
+    min_accel_mm_s2_ = std::fmin(min_accel_mm_s2_, l.max_accel_mm_s2);
+  }
+  cfg_.limits.max_feed_mm_s = feed;
+  queue_.set_limits(cfg_.limits);
+}
+
 void Kernel::set_position(const AxisVec& machine) noexcept {
   interpolator_.set_position(machine);
   cmd_ = machine;

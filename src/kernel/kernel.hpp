@@ -193,6 +193,9 @@ class Kernel {
   std::uint32_t next_tag() const noexcept { return next_tag_; }
   // Sets the position of an idle machine (start-up, after a follow-up).
   void set_position(const AxisVec& machine) noexcept;
+  // One axis's rate (mm/min: rapid and highest feed) and acceleration for
+  // the moves pushed from now on; 0 leaves a value as it is (canon::AxisRate).
+  void set_axis_rate(const canon::AxisRate& r) noexcept;
   // The operator's switches; they act from the next tick. Feed hold,
   // interlock and override 0 % bring the path to rest at the axes'
   // acceleration; override and dry run do not act on a skip block whose

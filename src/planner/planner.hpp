@@ -123,6 +123,8 @@ class SegmentQueue {
   SegmentQueue(const Limits& limits, std::size_t capacity = 256);
 
   const Limits& limits() const noexcept { return limits_; }
+  // New limits for the moves pushed from now on (the queued ones keep theirs).
+  void set_limits(const Limits& limits) noexcept { limits_ = limits; }
   bool full() const noexcept { return count_ == ring_.size(); }
   bool empty() const noexcept { return count_ == 0; }
   std::size_t size() const noexcept { return count_; }

@@ -144,6 +144,8 @@ class Router final : public canon::CommandSink {
             spindle_dir_ = cmd.direction;
           } else if constexpr (std::is_same_v<T, canon::Message>) {
             messages.push_back(cmd.text);
+          } else if constexpr (std::is_same_v<T, canon::AxisRate>) {
+            k_.set_axis_rate(cmd);  // sent at rest (a grbl '$' line waits for the motion)
           }
         },
         c.cmd);

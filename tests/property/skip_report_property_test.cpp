@@ -53,14 +53,16 @@ SkipRun random_skip_run(const std::string& dialect, Machine& m, bool inch) {
     if (std::fabs(target[i]) > std::fabs(target[axis])) axis = i;
   }
   // Machine coordinates of the plane: the G54 shift plus a random point
-  // of the way, to 1e-7 mm (between increments).
+  // of the way, to 1e-7 mm (between increments). The Fanuc family keeps
+  // the offsets' numbers in the input unit in force (docs/time-and-units.md):
+  // under G20 the machine file's G54 and H numbers are inches.
   AxisVec shift;
-  for (int i = 0; i < 3; ++i) shift[i] = gen_real(-50, 50, 1000);
+  for (int i = 0; i < 3; ++i) shift[i] = gen_real(-50, 50, 1000) / unit;
   m.machine.work_offsets[1] = shift;  // G54
-  const int h = *rc::gen::inRange(0, 4);
-  // G43 Hh moves Z by its length (Machine: 10 h mm).
+  const int h = *rc::gen::inRange(0, inch ? 2 : 4);
+  // G43 Hh moves Z by its length (Machine: the number 10 h).
   const double length = axis == 2 && h > 0 ? 10.0 * h : 0.0;
-  const double at = shift[axis] + length + target[axis] * gen_real(0.1, 0.8, 70) * unit;
+  const double at = (shift[axis] + length) * unit + target[axis] * gen_real(0.1, 0.8, 70) * unit;
   SkipRun r;
   r.scene_text = std::string("[[trigger]]\nsignal = \"SKIP\"\naxis = \"") + "XYZ"[axis] +
                  "\"\nat = " + num(at, 7) + "\ndirection = \"" +

@@ -1,6 +1,7 @@
 (System variables: work offsets by #5201.., #2500.. and #7001../#14001.. with)
 (G10 L2/L20, positions #5001/#5021/#5041 in G21 and G20, modal information)
-(#4001.. and #4102.., tool offsets memory C with G10 L10-L13)
+(#4001.. and #4102.., tool offsets memory C with G10 L10-L13; #114: under G20)
+(the offsets keep their numbers, now inches [docs/time-and-units.md])
 G21 G90 G54 G17 G40 G49 G80 G94 G98 G64
 G10 L2 P1 X100. Y50. Z-20.
 G10 L2 P0 X1.

@@ -7,7 +7,14 @@ O20 (THE CYCLES IN AN INCH PROGRAM, G20)
 (inch defaults: Q 10 / 25.4 = 0.3937. S1 writes G54 in inches:)
 (#5221 = -80.123 / 25.4 = -3.154448819, #5222 = 30.456 / 25.4 =)
 (1.199055118, #5223 = -229.87 / 25.4 = -9.050000000.)
+(A Fanuc keeps the offsets' numbers in the input unit in force and G20 does)
+(not convert them [docs/time-and-units.md]: an inch shop has its G54 and H20)
+(in inches, so N12-N15 write the machine file's mm values as inch numbers.)
 N10 G20 G90 G17 G40 G49 G80 G54
+N12 #5221=-80. / 25.4
+N13 #5222=30.5 / 25.4
+N14 #5223=-229.5 / 25.4
+N15 #11020=151. / 25.4
 N20 #550=1. / 25.4
 N30 G53 G0 Z0
 N40 G43 H20 G0 X0.8 Y-0.8
