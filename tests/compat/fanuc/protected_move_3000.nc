@@ -11,7 +11,7 @@ O1003 (PROTECTED POSITIONING, PATH OBSTRUCTED ALARM)
 ( first move X20 Y0 reaches its end untouched [#5061 = 20, #100 = 20]; the )
 ( second, to X80, meets the clamp face X40 at ball centre X39: #5061 = 39 is )
 ( 41 short of 80, so the macro raises #3000 = 86 [PATH OBSTRUCTED]: alarm )
-( 3086 at line 33; the machine rests past X39 by up to one servo period at )
+( 3086 at line 34; the machine rests past X39 by up to one servo period at )
 ( F3000 [0.05 mm]. )
 G90 G17 G40 G49 G80 G21
 G91 G28 Z0
