@@ -561,6 +561,8 @@ struct Interpreter::Impl {
   static constexpr int kSkipStepParam = skip_rules::kStepParam;
   // G37: a dialect has it when it defines epsilon (mill_codes.cpp).
   static constexpr int kG37EpsilonParam = 6254;
+  // G37.1: a dialect has it (not simulated) when it defines this (Mitsubishi).
+  static constexpr int kG37_1SpeedParam = 8004;
   Flow<bool> mill_code(int code, SourceLoc at, MillRequest& req) const;
   Flow<bool> apply_frame_code(const Words& words, const MillRequest& req);
   bool frame_active() const noexcept { return polar || frame.active(); }

@@ -65,6 +65,8 @@ constexpr MillCode kMillCodes[] = {
     {421, Kind::kNotSimulated, Cycle::kNone, "normal direction control right"},
     // G37: simulated where the dialect has its parameters (fanuc.toml).
     {370, Kind::kNotSimulated, Cycle::kNone, "automatic tool length measurement on this control"},
+    // G37.1: a code where the dialect has its parameters (Mitsubishi's TLM).
+    {371, Kind::kNotSimulated, Cycle::kNone, "automatic tool length measurement"},
     // G31.1-G31.3: simulated where the dialect has their parameters.
     {311, Kind::kNotSimulated, Cycle::kNone, "multi-step skip on this control"},
     {312, Kind::kNotSimulated, Cycle::kNone, "multi-step skip on this control"},
@@ -126,6 +128,9 @@ Flow<bool> Interpreter::Impl::mill_code(int code, SourceLoc at, MillRequest& req
     req.skip_step = code - 310;
     return true;
   }
+  // Mitsubishi's G37.1 (M700V/M70V manual 15.1): only where the dialect
+  // defines its TLM parameter 8004 (mitsubishi.toml); elsewhere no code.
+  if (code == 371 && dialect.param(kG37_1SpeedParam) == nullptr) return false;
   if (code == 370 && dialect.param(kG37EpsilonParam) != nullptr) {
     req.g37 = true;  // the dialect has G37's parameters (fanuc.toml)
     return true;
