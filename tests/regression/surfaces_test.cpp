@@ -14,6 +14,7 @@
 #include <filesystem>
 #include <map>
 #include <nlohmann/json.hpp>
+#include <random>
 #include <sstream>
 #include <string>
 #include <thread>
@@ -244,6 +245,34 @@ TEST(SurfacesSweep, JunitFileNeverReplacesAnInput) {
   }
   EXPECT_EQ(read_file(s.dir.path / "p.nc"), program);
   EXPECT_FALSE(fs::exists(s.csv()));
+}
+
+// SIGTERM at any moment of a sweep (from 50 ms after the start, once the
+// handlers are set, to well into it): the table is whole and readable, each
+// finished row in it, the rest not_run, whatever the instant. Two workers.
+TEST(SurfacesSweep, SigtermAtAnyMomentLeavesAReadableTable) {
+  std::mt19937 rng(31);
+  std::uniform_int_distribution<int> ms(50, 1500);
+  for (int k = 0; k < 5; ++k) {
+    Sweep s("G91 G1 X0.1 F600\nG04 X0.3\nM30\n", "scenarios = 200000\nworkers = 2\n");
+    Child c({"sweep", s.spec.string(), "-q"}, "/dev/null", (s.dir.path / "err.txt").string());
+    const int wait_ms = ms(rng);
+    std::this_thread::sleep_for(std::chrono::milliseconds(wait_ms));
+    c.signal(SIGTERM);
+    const auto e = c.wait(120.0);
+    ASSERT_TRUE(e.exited) << wait_ms << " ms: ended by signal " << e.signal;
+    const auto j = s.table();
+    ASSERT_FALSE(j.is_discarded()) << wait_ms << " ms";
+    const auto& sum = j["summary"];
+    const int done = sum["passed"].get<int>() + sum["failed"].get<int>();
+    EXPECT_EQ(done + sum["not_run"].get<int>() + sum["statuses"].value("interrupted", 0), 200000)
+        << wait_ms << " ms";
+    EXPECT_EQ(count_lines(read_file(s.csv())), 200001) << wait_ms << " ms";
+    int finished = 0;
+    for (const auto& row : j["rows"]) finished += row.value("status", "") == "completed" ? 1 : 0;
+    EXPECT_EQ(finished, done) << wait_ms << " ms";
+    EXPECT_EQ(e.code, done == 200000 ? 0 : 1) << wait_ms << " ms";
+  }
 }
 
 // ---- 3. Every file the run reads is checked --------------------------------
