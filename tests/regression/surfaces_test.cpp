@@ -29,6 +29,13 @@ namespace {
 
 namespace fs = std::filesystem;
 
+// mill3 in the linuxcnc dialect with its parameter file m.var beside it.
+fs::path linuxcnc_machine_with_parameter_file(const TempDir& dir) {
+  return dir.write("m.toml",
+                   "extends = \"mill3\"\ndialect = \"linuxcnc\"\n"
+                   "persistent_variables = \"m.var\"\n");
+}
+
 int count_lines(const std::string& s) {
   int n = 0;
   for (char c : s) n += c == '\n' ? 1 : 0;
@@ -340,9 +347,7 @@ TEST(SurfacesCollisions, UsageErrorReportNeverReplacesAnInput) {
 
 TEST(SurfacesNgcParams, HugeValuesAreWrittenWholeAndReadBack) {
   TempDir dir;
-  const auto m = dir.write("m.toml",
-                           "extends = \"mill3\"\ndialect = \"linuxcnc\"\n"
-                           "persistent_variables = \"m.var\"\n");
+  const auto m = linuxcnc_machine_with_parameter_file(dir);
   // #5000 is kept because the file lists it (an offset, #5221, is
   // range-checked on assignment instead: SurfacesOffsets).
   dir.write("m.var", "5000\t0\n");
@@ -362,9 +367,7 @@ TEST(SurfacesNgcParams, HugeValuesAreWrittenWholeAndReadBack) {
 
 TEST(SurfacesNgcParams, DamagedFilesAreRefusedWithTheirLine) {
   TempDir dir;
-  const auto m = dir.write("m.toml",
-                           "extends = \"mill3\"\ndialect = \"linuxcnc\"\n"
-                           "persistent_variables = \"m.var\"\n");
+  const auto m = linuxcnc_machine_with_parameter_file(dir);
   const auto prog = dir.write("p.ngc", "M2\n");
   for (const std::string bad :
        {"5221 1\n5221 2\n", "5221 0x10\n", "4294972517 1\n", "-5221 1\n", "5221 1e999\n"}) {
@@ -576,9 +579,7 @@ TEST(SurfacesOffsets, OutOfRangeOffsetsAreRefusedWhereAssigned) {
 // earlier values and the next run starts.
 TEST(SurfacesOffsets, RefusedOffsetNeverReachesTheParameterFile) {
   TempDir dir;
-  const auto m = dir.write("m.toml",
-                           "extends = \"mill3\"\ndialect = \"linuxcnc\"\n"
-                           "persistent_variables = \"m.var\"\n");
+  const auto m = linuxcnc_machine_with_parameter_file(dir);
   const auto prog = dir.write("p.ngc", "#5221 = 12.5\nG10 L2 P1 X3 Y1000000000\nM2\n");
   auto r = run_cli({"run", prog.string(), "-m", m.string(), "-q"}, (dir.path / "e1").string());
   EXPECT_EQ(r.exit_code, 1) << read_file(dir.path / "e1");
