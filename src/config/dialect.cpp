@@ -317,18 +317,20 @@ Result<void> load_alarms(const toml::table& t, std::string_view origin, Dialect&
   return {};
 }
 
-// [codes]: G codes the control does not have (absent_g), and those it has
-// that skipnc does not simulate (not_simulated_g).
+// [codes]: G and M codes the control does not have (absent_g, absent_m), and
+// those it has that skipnc does not simulate (not_simulated_g, not_simulated_m).
 Result<void> load_codes(const toml::table& t, std::string_view origin, Dialect& d) {
-  auto keys = check_keys(t, {"absent_g", "not_simulated_g", "not_simulated_m"}, origin, "[codes]");
+  auto keys = check_keys(t, {"absent_g", "not_simulated_g", "not_simulated_m", "absent_m"}, origin,
+                         "[codes]");
   if (!keys) return keys;
   for (const auto& [key, node] : t) {
     const auto* arr = node.as_array();
     if (!arr) return config_error(node, origin, std::string(key.str()) + " must be an array");
-    const bool m_codes = key.str() == "not_simulated_m";
-    std::vector<int>& out = key.str() == "absent_g" ? d.absent_g
-                            : m_codes               ? d.not_simulated_m
-                                                    : d.not_simulated_g;
+    const bool m_codes = key.str() == "not_simulated_m" || key.str() == "absent_m";
+    std::vector<int>& out = key.str() == "absent_g"          ? d.absent_g
+                            : key.str() == "absent_m"        ? d.absent_m
+                            : key.str() == "not_simulated_m" ? d.not_simulated_m
+                                                             : d.not_simulated_g;
     out.clear();
     for (const auto& e : *arr) {
       if (m_codes) {

@@ -185,6 +185,7 @@ struct Dialect {
   std::vector<int> absent_g;
   std::vector<int> not_simulated_g;
   std::vector<int> not_simulated_m;  // M codes with an effect skipnc does not model
+  std::vector<int> absent_m;         // M codes the control refuses (unknown_m_code)
 
   const ParamDef* param(int number) const noexcept;
   const AlarmText& alarm(AlarmId id) const noexcept { return alarms[static_cast<std::size_t>(id)]; }

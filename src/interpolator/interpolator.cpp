@@ -24,8 +24,23 @@ bool Interpolator::idle() const noexcept {
   return seg_ == nullptr && !ramp_ && queue_.empty() && !hold_;
 }
 
+std::int64_t Interpolator::quiet_ticks() const noexcept {
+  if (ramp_ || hold_ || seg_ == nullptr || queue_.front() != seg_ || !seg_->started) return 0;
+  const double period = queue_.limits().period_s;
+  const double step = scale_ > 0.0 ? period * scale_ : 0.0;
+  if (step != seg_step_s_) return 0;  // the next tick rebases the count
+  if (step == 0.0) return kForever;   // profile time stands still
+  if (seg_->kind != planner::Move::Kind::kDwell) return 0;
+  // tick() ends the dwell in the first period whose end reaches
+  // duration - slack, at count c with c + 1 >= last; three periods spare.
+  const double last = (seg_->duration - period * 1e-6 + seg_offset_s_) / step;
+  const double n = std::floor(last) - static_cast<double>(seg_ticks_) - 3.0;
+  return n > 0.0 ? static_cast<std::int64_t>(std::fmin(n, 1e18)) : 0;
+}
+
 const AxisVec& Interpolator::tick() noexcept {
   const double period = queue_.limits().period_s;
+  passed_line_ = 0;
 
   if (ramp_) {
     ++ramp_ticks_;
@@ -91,6 +106,17 @@ const AxisVec& Interpolator::tick() noexcept {
     // The segment ends inside this period: land exactly on its end point and
     // carry the rest of the period into the next one.
     const double rest = std::max(0.0, t_end - seg_->duration);
+    // A dwell that ends at this period's end ran the whole period: the
+    // segment after it starts with the next period (it did not run in this
+    // one, and the period is the dwell's: G04 X5. is 5.000 s of its block).
+    // A dwell that ended with time to spare was met without a period of
+    // its own (G04 X0): it is said (passed_dwell_line).
+    const bool dwell = seg_->kind == planner::Move::Kind::kDwell;
+    const bool dwell_to_the_end = dwell && rest <= slack;
+    if (dwell && !dwell_to_the_end) {
+      passed_line_ = seg_->line;
+      passed_source_ = seg_->source;
+    }
     pos_ = seg_->end;
     line_ = seg_->line;
     source_ = seg_->source;
@@ -109,6 +135,7 @@ const AxisVec& Interpolator::tick() noexcept {
       released_ = false;
       break;
     }
+    if (dwell_to_the_end) break;  // the next starts at the next period's start
     seg_ = queue_.front();
     if (seg_ != nullptr) seg_->started = true;
   }
@@ -126,6 +153,7 @@ const AxisVec& Interpolator::tick() noexcept {
     vel_ = AxisVec{};
     speed_ = 0.0;
   }
+  if (passed_line_ == line_ && passed_source_ == source_) passed_line_ = 0;  // it has the period
   return pos_;
 }
 

@@ -3,6 +3,7 @@
 // bench/README.md, BM_Tick).
 #pragma once
 
+#include <climits>
 #include <cstdint>
 
 #include "core/axes.hpp"
@@ -65,6 +66,21 @@ class Interpolator {
   // Start point of the segment being interpolated (the position when idle).
   AxisVec segment_start() const noexcept;
 
+  // Periods from now that tick() would run with nothing but its count of
+  // periods changing (the same command, velocity and block): all but the
+  // last three of a dwell's, or any number (kForever) while the time scale
+  // is 0 (feed hold). 0 otherwise.
+  static constexpr std::int64_t kForever = INT64_MAX / 4;
+  std::int64_t quiet_ticks() const noexcept;
+  // Passes n such periods in one step (n <= quiet_ticks()): the state is
+  // that of n calls of tick(), bit for bit.
+  void pass_quiet(std::int64_t n) noexcept { seg_ticks_ += n; }
+  // A dwell that ended in the last tick without a period of its own (G04
+  // X0, or one ended where the next block took the period): its line and
+  // call context, so that it is counted as run. Line 0: none.
+  std::uint32_t passed_dwell_line() const noexcept { return passed_line_; }
+  std::uint32_t passed_dwell_source() const noexcept { return passed_source_; }
+
  private:
   planner::SegmentQueue& queue_;
   // Time inside the active segment, s: seg_time(). Kept as a count of
@@ -86,6 +102,8 @@ class Interpolator {
   std::uint32_t line_ = 0;
   std::uint32_t source_ = 0;
   std::uint32_t tag_ = 0;
+  std::uint32_t passed_line_ = 0;
+  std::uint32_t passed_source_ = 0;
   bool hold_ = false;      // waiting for the in-position check (holding())
   bool released_ = false;  // the check passed: the next segment may start
   // Deceleration ramp after a skip (replaces the segment).

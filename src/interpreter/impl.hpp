@@ -25,6 +25,7 @@
 #include <string>
 #include <type_traits>
 #include <unordered_map>
+#include <unordered_set>
 #include <variant>
 #include <vector>
 
@@ -78,6 +79,7 @@ struct ProgramFile {
   // O-word a skip forward from an O-word block found, keyed by that block's
   // offset and what was looked for: later passes seek there at once.
   std::unordered_map<std::string, gcode::SourcePos> subs;
+  std::unordered_set<std::string> endsubs;  // labels with an `o<label> endsub`
   bool subs_scanned = false;
   struct OJump {
     gcode::SourcePos at;     // the O-word block found
@@ -513,6 +515,7 @@ struct Interpreter::Impl {
   Flow<void> plan_one_shot(const CodeDef& def, std::uint32_t col, BlockPlan& plan);
   Flow<void> plan_call(const Words& words, BlockPlan& plan);
   Flow<void> plan_addresses(const Words& words) const;
+  static bool has_m(const Words& words, int code);
   Flow<void> plan_mill(BlockPlan& plan) const;
   void plan_cycle(BlockPlan& plan) const;
   Flow<void> plan_modal(const Words& words, BlockPlan& plan);
@@ -524,7 +527,7 @@ struct Interpreter::Impl {
   Flow<void> commit_tool(const Words& words, const BlockPlan& plan, const ModalState& before,
                          CommandSink& out);
   void commit_spindle(const Words& words, bool changed, CommandSink& out);
-  void commit_shift(const Words& words, bool local);
+  Flow<void> commit_shift(const Words& words, bool local);
   void commit_tool_pos_offset(const Words& words, int g);
   void commit_cycle_start(const ModalState& before);
   Flow<std::optional<Step>> commit_mill(const Words& words, const BlockPlan& plan, CommandSink& out,
@@ -553,6 +556,10 @@ struct Interpreter::Impl {
   double machine_of(int axis, double work_units) const noexcept;  // mm
   Flow<void> set_tool_length(const Words& words, LengthComp mode);
   Flow<void> data_setting(const Words& words, SourceLoc where);
+  // An offset or stored position (G10, G92, G52, G50, #2001.., #5201..,
+  // LinuxCNC #5161-#5390) beyond kMaxOffsetMm: illegal_offset_value.
+  static constexpr double kMaxOffsetMm = 999999.999;
+  static Flow<void> check_offset(double mm, const std::string& what, SourceLoc at);
 
   // mill_codes.cpp
   // The G31.n of the block being executed (0: G31 or no skip), for skip_block.

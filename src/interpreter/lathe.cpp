@@ -176,6 +176,9 @@ Flow<void> Interpreter::Impl::lathe_coordinate_setting(const Words& words) {
     const double now = work_of(i, pos[i]) * unit_mm();
     const double v = word_length(words.at(has_inc ? inc : c), false) * unit_mm();
     const double want = has_inc ? now + v : v;
+    auto ok = check_offset(g92_shift[i] + now - want, std::string("G50 ") + c,
+                           loc(words.at(has_inc ? inc : c).column));
+    if (!ok) return ok;
     g92_shift[i] += now - want;
   }
   return {};

@@ -211,6 +211,20 @@ Flow<void> Interpreter::Impl::set_tool_length(const Words& words, LengthComp mod
 // G10: programmable data input. L2 Pn: work offset n (0 = EXT, 1-6 = G54-G59);
 // L20 Pn: G54.1 Pn (1-300); L10/L11: H geometry/wear; L12/L13: D
 // geometry/wear; L1: H wear (memory A). G90 sets, G91 adds.
+// Nine digits at the least increment of 0.001 mm (X+-999999.999), the
+// largest value a coordinate word takes in increment system IS-B: an offset
+// or a stored position is no larger. A value beyond it (#5221 = [10 ** 60])
+// is refused where it is assigned, in every dialect, as the dialect's
+// illegal_offset_value (Fanuc PS0029), so that no later move, report or
+// parameter file holds it.
+Flow<void> Interpreter::Impl::check_offset(double mm, const std::string& what, SourceLoc at) {
+  if (std::fabs(mm) <= kMaxOffsetMm) return {};
+  return fail(AlarmId::kIllegalOffsetValue,
+              what + " = " + fmt::format("{:g}", mm) + " mm: an offset is at most " +
+                  fmt::format("{}", kMaxOffsetMm) + " mm",
+              at);
+}
+
 Flow<void> Interpreter::Impl::data_setting(const Words& words, SourceLoc where) {
   if (ngc || grbl) return data_setting_ngc(words, where);  // ngc_codes.cpp
   if (mc.lathe() && !words.has('L')) return lathe_offset_setting(words, where);
@@ -230,13 +244,17 @@ Flow<void> Interpreter::Impl::data_setting(const Words& words, SourceLoc where) 
                   loc(words.at('P').column));
     }
     const int set = static_cast<int>(pv) + (l == 20 ? 6 : 0);
-    AxisVec& o = work_offsets[static_cast<std::size_t>(set)];
+    AxisVec o = work_offsets[static_cast<std::size_t>(set)];
     for (int i = 0; i < axis_count; ++i) {
       const char c = axis_letter[static_cast<std::size_t>(i)];
       if (!words.has(c)) continue;
       const double v = word_length(words.at(c), false) * unit_mm() / offset_unit_mm(*this);
       o[i] = inc ? o[i] + v : v;
+      auto ok = check_offset(o[i] * offset_unit_mm(*this), std::string("G10 ") + c,
+                             loc(words.at(c).column));
+      if (!ok) return ok;
     }
+    work_offsets[static_cast<std::size_t>(set)] = o;
     return {};
   }
   if (l == 1 || (l >= 10 && l <= 13)) {
@@ -252,6 +270,9 @@ Flow<void> Interpreter::Impl::data_setting(const Words& words, SourceLoc where) 
                 : l == 12           ? &t.radius_geometry
                                     : &t.radius_wear;
     const double v = word_length(words.at('R'), false) * unit_mm() / offset_unit_mm(*this);
+    auto ok = check_offset((inc ? *f + v : v) * offset_unit_mm(*this), "G10 R",
+                           loc(words.at('R').column));
+    if (!ok) return ok;
     *f = inc ? *f + v : v;
     return {};
   }
@@ -402,12 +423,31 @@ Flow<void> Interpreter::Impl::plan_addresses(const Words& words) const {
       return fail(AlarmId::kIllegalAddress, "address H (incremental C) on a lathe without a C axis",
                   loc(words.at(letter).column));
     }
-    if (std::string_view("FSTHDPQRKLIJE").find(letter) != std::string_view::npos) continue;
+    if (letter == 'E' && ngc) {
+      // RS274NGC reads E only for G70, G76, M66, M67 and M68; of those skipnc
+      // passes on M67/M68. `G1 X1e-05` is X1 and an E word: refused, as
+      // LinuxCNC 2.9's rs274 refuses it (measured, tests/rs274).
+      if (has_m(words, 67) || has_m(words, 68)) continue;
+      return fail(AlarmId::kIllegalAddress, "E word with no G70, G76, M66, M67 or M68 to use it",
+                  loc(words.at(letter).column));
+    }
+    // grbl 1.1 reads F I J K L N P R S T and the axes; any other letter is
+    // error:20 (gcode.c, "Non-Command Words"): no D, E, H or Q.
+    const std::string_view known = grbl ? "FSTPRKLIJ" : "FSTHDPQRKLIJE";
+    if (known.find(letter) != std::string_view::npos) continue;
     return fail(AlarmId::kIllegalAddress,
-                std::string("address ") + letter + " is not an address of this machine",
+                std::string("address ") + letter + " is not an address of this " +
+                    (grbl ? "control" : "machine"),
                 loc(words.at(letter).column));
   }
   return {};
+}
+
+bool Interpreter::Impl::has_m(const Words& words, int code) {
+  for (int i = 0; i < words.m_count; ++i) {
+    if (words.m[static_cast<std::size_t>(i)] == code) return true;
+  }
+  return false;
 }
 
 // An offset number word (D, H): whole, 0 to the machine's offset count.
@@ -500,6 +540,10 @@ Flow<void> Interpreter::Impl::plan_block(const Words& words, BlockPlan& plan) {
   if (!g) return g;
   for (int i = 0; i < words.m_count; ++i) {
     const int m = words.m[static_cast<std::size_t>(i)];
+    if (std::find(dialect.absent_m.begin(), dialect.absent_m.end(), m) != dialect.absent_m.end()) {
+      return fail(AlarmId::kUnknownMCode,
+                  "M" + std::to_string(m) + " is not a code of this control", loc(cur_col));
+    }
     if (std::find(dialect.not_simulated_m.begin(), dialect.not_simulated_m.end(), m) !=
         dialect.not_simulated_m.end()) {
       return fail(
@@ -596,21 +640,29 @@ void Interpreter::Impl::commit_spindle(const Words& words, bool changed, Command
   if (changed) emit_spindle(out);
 }
 
-// G52 / G92 axis words.
-void Interpreter::Impl::commit_shift(const Words& words, bool local) {
+// G52 / G92 axis words: every shift checked before any is set.
+Flow<void> Interpreter::Impl::commit_shift(const Words& words, bool local) {
+  AxisVec shift = local ? local_shift : g92_shift;
   for (int i = 0; i < axis_count; ++i) {
     const char c = axis_letter[static_cast<std::size_t>(i)];
     if (!words.has(c)) continue;
     const double v = word_length(words.at(c), false) * unit_mm();
     if (local) {
-      local_shift[i] = v;
+      shift[i] = v;
     } else {
       // G92: the current position becomes v in the work system.
+      const double saved = g92_shift[i];
       g92_shift[i] = 0.0;
-      g92_shift[i] = pos[i] * axis_scale[static_cast<std::size_t>(i)] - v - offset_total(i);
+      shift[i] = pos[i] * axis_scale[static_cast<std::size_t>(i)] - v - offset_total(i);
+      g92_shift[i] = saved;
     }
+    auto ok =
+        check_offset(shift[i], std::string(local ? "G52 " : "G92 ") + c, loc(words.at(c).column));
+    if (!ok) return ok;
   }
+  (local ? local_shift : g92_shift) = shift;
   if (!local && (ngc || grbl)) ngc_store_g92();
+  return {};
 }
 
 // G45-G48: the move is extended (G45, G47) or shortened (G46, G48) by the
@@ -651,7 +703,9 @@ Flow<Step> Interpreter::Impl::commit_action(const Words& words, const BlockPlan&
       return Step::kContinue;
     case Action::kLocalShift:
     case Action::kCoordSet:
-      commit_shift(words, plan.action == Action::kLocalShift);
+      if (auto r = commit_shift(words, plan.action == Action::kLocalShift); !r) {
+        return std::unexpected(r.error());
+      }
       return Step::kContinue;
     case Action::kDwell:
       if (auto r = dwell(words, out); !r) return std::unexpected(r.error());

@@ -41,7 +41,9 @@ Flow<void> Interpreter::Impl::ngc_action(const Words& words, int code, CommandSi
       if (!words.has('Z') || length_axis < 0) {
         return fail(AlarmId::kBadValue, "G43.1 needs Z, the tool length", loc(cur_col));
       }
-      length_offset = word_length(words.at('Z'), false) * unit_mm();
+      const double z = word_length(words.at('Z'), false) * unit_mm();
+      if (auto ok = check_offset(z, "G43.1 Z", loc(words.at('Z').column)); !ok) return ok;
+      length_offset = z;
       modal.length = LengthComp::kPlus;
       modal.h = 0;
       return {};
@@ -123,7 +125,8 @@ Flow<void> Interpreter::Impl::data_setting_ngc(const Words& words, SourceLoc whe
                   loc(words.at('R').column));
     }
     const int set = pv == 0 ? modal.work : static_cast<int>(pv);
-    AxisVec& o = work_offsets[static_cast<std::size_t>(set)];
+    // Every axis is checked before the system or #5221.. change.
+    AxisVec o = work_offsets[static_cast<std::size_t>(set)];
     for (int i = 0; i < axis_count; ++i) {
       const char c = axis_letter[static_cast<std::size_t>(i)];
       if (!words.has(c)) continue;
@@ -137,8 +140,14 @@ Flow<void> Interpreter::Impl::data_setting_ngc(const Words& words, SourceLoc whe
                               work_offsets[0][i];
         o[i] = pos[i] * axis_scale[static_cast<std::size_t>(i)] - mm - others;
       }
+      auto ok = check_offset(o[i], "G10 L" + std::to_string(l) + " " + c, loc(words.at(c).column));
+      if (!ok) return ok;
+    }
+    work_offsets[static_cast<std::size_t>(set)] = o;
+    for (int i = 0; i < axis_count; ++i) {
+      const char c = axis_letter[static_cast<std::size_t>(i)];
       const int j = ngc_axis_index(c);
-      if (j >= 0) vars.set_ngc_param(5221 + 20 * (set - 1) + j, o[i] / stored_mm());
+      if (words.has(c) && j >= 0) vars.set_ngc_param(5221 + 20 * (set - 1) + j, o[i] / stored_mm());
     }
     return {};
   }
@@ -147,6 +156,12 @@ Flow<void> Interpreter::Impl::data_setting_ngc(const Words& words, SourceLoc whe
       return fail(AlarmId::kIllegalOffsetNumber, "G10 L1 P" + std::to_string(pv), p_at);
     }
     auto& t = tools[static_cast<std::size_t>(pv)];
+    for (const char c : {'Z', 'R'}) {
+      if (!words.has(c)) continue;
+      auto ok = check_offset(word_length(words.at(c), false) * unit_mm(),
+                             std::string("G10 L1 ") + c, loc(words.at(c).column));
+      if (!ok) return ok;
+    }
     if (words.has('Z')) {
       t.length_geometry = word_length(words.at('Z'), false) * unit_mm();
       t.length_wear = 0.0;

@@ -88,6 +88,12 @@ Flow<void> Interpreter::Impl::write_ngc_param(int n, Value v, SourceLoc where) {
   if ((n >= 5061 && n <= 5070) || n == 5220 || (n >= 5400 && n <= 5428)) {
     return fail(AlarmId::kWriteProtected, "#" + std::to_string(n) + " is read-only", where);
   }
+  // #5161-#5390: the stored G28/G30 positions, the G92 offsets (#5211..)
+  // and the work offsets (#5221..), each within kMaxOffsetMm.
+  if (n >= 5161 && n <= 5390 && n != 5210 && (n - 5221) % 20 != 9 && n != 5220) {
+    auto ok = check_offset(v.num() * stored_mm(), "#" + std::to_string(n), where);
+    if (!ok) return ok;
+  }
   // #5221-#5390 are the stored work offsets: the active system keeps what
   // it loaded until another one is selected (ngc_load_work), as LinuxCNC.
   vars.set_ngc_param(n, v.num());

@@ -166,10 +166,21 @@ Flow<bool> Interpreter::Impl::find_sub(const std::string& label, ProgramFile*& f
         if (b.stmt.kind == gcode::StmtKind::kOword && b.stmt.okind == OKind::kSub) {
           pf.subs.emplace(b.names[static_cast<std::size_t>(b.stmt.label)], scanner->tell());
         }
+        if (b.stmt.kind == gcode::StmtKind::kOword && b.stmt.okind == OKind::kEndsub) {
+          pf.endsubs.insert(b.names[static_cast<std::size_t>(b.stmt.label)]);
+        }
       }
       pf.subs_scanned = true;
     }
     if (auto it = pf.subs.find(label); it != pf.subs.end()) {
+      // A sub without its endsub would run to the end of the file and end
+      // the program there: an alarm, as LinuxCNC's rs274 stops ("File ended
+      // with no percent sign or program end").
+      if (!pf.endsubs.contains(label)) {
+        return fail(AlarmId::kOwordFlow,
+                    shown(label) + " sub in " + pf.display + " has no " + shown(label) + " endsub",
+                    where);
+      }
       file = &pf;
       at = it->second;
       return true;

@@ -347,12 +347,16 @@ Flow<void> Interpreter::Impl::write_var(int n, Value v, SourceLoc where) {
             "#" + std::to_string(n) + ": the machine has no axis " + std::to_string(axis + 1),
             where);
       }
+      auto ok = check_offset(v.num() * unit_mm(), "#" + std::to_string(n), where);
+      if (!ok) return ok;
       work_offsets[static_cast<std::size_t>(set)][axis] =
           v.num() * unit_mm() / offset_unit_mm(*this);
       return {};
     }
     if (!is_tool(*r)) return write_control(*r, k, v, where);
     if (double* f = tool_field(*r, k)) {
+      auto ok = check_offset(v.num() * unit_mm(), "#" + std::to_string(n), where);
+      if (!ok) return ok;
       *f = v.num() * unit_mm() / offset_unit_mm(*this);
       return {};
     }

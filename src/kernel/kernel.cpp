@@ -366,7 +366,10 @@ void Kernel::monitor_skip(const TickInput& in) noexcept {
 // run replaces a cutting move's feed at once (the ratio is per segment). A
 // skip block with a fixed feed runs at 100 % whatever the override says.
 double Kernel::advance_time_scale() noexcept {
-  if (full_rate_) return 1.0;
+  if (full_rate_) {
+    ramps_settled_ = true;
+    return 1.0;
+  }
   const planner::Segment* seg = queue_.front();
   const bool cutting = seg != nullptr && (seg->kind == planner::Move::Kind::kLine ||
                                           seg->kind == planner::Move::Kind::kArc);
@@ -386,6 +389,7 @@ double Kernel::advance_time_scale() noexcept {
   };
   ramp(hold_factor_, hold ? 0.0 : 1.0);
   ramp(override_factor_, ovr);
+  ramps_settled_ = hold_factor_ == (hold ? 0.0 : 1.0) && override_factor_ == ovr;
   double scale = hold_factor_;
   if (cutting && !fixed) {
     scale *= override_factor_;
@@ -395,6 +399,12 @@ double Kernel::advance_time_scale() noexcept {
   }
   update_full_rate();
   return scale;
+}
+
+std::int64_t Kernel::quiet_ticks() const noexcept {
+  if (fault_ || followed_up_ || !ramps_settled_ || skip_latch_pending_) return 0;
+  if ((skip_.active && !skip_.done) || interpolator_.needs_in_position()) return 0;
+  return interpolator_.quiet_ticks();
 }
 
 void Kernel::tick(const TickInput& in, TickOutput& out) noexcept {
@@ -467,6 +477,8 @@ void Kernel::tick(const TickInput& in, TickOutput& out) noexcept {
   }
   out.time_scale = time_scale_;
   out.followed_up = followed_up_;
+  out.passed_dwell_line = interpolator_.passed_dwell_line();
+  out.passed_dwell_source = interpolator_.passed_dwell_source();
   // Faults last: the servo's on the period that ended, then the stroke on
   // the command for the next one.
   if (check_servo(in) || check_stroke()) out.commanded = cmd_;

@@ -120,6 +120,10 @@ struct TickOutput {
   // next period starts from it, not from the previous period's command. A
   // servo with velocity feedforward must not take the jump as a velocity.
   bool followed_up = false;
+  // A dwell passed in this period without a period of its own (G04 X0):
+  // its line (0: none) and call context.
+  std::uint32_t passed_dwell_line = 0;
+  std::uint32_t passed_dwell_source = 0;
   // The kernel's first fault (kind kNone while there is none); set in the
   // tick that found it and in every tick after, while the command is held.
   Fault fault;
@@ -213,6 +217,16 @@ class Kernel {
 
   // --- the tick -----------------------------------------------------------
   void tick(const TickInput& in, TickOutput& out) noexcept;
+  // Periods from now whose ticks would each give the last tick's output
+  // again, the time aside (a dwell, a feed hold: the command stands, no
+  // skip, no fault, the time scale settled), given the same input. 0: none.
+  std::int64_t quiet_ticks() const noexcept;
+  // Passes n such periods at once (n <= quiet_ticks()): as n ticks whose
+  // input was the last one.
+  void pass_quiet(std::int64_t n) noexcept {
+    tick_ += n;
+    interpolator_.pass_quiet(n);
+  }
 
   // --- state ---------------------------------------------------------------
   Tick now() const noexcept { return tick_; }
@@ -284,6 +298,7 @@ class Kernel {
   double ramp_v_nom_ = 0.0;       // the path speed ramp_step_ was computed for
   double ramp_step_ = 1e300;      // change of the hold and override factors per period
   bool full_rate_ = true;         // see update_full_rate
+  bool ramps_settled_ = true;     // both factors at their targets (quiet_ticks)
 };
 
 }  // namespace skipnc::kernel

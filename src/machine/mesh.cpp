@@ -146,6 +146,64 @@ bool ray_hits(const Triangle& t, Vec3 o, Vec3 d) noexcept {
   return dot(e2, q) * inv > 0.0;
 }
 
+// The corners of a triangle in a fixed order (lexicographic), so that the
+// same face written with its corners in another order compares equal.
+std::array<double, 9> corners_key(const Triangle& t) noexcept {
+  std::array<Vec3, 3> v{t.a, t.b, t.c};
+  auto less = [](const Vec3& p, const Vec3& q) {
+    return p.x != q.x ? p.x < q.x : (p.y != q.y ? p.y < q.y : p.z < q.z);
+  };
+  std::sort(v.begin(), v.end(), less);
+  return {v[0].x, v[0].y, v[0].z, v[1].x, v[1].y, v[1].z, v[2].x, v[2].y, v[2].z};
+}
+
+// Drops every triangle with the same corners as an earlier one, keeping the
+// order of the others: a face given twice (or a thousand times) is one
+// face. Each copy would be tested by every query that reaches it, and would
+// count twice in inside()'s crossings. Sorts 4-byte indices: no copy of
+// the triangles.
+void drop_coincident(std::vector<Triangle>& tris) {
+  std::vector<std::uint32_t> order(tris.size());
+  for (std::uint32_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::stable_sort(order.begin(), order.end(), [&](std::uint32_t p, std::uint32_t q) {
+    return corners_key(tris[p]) < corners_key(tris[q]);
+  });
+  std::vector<bool> dup(tris.size(), false);
+  bool any = false;
+  for (std::size_t k = 1; k < order.size(); ++k) {
+    if (corners_key(tris[order[k]]) == corners_key(tris[order[k - 1]])) {
+      dup[order[k]] = true;
+      any = true;
+    }
+  }
+  if (!any) return;
+  std::size_t out = 0;
+  for (std::size_t i = 0; i < tris.size(); ++i) {
+    if (!dup[i]) tris[out++] = tris[i];
+  }
+  tris.resize(out);
+}
+
+// Entry time (0..1) of the segment o -> o + d into box b, or a value above 1
+// when it misses it.
+double segment_box_entry(const Aabb& b, Vec3 o, Vec3 d) noexcept {
+  double t0 = 0.0, t1 = 1.0;
+  const double lo[3] = {b.lo.x, b.lo.y, b.lo.z}, hi[3] = {b.hi.x, b.hi.y, b.hi.z};
+  const double oo[3] = {o.x, o.y, o.z}, dd[3] = {d.x, d.y, d.z};
+  for (int k = 0; k < 3; ++k) {
+    if (dd[k] == 0.0) {
+      if (oo[k] < lo[k] || oo[k] > hi[k]) return 2.0;
+      continue;
+    }
+    double ta = (lo[k] - oo[k]) / dd[k], tb = (hi[k] - oo[k]) / dd[k];
+    if (ta > tb) std::swap(ta, tb);
+    t0 = std::max(t0, ta);
+    t1 = std::min(t1, tb);
+    if (t0 > t1) return 2.0;
+  }
+  return t0;
+}
+
 bool ray_box(const Aabb& b, Vec3 o, Vec3 inv_d) noexcept {
   double t0 = 0.0, t1 = kInf;
   const double lo[3] = {b.lo.x, b.lo.y, b.lo.z}, hi[3] = {b.hi.x, b.hi.y, b.hi.z};
@@ -221,6 +279,7 @@ TriMesh::TriMesh(std::vector<Triangle> triangles) {
     t.n = n * (1.0 / l);
     tris_.push_back(t);
   }
+  drop_coincident(tris_);
   if (tris_.empty()) return;
   nodes_.reserve(2 * (tris_.size() / kLeafSize + 1) + 1);
   nodes_.emplace_back();
@@ -275,9 +334,19 @@ bool TriMesh::first_contact(Vec3 a, Vec3 b, double radius, double& t, Vec3& poin
   int top = 0;
   stack[top++] = 0;
   bool found = false;
+  const Vec3 r3{radius, radius, radius};
+  // When the centre enters a node's box grown by the radius: no contact
+  // inside it comes earlier, so a node entered at or after the best contact
+  // so far is passed over (the order of the search, and so the contact chosen
+  // among equal ones, is as before). Overlapping triangles behind the
+  // first contact are not tested.
+  auto entry = [&](const Node& nd) {
+    return segment_box_entry(Aabb{nd.box.lo - r3, nd.box.hi + r3}, a, b - a);
+  };
   while (top > 0) {
     const Node& nd = nodes_[stack[--top]];
     if (!boxes_overlap(nd.box, sweep)) continue;
+    if (found && entry(nd) >= t) continue;
     if (nd.count == 0) {
       stack[top++] = nd.first;
       stack[top++] = nd.first + 1;

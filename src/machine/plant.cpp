@@ -88,8 +88,32 @@ void Plant::advance(Tick k, const AxisVec& from, const AxisVec& to,
   in.torque_pct = torque_;
   in.edge_count = 0;
   probing_.advance(before, actual_);
-  if (sources_.empty()) return;
-  source_edges(k, before, in);
+  bool still = true;
+  for (int i = 0; still && i < n_; ++i) still = from[i] == to[i] && before[i] == actual_[i];
+  if (!sources_.empty()) source_edges(k, before, in);
+  still_ = still && in.edge_count == 0 ? std::min(still_ + 1, 2) : 0;
+}
+
+std::int64_t Plant::quiet_ticks(Tick now) const noexcept {
+  if (still_ < 2) return 0;
+  // The next instant a pulse or a load of the scene begins or ends.
+  const double t = clock_.seconds(now);
+  double next = std::numeric_limits<double>::infinity();
+  auto note = [&](double at) {
+    if (at > t) next = std::fmin(next, at);
+  };
+  for (const Pulse& p : scene_.pulses) {
+    note(p.at_time_s);
+    note(p.at_time_s + p.duration_s);
+  }
+  for (const Load& l : scene_.loads) {
+    note(l.at_time_s);
+    note(l.at_time_s + l.duration_s);
+  }
+  constexpr std::int64_t kForever = INT64_MAX / 4;
+  if (!std::isfinite(next)) return kForever;
+  const double n = std::floor(next / clock_.period_s()) - static_cast<double>(now) - 2.0;
+  return n > 0.0 ? static_cast<std::int64_t>(std::fmin(n, 1e18)) : 0;
 }
 
 void Plant::advance_servo(Tick k, const AxisVec& before, const AxisVec& from,

@@ -41,6 +41,14 @@ class Plant {
 
   const AxisVec& actual() const noexcept { return actual_; }
   const AxisVec& torque() const noexcept { return torque_; }
+  // Periods from tick `now` on whose advance would repeat the last one bit
+  // for bit, given the same command: the last two advances had the command
+  // standing, moved no axis and changed no signal, and no pulse or load of
+  // the scene begins or ends before then (two periods spare). 0: none.
+  std::int64_t quiet_ticks(Tick now) const noexcept;
+  // The last two advances changed nothing (the first test of quiet_ticks,
+  // inline: it is asked every period).
+  bool still() const noexcept { return still_ >= 2; }
   double clock_period_s() const noexcept { return clock_.period_s(); }
   // Torque limit of each axis's servo from now on, % (0: torque_max only):
   // the motor torque saturates there (torque limit skip, kernel output).
@@ -92,6 +100,7 @@ class Plant {
   AxisVec torque_limit_;
   AxisMask locked_;
   bool limited_ = false;  // a torque limit is applied on some axis
+  int still_ = 0;         // advances in a row that changed nothing (up to 2)
   // Servo constants per axis.
   std::array<double, kMaxAxes> decay_{};          // exp(-kp * T)
   std::array<double, kMaxAxes> lag_gain_{};       // (1 - feedforward) / (kp * T)

@@ -494,7 +494,10 @@ bool SegmentQueue::push(const Move& move) {
 
   switch (move.kind) {
     case Kind::kDwell:
-      if (!(move.dwell_s > 0.0)) return true;
+      // A dwell of no time (G04 X0) is a segment too: the axes come to rest
+      // and in position as for any dwell, and the block is counted as run
+      // (the interpolator says it passed it: its row in the block times).
+      if (!(move.dwell_s >= 0.0)) return true;
       s.end = tail_;
       s.exact_stop = true;
       s.no_accel = false;

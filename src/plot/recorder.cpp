@@ -193,8 +193,52 @@ void Recorder::thin() {
     kept_ = std::move(out);
     if (kept_.size() * 10 > before * 9) break;  // pins dominate: thinning no longer helps
   }
-  if (kept_.size() > d_.max_samples) d_.max_samples = kept_.size() + kept_.size() / 2;
+  if (kept_.size() > d_.max_samples) {
+    d_.max_samples = std::min(kept_.size() + kept_.size() / 2, d_.max_kept);
+  }
+  if (kept_.size() >= d_.max_kept) thin_pins();
   reset_sleeve(kept_.back());
+}
+
+// Pins dominate and the hard bound is reached: every other sample goes,
+// pinned or not (the first and the last stay). Memory stays within
+// max_kept samples however long the run; edges then lose their periods
+// around, not the edge's place to the drawing's resolution.
+void Recorder::thin_pins() {
+  std::vector<Sample> out;
+  out.reserve(kept_.size() / 2 + 2);
+  for (std::size_t i = 0; i < kept_.size(); ++i) {
+    if (i % 2 == 0 || i + 1 == kept_.size()) out.push_back(kept_[i]);
+  }
+  kept_ = std::move(out);
+}
+
+// Past max_blocks block runs, each pair of neighbouring runs becomes one
+// (the first's line and kind, the second's end); runs of skip blocks are
+// merged only when the others are not enough. The open run (the last) stays.
+void Recorder::merge_blocks() {
+  for (const bool skips_too : {false, true}) {
+    std::vector<BlockRun> out;
+    out.reserve(blocks_.size());
+    std::size_t i = 0;
+    for (; i + 2 < blocks_.size(); i += 2) {
+      const BlockRun& a = blocks_[i];
+      const BlockRun& b = blocks_[i + 1];
+      if (!skips_too && (a.kind == MoveKind::kSkip || b.kind == MoveKind::kSkip)) {
+        out.push_back(a);
+        out.push_back(b);
+        continue;
+      }
+      BlockRun m = a;
+      m.t1 = b.t1;
+      m.end_act = b.end_act;
+      m.end_cmd = b.end_cmd;
+      out.push_back(m);
+    }
+    for (; i < blocks_.size(); ++i) out.push_back(blocks_[i]);
+    blocks_ = std::move(out);
+    if (blocks_.size() * 4 <= d_.max_blocks * 3) return;
+  }
 }
 
 Sample Recorder::sample_of(const sim::TraceRow& r) {
@@ -280,6 +324,7 @@ void Recorder::row(const sim::TraceRow& r) {
     b.end_cmd = prev_.cmd;
     blocks_.push_back(BlockRun{cur.line, cur.source, take_kind(cur.line, cur.source), cur.t, cur.t,
                                cur.act, cur.act, cur.cmd});
+    if (blocks_.size() > d_.max_blocks) merge_blocks();
   }
   const bool prev_kept = !kept_.empty() && kept_.back().t >= prev_.t;
   if (edge) {

@@ -15,6 +15,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <deque>
+#include <numeric>
 #include <string>
 #include <vector>
 
@@ -77,7 +78,12 @@ struct Decimation {
   double feed_tol_mm_min = 0.5;
   double torque_tol_pct = 0.25;
   std::size_t max_samples = 40000;  // budget; tolerances double past it
-  int keep_around_edge = 6;         // periods kept whole before and after a signal edge
+  // Hard bounds, whatever the program's length: past max_kept samples the
+  // pins (block boundaries, edges) are thinned too; past max_blocks block
+  // runs, neighbouring runs are merged (skip blocks last).
+  std::size_t max_kept = 80000;
+  std::size_t max_blocks = 20000;
+  int keep_around_edge = 6;  // periods kept whole before and after a signal edge
 };
 
 class Recorder final : public sim::TraceSink, public canon::CommandSink {
@@ -85,6 +91,9 @@ class Recorder final : public sim::TraceSink, public canon::CommandSink {
   explicit Recorder(const config::MachineConfig& m, Decimation d = {});
 
   void row(const sim::TraceRow& r) override;
+  // Periods in which nothing changes (a dwell, a feed hold) may be passed
+  // over: the samples on either side draw them (a straight line in time).
+  std::int64_t stride() const noexcept override { return std::int64_t{1} << 40; }
   void emit(const canon::Stamped& c) override;
   // Keeps the last period seen (call once the run has ended).
   void finish();
@@ -115,6 +124,8 @@ class Recorder final : public sim::TraceSink, public canon::CommandSink {
   void reset_sleeve(const Sample& anchor);
   bool sleeve_accepts(const Sample& s);
   void thin();
+  void thin_pins();
+  void merge_blocks();
   MoveKind take_kind(std::uint32_t line, std::uint32_t source);
 
   int n_ = 0;
@@ -148,6 +159,13 @@ class TeeTrace final : public sim::TraceSink {
   void row(const sim::TraceRow& r) override {
     if (a_ != nullptr) a_->row(r);
     if (b_ != nullptr) b_->row(r);
+  }
+  void last(const sim::TraceRow& r) override {
+    if (a_ != nullptr) a_->last(r);
+    if (b_ != nullptr) b_->last(r);
+  }
+  std::int64_t stride() const noexcept override {
+    return std::gcd(a_ != nullptr ? a_->stride() : 0, b_ != nullptr ? b_->stride() : 0);
   }
 
  private:

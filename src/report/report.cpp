@@ -491,6 +491,18 @@ char* trace_number(char* p, double v) noexcept {
 void CsvTrace::row(const sim::TraceRow& r) {
   if (!opened_ || error_) return;
   if (every_ > 1 && r.tick % every_ != 0) return;
+  write_row(r);
+}
+
+// --trace-every larger than the run (or not dividing its length): the header
+// and the last period are written all the same (was: an empty file).
+void CsvTrace::last(const sim::TraceRow& r) {
+  if (!opened_ || error_ || r.tick == last_tick_) return;
+  write_row(r);
+}
+
+void CsvTrace::write_row(const sim::TraceRow& r) {
+  last_tick_ = r.tick;
   if (!header_done_) {
     header(r);
     bytes_ += buf_.size();

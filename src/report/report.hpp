@@ -100,16 +100,19 @@ class CsvTrace final : public sim::TraceSink {
   ~CsvTrace() override;
   [[nodiscard]] Result<void> open();
   void row(const sim::TraceRow& r) override;
+  void last(const sim::TraceRow& r) override;
+  std::int64_t stride() const noexcept override { return every_; }
   [[nodiscard]] Result<void> finish();
   void on_stop(std::function<void()> stop) { stop_ = std::move(stop); }
   // --trace-every N: one row for every N servo periods (the periods whose
-  // tick is a multiple of N), 1: every period.
+  // tick is a multiple of N) and the run's last period, 1: every period.
   void every(std::int64_t n) noexcept { every_ = n < 1 ? 1 : n; }
   // The error that ended the trace early, if any.
   const std::optional<Error>& error() const noexcept { return error_; }
 
  private:
   void header(const sim::TraceRow& r);
+  void write_row(const sim::TraceRow& r);
   void flush_buffer();
   void fail_with(Error e);
   std::string path_;
@@ -119,6 +122,7 @@ class CsvTrace final : public sim::TraceSink {
   std::uint64_t max_bytes_ = 0;
   std::uint64_t bytes_ = 0;  // rows accepted (written or buffered)
   std::int64_t every_ = 1;
+  std::int64_t last_tick_ = -1;                 // the tick of the last row written
   const machine::TouchProbe* probe_ = nullptr;  // the scene's probe (trace columns), if any
   bool work_ = false;                           // <axis>_work columns
   int tip_axis_ = -1;                           // the <Z>_tip column's axis, -1: none

@@ -46,14 +46,20 @@ class ProbeSafety final : public canon::CommandSink {
   [[nodiscard]] std::optional<SafetyAlarm> after_period(machine::Plant& plant,
                                                         const kernel::Kernel& k, std::uint32_t line,
                                                         std::string_view file) {
-    const machine::ProbeScene& ps = plant.probing();
-    if (!tool_change_ && !power_change_ && power_on_at_s_ < 0.0 &&
-        ps.fault().kind == machine::PlantFault::Kind::kNone &&
-        !(protection_ && ps.touch_switched_on())) {
+    if (quiet(plant)) {
       period_line_ = line;  // nothing to do (most periods)
       return std::nullopt;
     }
     return check_period(plant, k, line, file);
+  }
+  // Nothing waits to be checked after a period: no tool change, no probe
+  // power change or warm-up, no fault, no switched-on touch under
+  // protection.
+  bool quiet(const machine::Plant& plant) const noexcept {
+    const machine::ProbeScene& ps = plant.probing();
+    return !tool_change_ && !power_change_ && power_on_at_s_ < 0.0 &&
+           ps.fault().kind == machine::PlantFault::Kind::kNone &&
+           !(protection_ && ps.touch_switched_on());
   }
   const std::vector<std::string>& messages() const noexcept { return messages_; }
   // Structured warnings (skip_braking), record::Warning.

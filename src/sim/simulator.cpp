@@ -42,6 +42,17 @@ class BlockClock {
     end_ = now;
     open_ = true;
   }
+  // A block met at the start of the period ending at `now` that ran no
+  // period of its own (a dwell of no time, G04 X0): a place that ran, for
+  // no time, at that instant.
+  void passed(std::uint32_t context, std::uint32_t line, Tick now) {
+    const std::uint64_t key = (static_cast<std::uint64_t>(context) << 32) | line;
+    auto [it, added] = index_.try_emplace(key, places_.size());
+    if (added) places_.push_back(BlockTime{context, line, 0, now - 1, now - 1, 0});
+    BlockTime& b = places_[it->second];
+    ++b.runs;
+    b.last = std::max(b.last, now - 1);
+  }
   std::vector<BlockTime> finish() {
     close();
     return std::move(places_);
@@ -405,6 +416,54 @@ Result<RunResult> Simulator::run(const interp::Setup& setup, const RunOptions& o
     }
   }
 
+  // The trace's row of the period just run.
+  auto trace_row = [&]() {
+    TraceRow r;
+    r.tick = k.now();
+    r.time_s = k.clock().seconds(k.now());
+    r.commanded = &cmd_prev;
+    r.actual = &plant.actual();
+    r.torque = &plant.torque();
+    r.feed_mm_per_min = tout.path_speed * 60.0;
+    r.line = tout.line;
+    r.source = tout.source;
+    work_now = frames.at(tout.tag).apply(plant.actual(), m_.axis_count());
+    r.work = &work_now;
+    r.file = file_of(tout.source);
+    r.plant = &plant;
+    r.handshake = tout.handshake;
+    r.handshake_names = d_.handshake.empty() ? nullptr : &d_.handshake;
+    return r;
+  };
+
+  // Periods that would each repeat the last one, the time aside (a dwell, a
+  // feed hold): the kernel's command stands, the machine is still, the
+  // interpreter waits for the machine, and nothing of the scene, the
+  // operator, the trace's --trace-every or the time limit is due before
+  // them. They are passed in one step: the run is the same, bit for bit,
+  // as one period at a time (G04 X1e9 took minutes of processor time).
+  auto quiet_periods = [&]() -> std::int64_t {
+    if (!plant.still()) return 0;  // most periods: the axes move
+    const bool reading = !waiting && !ending && router.drained() && k.can_accept();
+    if (reading || tout.line == 0 || !safety.quiet(plant)) return 0;
+    std::int64_t n = std::min(k.quiet_ticks(), plant.quiet_ticks(k.now()));
+    if (n <= 0) return 0;
+    const Tick now = k.now();
+    n = std::min<std::int64_t>(n, m_.limits.max_ticks - now - 2);
+    if (next_action < scene_.operator_actions.size()) {
+      const double at = scene_.operator_actions[next_action].at_time_s;
+      n = std::min<std::int64_t>(
+          n, static_cast<std::int64_t>(std::floor(at / k.clock().period_s())) - now - 2);
+    } else if (tout.time_scale < 1e-12) {
+      return 0;  // held for ever: ends after a second (below), period by period
+    }
+    if (opts.trace != nullptr) {
+      const std::int64_t s = std::max<std::int64_t>(1, opts.trace->stride());
+      n = std::min<std::int64_t>(n, (now / s + 1) * s - now - 1);  // the next row is written
+    }
+    return n;
+  };
+
   for (;;) {
     // Feed the kernel until it is full or the interpreter must wait: first
     // the motion of the last block that did not fit, then new blocks.
@@ -463,6 +522,11 @@ Result<RunResult> Simulator::run(const interp::Setup& setup, const RunOptions& o
       if (changed) k.set_operator(op);
     }
 
+    if (const std::int64_t quiet = quiet_periods(); quiet > 0) {
+      k.pass_quiet(quiet);
+      times.period(tout.source, tout.line, k.now());
+    }
+
     // One servo period.
     const AxisVec& cmd = tout.commanded;
     if (tout.torque_limited || plant.torque_limited())
@@ -478,24 +542,10 @@ Result<RunResult> Simulator::run(const interp::Setup& setup, const RunOptions& o
     cmd_prev = cmd;
     k.tick(tin, tout);
     times.period(tout.source, tout.line, k.now());
-    if (opts.trace != nullptr) {
-      TraceRow r;
-      r.tick = k.now();
-      r.time_s = k.clock().seconds(k.now());
-      r.commanded = &cmd_prev;
-      r.actual = &plant.actual();
-      r.torque = &plant.torque();
-      r.feed_mm_per_min = tout.path_speed * 60.0;
-      r.line = tout.line;
-      r.source = tout.source;
-      work_now = frames.at(tout.tag).apply(plant.actual(), m_.axis_count());
-      r.work = &work_now;
-      r.file = file_of(tout.source);
-      r.plant = &plant;
-      r.handshake = tout.handshake;
-      r.handshake_names = d_.handshake.empty() ? nullptr : &d_.handshake;
-      opts.trace->row(r);
+    if (tout.passed_dwell_line != 0) {
+      times.passed(tout.passed_dwell_source, tout.passed_dwell_line, k.now());
     }
+    if (opts.trace != nullptr) opts.trace->row(trace_row());
     // Tool changes, probe crash, collision, probe protection.
     if (auto s = safety.after_period(plant, k, tout.line, file_of(tout.source))) {
       alarm(std::move(s->error), tout.source);
@@ -580,6 +630,7 @@ Result<RunResult> Simulator::run(const interp::Setup& setup, const RunOptions& o
       }
     }
   }
+  if (opts.trace != nullptr && k.now() > 0) opts.trace->last(trace_row());
   res.ticks = k.now();
   res.time_s = k.clock().seconds(k.now());
   res.block_times = times.finish();

@@ -9,9 +9,13 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
+#include <map>
 #include <nlohmann/json.hpp>
+#include <random>
+#include <sstream>
 #include <string>
 #include <thread>
 #include <vector>
@@ -24,6 +28,13 @@ namespace skipnc::test {
 namespace {
 
 namespace fs = std::filesystem;
+
+// mill3 in the linuxcnc dialect with its parameter file m.var beside it.
+fs::path linuxcnc_machine_with_parameter_file(const TempDir& dir) {
+  return dir.write("m.toml",
+                   "extends = \"mill3\"\ndialect = \"linuxcnc\"\n"
+                   "persistent_variables = \"m.var\"\n");
+}
 
 int count_lines(const std::string& s) {
   int n = 0;
@@ -243,6 +254,34 @@ TEST(SurfacesSweep, JunitFileNeverReplacesAnInput) {
   EXPECT_FALSE(fs::exists(s.csv()));
 }
 
+// SIGTERM at any moment of a sweep (from 50 ms after the start, once the
+// handlers are set, to well into it): the table is whole and readable, each
+// finished row in it, the rest not_run, whatever the instant. Two workers.
+TEST(SurfacesSweep, SigtermAtAnyMomentLeavesAReadableTable) {
+  std::mt19937 rng(31);
+  std::uniform_int_distribution<int> ms(50, 1500);
+  for (int k = 0; k < 5; ++k) {
+    Sweep s("G91 G1 X0.1 F600\nG04 X0.3\nM30\n", "scenarios = 200000\nworkers = 2\n");
+    Child c({"sweep", s.spec.string(), "-q"}, "/dev/null", (s.dir.path / "err.txt").string());
+    const int wait_ms = ms(rng);
+    std::this_thread::sleep_for(std::chrono::milliseconds(wait_ms));
+    c.signal(SIGTERM);
+    const auto e = c.wait(120.0);
+    ASSERT_TRUE(e.exited) << wait_ms << " ms: ended by signal " << e.signal;
+    const auto j = s.table();
+    ASSERT_FALSE(j.is_discarded()) << wait_ms << " ms";
+    const auto& sum = j["summary"];
+    const int done = sum["passed"].get<int>() + sum["failed"].get<int>();
+    EXPECT_EQ(done + sum["not_run"].get<int>() + sum["statuses"].value("interrupted", 0), 200000)
+        << wait_ms << " ms";
+    EXPECT_EQ(count_lines(read_file(s.csv())), 200001) << wait_ms << " ms";
+    int finished = 0;
+    for (const auto& row : j["rows"]) finished += row.value("status", "") == "completed" ? 1 : 0;
+    EXPECT_EQ(finished, done) << wait_ms << " ms";
+    EXPECT_EQ(e.code, done == 200000 ? 0 : 1) << wait_ms << " ms";
+  }
+}
+
 // ---- 3. Every file the run reads is checked --------------------------------
 
 TEST(SurfacesInputs, DevicesAndFifosAreRefusedByName) {
@@ -308,28 +347,27 @@ TEST(SurfacesCollisions, UsageErrorReportNeverReplacesAnInput) {
 
 TEST(SurfacesNgcParams, HugeValuesAreWrittenWholeAndReadBack) {
   TempDir dir;
-  const auto m = dir.write("m.toml",
-                           "extends = \"mill3\"\ndialect = \"linuxcnc\"\n"
-                           "persistent_variables = \"m.var\"\n");
-  const auto prog = dir.write("p.ngc", "#5221 = [10 ** 60]\nM2\n");
+  const auto m = linuxcnc_machine_with_parameter_file(dir);
+  // #5000 is kept because the file lists it (an offset, #5221, is
+  // range-checked on assignment instead: SurfacesOffsets).
+  dir.write("m.var", "5000\t0\n");
+  const auto prog = dir.write("p.ngc", "#5000 = [10 ** 60]\nM2\n");
   auto r = run_cli({"run", prog.string(), "-m", m.string(), "-q"}, (dir.path / "e1").string());
   EXPECT_EQ(r.exit_code, 0) << read_file(dir.path / "e1");
   const std::string text = read_file(dir.path / "m.var");
   // Written whole, as LinuxCNC writes it ("%f": every digit of the double).
-  const auto at = text.find("\n5221\t");
+  const auto at = text.find("5000\t");
   ASSERT_NE(at, std::string::npos) << text;
-  EXPECT_DOUBLE_EQ(std::stod(text.substr(at + 6, text.find('\n', at + 1) - at - 6)), 1e60) << text;
+  EXPECT_DOUBLE_EQ(std::stod(text.substr(at + 5, text.find('\n', at + 1) - at - 5)), 1e60) << text;
   // The next run starts from it.
-  const auto prog2 = dir.write("q.ngc", "#1 = #5221\nM2\n");
+  const auto prog2 = dir.write("q.ngc", "#1 = #5000\nM2\n");
   r = run_cli({"run", prog2.string(), "-m", m.string(), "-q"}, (dir.path / "e2").string());
   EXPECT_EQ(r.exit_code, 0) << read_file(dir.path / "e2");
 }
 
 TEST(SurfacesNgcParams, DamagedFilesAreRefusedWithTheirLine) {
   TempDir dir;
-  const auto m = dir.write("m.toml",
-                           "extends = \"mill3\"\ndialect = \"linuxcnc\"\n"
-                           "persistent_variables = \"m.var\"\n");
+  const auto m = linuxcnc_machine_with_parameter_file(dir);
   const auto prog = dir.write("p.ngc", "M2\n");
   for (const std::string bad :
        {"5221 1\n5221 2\n", "5221 0x10\n", "4294972517 1\n", "-5221 1\n", "5221 1e999\n"}) {
@@ -421,6 +459,210 @@ TEST(SurfacesOutputs, ReplacedOutputLosesSetuidBits) {
   struct stat st {};
   ASSERT_EQ(::stat(report.c_str(), &st), 0);
   EXPECT_EQ(st.st_mode & 07777, 0755u);
+}
+
+// ---- Words the language does not have ----------------------------------
+
+// `G1 X1e-05` is X1 and an E word. LinuxCNC's rs274 refuses the E ("E word
+// with no G70, G76, M66, M67 or M68 to use it"), grbl any letter it does not
+// read (error:20); skipnc once moved 1 mm.
+TEST(SurfacesWords, ExponentIsAnEWordAndRefused) {
+  TempDir dir;
+  const auto prog = dir.write("p.ngc", "G21 G90\nG1 X1e-05 F100\nM2\n");
+  for (const std::string d : {"linuxcnc", "grblhal"}) {
+    const auto r = run_with_report(dir, prog, {"-d", d});
+    ASSERT_TRUE(r.report_ok) << d << r.err;
+    EXPECT_EQ(r.exit.code, 1) << d;
+    EXPECT_EQ(r.alarm().value("code", ""), alarm_code(AlarmId::kIllegalAddress, d)) << d;
+    EXPECT_EQ(r.alarm().value("line", 0), 2) << d;
+    EXPECT_EQ(r.alarm().value("column", 0), 6) << d;  // the E of X1e-05
+    EXPECT_DOUBLE_EQ(r.report.at("final").at("machine_position").value("X", -1.0), 0.0) << d;
+  }
+  // grbl: error:20 for every letter it does not read.
+  for (const std::string block : {"G0 X1 D1", "G0 X1 H1", "G0 X1 Q1", "G0 X1 E1"}) {
+    const auto p2 = dir.write("q.nc", block + "\nM2\n");
+    const auto r = run_with_report(dir, p2, {"-d", "grblhal"});
+    ASSERT_TRUE(r.report_ok) << block;
+    EXPECT_EQ(r.alarm().value("code", ""), "error:20") << block;
+  }
+  // LinuxCNC's E beside M67 (an analog output) is a word of that code.
+  const auto p3 = dir.write("r.ngc", "M67 E0 Q2.5\nM2\n");
+  EXPECT_EQ(run_with_report(dir, p3, {"-d", "linuxcnc"}).exit.code, 0);
+}
+
+// grbl has no subprograms: M98 is error:20 (grbl 1.1 gcode.c: "Unsupported
+// M command").
+TEST(SurfacesWords, GrblRefusesM98) {
+  TempDir dir;
+  const auto prog = dir.write("p.nc", "G0 X1\nM98 P100\nM2\n");
+  const auto r = run_with_report(dir, prog, {"-d", "grblhal"});
+  ASSERT_TRUE(r.report_ok) << r.err;
+  EXPECT_EQ(r.exit.code, 1);
+  EXPECT_EQ(r.alarm().value("code", ""), "error:20");
+  EXPECT_EQ(r.alarm().value("line", 0), 2);
+}
+
+// An o<name> sub without its endsub is an alarm, whether it is passed over
+// or called.
+TEST(SurfacesWords, SubWithoutEndsubIsAnAlarm) {
+  TempDir dir;
+  for (const std::string text : {"o<s> sub\nG0 X1\nM2\n", "o<s> call\nM2\no<s> sub\nG0 X1\n"}) {
+    const auto prog = dir.write("p.ngc", text);
+    const auto r = run_with_report(dir, prog, {"-d", "linuxcnc"});
+    ASSERT_TRUE(r.report_ok) << text << r.err;
+    EXPECT_EQ(r.exit.code, 1) << text;
+    EXPECT_EQ(r.alarm().value("code", ""), alarm_code(AlarmId::kOwordFlow, "linuxcnc")) << text;
+  }
+}
+
+// --trace-every larger than the run: the header and the run's last period
+// (was: an empty file).
+TEST(SurfacesWords, TraceEveryLargerThanTheRunKeepsHeaderAndLastRow) {
+  TempDir dir;
+  const auto prog = dir.write("p.nc", "G91 G1 X1. F600\nM30\n");
+  const auto trace = dir.path / "t.csv";
+  const auto r =
+      run_with_report(dir, prog, {"--trace", trace.string(), "--trace-every", "1000000"});
+  ASSERT_EQ(r.exit.code, 0) << r.err;
+  const std::string text = read_file(trace);
+  ASSERT_EQ(count_lines(text), 2) << text;
+  EXPECT_EQ(text.rfind("time_s,", 0), 0u) << text;
+  const std::string row = text.substr(text.find('\n') + 1);
+  const double t = std::stod(row.substr(0, row.find(',')));
+  EXPECT_NEAR(t, r.report.at("final").value("time", 0.0), 1e-9) << text;
+}
+
+// ---- Offsets and stored positions are range-checked -----------------------
+
+// An offset or a stored position beyond 999999.999 mm is the dialect's
+// illegal_offset_value where it is assigned (Fanuc PS0029), in every
+// dialect: nothing of the block is kept, no parameter file holds it.
+TEST(SurfacesOffsets, OutOfRangeOffsetsAreRefusedWhereAssigned) {
+  TempDir dir;
+  struct Case {
+    std::string dialect, text;
+    int line;
+  };
+  const std::vector<Case> cases = {
+      {"fanuc", "G10 L2 P1 X1000000.\nM30\n", 1},
+      {"fanuc", "#5221 = 10000000.\nM30\n", 1},
+      {"fanuc", "#2001 = 2000000.\nM30\n", 1},
+      {"fanuc", "G10 L10 P1 R-1000000000.\nM30\n", 1},
+      {"fanuc", "G0 X0\nG92 X-1000000.\nM30\n", 2},
+      {"fanuc", "G52 Z1000000000000.\nM30\n", 1},
+      {"nct", "#5221 = 10000000.\nM30\n", 1},
+      {"mitsubishi", "G10 L2 P1 Y100000000.\nM30\n", 1},
+      {"compass", "#5221 = 10000000.\nM30\n", 1},
+      {"linuxcnc", "#5221 = [10 ** 60]\nM2\n", 1},
+      {"linuxcnc", "G10 L2 P1 X1000000\nM2\n", 1},
+      {"linuxcnc", "G10 L20 P2 Z-2000000\nM2\n", 1},
+      {"linuxcnc", "G92 X1000000\nM2\n", 1},
+      {"linuxcnc", "G10 L1 P1 Z1000000\nM2\n", 1},
+      {"grblhal", "G10 L2 P1 X1000000\nM2\n", 1},
+      {"grblhal", "G92 Y-1000000\nM2\n", 1},
+  };
+  for (const auto& c : cases) {
+    const auto prog = dir.write("p.nc", c.text);
+    const auto r = run_with_report(dir, prog, {"-d", c.dialect});
+    ASSERT_TRUE(r.report_ok) << c.dialect << " " << c.text << r.err;
+    EXPECT_EQ(r.exit.code, 1) << c.dialect << " " << c.text;
+    EXPECT_EQ(r.alarm().value("code", ""), alarm_code(AlarmId::kIllegalOffsetValue, c.dialect))
+        << c.dialect << " " << c.text << r.err;
+    EXPECT_EQ(r.alarm().value("line", 0), c.line) << c.dialect << " " << c.text;
+  }
+  // At the bound, accepted.
+  const auto ok = dir.write("ok.nc", "G10 L2 P1 X999999.999\n#5222 = -999999.999\nM30\n");
+  EXPECT_EQ(run_with_report(dir, ok).exit.code, 0);
+}
+
+// A refused value never reaches the parameter file; the file keeps the run's
+// earlier values and the next run starts.
+TEST(SurfacesOffsets, RefusedOffsetNeverReachesTheParameterFile) {
+  TempDir dir;
+  const auto m = linuxcnc_machine_with_parameter_file(dir);
+  const auto prog = dir.write("p.ngc", "#5221 = 12.5\nG10 L2 P1 X3 Y1000000000\nM2\n");
+  auto r = run_cli({"run", prog.string(), "-m", m.string(), "-q"}, (dir.path / "e1").string());
+  EXPECT_EQ(r.exit_code, 1) << read_file(dir.path / "e1");
+  const std::string text = read_file(dir.path / "m.var");
+  const auto at = text.find("\n5221\t");
+  ASSERT_NE(at, std::string::npos) << text;
+  EXPECT_DOUBLE_EQ(std::stod(text.substr(at + 6)), 12.5) << text;  // X3 not kept either
+  EXPECT_EQ(text.find("1000000000"), std::string::npos) << text;
+  const auto prog2 = dir.write("q.ngc", "M2\n");
+  r = run_cli({"run", prog2.string(), "-m", m.string(), "-q"}, (dir.path / "e2").string());
+  EXPECT_EQ(r.exit_code, 0) << read_file(dir.path / "e2");
+}
+
+// ---- Time: what changes costs, not the simulated periods -----------------
+
+// G04 X1e9 (31 years) runs to limits.max_time_s (1000 h) with its alarm; the
+// periods in which nothing changes are passed in one step (it took 191 s of
+// processor time, period by period). The bound here is the wait's, 60 s.
+TEST(SurfacesTime, HugeDwellEndsAtTheTimeLimitInLittleProcessorTime) {
+  TempDir dir;
+  const auto prog = dir.write("p.nc", "G0 X1.\nG04 X1000000000.\nM30\n");
+  const auto r = run_with_report(dir, prog, {}, 60.0);
+  ASSERT_TRUE(r.exit.exited) << "not ended within 60 s";
+  ASSERT_TRUE(r.report_ok) << r.err;
+  EXPECT_EQ(r.alarm().value("code", ""), alarm_code(AlarmId::kTimeLimit));
+  EXPECT_EQ(r.alarm().value("line", 0), 2);
+  EXPECT_DOUBLE_EQ(r.report.at("final").value("time", 0.0), 3600000.0);
+  EXPECT_DOUBLE_EQ(r.report.at("final").at("machine_position").value("X", 0.0), 1.0);
+}
+
+// Issue 30: a dwell's block has its own time (G04 X5. is 5.000 s, was
+// 4.999 s: its last period went to the next block), every dwell has a row
+// (G04 X0 too, for no time), and the trace labels each period with the
+// block that ran it. With --trace-every the rows are those of every N-th
+// period and the last, whether or not the periods between were passed in one
+// step.
+TEST(SurfacesTime, DwellBlocksHaveTheirTimeAndQuietPeriodsKeepTheTraceRows) {
+  TempDir dir;
+  const auto prog = dir.write("p.nc", "G0 X1.\nG04 X5.\nG04 X0\nG1 X2. F600\nG04 X0.5\nM30\n");
+  const auto trace = dir.path / "t.csv";
+  auto r = run_with_report(dir, prog, {"--trace", trace.string()});
+  ASSERT_EQ(r.exit.code, 0) << r.err;
+  std::map<int, double> time_of;
+  std::map<int, int> runs_of;
+  for (const auto& b : r.report.at("block_times").at("blocks")) {
+    time_of[b.value("line", 0)] = b.value("time", -1.0);
+    runs_of[b.value("line", 0)] = b.value("runs", 0);
+  }
+  EXPECT_DOUBLE_EQ(time_of[2], 5.0);
+  ASSERT_EQ(runs_of.count(3), 1u) << r.report.at("block_times").dump();
+  EXPECT_DOUBLE_EQ(time_of[3], 0.0);
+  EXPECT_EQ(runs_of[3], 1);
+  EXPECT_DOUBLE_EQ(time_of[5], 0.5);
+  const double total = r.report.at("final").value("time", 0.0);
+  // Every period in the trace, labelled: 5000 periods of line 2, then line 4.
+  const std::string text = read_file(trace);
+  std::istringstream in(text);
+  std::string row;
+  std::getline(in, row);
+  int rows = 0, dwell_rows = 0, after_dwell_line = 0, prev_line = 0;
+  while (std::getline(in, row)) {
+    ++rows;
+    const auto c1 = row.find(','), c2 = row.find(',', c1 + 1);
+    const int line = std::stoi(row.substr(c1 + 1, c2 - c1 - 1));
+    if (line == 2) ++dwell_rows;
+    if (prev_line == 2 && line != 2) after_dwell_line = line;
+    prev_line = line;
+  }
+  EXPECT_EQ(rows, static_cast<int>(std::lround(total * 1000)));
+  EXPECT_EQ(dwell_rows, 5000);
+  EXPECT_EQ(after_dwell_line, 4);
+  // --trace-every 250: the rows of periods 250, 500, ... and the last.
+  r = run_with_report(dir, prog, {"--trace", trace.string(), "--trace-every", "250"});
+  ASSERT_EQ(r.exit.code, 0) << r.err;
+  std::istringstream in2(read_file(trace));
+  std::getline(in2, row);
+  std::vector<double> times;
+  while (std::getline(in2, row)) times.push_back(std::stod(row.substr(0, row.find(','))));
+  const auto periods = static_cast<long>(std::lround(total * 1000));
+  ASSERT_EQ(static_cast<long>(times.size()), periods / 250 + (periods % 250 != 0 ? 1 : 0));
+  for (std::size_t i = 0; i + 1 < times.size(); ++i)
+    EXPECT_NEAR(times[i], 0.25 * static_cast<double>(i + 1), 1e-9);
+  EXPECT_NEAR(times.back(), total, 1e-9);
 }
 
 }  // namespace

@@ -162,7 +162,8 @@ TEST(Trace, numbers_are_written_to_six_decimals) {
 // --trace-every N keeps the rows of the periods whose number is a multiple
 // of N: every 100th row of the full trace of a 1.05 s dwell (1050 periods of
 // 1 ms, exactly: the time inside a segment no longer drifts into an extra
-// period), the same columns and values; an N of 0 is refused before the run.
+// period), the same columns and values, and the run's last period (issue
+// 31: the trace ends where the run ends); an N of 0 is refused before the run.
 TEST(TraceCli, TraceEveryKeepsOneRowInN) {
   TempDir tmp;
   const auto nc = tmp.write("t.nc", "G21 G90 G54\nG04 X1.05\nM30\n");
@@ -175,11 +176,12 @@ TEST(TraceCli, TraceEveryKeepsOneRowInN) {
   const Csv a = parse_csv(read_file(all));
   const Csv c = parse_csv(read_file(some));
   ASSERT_EQ(a.rows.size(), 1050U);
-  ASSERT_EQ(c.rows.size(), 10U);
+  ASSERT_EQ(c.rows.size(), 11U);
   EXPECT_EQ(c.header, a.header);
   for (std::size_t i = 0; i < c.rows.size(); ++i) {
-    EXPECT_NEAR(c.rows[i][0], 0.1 * static_cast<double>(i + 1), 1e-9);
-    const auto& full = a.rows[100 * (i + 1) - 1];
+    const std::size_t period = i < 10 ? 100 * (i + 1) : 1050;
+    EXPECT_NEAR(c.rows[i][0], 0.001 * static_cast<double>(period), 1e-9);
+    const auto& full = a.rows[period - 1];
     ASSERT_EQ(c.rows[i].size(), full.size());
     for (std::size_t k = 0; k < full.size(); ++k) {
       if (!std::isnan(full[k])) {

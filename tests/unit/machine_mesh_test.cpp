@@ -5,6 +5,7 @@
 
 #include <cstring>
 #include <memory>
+#include <numbers>
 #include <random>
 #include <string>
 #include <vector>
@@ -166,6 +167,55 @@ TEST(StlContact, ACubeMatchesTheBoxShapesLatchesOnFacesEdgesAndCorners) {
       ASSERT_LT(length(cb.point - cm.point), 1e-6) << i;
     }
     EXPECT_GT(touched, 15000);
+  }
+}
+
+// Issue 31: a mesh whose faces are given many times over (coincident
+// triangles) or overlap one another stays correct and is searched in
+// bounded work: coincident triangles are kept once (each copy counted twice
+// in inside() before), and the contact search passes over the boxes entered
+// after the first contact. Functional: the queries must complete and agree
+// with the box (the figure is in bench/README.md, bench/stl_overlap.sh).
+TEST(StlContact, CoincidentAndOverlappingTrianglesStayCorrect) {
+  std::vector<Triangle> tris;
+  const auto box = box_triangles(kLo, kHi);
+  for (int copy = 0; copy < 5000; ++copy) {
+    for (std::size_t i = 0; i < box.size(); ++i) {
+      Triangle t = box[i];
+      if (copy % 3 == 1) t = Triangle{t.b, t.c, t.a, {}};  // the same face, corners turned
+      tris.push_back(t);
+    }
+  }
+  const TriMesh coincident(tris);
+  EXPECT_EQ(coincident.size(), 12u);
+  // Overlapping triangles in the top face (counter-clockwise from +Z): a fan
+  // turned about the face's centre, each covering most of it.
+  std::vector<Triangle> fan = box_triangles(kLo, kHi);
+  const int n = 20000;
+  for (int i = 0; i < n; ++i) {
+    Vec3 p[3];
+    for (int k = 0; k < 3; ++k) {
+      const double a = 2 * std::numbers::pi * (i / double(n) + k / 3.0);
+      p[k] = Vec3{9.0 * std::cos(a), 4.5 + 9.0 * std::sin(a), kHi.z};
+    }
+    fan.push_back(Triangle{p[0], p[1], p[2], {}});
+  }
+  const Material boxm = box_material();
+  const Material dup = mesh_material(tris);
+  const Material over = mesh_material(fan);
+  EXPECT_GT(dup.depth({0, 0, -20}), 9.0);  // inside: the copies do not cancel
+  std::mt19937_64 rng(3);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  for (int i = 0; i < 2000; ++i) {
+    const Vec3 a{15.0 * u(rng), 4.5 + 12.0 * u(rng), 5.0};
+    const Vec3 b{a.x + 2.0 * u(rng), a.y + 2.0 * u(rng), -25.0};
+    Contact cb, cd, co;
+    const bool hb = boxm.first_contact(a, b, 1.0, cb);
+    ASSERT_TRUE(hb) << i;
+    ASSERT_TRUE(dup.first_contact(a, b, 1.0, cd)) << i;
+    ASSERT_TRUE(over.first_contact(a, b, 1.0, co)) << i;
+    ASSERT_LT(length(lerp(a, b, cb.t) - lerp(a, b, cd.t)), 1e-6) << i;
+    ASSERT_LT(length(lerp(a, b, cb.t) - lerp(a, b, co.t)), 1e-6) << i;
   }
 }
 

@@ -97,14 +97,23 @@ TEST(Planner, RapidUsesRapidRatesAndEndsAtRest) {
   EXPECT_EQ(s.v_exit, 0.0);
 }
 
-TEST(Planner, ZeroLengthMovesAndZeroDwellsAreDropped) {
+// A move of no length is dropped; a dwell of no time (G04 X0) is kept as a
+// segment of no time, so that the machine comes to rest for it and its
+// block is counted as run (issue 30: every dwell has a row in block times).
+// A negative or NaN dwell is dropped.
+TEST(Planner, ZeroLengthMovesAreDroppedAndZeroDwellsKept) {
   SegmentQueue p(mill_limits());
   ASSERT_TRUE(p.push(line(xyz(0, 0, 0), 100.0)));
+  EXPECT_TRUE(p.empty());
   Move d;
   d.kind = Kind::kDwell;
-  d.dwell_s = 0.0;
+  d.dwell_s = -1.0;
   ASSERT_TRUE(p.push(d));
   EXPECT_TRUE(p.empty());
+  d.dwell_s = 0.0;
+  ASSERT_TRUE(p.push(d));
+  ASSERT_FALSE(p.empty());
+  EXPECT_EQ(p.front()->duration, 0.0);
 }
 
 TEST(Planner, PositionAtDurationIsTheTargetBitExact) {

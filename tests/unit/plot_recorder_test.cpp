@@ -155,6 +155,41 @@ TEST(PlotRecorder, OverBudgetTheToleranceGrowsButBoundariesStay) {
   EXPECT_EQ(boundary_kept, rec.tolerance_scale() <= 4.0);
 }
 
+// Issue 31: memory is bounded by the Decimation, not by the program. A long
+// program of short blocks pins two samples per block (its boundaries) and
+// makes a block run each; the recorder keeps at most max_kept samples and
+// max_blocks runs however many periods and blocks it sees, and still the
+// first and last period and the last block.
+TEST(PlotRecorder, ALongProgramKeepsAtMostTheBoundedSamplesAndBlocks) {
+  const auto m = mill3();
+  plot::Decimation d;
+  d.max_samples = 1000;
+  d.max_kept = 2000;
+  d.max_blocks = 500;
+  plot::Recorder rec(m, d);
+  const int n = 300000;  // 100,000 blocks of 3 periods
+  std::size_t most_samples = 0, most_blocks = 0;
+  for (int k = 1; k <= n; ++k) {
+    AxisVec cmd;
+    cmd[0] = (k % 7) * 0.1;  // no straight line: the sleeve keeps every change
+    feed_row(rec, k, cmd, cmd, 100.0, static_cast<std::uint32_t>(1 + (k - 1) / 3));
+    most_samples = std::max(most_samples, rec.samples().size());
+    most_blocks = std::max(most_blocks, rec.blocks().size());
+  }
+  rec.finish();
+  EXPECT_LE(most_samples, d.max_kept);
+  EXPECT_LE(most_blocks, d.max_blocks);
+  EXPECT_GT(rec.blocks().size(), d.max_blocks / 4);
+  EXPECT_DOUBLE_EQ(rec.samples().front().t, 0.001);
+  EXPECT_DOUBLE_EQ(rec.samples().back().t, n * 0.001);
+  EXPECT_EQ(rec.blocks().back().line, static_cast<std::uint32_t>(n / 3));
+  EXPECT_DOUBLE_EQ(rec.blocks().front().t0, 0.001);
+  EXPECT_EQ(rec.periods_seen(), static_cast<std::uint64_t>(n));
+  // The default bound is the one docs/plot.md states.
+  EXPECT_EQ(plot::Decimation{}.max_kept, 80000u);
+  EXPECT_EQ(plot::Decimation{}.max_blocks, 20000u);
+}
+
 // A real run: the probe touches a plane twice; a pulse on another input
 // comes and goes. Every edge is drawn to the servo period.
 TEST(PlotRecorder, SignalEdgesAndLatchesSurviveThinningOfARealRun) {
