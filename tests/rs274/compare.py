@@ -403,13 +403,19 @@ def clean_message(stderr):
 
 def run_rs274(rs274, program, tool_table):
     # rs274 may write a parameter file in its working folder: give it a
-    # fresh one, so that no state carries over from program to program
-    with tempfile.TemporaryDirectory(prefix="rs274-") as tmp:
-        cmd = [rs274]
-        if tool_table:
-            cmd += ["-t", tool_table]
-        cmd += ["-g", os.path.abspath(program)]
-        rc, out, err = run(cmd, cwd=tmp)
+    # fresh one, so that no state carries over from program to program.
+    # rs274 itself is sometimes killed by a signal on a loaded machine (seen
+    # as exit -7, SIGBUS, on programs it runs cleanly alone): such a run is
+    # tried again, up to twice; an ordinary error is not.
+    for _ in range(3):
+        with tempfile.TemporaryDirectory(prefix="rs274-") as tmp:
+            cmd = [rs274]
+            if tool_table:
+                cmd += ["-t", tool_table]
+            cmd += ["-g", os.path.abspath(program)]
+            rc, out, err = run(cmd, cwd=tmp)
+        if rc is None or rc >= 0:
+            break
     if rc != 0:
         return None, clean_message(err) + ("" if rc is None else " (exit %d)" % rc)
     return parse_rs274(out), None
