@@ -224,6 +224,19 @@ TEST(CompatHaas, G65LRepeatsKeepTheLocalsOfTheFirstPass) {
   EXPECT_EQ(var(r, 100), 4.0);
 }
 
+// Posted programs open with % and their O block: GOTO and M99 P find the
+// labels after them (every Fanuc-family dialect).
+TEST(CompatHaas, GotoFindsItsLabelInAProgramOpenedByPercentAndO) {
+  for (const char* dialect : {"haas", "fanuc"}) {
+    TempDir dir;
+    const auto r =
+        run(dir, "%\nO1001 (POSTED)\n#1 = 2\nGOTO 40\n#1 = 5\nN40 #100 = #1 + 1\nM30\n%\n", dialect,
+            {"--var", "100"});
+    ASSERT_EQ(r.exit.code, 0) << dialect << ": " << r.err;
+    EXPECT_EQ(var(r, 100), 3.0) << dialect;
+  }
+}
+
 TEST(CompatHaas, DialectIsListedAndSelectable) {
   const auto r = run_cli({"dialects"});
   ASSERT_EQ(r.exit_code, 0) << r.out;
