@@ -1,5 +1,5 @@
 %
-O9819 (TWO TOUCHES ACROSS A FEATURE - OWN HELPER OF O9812 AND O9814)
+O9819 (TWO TOUCHES ACROSS A FEATURE - OWN ROUTINE SHARED BY O9812, O9814)
 (A: the axis, 1 X or 2 Y; B: 1 from inside outward [bore, pocket] or -1)
 (from outside inward [boss, web]; C: the nominal centre on that axis; D:)
 (the nominal width; Z: the work Z of the touches of a boss or web [the)
