@@ -482,6 +482,8 @@ void print_skip_motion(const config::Dialect& d) {
   const auto& sw = d.sw;
   fmt::print("  feed        {}\n",
              sw.skip_feed == SkipFeedRule::kModal ? std::string("F, else modal F")
+             : sw.skip_feed == SkipFeedRule::kBlockOrParam && sw.skip_feed_param == 0
+                 ? std::string("F in the block (required); modal F not updated")
              : sw.skip_feed == SkipFeedRule::kBlockOrParam
                  ? "F, else " + param_text(d, sw.skip_feed_param) + "; modal F not updated"
              : sw.skip_feed == SkipFeedRule::kParamSwitch
@@ -518,7 +520,11 @@ void print_skip_rest(const config::Dialect& d, const AlarmText& alarm) {
                   "a skip in machine lock stores where the machine stands"},
         std::pair{sw.tool_position_offset, "G45-G48 tool offsets enter #5061.."},
         std::pair{sw.skip_requires_axis, "G31 without an axis word is a format error"},
-        std::pair{!d.handshake.empty(), "PLC handshake in the trace"}}) {
+        std::pair{!d.handshake.empty(), "PLC handshake in the trace"},
+        std::pair{sw.local_sub_call_m97, "M97 local subprogram call"},
+        std::pair{sw.block_lookahead_g103, "G103 P0-P15 look-ahead limit (accepted)"},
+        std::pair{sw.m99_p_jumps_in_subprogram, "M99 Pn in a subprogram branches within it"},
+        std::pair{sw.haas_tool_offset_vars, "#2001-#2800 tool offsets as Haas numbers them"}}) {
     if (on) other += (other.empty() ? "" : "; ") + std::string(text);
   }
   fmt::print("  other       {}\n", other.empty() ? "-" : other);

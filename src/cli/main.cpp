@@ -49,7 +49,8 @@ CLI::App* add_run(CLI::App& app, skipnc::cli::RunArgs& run_args) {
   run->add_option("program", run_args.program, "part program file (-: standard input)")->required();
   run->add_option("-m,--machine", run_args.machine, "machine file or built-in machine (mill3)");
   run->add_option("-s,--scene", run_args.scene, "scene file (TOML)");
-  run->add_option("-d,--dialect", run_args.dialect, "fanuc, nct, mitsubishi, compass");
+  run->add_option("-d,--dialect", run_args.dialect,
+                  "fanuc, nct, mitsubishi, compass, linuxcnc, grblhal, haas");
   run->add_option("-p,--param", run_args.params, "parameter N=V or N#B=V (repeatable)");
   run->add_option("--var", run_args.vars, "report variable V (5061, #5061, #<name>)");
   run->add_option("--report", run_args.report, "write the JSON report here (- for stdout)");
@@ -116,7 +117,8 @@ CLI::App* add_plot(CLI::App& app, skipnc::cli::RunArgs& plot_args) {
       "FILE.svg or FILE.html, repeatable (default: PROGRAM.html and PROGRAM.svg here)");
   plot->add_option("-m,--machine", plot_args.machine, "machine file or built-in machine (mill3)");
   plot->add_option("-s,--scene", plot_args.scene, "scene file (TOML)");
-  plot->add_option("-d,--dialect", plot_args.dialect, "fanuc, nct, mitsubishi, compass");
+  plot->add_option("-d,--dialect", plot_args.dialect,
+                   "fanuc, nct, mitsubishi, compass, linuxcnc, grblhal, haas");
   plot->add_option("-p,--param", plot_args.params, "parameter N=V or N#B=V (repeatable)");
   plot->add_option("--var", plot_args.vars, "show variable V (5061, #5061, #<name>)");
   plot->add_option("--report", plot_args.report, "also write the JSON report here");

@@ -116,6 +116,10 @@ std::vector<BoolKey> bool_keys(Switches& sw) {
       {"probe_latch_sampled", &sw.probe_latch_sampled},
       {"probe_latch_actual", &sw.probe_latch_actual},
       {"probe_same_point_all", &sw.probe_same_point_all},
+      {"local_sub_call_m97", &sw.local_sub_call_m97},
+      {"block_lookahead_g103", &sw.block_lookahead_g103},
+      {"m99_p_jumps_in_subprogram", &sw.m99_p_jumps_in_subprogram},
+      {"haas_tool_offset_vars", &sw.haas_tool_offset_vars},
   };
 }
 
@@ -438,12 +442,12 @@ Result<Dialect> parse_dialect(std::string_view toml_text, std::string_view origi
                                         " = " + std::to_string(number) + " is not in [parameters]");
     }
   }
-  if ((sw.skip_feed == SkipFeedRule::kBlockOrParam && sw.skip_feed_param == 0) ||
-      (sw.skip_feed == SkipFeedRule::kParamSwitch &&
-       (sw.skip_feed_param == 0 || sw.skip_feed_switch_param == 0))) {
-    return fail(AlarmId::kConfig, std::string(origin) +
-                                      ": skip_feed needs skip_feed_param (and, for param_switch, "
-                                      "skip_feed_switch_param)");
+  // block_or_param without a parameter: the block must have its F (Haas).
+  if (sw.skip_feed == SkipFeedRule::kParamSwitch &&
+      (sw.skip_feed_param == 0 || sw.skip_feed_switch_param == 0)) {
+    return fail(AlarmId::kConfig,
+                std::string(origin) +
+                    ": skip_feed = param_switch needs skip_feed_param and skip_feed_switch_param");
   }
   if (sw.skip_p_mode != SkipPMode::kMultiStep && sw.skip_p_mode != SkipPMode::kNone &&
       d.fixed_skip_inputs.size() < static_cast<std::size_t>(sw.skip_p_count)) {

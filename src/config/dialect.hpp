@@ -36,7 +36,8 @@ struct ParamDef {
 // Where the skip feed comes from.
 enum class SkipFeedRule : std::uint8_t {
   kModal,         // F in the block, else the modal F (which the block's F updates)
-  kBlockOrParam,  // F in the block, else a parameter; the modal F is not updated (Mitsubishi)
+  kBlockOrParam,  // F in the block, else a parameter (none: F required, Haas); the modal F is
+                  // not updated (Mitsubishi)
   kParamSwitch,   // a parameter chooses between F/modal F and a fixed parameter feed (NCT)
   kLastCutting,   // F in the block, else the last F of a non-rapid block (CompassNC)
 };
@@ -167,6 +168,21 @@ struct Switches {
   bool skip_position_increment = false;
   // `//` starts a comment to the end of the block (CompassNC).
   bool slash_comments = false;
+  // M97 Pn Ll: a local subprogram call, to sequence number n of the running
+  // program, l times, back with M99 (Haas; docs/skip-dialects.md#haas).
+  bool local_sub_call_m97 = false;
+  // G103 Pn: block look-ahead limit, P 0-15 (Haas). Accepted; skipnc's
+  // interpreter already waits for the motion wherever a value it reads
+  // depends on it, which is what G103 P1 gives a probing macro.
+  bool block_lookahead_g103 = false;
+  // M99 Pn in a subprogram: jumps to Nn of the same subprogram and stays in
+  // it (Haas), or returns to Nn of the caller (false: Fanuc).
+  bool m99_p_jumps_in_subprogram = false;
+  // #2001-#2800 are the tool offsets as Haas numbers them: #2001-#2200
+  // length (geometry), #2201-#2400 length wear, #2401-#2600 diameter/radius,
+  // #2601-#2800 its wear (false: Fanuc's short forms, #2001.. wear,
+  // #2201.. geometry, and #2500-#2806 the old work offsets).
+  bool haas_tool_offset_vars = false;
 };
 
 struct Dialect {

@@ -105,6 +105,7 @@ constexpr MCodeDef kM[] = {
     {4, MAction::kSpindleCcw, "spindle CCW"},
     {5, MAction::kSpindleStop, "spindle stop"},
     {30, MAction::kRewindEnd, "end of program, rewind"},
+    {97, MAction::kLocalSubCall, "local subprogram call (Haas)"},
     {98, MAction::kSubCall, "subprogram call"},
     {99, MAction::kSubReturn, "subprogram return"},
 };

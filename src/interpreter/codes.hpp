@@ -100,6 +100,7 @@ enum class MAction : std::uint8_t {
   kSpindleStop,   // M05
   kSubCall,       // M98
   kSubReturn,     // M99
+  kLocalSubCall,  // M97 (Haas: local_sub_call_m97; elsewhere a machine M code)
 };
 
 struct MCodeDef {

@@ -109,6 +109,7 @@ constexpr Named kGNames[] = {
     {970, "constant surface speed cancel", nullptr},
     {980, "return to initial level", "feed per minute"},
     {990, "return to point R level", "feed per revolution"},
+    {1030, "block look-ahead limit (Haas)", nullptr},
 };
 
 struct Machine {
@@ -230,7 +231,10 @@ Result<std::string> codes_markdown() {
       "| M03, M04, M05 | spindle CW, CCW, stop | simulated (spindle speed for feed per "
       "revolution, G96) |\n"
       "| M06 | tool change | the tool selected by T goes into the spindle (scene tools) |\n"
-      "| M98, M99 | subprogram call, return | simulated |\n"
+      "| M97 | local subprogram call (Haas) | simulated in the haas dialect (M97 Pn Ll: Nn of the "
+      "running program, l times); elsewhere a machine function |\n"
+      "| M98, M99 | subprogram call, return | simulated (haas: M99 Pn in a subprogram branches "
+      "within it) |\n"
       "| M19 | oriented spindle stop | recorded (also made by G76 and G87) |\n"
       "| any other M (M07-M09 coolant, chip conveyor, probe on/off, ...) | machine "
       "functions | recorded as `MCODE`, no effect |\n";

@@ -122,6 +122,12 @@ struct Frame {
   // RS274NGC: a frame opened by `o<label> call` (its label), and its loops.
   std::string sub_label;
   std::vector<OLoop> oloops;
+  // M97 (Haas): a local subprogram of the caller's program. `start` is its
+  // first block (where L repeats begin); its GOTO and M99 P labels are those
+  // of the whole program, which begins at `program_start`.
+  bool local = false;
+  gcode::SourcePos program_start;
+  const gcode::SourcePos& label_origin() const noexcept { return local ? program_start : start; }
 };
 
 // One word's value after evaluation.
@@ -173,6 +179,7 @@ struct MillRequest {
   std::optional<bool> polar;  // G16 (true) / G15 (false)
   int skip_step = 0;          // G31.1-G31.3 (Mitsubishi multi-step skip function 1)
   bool g37 = false;           // automatic tool length measurement
+  bool lookahead = false;     // G103 (block_lookahead_g103)
 };
 
 // The plan of one NC block (ncblock.cpp plan_block): its codes by group,
@@ -284,6 +291,9 @@ struct Interpreter::Impl {
   bool rerun = false;  // re-executing the block after a sync
   bool motion_since_sync = false;
   bool ended = false;
+  // G103 Pn (Haas): the look-ahead limit the program set, 0: none. Not
+  // applied to the planner (docs/skip-dialects.md#haas).
+  int lookahead_limit = 0;
   std::uint32_t cur_line = 0;
   std::uint32_t cur_col = 1;
 
@@ -409,6 +419,7 @@ struct Interpreter::Impl {
   Flow<bool> condition(gcode::ExprId cond, SourceLoc where);
   // GOTO / M99 P: the first N n after the block at offset `from`, else the first one.
   Flow<void> jump_to_label(std::int64_t n, std::uint64_t from, SourceLoc where);
+  Flow<gcode::SourcePos> find_label(std::int64_t n, std::uint64_t from, SourceLoc where);
   Flow<void> find_loop_end(Loop& l);
   Flow<void> leave_loops_for(std::uint64_t target);
   Flow<void> print_line(SourceLoc where);
@@ -485,6 +496,7 @@ struct Interpreter::Impl {
   Result<ProgramFile*> program_file(const std::filesystem::path& p, bool& added);
   Result<std::unique_ptr<gcode::Source>> scanner_for(const ProgramFile& pf) const;
   Flow<Step> return_from_sub(std::optional<std::int64_t> label, SourceLoc where);
+  Flow<void> local_call(std::int64_t label, int repeats, SourceLoc where);
   Flow<void> macro_call(std::int64_t program, int repeats, bool modal_call, SourceLoc where);
   Flow<void> collect_argument(const gcode::Word& w, const WordVal& v, int& ijk_set, int& ijk_last);
   bool in_modal_call() const noexcept;
@@ -530,6 +542,7 @@ struct Interpreter::Impl {
   Flow<void> commit_shift(const Words& words, bool local);
   void commit_tool_pos_offset(const Words& words, int g);
   void commit_cycle_start(const ModalState& before);
+  Flow<void> set_lookahead(const Words& words);  // G103
   Flow<std::optional<Step>> commit_mill(const Words& words, const BlockPlan& plan, CommandSink& out,
                                         bool& moved);
   Flow<Step> commit_action(const Words& words, const BlockPlan& plan, CommandSink& out,
@@ -537,6 +550,7 @@ struct Interpreter::Impl {
   Flow<std::optional<Step>> commit_m_codes(const Words& words, CommandSink& out);
   Flow<Step> commit_sub_call(const Words& words);
   Flow<Step> commit_sub_return(const Words& words);
+  Flow<Step> commit_local_sub_call(const Words& words);
   BlockUndo save_block_state() const;
   void restore_block_state(const BlockUndo& u);
   double unit_mm() const noexcept { return modal.units == Units::kInch ? 25.4 : 1.0; }

@@ -246,6 +246,35 @@ Flow<void> Interpreter::Impl::call(std::int64_t program, int repeats, bool macro
       f, (macro ? (modal_call ? "G66 P" : "G65 P") : "M98 P") + std::to_string(program), where);
 }
 
+// M97 Pn Ll (Haas "M97 Local Sub-Program Call"): the block at Nn of the
+// running program, as a subprogram level of its own (counted with M98's),
+// run l times; M99 returns to the block after the M97.
+Flow<void> Interpreter::Impl::local_call(std::int64_t label, int repeats, SourceLoc where) {
+  int subs = 0;
+  for (std::size_t i = 1; i < frames.size(); ++i) subs += frames[i].macro ? 0 : 1;
+  if (subs >= mc.limits.max_subprogram_levels) {
+    return fail(AlarmId::kSubprogramNesting,
+                "subprogram nesting deeper than " +
+                    std::to_string(mc.limits.max_subprogram_levels) + " levels",
+                where);
+  }
+  const gcode::SourcePos resume = frames.back().file->src->tell();
+  auto at = find_label(label, block_pos.offset, where);
+  if (!at) return std::unexpected(at.error());
+  const Frame& caller = frames.back();
+  Frame f;
+  f.file = caller.file;
+  f.start = *at;
+  f.program = caller.program;
+  f.repeats_left = repeats - 1;
+  f.local = true;
+  f.program_start = caller.label_origin();
+  // find_label read the file: the caller resumes after the M97 block.
+  auto s = caller.file->src->seek(resume);
+  if (!s) return std::unexpected(s.error());
+  return push_frame(std::move(f), "M97 P" + std::to_string(label), where);
+}
+
 // The called program's frame on top of the caller's: the caller resumes
 // after the calling block, the call path gets its context, reading goes on
 // at the frame's start.
@@ -315,6 +344,13 @@ Flow<Step> Interpreter::Impl::return_from_sub(std::optional<std::int64_t> label,
     auto s = f.file->src->seek(f.start);
     if (!s) return std::unexpected(s.error());
     f.loops.clear();
+    return Step::kContinue;
+  }
+  if (label && dialect.sw.m99_p_jumps_in_subprogram) {
+    // Haas: M99 Pn in a subprogram branches to Nn of that subprogram; it
+    // does not return to the caller.
+    auto j = jump_to_label(*label, block_pos.offset, where);
+    if (!j) return std::unexpected(j.error());
     return Step::kContinue;
   }
   if (f.repeats_left > 0) {

@@ -152,7 +152,7 @@ Flow<Step> Interpreter::Impl::execute_statement(CommandSink& out) {
       const std::uint64_t while_at = block_pos.offset;
       const int id = s.loop;
       const SourceLoc start = where;
-      const std::uint64_t program_start = f.start.offset;
+      const std::uint64_t program_start = f.label_origin().offset;
       for (;;) {
         auto got = read_block();
         if (!got) return std::unexpected(got.error());
@@ -287,7 +287,7 @@ Flow<void> Interpreter::Impl::find_loop_end(Loop& l) {
     auto p = gcode::parse_block(rb.text, SourceLoc{f.file->display, rb.line, rb.column}, rb.offset,
                                 b, parse_limits);
     if (!p) continue;  // reported if the block is ever executed
-    if (b.percent || (b.has_o && at.offset != f.start.offset)) break;
+    if (b.percent || (b.has_o && at.offset != f.label_origin().offset)) break;
     if (b.stmt.kind == gcode::StmtKind::kEnd && b.stmt.loop == l.id) {
       l.end = at.offset;
       break;
@@ -315,10 +315,15 @@ Flow<void> Interpreter::Impl::leave_loops_for(std::uint64_t target) {
 template <class Each>
 Result<void> scan_program_labels(const Frame& f, const gcode::ParseLimits& limits, Each each) {
   gcode::Source& src = *f.file->src;
-  auto s = src.seek(f.start);
+  const gcode::SourcePos& origin = f.label_origin();
+  auto s = src.seek(origin);
   if (!s) return s;
   gcode::RawBlock rb;
   gcode::Block b;
+  // A main program read from the top begins with its own '%' and O block:
+  // they open the program; a '%' or O block after its first other block
+  // ends it.
+  bool body = false;
   for (;;) {
     const gcode::SourcePos at = src.tell();
     auto more = src.next(rb);
@@ -326,11 +331,16 @@ Result<void> scan_program_labels(const Frame& f, const gcode::ParseLimits& limit
     if (!*more) break;
     // Cheap test before parsing: only blocks with an N, or an O or '%'
     // that ends the program, matter.
-    if (rb.text.find_first_of("NnOo:%") == std::string_view::npos) continue;
+    if (rb.text.find_first_of("NnOo:%") == std::string_view::npos) {
+      body = body || rb.text.find_first_not_of(" \t") != std::string_view::npos;
+      continue;
+    }
     auto p = gcode::parse_block(rb.text, SourceLoc{f.file->display, rb.line, rb.column}, rb.offset,
                                 b, limits);
     if (!p) continue;  // reported if the block is ever executed
-    if (b.percent || (b.has_o && at.offset != f.start.offset)) break;
+    const bool opens = b.percent || b.has_o;
+    if (opens && (body || (at.offset != origin.offset && origin.offset != 0))) break;
+    body = body || !opens;
     if (b.has_n && !each(b.n, at)) break;
   }
   return {};
@@ -355,10 +365,10 @@ const gcode::SourcePos* first_after(It first, It last, std::uint64_t from, Pos p
 // then a binary search per jump); a larger program keeps only the numbers
 // asked for, each found by its own scan, so memory stays bounded whatever
 // the file's size (issue 21: a 1 GB program with a GOTO held every label).
-Flow<void> Interpreter::Impl::jump_to_label(std::int64_t n, std::uint64_t from, SourceLoc where) {
+Flow<gcode::SourcePos> Interpreter::Impl::find_label(std::int64_t n, std::uint64_t from,
+                                                     SourceLoc where) {
   Frame& f = frames.back();
-  gcode::Source& src = *f.file->src;
-  auto [it, fresh] = f.file->labels.try_emplace(f.start.offset);
+  auto [it, fresh] = f.file->labels.try_emplace(f.label_origin().offset);
   ProgramFile::LabelIndex& idx = it->second;
   if (fresh) {
     const auto cap = static_cast<std::size_t>(mc.limits.max_label_index);
@@ -371,7 +381,7 @@ Flow<void> Interpreter::Impl::jump_to_label(std::int64_t n, std::uint64_t from, 
       idx.all.emplace_back(num, at);
       return true;
     });
-    if (!s) return s;
+    if (!s) return std::unexpected(s.error());
     if (over) {
       idx.all.clear();
       idx.all.shrink_to_fit();
@@ -398,7 +408,7 @@ Flow<void> Interpreter::Impl::jump_to_label(std::int64_t n, std::uint64_t from, 
         if (num == n) at_n.push_back(p);
         return true;
       });
-      if (!s) return s;
+      if (!s) return std::unexpected(s.error());
       a = idx.asked.emplace(n, std::move(at_n)).first;
     }
     found = first_after(
@@ -409,6 +419,14 @@ Flow<void> Interpreter::Impl::jump_to_label(std::int64_t n, std::uint64_t from, 
     return fail(AlarmId::kSequenceNotFound,
                 "sequence number N" + std::to_string(n) + " not found in this program", where);
   }
+  return *found;
+}
+
+Flow<void> Interpreter::Impl::jump_to_label(std::int64_t n, std::uint64_t from, SourceLoc where) {
+  auto found = find_label(n, from, where);
+  if (!found) return std::unexpected(found.error());
+  Frame& f = frames.back();
+  gcode::Source& src = *f.file->src;
   const gcode::SourcePos target = *found;
   auto lv = leave_loops_for(target.offset);
   if (!lv) return lv;

@@ -8,6 +8,8 @@
 // centre), B-63944EN: 5.1 canned cycles, 6.x scaling, coordinate system
 // rotation and mirror image; Fanuc 0i-A connection manual B-63503EN-1
 // (parameters 5400#0 RIN, 5410).
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cctype>
 #include <cmath>
@@ -23,7 +25,7 @@
 namespace skipnc::interp {
 namespace {
 
-enum class Kind : std::uint8_t { kCycle, kFrame, kNoEffect, kNotSimulated };
+enum class Kind : std::uint8_t { kCycle, kFrame, kNoEffect, kNotSimulated, kLookahead };
 
 struct MillCode {
   int code;  // x10
@@ -76,6 +78,8 @@ constexpr MillCode kMillCodes[] = {
     {120, Kind::kNotSimulated, Cycle::kNone, "circle cutting (CW)"},
     {130, Kind::kNotSimulated, Cycle::kNone, "circle cutting (CCW)"},
     {600, Kind::kNotSimulated, Cycle::kNone, "single direction positioning"},
+    // G103: only where the dialect has it (haas.toml block_lookahead_g103).
+    {1030, Kind::kLookahead, Cycle::kNone, "block look-ahead limit"},
 };
 
 const MillCode* find(int code) {
@@ -157,8 +161,30 @@ Flow<bool> Interpreter::Impl::mill_code(int code, SourceLoc at, MillRequest& req
     case Kind::kNotSimulated:
       return fail(AlarmId::kNotSimulated,
                   name(code) + " " + c->what + " is not simulated by skipnc", at);
+    case Kind::kLookahead:
+      if (!dialect.sw.block_lookahead_g103) return false;
+      req.lookahead = true;
+      return true;
   }
   return false;
+}
+
+// G103 Pn (Haas "G103 Limit Block Buffering"): look-ahead limited to n
+// blocks, 0-15; G103 alone or P0: no limit. Kept (#4xxx have no place for
+// it); what it changes for a probing macro, skipnc does at every block.
+Flow<void> Interpreter::Impl::set_lookahead(const Words& words) {
+  if (!words.has('P')) {
+    lookahead_limit = 0;
+    return {};
+  }
+  const WordVal& p = words.at('P');
+  if (p.value != std::trunc(p.value) || p.value < 0 || p.value > 15) {
+    return fail(AlarmId::kBadValue,
+                "G103 P" + fmt::format("{}", p.value) + ": the look-ahead limit is 0 to 15 blocks",
+                loc(p.column));
+  }
+  lookahead_limit = static_cast<int>(p.value);
+  return {};
 }
 
 // G68 G69 G50 G51 G50.1 G51.1, after the block's modes are committed.
@@ -736,7 +762,7 @@ namespace skipnc::interp {
 
 bool g_code_without_effect(int code) noexcept {
   for (const auto& c : kMillCodes) {
-    if (c.code == code) return c.kind == Kind::kNoEffect;
+    if (c.code == code) return c.kind == Kind::kNoEffect || c.kind == Kind::kLookahead;
   }
   return false;
 }

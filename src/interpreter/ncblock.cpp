@@ -764,6 +764,32 @@ Flow<Step> Interpreter::Impl::commit_sub_call(const Words& words) {
   return Step::kContinue;
 }
 
+// M97 Pn Ll (Haas, local_sub_call_m97): the block at sequence number n of
+// the running program, l times (L omitted: once), back with M99.
+Flow<Step> Interpreter::Impl::commit_local_sub_call(const Words& words) {
+  const SourceLoc at = loc(cur_col);
+  if (!words.has('P')) return fail(AlarmId::kSequenceNotFound, "M97 needs P", at);
+  const double p = words.at('P').value;
+  if (p != std::trunc(p) || p < 1 || p > 99999) {
+    return fail(AlarmId::kIllegalSequenceNumber,
+                "M97 P" + fmt::format("{}", p) + ": sequence numbers are 1 to 99999",
+                loc(words.at('P').column));
+  }
+  int repeats = 1;
+  if (words.has('L')) {
+    const double l = words.at('L').value;
+    if (l != std::trunc(l) || l < 0 || l > 9999) {
+      return fail(AlarmId::kBadValue, "M97 L" + fmt::format("{}", l) + ": 0 to 9999 repetitions",
+                  loc(words.at('L').column));
+    }
+    repeats = static_cast<int>(l);
+  }
+  if (repeats < 1) return Step::kContinue;
+  auto c = local_call(static_cast<std::int64_t>(p), repeats, at);
+  if (!c) return std::unexpected(c.error());
+  return Step::kContinue;
+}
+
 Flow<Step> Interpreter::Impl::commit_sub_return(const Words& words) {
   std::optional<std::int64_t> label;
   if (words.has('P')) {
@@ -803,6 +829,10 @@ Flow<std::optional<Step>> Interpreter::Impl::commit_m_codes(const Words& words, 
         return commit_sub_call(words);
       case MAction::kSubReturn:
         return commit_sub_return(words);
+      case MAction::kLocalSubCall:
+        if (dialect.sw.local_sub_call_m97) return commit_local_sub_call(words);
+        emit(out, canon::MCode{m});
+        break;
       case MAction::kSpindleCw:
       case MAction::kSpindleCcw:
       case MAction::kSpindleStop:
@@ -833,6 +863,10 @@ void Interpreter::Impl::commit_cycle_start(const ModalState& before) {
 // commit_action.
 Flow<std::optional<Step>> Interpreter::Impl::commit_mill(const Words& words, const BlockPlan& plan,
                                                          CommandSink& out, bool& moved) {
+  if (plan.mill.lookahead) {
+    auto r = set_lookahead(words);
+    if (!r) return std::unexpected(r.error());
+  }
   if (!plan.mill.no_effect.empty()) {
     auto w = warn("no_effect",
                   plan.mill.no_effect + " is accepted and changes nothing in the simulation",

@@ -116,8 +116,24 @@ const Range* find(int n, int& number) noexcept {
 
 }  // namespace sysvar
 
+namespace {
+
+// Haas's tool offset numbers (haas_tool_offset_vars) as the long forms of
+// memory C: #2001-#2200 length -> #11001.., #2201-#2400 length wear ->
+// #10001.., #2401-#2600 diameter/radius -> #13001.., #2601-#2800 its wear ->
+// #12001...
+int haas_tool_var(int n) noexcept {
+  if (n < 2001 || n > 2800) return n;
+  static constexpr int kLongForm[] = {11001, 10001, 13001, 12001};
+  const int block = (n - 2001) / 200;
+  return kLongForm[block] + (n - 2001) % 200;
+}
+
+}  // namespace
+
 Flow<Value> Interpreter::Impl::read_var(int n, SourceLoc where) {
   if (ngc) return read_ngc_param(n, where);  // ngc_params.cpp
+  if (dialect.sw.haas_tool_offset_vars) n = haas_tool_var(n);
   if (n == 0) return Value::null();
   if (n < 0) return fail(AlarmId::kIllegalVariable, "#" + std::to_string(n), where);
   if (VariableStore::is_local(n) || VariableStore::is_common(n) ||
@@ -327,6 +343,7 @@ double* Interpreter::Impl::tool_field(const sysvar::Range& r, int k) noexcept {
 
 Flow<void> Interpreter::Impl::write_var(int n, Value v, SourceLoc where) {
   if (ngc) return write_ngc_param(n, v, where);  // ngc_params.cpp
+  if (dialect.sw.haas_tool_offset_vars) n = haas_tool_var(n);
   if (VariableStore::is_local(n) || VariableStore::is_common(n) ||
       VariableStore::is_persistent(n)) {
     vars.set(n, v);

@@ -95,7 +95,7 @@ TEST_P(AllDialects, rule_05_active_input_discards_the_rest_and_runs_the_next_blo
 }
 
 INSTANTIATE_TEST_SUITE_P(Dialects, AllDialects,
-                         ::testing::Values("fanuc", "nct", "mitsubishi", "compass"),
+                         ::testing::Values("fanuc", "nct", "mitsubishi", "compass", "haas"),
                          [](const auto& case_info) { return std::string(case_info.param); });
 
 struct CompAlarm {

@@ -1,0 +1,252 @@
+// Issue "real probing programs run as their authors wrote them", Haas part:
+// each test is named after a construct of Haas programs (docs/compatibility.md,
+// docs/skip-dialects.md#haas) and asserts what the user sees in the report.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "support/report_run.hpp"
+#include "support/run_cli.hpp"
+
+namespace skipnc::test {
+namespace {
+
+// A Haas mill: the built-in mill3 (X Y Z, mm) under the haas dialect, or
+// under another dialect to show the difference.
+std::filesystem::path mill(TempDir& dir, const std::string& dialect = "haas",
+                           const std::string& extra = "") {
+  return dir.write("m_" + dialect + ".toml",
+                   "extends = \"mill3\"\nname = \"m\"\ndialect = \"" + dialect + "\"\n" + extra);
+}
+
+// A switch that closes while machine Z is below -100.
+std::filesystem::path z_plane(TempDir& dir) {
+  return dir.write("s.toml",
+                   "[[trigger]]\nsignal = \"X0.4\"\naxis = \"Z\"\nat = -100.0\n"
+                   "direction = \"decreasing\"\n");
+}
+
+ReportRun run(TempDir& dir, const std::string& text, const std::string& dialect = "haas",
+              std::vector<std::string> extra = {}) {
+  const auto p = dir.write("p.nc", text);
+  std::vector<std::string> args = {"-m", mill(dir, dialect).string()};
+  args.insert(args.end(), extra.begin(), extra.end());
+  return run_with_report(dir, p, args);
+}
+
+double var(const ReportRun& r, int n) {
+  return r.report["variables"][std::to_string(n)];
+}
+
+TEST(CompatHaas, M97CallsALocalSubprogramLTimes) {
+  TempDir dir;
+  const std::string prog =
+      "#100 = 0\nG90 G0 X0\nM97 P100 L3\n#101 = #5041\nM30\n"
+      "N100 #100 = #100 + 1\nG91 G0 X10.\nG90\nM99\n";
+  const auto r = run(dir, prog, "haas", {"--var", "100", "--var", "101"});
+  ASSERT_EQ(r.exit.code, 0) << r.err;
+  EXPECT_EQ(var(r, 100), 3.0);
+  EXPECT_DOUBLE_EQ(var(r, 101), 30.0);
+  // On a Fanuc control M97 is a machine M code: nothing is called.
+  TempDir dir2;
+  const auto f = run(dir2, prog, "fanuc", {"--var", "100"});
+  ASSERT_EQ(f.exit.code, 0) << f.err;
+  EXPECT_EQ(var(f, 100), 0.0);
+}
+
+TEST(CompatHaas, M97WithoutItsSequenceNumberIsAnAlarmNamingIt) {
+  TempDir dir;
+  const auto r = run(dir, "G0 X1.\nM97 P200\nM30\nN100 M99\n");
+  ASSERT_TRUE(r.report_ok) << r.err;
+  EXPECT_EQ(r.exit.code, 1);
+  EXPECT_EQ(r.alarm()["code"], alarm_code(AlarmId::kSequenceNotFound, "haas"));
+  EXPECT_EQ(r.alarm()["line"], 2);
+  EXPECT_NE(r.alarm()["message"].get<std::string>().find("N200"), std::string::npos)
+      << r.alarm().dump();
+}
+
+TEST(CompatHaas, M97InsideAMacroCallsTheMacrosOwnLabel) {
+  TempDir dir;
+  dir.write("O9100.nc", "O9100\n#100 = #1\nM97 P10\nM99\nN10 #101 = #1 * 2\nM99\n");
+  const auto r = run(dir, "G65 P9100 A4.\n#102 = 1\nM30\nN10 #102 = 99\nM99\n", "haas",
+                     {"-I", dir.path.string(), "--var", "100", "--var", "101", "--var", "102"});
+  ASSERT_EQ(r.exit.code, 0) << r.err;
+  EXPECT_EQ(var(r, 100), 4.0);
+  EXPECT_EQ(var(r, 101), 8.0);
+  EXPECT_EQ(var(r, 102), 1.0);
+}
+
+TEST(CompatHaas, G103LookaheadLimitAcceptsP0ToP15) {
+  TempDir dir;
+  const auto r = run(dir, "G103 P1\nG0 X1.\nG103\nG103 P15\nG103 P0\nM30\n");
+  ASSERT_EQ(r.exit.code, 0) << r.err;
+  TempDir dir2;
+  const auto bad = run(dir2, "G103 P16\nM30\n");
+  ASSERT_TRUE(bad.report_ok) << bad.err;
+  EXPECT_EQ(bad.exit.code, 1);
+  EXPECT_EQ(bad.alarm()["code"], alarm_code(AlarmId::kBadValue, "haas"));
+  EXPECT_EQ(bad.alarm()["column"], 6);
+  // Fanuc has no G103: refused as an improper G code.
+  TempDir dir3;
+  const auto f = run(dir3, "G103 P1\nM30\n", "fanuc");
+  EXPECT_EQ(f.exit.code, 1);
+  EXPECT_EQ(f.alarm()["code"], "PS0010");
+}
+
+TEST(CompatHaas, G103P1LeavesTheProbedValuesAsWithout) {
+  TempDir dir;
+  const auto s = z_plane(dir);
+  const std::string touch = "G90 G0 Z-90.\nG31 Z-120. F300.\n#100 = #5063\n#101 = #5023\nM30\n";
+  const auto a = run(dir, touch, "haas", {"-s", s.string(), "--var", "100", "--var", "101"});
+  const auto b =
+      run(dir, "G103 P1\n" + touch, "haas", {"-s", s.string(), "--var", "100", "--var", "101"});
+  ASSERT_EQ(a.exit.code, 0) << a.err;
+  ASSERT_EQ(b.exit.code, 0) << b.err;
+  EXPECT_NEAR(var(a, 100), -100.0, 1e-6);
+  EXPECT_EQ(var(a, 100), var(b, 100));
+  EXPECT_EQ(var(a, 101), var(b, 101));
+}
+
+TEST(CompatHaas, G31WithoutFeedInItsBlockIsRefused) {
+  TempDir dir;
+  const auto r = run(dir, "G1 F300.\nG31 Z-10.\nM30\n");
+  ASSERT_TRUE(r.report_ok) << r.err;
+  EXPECT_EQ(r.exit.code, 1);
+  EXPECT_EQ(r.alarm()["code"], alarm_code(AlarmId::kSkipNoFeed, "haas"));
+  EXPECT_EQ(r.alarm()["line"], 2);
+}
+
+TEST(CompatHaas, G31MissRecordsTheEndPointAndGoesOn) {
+  TempDir dir;
+  const auto r =
+      run(dir, "G90 G31 Z-50. F500.\n#100 = #5063\nG0 X5.\nM30\n", "haas", {"--var", "100"});
+  ASSERT_EQ(r.exit.code, 0) << r.err;
+  EXPECT_DOUBLE_EQ(var(r, 100), -50.0);
+  EXPECT_FALSE(r.report["skips"][0]["triggered"].get<bool>());
+  EXPECT_DOUBLE_EQ(r.report["final"]["machine_position"]["X"].get<double>(), 5.0);
+}
+
+TEST(CompatHaas, G31HasNoPAndNoK) {
+  for (const char* block : {"G31 P1 Z-10. F100.", "G31 K1 Z-10. F100."}) {
+    TempDir dir;
+    const auto r = run(dir, std::string(block) + "\nM30\n");
+    ASSERT_TRUE(r.report_ok) << r.err;
+    EXPECT_EQ(r.exit.code, 1) << block;
+    EXPECT_EQ(r.alarm()["code"], alarm_code(AlarmId::kSkipSyntax, "haas")) << block;
+  }
+}
+
+TEST(CompatHaas, G31StoresTheToolReferencePointInTheWorkSystem) {
+  TempDir dir;
+  const auto s = z_plane(dir);
+  const auto p = dir.write("p.nc",
+                           "G10 L2 P1 Z-20.\nG54 G43 H1 G0 Z0.\nG31 Z-150. F300.\n"
+                           "#100 = #5063\n#101 = #5063 - #5083\nM30\n");
+  const auto m = mill(dir, "haas", "[tool_offsets]\n1 = { length = 50.0 }\n");
+  const auto r =
+      run_with_report(dir, p, {"-m", m.string(), "-s", s.string(), "--var", "100", "--var", "101"});
+  ASSERT_EQ(r.exit.code, 0) << r.err;
+  // The trigger is on the axis (the gauge line): machine Z-100 = work -80,
+  // which #5063 holds; the tip is H1 = 50 lower.
+  EXPECT_NEAR(var(r, 100), -80.0, 1e-6);
+  EXPECT_NEAR(var(r, 101), -130.0, 1e-6);
+}
+
+TEST(CompatHaas, M99PInASubprogramBranchesWithinIt) {
+  const std::string prog =
+      "#100 = 0\nM98 P200\n#101 = 1\nM30\nN20 #102 = 7\nM30\n"
+      "O200\nN20 #100 = #100 + 1\nIF [#100 GE 3] GOTO 40\nM99 P20\nN40 M99\n";
+  TempDir dir;
+  const auto r = run(dir, prog, "haas", {"--var", "100", "--var", "101"});
+  ASSERT_EQ(r.exit.code, 0) << r.err;
+  EXPECT_EQ(var(r, 100), 3.0);
+  EXPECT_EQ(var(r, 101), 1.0);
+  // Fanuc: M99 P20 returns to N20 of the caller after one pass.
+  TempDir dir2;
+  const auto f = run(dir2, prog, "fanuc", {"--var", "100", "--var", "101", "--var", "102"});
+  ASSERT_EQ(f.exit.code, 0) << f.err;
+  EXPECT_EQ(var(f, 100), 1.0);
+  EXPECT_EQ(var(f, 102), 7.0);
+  EXPECT_TRUE(f.report["variables"]["101"].is_null());
+}
+
+TEST(CompatHaas, ToolOffsetVariablesUseHaasNumbers) {
+  TempDir dir;
+  const std::string prog =
+      "#2001 = 100.\n#2201 = -0.25\n#2401 = 6.\n#2601 = 0.01\n"
+      "G43 H1\n#100 = #5083\n#101 = #11001\n#102 = #10001\n#103 = #13001\n#104 = #12001\nM30\n";
+  const auto r =
+      run(dir, prog, "haas",
+          {"--var", "100", "--var", "101", "--var", "102", "--var", "103", "--var", "104"});
+  ASSERT_EQ(r.exit.code, 0) << r.err;
+  EXPECT_DOUBLE_EQ(var(r, 100), 99.75);  // length + wear
+  EXPECT_DOUBLE_EQ(var(r, 101), 100.0);  // geometry
+  EXPECT_DOUBLE_EQ(var(r, 102), -0.25);  // wear
+  EXPECT_DOUBLE_EQ(var(r, 103), 6.0);
+  EXPECT_DOUBLE_EQ(var(r, 104), 0.01);
+  // Fanuc's short forms: #2001 is the wear, #2201 the geometry.
+  TempDir dir2;
+  const auto f = run(dir2, prog, "fanuc", {"--var", "101", "--var", "102"});
+  ASSERT_EQ(f.exit.code, 1) << f.err;  // #2401 is no variable of a Fanuc control
+}
+
+TEST(CompatHaas, MacroAlarm3000CarriesTheNumberAndTheComment) {
+  TempDir dir;
+  const auto r = run(dir, "G0 X1.\n#3000 = 15 (PROBE OPEN)\nG0 X2.\nM30\n");
+  ASSERT_TRUE(r.report_ok) << r.err;
+  EXPECT_EQ(r.exit.code, 1);
+  EXPECT_EQ(r.alarm()["number"], 3015);
+  EXPECT_EQ(r.alarm()["line"], 2);
+  EXPECT_NE(r.alarm()["message"].get<std::string>().find("PROBE OPEN"), std::string::npos)
+      << r.alarm().dump();
+  EXPECT_DOUBLE_EQ(r.report["final"]["machine_position"]["X"].get<double>(), 1.0);
+}
+
+TEST(CompatHaas, MillisecondTimerAndDateVariablesRead) {
+  TempDir dir;
+  // 10 mm at 600 mm/min: one second of feed, plus 5 ms of acceleration
+  // (10 mm/s at 2000 mm/s^2) and the servo settling into position after it
+  // (time constant 1/kp = 20 ms on mill3).
+  const auto r = run(dir, "#3001 = 0\nG1 X10. F600.\n#100 = #3001\n#101 = #3011\nM30\n", "haas",
+                     {"--var", "100", "--var", "101"});
+  ASSERT_EQ(r.exit.code, 0) << r.err;
+  EXPECT_GE(var(r, 100), 1000.0);
+  EXPECT_LE(var(r, 100), 1100.0);
+  EXPECT_GT(var(r, 101), 19700101.0);
+}
+
+TEST(CompatHaas, G65LRepeatsKeepTheLocalsOfTheFirstPass) {
+  TempDir dir;
+  dir.write("O9200.nc", "O9200\n#1 = #1 + 1\n#100 = #1\nM99\n");
+  const auto r =
+      run(dir, "G65 P9200 L3 A1.\nM30\n", "haas", {"-I", dir.path.string(), "--var", "100"});
+  ASSERT_EQ(r.exit.code, 0) << r.err;
+  EXPECT_EQ(var(r, 100), 4.0);
+}
+
+// Posted programs open with % and their O block: GOTO and M99 P find the
+// labels after them (every Fanuc-family dialect).
+TEST(CompatHaas, GotoFindsItsLabelInAProgramOpenedByPercentAndO) {
+  for (const char* dialect : {"haas", "fanuc"}) {
+    TempDir dir;
+    const auto r =
+        run(dir, "%\nO1001 (POSTED)\n#1 = 2\nGOTO 40\n#1 = 5\nN40 #100 = #1 + 1\nM30\n%\n", dialect,
+            {"--var", "100"});
+    ASSERT_EQ(r.exit.code, 0) << dialect << ": " << r.err;
+    EXPECT_EQ(var(r, 100), 3.0) << dialect;
+  }
+}
+
+TEST(CompatHaas, DialectIsListedAndSelectable) {
+  const auto r = run_cli({"dialects"});
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  EXPECT_NE(r.out.find("haas"), std::string::npos);
+  TempDir dir;
+  const auto p = dir.write("p.nc", "M97 P10\nM30\nN10 #100 = 5\nM99\n");
+  const auto d = run_with_report(dir, p, {"-d", "haas", "--var", "100"});
+  ASSERT_EQ(d.exit.code, 0) << d.err;
+  EXPECT_EQ(var(d, 100), 5.0);
+}
+
+}  // namespace
+}  // namespace skipnc::test
