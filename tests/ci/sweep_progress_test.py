@@ -20,7 +20,9 @@ PROGRESS = re.compile(rb"\r  (\d+)/100000 scenarios, (\d+)/s, (\d+) s left")
 
 def make_spec(tmp):
     with open(os.path.join(tmp, "p.nc"), "w") as f:
-        f.write("G04 X0.3\nM30\n")
+        # A move, not a dwell: a dwell's still periods are skipped in one
+        # step, and the sweep must last longer than the test's 2.5 s.
+        f.write("G91 G01 X30. F1000.\nM30\n")
     spec = os.path.join(tmp, "s.sweep.toml")
     with open(spec, "w") as f:
         f.write('program = "p.nc"\nscenarios = 100000\nworkers = 1\n')
