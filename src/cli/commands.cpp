@@ -147,16 +147,16 @@ Result<RunChecks> read_checks(const RunArgs& a, const run::Session& s) {
   RunChecks c;
   for (const auto& v : a.vars) {
     auto r = run::parse_var_ref(v);
-    if (!r) return std::unexpected(r.error());
+    SKIPNC_TRY(r);
     c.vars.push_back(*r);
   }
   for (const auto& text : a.expect) {
     auto e = run::parse_expectation(text);
-    if (!e) return std::unexpected(e.error());
-    if (auto n = run::check_alarm_name(*e, s.dialect); !n) return std::unexpected(n.error());
+    SKIPNC_TRY(e);
+    SKIPNC_TRY(run::check_alarm_name(*e, s.dialect));
     if (e->kind == run::Expectation::Kind::kVariable) {
       // Read after the run by run::check_outcome.
-      if (auto r = run::parse_var_ref("#" + e->var); !r) return std::unexpected(r.error());
+      SKIPNC_TRY(run::parse_var_ref("#" + e->var));
     }
     c.expects.push_back(*e);
   }
@@ -169,7 +169,7 @@ Result<std::unique_ptr<report::CsvTrace>> open_trace(const RunArgs& a, const run
   if (a.trace.empty()) return nullptr;
   auto trace = std::make_unique<report::CsvTrace>(a.trace, s.machine, nullptr);
   trace->every(a.trace_every);
-  if (auto o = trace->open(); !o) return std::unexpected(o.error());
+  SKIPNC_TRY(trace->open());
   trace->on_stop([] { run_stop().request(StopReason::kOutput); });
   return trace;
 }

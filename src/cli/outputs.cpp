@@ -168,7 +168,7 @@ Result<void> refuse_collisions(const std::vector<NamedFile>& outputs,
                     std::vector<OutputTarget>& out) -> Result<void> {
     for (const auto& f : list) {
       auto t = resolve_output(f.name);
-      if (!t) return std::unexpected(t.error());
+      SKIPNC_TRY(t);
       out.push_back(std::move(*t));
     }
     return {};

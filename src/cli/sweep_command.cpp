@@ -220,7 +220,7 @@ Result<void> open_tables(const run::SweepPlan& plan, TableFile& csv, TableFile& 
   if (auto r = refuse_collisions(outputs, sweep_inputs(plan)); !r) return r;
   for (TableFile* t : {&csv, &json}) {
     auto f = OutputFile::open(t->name, ".partial");
-    if (!f) return std::unexpected(f.error());
+    SKIPNC_TRY(f);
     t->file = std::move(*f);
   }
   return {};

@@ -13,7 +13,7 @@ namespace {
 
 Result<canon::SignalAddr> parse_addr(const toml::node& n, std::string_view origin) {
   auto s = get_string(n, origin, "signal address");
-  if (!s) return std::unexpected(s.error());
+  SKIPNC_TRY(s);
   const std::string& t = *s;
   canon::SignalAddr a;
   unsigned byte = 0, bit = 0;
@@ -44,7 +44,7 @@ template <class E, std::size_t N>
 Result<void> choose(const toml::node& n, std::string_view origin, std::string_view key,
                     const Choice<E> (&choices)[N], E& out) {
   auto s = get_string(n, origin, key);
-  if (!s) return std::unexpected(s.error());
+  SKIPNC_TRY(s);
   std::string known;
   for (const auto& c : choices) {
     if (c.text == *s) {
@@ -166,7 +166,7 @@ Result<void> load_switches(const toml::table& t, std::string_view origin, Switch
       if (e.key != k) continue;
       known = true;
       auto v = get_number(node, origin, k, e.lo, e.hi);
-      if (!v) return std::unexpected(v.error());
+      SKIPNC_TRY(v);
       if (*v != static_cast<double>(static_cast<int>(*v))) {
         return config_error(node, origin, std::string(k) + " must be a whole number");
       }
@@ -176,7 +176,7 @@ Result<void> load_switches(const toml::table& t, std::string_view origin, Switch
       if (e.key != k) continue;
       known = true;
       auto b = get_bool(node, origin, k);
-      if (!b) return std::unexpected(b.error());
+      SKIPNC_TRY(b);
       *e.out = *b;
     }
     if (known) continue;
@@ -201,13 +201,13 @@ Result<void> load_skip_vars(const toml::table& t, std::string_view origin, SkipV
     const auto k = key.str();
     if (k == "named_machine" || k == "named_local" || k == "named_aux") {
       auto s = get_string(node, origin, k);
-      if (!s) return std::unexpected(s.error());
+      SKIPNC_TRY(s);
       (k == "named_machine" ? v.named_machine
        : k == "named_local" ? v.named_local
                             : v.named_aux) = *s;
     } else {
       auto n = get_number(node, origin, k, 0, 99999);
-      if (!n) return std::unexpected(n.error());
+      SKIPNC_TRY(n);
       const int i = static_cast<int>(*n);
       if (k == "work_base")
         v.work_base = i;
@@ -225,7 +225,7 @@ Result<void> load_handshake(const toml::table& t, std::string_view origin, SkipH
   if (!keys) return keys;
   for (const auto& [key, node] : t) {
     auto s = get_string(node, origin, key.str());
-    if (!s) return std::unexpected(s.error());
+    SKIPNC_TRY(s);
     const auto k = key.str();
     (k == "active" ? h.active : k == "skip" ? h.skip : k == "recorded" ? h.recorded : h.done) = *s;
   }
@@ -248,14 +248,14 @@ Result<void> load_params(const toml::table& t, std::string_view origin,
     if (!tab) return config_error(node, origin, "parameter " + std::string(k) + " must be a table");
     auto keys =
         check_keys(*tab, {"name", "kind", "default", "min", "max", "text"}, origin, "a parameter");
-    if (!keys) return std::unexpected(keys.error());
+    SKIPNC_TRY(keys);
     ParamDef d;
     d.number = number;
     for (const auto& [pk, pn] : *tab) {
       const auto s = pk.str();
       if (s == "name" || s == "text" || s == "kind") {
         auto v = get_string(pn, origin, s);
-        if (!v) return std::unexpected(v.error());
+        SKIPNC_TRY(v);
         if (s == "name")
           d.name = *v;
         else if (s == "text")
@@ -270,7 +270,7 @@ Result<void> load_params(const toml::table& t, std::string_view origin,
           return config_error(pn, origin, "kind must be \"bits\", \"int\" or \"real\"");
       } else {
         auto v = get_number(pn, origin, s, -1e300, 1e300);
-        if (!v) return std::unexpected(v.error());
+        SKIPNC_TRY(v);
         if (s == "default")
           d.default_value = *v;
         else if (s == "min")
@@ -300,21 +300,21 @@ Result<void> load_alarms(const toml::table& t, std::string_view origin, Dialect&
     const auto* tab = node.as_table();
     if (!tab) return config_error(node, origin, "alarm entry must be a table");
     auto keys = check_keys(*tab, {"number", "code", "message"}, origin, "an alarm");
-    if (!keys) return std::unexpected(keys.error());
+    SKIPNC_TRY(keys);
     AlarmText& a = d.alarms[static_cast<std::size_t>(id)];
     if (const auto* n = tab->get("number")) {
       auto v = get_number(*n, origin, "number", 0, 1e9);
-      if (!v) return std::unexpected(v.error());
+      SKIPNC_TRY(v);
       a.number = static_cast<int>(*v);
     }
     if (const auto* n = tab->get("code")) {
       auto v = get_string(*n, origin, "code");
-      if (!v) return std::unexpected(v.error());
+      SKIPNC_TRY(v);
       a.code = *v;
     }
     if (const auto* n = tab->get("message")) {
       auto v = get_string(*n, origin, "message");
-      if (!v) return std::unexpected(v.error());
+      SKIPNC_TRY(v);
       a.message = *v;
     }
   }
@@ -355,7 +355,7 @@ Result<void> load_codes(const toml::table& t, std::string_view origin, Dialect& 
 
 Result<void> load_into(std::string_view text, std::string_view origin, Dialect& d, int depth) {
   auto parsed = parse_toml(text, origin);
-  if (!parsed) return std::unexpected(parsed.error());
+  SKIPNC_TRY(parsed);
   const toml::table& t = *parsed;
   auto keys = check_keys(t,
                          {"name", "title", "inherits", "fixed_skip_inputs", "switches",
@@ -364,7 +364,7 @@ Result<void> load_into(std::string_view text, std::string_view origin, Dialect& 
   if (!keys) return keys;
   if (const auto* inh = t.get("inherits")) {
     auto base = get_string(*inh, origin, "inherits");
-    if (!base) return std::unexpected(base.error());
+    SKIPNC_TRY(base);
     if (depth > 4) return config_error(*inh, origin, "dialect inheritance is too deep");
     const EmbeddedFile* f = embedded_entry("dialects/" + *base + ".toml");
     if (!f) return config_error(*inh, origin, "unknown base dialect '" + *base + "'");
@@ -376,7 +376,7 @@ Result<void> load_into(std::string_view text, std::string_view origin, Dialect& 
     Result<void> r;
     if (k == "name" || k == "title") {
       auto s = get_string(node, origin, k);
-      if (!s) return std::unexpected(s.error());
+      SKIPNC_TRY(s);
       (k == "name" ? d.name : d.title) = *s;
     } else if (k == "fixed_skip_inputs") {
       const auto* arr = node.as_array();
@@ -384,7 +384,7 @@ Result<void> load_into(std::string_view text, std::string_view origin, Dialect& 
       d.fixed_skip_inputs.clear();
       for (const auto& e : *arr) {
         auto a = parse_addr(e, origin);
-        if (!a) return std::unexpected(a.error());
+        SKIPNC_TRY(a);
         d.fixed_skip_inputs.push_back(*a);
       }
     } else if (k != "inherits") {
@@ -420,7 +420,7 @@ const ParamDef* Dialect::param(int number) const noexcept {
 Result<Dialect> parse_dialect(std::string_view toml_text, std::string_view origin) {
   Dialect d;
   auto r = load_into(toml_text, origin, d, 0);
-  if (!r) return std::unexpected(r.error());
+  SKIPNC_TRY(r);
   // Every parameter a switch names must be a parameter of the dialect.
   const Switches& sw = d.sw;
   const std::pair<std::string_view, int> refs[] = {

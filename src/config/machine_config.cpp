@@ -22,11 +22,11 @@ Result<AxisConfig> load_axis(const toml::table& t, std::string_view origin, Axis
                          {"name", "min", "max", "rapid", "max_feed", "accel", "kp", "feedforward",
                           "torque_per_mm", "torque_max"},
                          origin, "[[axis]]");
-  if (!keys) return std::unexpected(keys.error());
+  SKIPNC_TRY(keys);
   const auto* name = t.get("name");
   if (!name) return config_error(t, origin, "[[axis]] needs a name (\"X\", \"Y\", ...)");
   auto s = get_string(*name, origin, "name");
-  if (!s) return std::unexpected(s.error());
+  SKIPNC_TRY(s);
   if (s->size() != 1 || std::string_view("XYZABCUVW").find((*s)[0]) == std::string_view::npos) {
     return config_error(*name, origin, "axis name must be one of X Y Z A B C U V W");
   }
@@ -50,7 +50,7 @@ Result<AxisConfig> load_axis(const toml::table& t, std::string_view origin, Axis
   for (const auto& f : fields) {
     if (const auto* n = t.get(f.key)) {
       auto v = get_number(*n, origin, f.key, f.min, f.max);
-      if (!v) return std::unexpected(v.error());
+      SKIPNC_TRY(v);
       *f.out = *v;
     }
   }
@@ -74,7 +74,7 @@ Result<AxisVec> load_axis_values(const toml::node& node, const MachineConfig& m,
           std::string(what) + ": '" + std::string(key.str()) + "' is not an axis of this machine");
     }
     auto d = get_number(n, origin, key.str(), -1e6, 1e6);
-    if (!d) return std::unexpected(d.error());
+    SKIPNC_TRY(d);
     v[i] = *d;
   }
   return v;
@@ -94,7 +94,7 @@ Result<void> load_offsets(const toml::table& t, MachineConfig& m, std::string_vi
     }
     auto v =
         load_axis_values(node, m, origin, key.str(), m.work_offsets[static_cast<std::size_t>(idx)]);
-    if (!v) return std::unexpected(v.error());
+    SKIPNC_TRY(v);
     m.work_offsets[static_cast<std::size_t>(idx)] = *v;
   }
   return {};
@@ -145,7 +145,7 @@ Result<void> load_limits(const toml::table& t, MachineConfig& m, std::string_vie
           "unknown key '" + std::string(key.str()) + "' in [limits] (known: " + list + ")");
     }
     auto v = get_number(node, origin, k->key, k->min, k->max);
-    if (!v) return std::unexpected(v.error());
+    SKIPNC_TRY(v);
     if (k->whole && *v != std::trunc(*v)) {
       return config_error(node, origin, std::string(k->key) + " must be a whole number");
     }
@@ -177,13 +177,13 @@ Result<void> load_tools(const toml::table& t, MachineConfig& m, std::string_view
       const auto name = tk.str();
       if (name == "tip") {
         auto v = get_number(tn, origin, name, 0, 9);
-        if (!v) return std::unexpected(v.error());
+        SKIPNC_TRY(v);
         if (*v != std::trunc(*v)) return config_error(tn, origin, "tip must be a whole number 0-9");
         o.tip = static_cast<int>(*v);
         continue;
       }
       auto v = get_number(tn, origin, name, -1e5, 1e5);
-      if (!v) return std::unexpected(v.error());
+      SKIPNC_TRY(v);
       if (name == "length")
         o.length_geometry = *v;
       else if (name == "length_wear")
@@ -227,7 +227,7 @@ Result<MachineConfig> parse_machine_at(std::string_view text, std::string_view o
 // is reported at the `extends` key, with the other file's place in words.
 Result<MachineConfig> extended_machine(const toml::node& n, std::string_view origin, int depth) {
   auto name = get_string(n, origin, "extends");
-  if (!name) return std::unexpected(name.error());
+  SKIPNC_TRY(name);
   if (depth >= kMaxExtendsDepth) {
     return config_error(n, origin,
                         "extends: more than " + std::to_string(kMaxExtendsDepth) +
@@ -277,17 +277,17 @@ Result<MachineConfig> extended_machine(const toml::node& n, std::string_view ori
 Result<void> load_identity(const toml::table& t, std::string_view origin, MachineConfig& m) {
   if (const auto* n = t.get("name")) {
     auto s = get_string(*n, origin, "name");
-    if (!s) return std::unexpected(s.error());
+    SKIPNC_TRY(s);
     m.name = *s;
   }
   if (const auto* n = t.get("dialect")) {
     auto s = get_string(*n, origin, "dialect");
-    if (!s) return std::unexpected(s.error());
+    SKIPNC_TRY(s);
     m.dialect = *s;
   }
   if (const auto* n = t.get("type")) {
     auto s = get_string(*n, origin, "type");
-    if (!s) return std::unexpected(s.error());
+    SKIPNC_TRY(s);
     if (*s == "mill")
       m.type = MachineType::kMill;
     else if (*s == "lathe")
@@ -303,12 +303,12 @@ Result<void> load_identity(const toml::table& t, std::string_view origin, Machin
 Result<void> load_scalars(const toml::table& t, std::string_view origin, MachineConfig& m) {
   if (const auto* n = t.get("spindle_max_rpm")) {
     auto v = get_number(*n, origin, "spindle_max_rpm", 1.0, 1e6);
-    if (!v) return std::unexpected(v.error());
+    SKIPNC_TRY(v);
     m.spindle_max_rpm = *v;
   }
   if (const auto* n = t.get("servo_period_ms")) {
     auto v = get_number(*n, origin, "servo_period_ms", 0.0625, 100.0);
-    if (!v) return std::unexpected(v.error());
+    SKIPNC_TRY(v);
     const std::int64_t before = m.period_ns;
     m.period_ns = static_cast<std::int64_t>(std::llround(*v * 1e6));
     // The time limit the extended machine set stays the same time.
@@ -316,22 +316,22 @@ Result<void> load_scalars(const toml::table& t, std::string_view origin, Machine
   }
   if (const auto* n = t.get("inch")) {
     auto v = get_bool(*n, origin, "inch");
-    if (!v) return std::unexpected(v.error());
+    SKIPNC_TRY(v);
     m.inch_machine = *v;
   }
   if (const auto* n = t.get("in_position_mm")) {
     auto v = get_number(*n, origin, "in_position_mm", 1e-9, 10.0);
-    if (!v) return std::unexpected(v.error());
+    SKIPNC_TRY(v);
     m.in_position_mm = *v;
   }
   if (const auto* n = t.get("in_position_timeout_s")) {
     auto v = get_number(*n, origin, "in_position_timeout_s", 0.001, 3600.0);
-    if (!v) return std::unexpected(v.error());
+    SKIPNC_TRY(v);
     m.in_position_timeout_s = *v;
   }
   if (const auto* n = t.get("persistent_variables")) {
     auto s = get_string(*n, origin, "persistent_variables");
-    if (!s) return std::unexpected(s.error());
+    SKIPNC_TRY(s);
     // Relative to the machine file's folder, as `extends` and meshes are (not
     // to the folder the command runs in).
     std::filesystem::path pv(*s);
@@ -370,7 +370,7 @@ Result<void> load_axes(const toml::table& t, std::string_view origin, MachineCon
     }
     auto a = load_axis(*at, origin,
                        existing >= 0 ? m.axes[static_cast<std::size_t>(existing)] : AxisConfig{});
-    if (!a) return std::unexpected(a.error());
+    SKIPNC_TRY(a);
     if (m.lathe() && a->name != 'X' && a->name != 'Z' && a->name != 'C') {
       // G-code system A: U, W and H are the incremental X, Z and C.
       return config_error(e, origin,
@@ -405,10 +405,10 @@ Result<void> load_latch(const toml::node& n, std::string_view origin, MachineCon
   const auto* lt = n.as_table();
   if (!lt) return config_error(n, origin, "[latch] must be a table");
   auto k = check_keys(*lt, {"mode", "delay_ms", "servo_delay_compensation"}, origin, "[latch]");
-  if (!k) return std::unexpected(k.error());
+  SKIPNC_TRY(k);
   if (const auto* mode = lt->get("mode")) {
     auto s = get_string(*mode, origin, "mode");
-    if (!s) return std::unexpected(s.error());
+    SKIPNC_TRY(s);
     if (*s == "exact")
       m.latch = canon::SkipLatch::kExact;
     else if (*s == "sampled")
@@ -418,12 +418,12 @@ Result<void> load_latch(const toml::node& n, std::string_view origin, MachineCon
   }
   if (const auto* d = lt->get("delay_ms")) {
     auto v = get_number(*d, origin, "delay_ms", 0.0, 1000.0);
-    if (!v) return std::unexpected(v.error());
+    SKIPNC_TRY(v);
     m.latch_delay_s = *v * 1e-3;
   }
   if (const auto* c = lt->get("servo_delay_compensation")) {
     auto v = get_bool(*c, origin, "servo_delay_compensation");
-    if (!v) return std::unexpected(v.error());
+    SKIPNC_TRY(v);
     m.servo_delay_comp = *v;
   }
   return {};
@@ -437,7 +437,7 @@ Result<void> load_params(const toml::node& n, std::string_view origin, MachineCo
   if (!pt) return config_error(n, origin, "[parameters] must be a table");
   for (const auto& [key, node] : *pt) {
     auto v = get_number(node, origin, key.str(), -1e300, 1e300);
-    if (!v) return std::unexpected(v.error());
+    SKIPNC_TRY(v);
     const auto k = key.str();
     int number = 0, bit = -1;
     const auto hash = k.find('#');
@@ -473,7 +473,7 @@ Result<void> load_reference_points(const toml::node& n, std::string_view origin,
     }
     auto v =
         load_axis_values(node, m, origin, k, m.reference_points[static_cast<std::size_t>(idx)]);
-    if (!v) return std::unexpected(v.error());
+    SKIPNC_TRY(v);
     m.reference_points[static_cast<std::size_t>(idx)] = *v;
   }
   return {};
@@ -481,7 +481,7 @@ Result<void> load_reference_points(const toml::node& n, std::string_view origin,
 
 Result<MachineConfig> parse_machine_at(std::string_view text, std::string_view origin, int depth) {
   auto parsed = parse_toml(text, origin);
-  if (!parsed) return std::unexpected(parsed.error());
+  SKIPNC_TRY(parsed);
   const toml::table& t = *parsed;
   auto keys = check_keys(
       t,
@@ -489,47 +489,47 @@ Result<MachineConfig> parse_machine_at(std::string_view text, std::string_view o
        "in_position_timeout_s", "spindle_max_rpm", "persistent_variables", "latch", "axis",
        "parameters", "work_offsets", "tool_offsets", "limits", "reference_points", "ini", "hal"},
       origin, "a machine file");
-  if (!keys) return std::unexpected(keys.error());
+  SKIPNC_TRY(keys);
   MachineConfig m;
   if (const auto* n = t.get("extends")) {
     auto base = extended_machine(*n, origin, depth);
-    if (!base) return std::unexpected(base.error());
+    SKIPNC_TRY(base);
     m = std::move(*base);
     m.extends = m.origin;
     if (!m.origin.starts_with("built-in "))
       m.extends_files.insert(m.extends_files.begin(), m.origin);
   }
   m.origin = std::string(origin);
-  if (auto r = load_identity(t, origin, m); !r) return std::unexpected(r.error());
-  if (auto r = load_scalars(t, origin, m); !r) return std::unexpected(r.error());
-  if (auto r = load_axes(t, origin, m); !r) return std::unexpected(r.error());
+  SKIPNC_TRY(load_identity(t, origin, m));
+  SKIPNC_TRY(load_scalars(t, origin, m));
+  SKIPNC_TRY(load_axes(t, origin, m));
   if (const auto* n = t.get("latch")) {
-    if (auto r = load_latch(*n, origin, m); !r) return std::unexpected(r.error());
+    SKIPNC_TRY(load_latch(*n, origin, m));
   }
-  if (auto r = load_ini_hal(t, m, origin); !r) return std::unexpected(r.error());
+  SKIPNC_TRY(load_ini_hal(t, m, origin));
   if (const auto* n = t.get("parameters")) {
-    if (auto r = load_params(*n, origin, m); !r) return std::unexpected(r.error());
+    SKIPNC_TRY(load_params(*n, origin, m));
   }
   if (const auto* n = t.get("work_offsets")) {
     const auto* wt = n->as_table();
     if (!wt) return config_error(*n, origin, "[work_offsets] must be a table");
     auto r = load_offsets(*wt, m, origin);
-    if (!r) return std::unexpected(r.error());
+    SKIPNC_TRY(r);
   }
   if (const auto* n = t.get("reference_points")) {
-    if (auto r = load_reference_points(*n, origin, m); !r) return std::unexpected(r.error());
+    SKIPNC_TRY(load_reference_points(*n, origin, m));
   }
   if (const auto* n = t.get("tool_offsets")) {
     const auto* tt = n->as_table();
     if (!tt) return config_error(*n, origin, "[tool_offsets] must be a table");
     auto r = load_tools(*tt, m, origin);
-    if (!r) return std::unexpected(r.error());
+    SKIPNC_TRY(r);
   }
   if (const auto* n = t.get("limits")) {
     const auto* lt = n->as_table();
     if (!lt) return config_error(*n, origin, "[limits] must be a table");
     auto r = load_limits(*lt, m, origin);
-    if (!r) return std::unexpected(r.error());
+    SKIPNC_TRY(r);
   }
   return m;
 }

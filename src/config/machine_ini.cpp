@@ -29,7 +29,7 @@ Result<void> load_ini_hal(const toml::table& t, MachineConfig& m, std::string_vi
       for (const auto& [name, value] : *st) {
         auto v = ini_value(value, origin,
                            "[ini." + std::string(section.str()) + "] " + std::string(name.str()));
-        if (!v) return std::unexpected(v.error());
+        SKIPNC_TRY(v);
         keys[std::string(name.str())] = *v;
       }
     }
@@ -39,7 +39,7 @@ Result<void> load_ini_hal(const toml::table& t, MachineConfig& m, std::string_vi
     if (!ht) return config_error(*n, origin, "[hal] must be a table of pin = value");
     for (const auto& [pin, value] : *ht) {
       auto v = ini_value(value, origin, "[hal] " + std::string(pin.str()));
-      if (!v) return std::unexpected(v.error());
+      SKIPNC_TRY(v);
       m.hal[std::string(pin.str())] = *v;
     }
   }

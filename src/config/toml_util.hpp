@@ -124,7 +124,7 @@ template <class F>
 // Parses TOML text; a syntax error becomes a kConfig error with its position.
 [[nodiscard]] inline Result<toml::table> parse_toml(std::string_view text,
                                                     std::string_view origin) {
-  if (auto h = precheck_toml(text, origin); !h) return std::unexpected(h.error());
+  SKIPNC_TRY(precheck_toml(text, origin));
   toml::parse_result r = toml::parse(text, origin);
   if (!r) {
     const auto& e = r.error();

@@ -47,3 +47,14 @@ inline std::unexpected<Error> fail(AlarmId id, std::string detail, SourceLoc loc
 }
 
 }  // namespace skipnc
+
+// Passes a failed result's error up to the caller: `SKIPNC_TRY(r);` returns
+// r's error from the enclosing function when r holds one, and does nothing
+// otherwise. The argument may be a variable or any expression giving a
+// std::expected (`SKIPNC_TRY(check_keys(t, keys, origin));`); the enclosing
+// function returns a std::expected (or Flow) with the same error type.
+#define SKIPNC_TRY(...)                                                 \
+  do {                                                                  \
+    if (auto&& skipnc_try_result_ = (__VA_ARGS__); !skipnc_try_result_) \
+      return std::unexpected(std::move(skipnc_try_result_).error());    \
+  } while (false)

@@ -177,7 +177,7 @@ OutputFile& OutputFile::operator=(OutputFile&& o) noexcept {
 
 Result<OutputFile> OutputFile::open(const std::string& name, std::string_view fixed_temporary) {
   auto t = resolve_output(name);
-  if (!t) return std::unexpected(t.error());
+  SKIPNC_TRY(t);
   OutputFile f;
   f.target_ = std::move(*t);
   switch (f.target_.mode) {
@@ -337,7 +337,7 @@ Result<std::uint64_t> check_input_file(const std::string& path, InputKind kind, 
 Result<std::string> read_input_file(const std::string& path, InputKind kind) {
   int fd = -1;
   auto size = check_input_file(path, kind, &fd);
-  if (!size) return std::unexpected(size.error());
+  SKIPNC_TRY(size);
   std::string text;
   text.resize(static_cast<std::size_t>(*size));
   std::size_t done = 0;
@@ -361,7 +361,7 @@ Result<std::string> read_input_file(const std::string& path, InputKind kind) {
 
 Result<void> write_file_atomic(const std::string& name, std::string_view text) {
   auto f = OutputFile::open(name);
-  if (!f) return std::unexpected(f.error());
+  SKIPNC_TRY(f);
   auto w = f->write(text);
   if (!w) {
     f->discard();

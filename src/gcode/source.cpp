@@ -90,7 +90,7 @@ class TextSource final : public Source {
 
   // Reads the first bytes to skip a UTF-8 byte order mark.
   Result<void> init() {
-    if (auto r = fill(); !r) return std::unexpected(std::move(r.error()));
+    SKIPNC_TRY(fill());
     if (std::string_view(buf_.data(), len_).starts_with(kBom)) start_ = kBom.size();
     pos_.offset = start_;
     return {};
@@ -203,7 +203,7 @@ Result<bool> TextSource::next_general(RawBlock& out) {
     if (need_more) {
       const std::size_t keep = too_long ? i : begin;
       if (too_long) skipped += i - begin;
-      if (auto r = fill(keep); !r) return std::unexpected(std::move(r.error()));
+      SKIPNC_TRY(fill(keep));
       i -= keep;
       begin = 0;
       continue;
@@ -293,7 +293,7 @@ Result<std::unique_ptr<Source>> open_file_source(const std::string& path, std::s
   }
   auto src = std::make_unique<TextSource>(std::move(display_name), fd,
                                           static_cast<std::uint64_t>(st.st_size), limits);
-  if (auto r = src->init(); !r) return std::unexpected(std::move(r.error()));
+  SKIPNC_TRY(src->init());
   return std::unique_ptr<Source>(std::move(src));
 }
 

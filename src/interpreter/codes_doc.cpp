@@ -147,9 +147,9 @@ const char* status_text(CodeStatus s) {
 
 Result<CodeStatus> g_code_status(int code, const std::string& machine, const std::string& dialect) {
   auto m = config::builtin_machine(machine);
-  if (!m) return std::unexpected(m.error());
+  SKIPNC_TRY(m);
   auto d = config::builtin_dialect(dialect);
-  if (!d) return std::unexpected(d.error());
+  SKIPNC_TRY(d);
   const config::Parameters params(&*d);
   Setup setup;
   setup.machine = &*m;
@@ -158,7 +158,7 @@ Result<CodeStatus> g_code_status(int code, const std::string& machine, const std
   setup.program_text = g_text(code) + "\nM30\n";
   setup.program_name = "codes";
   auto in = Interpreter::create(setup, AxisVec{});
-  if (!in) return std::unexpected(in.error());
+  SKIPNC_TRY(in);
   NullSink sink;
   for (int blocks = 0; blocks < 16; ++blocks) {
     auto s = (*in)->step(sink);
@@ -215,7 +215,7 @@ Result<std::string> codes_markdown() {
       md += "| " + g_text(n.code) + " | " + (lathe && n.lathe ? n.lathe : n.mill) + " |";
       for (const auto& d : used) {
         auto s = g_code_status(n.code, mach.builtin, d);
-        if (!s) return std::unexpected(s.error());
+        SKIPNC_TRY(s);
         md += std::string(" ") + status_text(*s) + " |";
       }
       md += "\n";

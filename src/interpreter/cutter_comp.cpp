@@ -385,7 +385,7 @@ Result<void> Compensator::block(const std::vector<canon::Stamped>& cmds, const B
       }
       if (held_) {
         auto k = corner(*held_, e, held_->startup ? Join::kStartup : Join::kNormal, mode.type_b);
-        if (!k) return std::unexpected(k.error());
+        SKIPNC_TRY(k);
         auto s = send_held(*k, &c, out);
         if (!s) return s;
         e.start = k->start2;
@@ -413,7 +413,7 @@ Result<void> Compensator::block(const std::vector<canon::Stamped>& cmds, const B
       }
       if (held_) {
         auto k = corner(*held_, e, Join::kCancel, mode.type_b);
-        if (!k) return std::unexpected(k.error());
+        SKIPNC_TRY(k);
         auto s = send_held(*k, &c, out);
         if (!s) return s;
       }

@@ -293,7 +293,7 @@ FuncContext func_context(const Interpreter::Impl& im) noexcept {
 Flow<int> Interpreter::Impl::var_number(gcode::ExprId lhs) {
   const gcode::ExprNode& n = blk.nodes[static_cast<std::size_t>(lhs)];
   auto v = eval(n.a);
-  if (!v) return std::unexpected(v.error());
+  SKIPNC_TRY(v);
   // #[#i] with #i vacant is #0; a fraction is rounded.
   const double x = round_half_away(v->num());
   if (!(std::fabs(x) < 1e9)) {
@@ -311,7 +311,7 @@ Flow<void> Interpreter::Impl::assign(gcode::ExprId lhs, Value v) {
     return write_named_var(blk.names[static_cast<std::size_t>(n.name)], v, loc(n.column));
   }
   auto num = var_number(lhs);
-  if (!num) return std::unexpected(num.error());
+  SKIPNC_TRY(num);
   return write_var(*num, v, loc(n.column));
 }
 
@@ -406,7 +406,7 @@ Flow<Value> Interpreter::Impl::eval_general(gcode::ExprId id) {
       return Value::of(n.value);
     case Op::kVar: {
       auto num = var_number(id);
-      if (!num) return std::unexpected(num.error());
+      SKIPNC_TRY(num);
       return read_var(*num, loc(n.column));
     }
     case Op::kNamedVar:

@@ -293,7 +293,7 @@ Flow<Step> Interpreter::Impl::grbl_jog(CommandSink& out) {
   if (grbl_locked) return fail(AlarmId::kGrblNotIdle, "$J while grbl is in alarm", at);
   cur_words.clear();
   auto w = collect_words(cur_words);
-  if (!w) return std::unexpected(w.error());
+  SKIPNC_TRY(w);
   bool axis = false;
   for (const gcode::Word& word : blk.words) {
     const char c = word.letter;

@@ -79,7 +79,7 @@ Flow<void> Interpreter::Impl::init(const AxisVec& start) {
     // Locked until the run has written them back (save_persistent), so that
     // runs sharing the file do not lose each other's updates.
     auto l = PersistentLock::acquire(mc.persistent_vars, kPersistentLockWaitS);
-    if (!l) return std::unexpected(l.error());
+    SKIPNC_TRY(l);
     persistent_lock = std::move(*l);
     auto r = ngc ? load_ngc_var_file()  // ngc_params.cpp
                  : Flow<void>(load_persistent(mc.persistent_vars, vars.persistent()));
@@ -112,7 +112,7 @@ Flow<void> Interpreter::Impl::init(const AxisVec& start) {
   } else {
     file->path = setup.program_path;
     auto src = gcode::open_file_source(setup.program_path, setup.program_name, source_limits());
-    if (!src) return std::unexpected(src.error());
+    SKIPNC_TRY(src);
     file->src = std::move(*src);
   }
   Frame main;
@@ -153,13 +153,13 @@ Flow<bool> Interpreter::Impl::read_block() {
   gcode::Source& src = *f.file->src;
   block_pos = src.tell();
   auto more = src.next(raw);
-  if (!more) return std::unexpected(more.error());
+  SKIPNC_TRY(more);
   if (!*more) return false;
   cur_line = raw.line;
   cur_col = raw.column;
   auto parsed = gcode::parse_block(raw.text, SourceLoc{f.file->display, raw.line, raw.column},
                                    raw.offset, blk, parse_limits);
-  if (!parsed) return std::unexpected(parsed.error());
+  SKIPNC_TRY(parsed);
   return true;
 }
 
@@ -177,7 +177,7 @@ Flow<Step> Interpreter::Impl::step(CommandSink& out) {
                                                         "here (a live read, M00/M01, G31)")) +
                         "; the control does the same and the next move may overcut",
                     loc(cur_col));
-      if (!w) return std::unexpected(w.error());
+      SKIPNC_TRY(w);
     }
   }
   return r;
@@ -192,7 +192,7 @@ Flow<Step> Interpreter::Impl::step_block(CommandSink& out) {
     for (;;) {
       Frame& f = frames.back();
       auto got = read_block();
-      if (!got) return std::unexpected(got.error());
+      SKIPNC_TRY(got);
       if (!*got) {
         // End of file: a subprogram returns, the main program ends.
         if (frames.size() > 1) {
@@ -202,7 +202,7 @@ Flow<Step> Interpreter::Impl::step_block(CommandSink& out) {
         }
         auto w = warn("no_program_end",
                       "the program ends at the end of its file without M02 or M30", loc(1));
-        if (!w) return std::unexpected(w.error());
+        SKIPNC_TRY(w);
         ended = true;
         return Step::kEnd;
       }
@@ -224,7 +224,7 @@ Flow<Step> Interpreter::Impl::step_block(CommandSink& out) {
         // FANUC: % before M02/M30 is an alarm (PS5010 END OF RECORD); skipnc
         // ends the run there and says so (an alarm with --strict).
         auto w = warn("no_program_end", "the program reaches % without M02 or M30", loc(1));
-        if (!w) return std::unexpected(w.error());
+        SKIPNC_TRY(w);
         ended = true;
         return Step::kEnd;
       }
@@ -258,7 +258,7 @@ Flow<Step> Interpreter::Impl::step_block(CommandSink& out) {
       break;
     }
     auto counted = count_statement(loc(cur_col));
-    if (!counted) return std::unexpected(counted.error());
+    SKIPNC_TRY(counted);
   }
   rerun = false;
   auto r = execute(out);
@@ -280,7 +280,7 @@ Flow<Step> Interpreter::Impl::execute(CommandSink& out) {
     if (blk.has_n) modal.seq = static_cast<int>(blk.n % 100000000);
     if (blk.stmt.kind == gcode::StmtKind::kOword) {
       auto c = ngc_comments();
-      if (!c) return std::unexpected(c.error());
+      SKIPNC_TRY(c);
       return execute_oword(out);  // oword.cpp
     }
     if (grbl) {
@@ -293,11 +293,11 @@ Flow<Step> Interpreter::Impl::execute(CommandSink& out) {
     }
     cur_words.clear();
     auto w = collect_words(cur_words);
-    if (!w) return std::unexpected(w.error());
+    SKIPNC_TRY(w);
     auto a = ngc_assignments();
-    if (!a) return std::unexpected(a.error());
+    SKIPNC_TRY(a);
     auto c = ngc_comments();
-    if (!c) return std::unexpected(c.error());
+    SKIPNC_TRY(c);
     if (blk.words.empty()) return Step::kContinue;
     return execute_nc(cur_words, out);
   }
@@ -314,7 +314,7 @@ Flow<Step> Interpreter::Impl::execute(CommandSink& out) {
   }
   cur_words.clear();
   auto c = collect_words(cur_words);
-  if (!c) return std::unexpected(c.error());
+  SKIPNC_TRY(c);
   return execute_nc(cur_words, out);
 }
 
@@ -341,7 +341,7 @@ Result<std::unique_ptr<Interpreter>> Interpreter::create(const Setup& setup,
                                                          const AxisVec& start_machine) {
   auto impl = std::make_unique<Impl>(setup);
   auto r = settled(impl->init(start_machine));
-  if (!r) return std::unexpected(r.error());
+  SKIPNC_TRY(r);
   return std::unique_ptr<Interpreter>(new Interpreter(std::move(impl)));
 }
 

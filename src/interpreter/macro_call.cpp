@@ -91,12 +91,12 @@ Flow<void> Interpreter::Impl::find_program(std::int64_t number, ProgramFile*& fi
     // Scan the file once for program numbers with a source of its own, so
     // the running read position is not disturbed.
     auto opened = scanner_for(pf);
-    if (!opened) return std::unexpected(opened.error());
+    SKIPNC_TRY(opened);
     const std::unique_ptr<gcode::Source> scanner = std::move(*opened);
     gcode::RawBlock rb;
     for (;;) {
       auto more = scanner->next(rb);
-      if (!more) return std::unexpected(more.error());
+      SKIPNC_TRY(more);
       if (!*more) break;
       std::size_t i = 0;
       while (i < rb.text.size() && (rb.text[i] == ' ' || rb.text[i] == '\t')) ++i;
@@ -122,12 +122,12 @@ Flow<void> Interpreter::Impl::find_program(std::int64_t number, ProgramFile*& fi
   };
   for (ProgramFile* pf : {frames.back().file, files.front().get()}) {
     auto r = scan(*pf);
-    if (!r) return std::unexpected(r.error());
+    SKIPNC_TRY(r);
     if (*r) return {};
   }
   for (auto& pf : files) {
     auto r = scan(*pf);
-    if (!r) return std::unexpected(r.error());
+    SKIPNC_TRY(r);
     if (*r) return {};
   }
   const std::vector<std::string> dirs = include_dirs();
@@ -138,7 +138,7 @@ Flow<void> Interpreter::Impl::find_program(std::int64_t number, ProgramFile*& fi
   auto load = [&](const fs::path& p) -> Result<ProgramFile*> {
     bool added = false;
     auto pf = program_file(p, added);
-    if (!pf) return std::unexpected(pf.error());
+    SKIPNC_TRY(pf);
     return added ? *pf : nullptr;
   };
   std::vector<std::string> libraries_tried;
@@ -147,7 +147,7 @@ Flow<void> Interpreter::Impl::find_program(std::int64_t number, ProgramFile*& fi
   auto search_library = [&](const fs::path& p) -> Result<bool> {
     libraries_tried.push_back(p.filename().string());
     auto pf = load(p);
-    if (!pf) return std::unexpected(pf.error());
+    SKIPNC_TRY(pf);
     if (*pf == nullptr) return false;
     return scan(**pf);
   };
@@ -155,7 +155,7 @@ Flow<void> Interpreter::Impl::find_program(std::int64_t number, ProgramFile*& fi
     std::error_code ec;
     if (fs::is_regular_file(d, ec)) {  // -I ALL-PROG.TXT: a library file
       auto r = search_library(fs::path(d));
-      if (!r) return std::unexpected(r.error());
+      SKIPNC_TRY(r);
       if (*r) return {};
       continue;
     }
@@ -169,10 +169,10 @@ Flow<void> Interpreter::Impl::find_program(std::int64_t number, ProgramFile*& fi
                     where);
       }
       auto pf = load(p);
-      if (!pf) return std::unexpected(pf.error());
+      SKIPNC_TRY(pf);
       if (*pf == nullptr) continue;
       auto r = scan(**pf);
-      if (!r) return std::unexpected(r.error());
+      SKIPNC_TRY(r);
       if (*r) return {};
       // A file named after the program without an O block: run it from the top.
       file = *pf;
@@ -182,7 +182,7 @@ Flow<void> Interpreter::Impl::find_program(std::int64_t number, ProgramFile*& fi
     }
     for (const fs::path& p : library_files(dir, names)) {
       auto r = search_library(p);
-      if (!r) return std::unexpected(r.error());
+      SKIPNC_TRY(r);
       if (*r) return {};
     }
   }
@@ -260,7 +260,7 @@ Flow<void> Interpreter::Impl::local_call(std::int64_t label, int repeats, Source
   }
   const gcode::SourcePos resume = frames.back().file->src->tell();
   auto at = find_label(label, block_pos.offset, where);
-  if (!at) return std::unexpected(at.error());
+  SKIPNC_TRY(at);
   const Frame& caller = frames.back();
   Frame f;
   f.file = caller.file;
@@ -271,7 +271,7 @@ Flow<void> Interpreter::Impl::local_call(std::int64_t label, int repeats, Source
   f.program_start = caller.label_origin();
   // find_label read the file: the caller resumes after the M97 block.
   auto s = caller.file->src->seek(resume);
-  if (!s) return std::unexpected(s.error());
+  SKIPNC_TRY(s);
   return push_frame(std::move(f), "M97 P" + std::to_string(label), where);
 }
 
@@ -321,7 +321,7 @@ Result<ProgramFile*> Interpreter::Impl::program_file(const fs::path& p, bool& ad
   pf->path = p.string();
   pf->display = p.filename().string();
   auto src = gcode::open_file_source(pf->path, pf->display, source_limits());
-  if (!src) return std::unexpected(src.error());
+  SKIPNC_TRY(src);
   pf->src = std::move(*src);
   files.push_back(std::move(pf));
   added = true;
@@ -338,11 +338,11 @@ Flow<Step> Interpreter::Impl::return_from_sub(std::optional<std::int64_t> label,
     // control does; the statement limit ends an endless repetition.
     if (label) {
       auto j = jump_to_label(*label, block_pos.offset, where);
-      if (!j) return std::unexpected(j.error());
+      SKIPNC_TRY(j);
       return Step::kContinue;
     }
     auto s = f.file->src->seek(f.start);
-    if (!s) return std::unexpected(s.error());
+    SKIPNC_TRY(s);
     f.loops.clear();
     return Step::kContinue;
   }
@@ -350,14 +350,14 @@ Flow<Step> Interpreter::Impl::return_from_sub(std::optional<std::int64_t> label,
     // Haas: M99 Pn in a subprogram branches to Nn of that subprogram; it
     // does not return to the caller.
     auto j = jump_to_label(*label, block_pos.offset, where);
-    if (!j) return std::unexpected(j.error());
+    SKIPNC_TRY(j);
     return Step::kContinue;
   }
   if (f.repeats_left > 0) {
     --f.repeats_left;
     f.loops.clear();
     auto s = f.file->src->seek(f.start);
-    if (!s) return std::unexpected(s.error());
+    SKIPNC_TRY(s);
     return Step::kContinue;
   }
   const bool macro = f.macro;
@@ -365,11 +365,11 @@ Flow<Step> Interpreter::Impl::return_from_sub(std::optional<std::int64_t> label,
   if (macro) vars.pop_level();
   Frame& caller = frames.back();
   auto s = caller.file->src->seek(caller.resume);
-  if (!s) return std::unexpected(s.error());
+  SKIPNC_TRY(s);
   if (label) {
     const std::uint64_t from = caller.resume.offset > 0 ? caller.resume.offset - 1 : 0;
     auto j = jump_to_label(*label, from, where);
-    if (!j) return std::unexpected(j.error());
+    SKIPNC_TRY(j);
   }
   return Step::kContinue;
 }

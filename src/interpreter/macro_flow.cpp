@@ -53,7 +53,7 @@ Flow<bool> Interpreter::Impl::condition(gcode::ExprId cond, SourceLoc where) {
                 "the condition must be a comparison (EQ NE GT GE LT LE), e.g. [#1 GT 0]", where);
   }
   auto c = eval(cond);
-  if (!c) return std::unexpected(c.error());
+  SKIPNC_TRY(c);
   return c->num() != 0.0;
 }
 
@@ -65,19 +65,19 @@ Flow<Step> Interpreter::Impl::execute_statement(CommandSink& out) {
   switch (s.kind) {
     case StmtKind::kAssign: {
       auto v = eval(s.rhs);
-      if (!v) return std::unexpected(v.error());
+      SKIPNC_TRY(v);
       auto a = assign(s.lhs, *v);
-      if (!a) return std::unexpected(a.error());
+      SKIPNC_TRY(a);
       return Step::kContinue;
     }
     case StmtKind::kIfThen: {
       auto c = condition(s.cond, where);
-      if (!c) return std::unexpected(c.error());
+      SKIPNC_TRY(c);
       if (*c) {
         auto v = eval(s.rhs);
-        if (!v) return std::unexpected(v.error());
+        SKIPNC_TRY(v);
         auto a = assign(s.lhs, *v);
-        if (!a) return std::unexpected(a.error());
+        SKIPNC_TRY(a);
       }
       return Step::kContinue;
     }
@@ -85,11 +85,11 @@ Flow<Step> Interpreter::Impl::execute_statement(CommandSink& out) {
     case StmtKind::kIfGoto: {
       if (s.kind == StmtKind::kIfGoto) {
         auto c = condition(s.cond, where);
-        if (!c) return std::unexpected(c.error());
+        SKIPNC_TRY(c);
         if (!*c) return Step::kContinue;
       }
       auto t = eval(s.target);
-      if (!t) return std::unexpected(t.error());
+      SKIPNC_TRY(t);
       // Sequence numbers 1-99999 (Fanuc 0i/30i); the value is rounded.
       const double n = std::round(t->num());
       if (t->vacant || n < 1 || n > 99999) {
@@ -99,7 +99,7 @@ Flow<Step> Interpreter::Impl::execute_statement(CommandSink& out) {
                     where);
       }
       auto j = jump_to_label(static_cast<std::int64_t>(n), block_pos.offset, where);
-      if (!j) return std::unexpected(j.error());
+      SKIPNC_TRY(j);
       return Step::kContinue;
     }
     case StmtKind::kWhile:
@@ -111,7 +111,7 @@ Flow<Step> Interpreter::Impl::execute_statement(CommandSink& out) {
       bool run = true;
       if (s.kind == StmtKind::kWhile) {
         auto c = condition(s.cond, where);
-        if (!c) return std::unexpected(c.error());
+        SKIPNC_TRY(c);
         run = *c;
       }
       Frame& f = frames.back();
@@ -124,7 +124,7 @@ Flow<Step> Interpreter::Impl::execute_statement(CommandSink& out) {
           Loop& l = f.loops[i];
           if (l.id != s.loop) continue;
           auto e = find_loop_end(l);
-          if (!e) return std::unexpected(e.error());
+          SKIPNC_TRY(e);
           if (block_pos.offset > l.pos.offset && block_pos.offset < l.end) {
             return fail(AlarmId::kIllegalLoopNumber,
                         "DO " + std::to_string(s.loop) + " inside a loop with the same number",
@@ -145,7 +145,7 @@ Flow<Step> Interpreter::Impl::execute_statement(CommandSink& out) {
       if (auto known = f.file->while_exits.find(block_pos.offset);
           known != f.file->while_exits.end()) {
         auto sk = f.file->src->seek(known->second);
-        if (!sk) return std::unexpected(sk.error());
+        SKIPNC_TRY(sk);
         f.resume = known->second;
         return Step::kContinue;
       }
@@ -155,7 +155,7 @@ Flow<Step> Interpreter::Impl::execute_statement(CommandSink& out) {
       const std::uint64_t program_start = f.label_origin().offset;
       for (;;) {
         auto got = read_block();
-        if (!got) return std::unexpected(got.error());
+        SKIPNC_TRY(got);
         if (!*got || blk.percent || (blk.has_o && block_pos.offset != program_start)) {
           return fail(AlarmId::kMissingEnd, "no END " + std::to_string(id) + " for this DO", start);
         }
@@ -181,7 +181,7 @@ Flow<Step> Interpreter::Impl::execute_statement(CommandSink& out) {
       l.end = block_pos.offset;
       l.end_known = true;
       auto sk = f.file->src->seek(l.pos);
-      if (!sk) return std::unexpected(sk.error());
+      SKIPNC_TRY(sk);
       f.resume = l.pos;
       return Step::kContinue;
     }
@@ -195,7 +195,7 @@ Flow<Step> Interpreter::Impl::execute_statement(CommandSink& out) {
     case StmtKind::kDprnt:
     case StmtKind::kBprnt: {
       auto p = print_line(where);
-      if (!p) return std::unexpected(p.error());
+      SKIPNC_TRY(p);
       return Step::kContinue;
     }
     case StmtKind::kOword:       // RS274NGC only (execute runs it: oword.cpp)
@@ -221,7 +221,7 @@ Flow<void> Interpreter::Impl::print_line(SourceLoc where) {
       continue;
     }
     auto v = eval(item.var);
-    if (!v) return std::unexpected(v.error());
+    SKIPNC_TRY(v);
     const double x = v->num();
     char buf[64];
     std::snprintf(buf, sizeof buf, "%.*f", item.frac_digits, x);
@@ -278,7 +278,7 @@ Flow<void> Interpreter::Impl::find_loop_end(Loop& l) {
   for (;;) {
     const gcode::SourcePos at = src.tell();
     auto more = src.next(rb);
-    if (!more) return std::unexpected(more.error());
+    SKIPNC_TRY(more);
     if (!*more) break;
     if (first) {  // the DO block itself
       first = false;
@@ -327,7 +327,7 @@ Result<void> scan_program_labels(const Frame& f, const gcode::ParseLimits& limit
   for (;;) {
     const gcode::SourcePos at = src.tell();
     auto more = src.next(rb);
-    if (!more) return std::unexpected(more.error());
+    SKIPNC_TRY(more);
     if (!*more) break;
     // Cheap test before parsing: only blocks with an N, or an O or '%'
     // that ends the program, matter.
@@ -381,7 +381,7 @@ Flow<gcode::SourcePos> Interpreter::Impl::find_label(std::int64_t n, std::uint64
       idx.all.emplace_back(num, at);
       return true;
     });
-    if (!s) return std::unexpected(s.error());
+    SKIPNC_TRY(s);
     if (over) {
       idx.all.clear();
       idx.all.shrink_to_fit();
@@ -408,7 +408,7 @@ Flow<gcode::SourcePos> Interpreter::Impl::find_label(std::int64_t n, std::uint64
         if (num == n) at_n.push_back(p);
         return true;
       });
-      if (!s) return std::unexpected(s.error());
+      SKIPNC_TRY(s);
       a = idx.asked.emplace(n, std::move(at_n)).first;
     }
     found = first_after(
@@ -424,7 +424,7 @@ Flow<gcode::SourcePos> Interpreter::Impl::find_label(std::int64_t n, std::uint64
 
 Flow<void> Interpreter::Impl::jump_to_label(std::int64_t n, std::uint64_t from, SourceLoc where) {
   auto found = find_label(n, from, where);
-  if (!found) return std::unexpected(found.error());
+  SKIPNC_TRY(found);
   Frame& f = frames.back();
   gcode::Source& src = *f.file->src;
   const gcode::SourcePos target = *found;

@@ -447,7 +447,7 @@ Flow<void> Interpreter::Impl::pass_block(const BlockPlan& plan, const AxisVec& s
     return {};
   }
   auto mode = comp_mode(plan);
-  if (!mode) return std::unexpected(mode.error());
+  SKIPNC_TRY(mode);
   if (comp.idle()) comp.begin(start);
   // The block is a transaction: the compensator is changed only when the
   // whole block has gone through it.
@@ -514,9 +514,7 @@ Flow<void> Interpreter::Impl::check_nose_radius_comp(SourceLoc where) const {
 // active H.
 Flow<Step> Interpreter::Impl::g37_block(const Words& words, CommandSink& out) {
   const SourceLoc at = loc(cur_col);
-  if (auto c = refuse_under_comp("G37 automatic tool length measurement", at); !c) {
-    return std::unexpected(c.error());
-  }
+  SKIPNC_TRY(refuse_under_comp("G37 automatic tool length measurement", at));
   if (words.has('H')) {
     return fail(AlarmId::kG37HCode, "H in a G37 block", loc(words.at('H').column));
   }
@@ -541,7 +539,7 @@ Flow<Step> Interpreter::Impl::g37_block(const Words& words, CommandSink& out) {
   AxisVec target;
   AxisMask moved;
   auto t = axis_targets(words, false, target, moved);
-  if (!t) return std::unexpected(t.error());
+  SKIPNC_TRY(t);
   const double dir = target[axis] > pos[axis] ? 1.0 : -1.0;
   if (target[axis] == pos[axis]) {
     return fail(AlarmId::kG37Axis, "G37 from the measuring position itself", at);
@@ -677,7 +675,7 @@ Flow<Step> Interpreter::Impl::canned_cycle(const Words& words, CommandSink& out)
   if (feed_mm_per_min() <= 0.0)
     return fail(AlarmId::kNoFeed, "canned cycle without a feed (F)", at);
   auto c = refuse_under_comp("a canned cycle", at);
-  if (!c) return std::unexpected(c.error());
+  SKIPNC_TRY(c);
   // The hole's position: the block's axis words but Z (the hole data).
   Words position = words;
   position.slot('Z').reset();
@@ -694,7 +692,7 @@ Flow<Step> Interpreter::Impl::canned_cycle(const Words& words, CommandSink& out)
     AxisVec target;
     AxisMask moved;
     auto t = axis_targets(position, false, target, moved);
-    if (!t) return std::unexpected(t.error());
+    SKIPNC_TRY(t);
     cycles::Hole h;
     h.kind = modal.cycle;
     h.ret = modal.ret;

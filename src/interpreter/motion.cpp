@@ -77,7 +77,7 @@ Flow<Step> Interpreter::Impl::motion(const Words& words, CommandSink& out, bool 
   AxisVec target;
   AxisMask moved;
   auto t = axis_targets(words, g53, target, moved);
-  if (!t) return std::unexpected(t.error());
+  SKIPNC_TRY(t);
   // LinuxCNC and grbl move in machine coordinates only with G0 or G1: G53
   // with G38.n or an arc is refused (LinuxCNC rs274ngc check_g_codes,
   // "Must use G0 or G1 with G53"; grbl gcode.c, error 30).
@@ -99,7 +99,7 @@ Flow<Step> Interpreter::Impl::motion(const Words& words, CommandSink& out, bool 
   }
   if (skip || modal.motion != Motion::kRapid) {
     auto s = need_spindle_for_feed(loc(cur_col));
-    if (!s) return std::unexpected(s.error());
+    SKIPNC_TRY(s);
   }
   if (skip) return skip_block(words, target, moved, out);
   if (modal.motion != Motion::kRapid) last_cut_feed = modal.feed;
@@ -117,12 +117,12 @@ Flow<Step> Interpreter::Impl::motion(const Words& words, CommandSink& out, bool 
     case Motion::kCwArc:
     case Motion::kCcwArc: {
       auto r = arc(words, target, out);
-      if (!r) return std::unexpected(r.error());
+      SKIPNC_TRY(r);
       break;
     }
     case Motion::kTurningCycle: {
       auto r = turning_cycle(words, target, moved, out);
-      if (!r) return std::unexpected(r.error());
+      SKIPNC_TRY(r);
       break;
     }
     case Motion::kProbe:

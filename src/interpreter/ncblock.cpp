@@ -130,7 +130,7 @@ Flow<void> Interpreter::Impl::collect_words(Words& words) {
       word_round_increment = length ? word_inc : 0.0;
       auto e = eval(w.expr);
       word_round_increment = 0.0;
-      if (!e) return std::unexpected(e.error());
+      SKIPNC_TRY(e);
       if (e->vacant) continue;  // a vacant variable in a word: the word is omitted
       if (!std::isfinite(e->v)) {
         return fail(AlarmId::kOverflow, std::string("value of ") + w.letter + " is not finite",
@@ -305,7 +305,7 @@ Flow<void> Interpreter::Impl::plan_g_codes(const Words& words, BlockPlan& plan) 
     const CodeDef* def = find_g(code, lathe);
     if (def == nullptr) {
       auto mill = mill_code(code, at, plan.mill);  // mill_codes.cpp
-      if (!mill) return std::unexpected(mill.error());
+      SKIPNC_TRY(mill);
       if (*mill) continue;
       if (lathe) {
         if (const char* why = lathe_refusal(code))
@@ -521,12 +521,12 @@ Flow<void> Interpreter::Impl::plan_modal(const Words& words, BlockPlan& plan) {
   if (words.has('T') && !mc.lathe()) next.tool = static_cast<int>(words.at('T').value);
   if (words.has('D')) {
     auto d = offset_number(words, 'D');
-    if (!d) return std::unexpected(d.error());
+    SKIPNC_TRY(d);
     next.d = *d;
   }
   if (words.has('H') && !mc.lathe()) {
     auto h = offset_number(words, 'H');
-    if (!h) return std::unexpected(h.error());
+    SKIPNC_TRY(h);
   }
   if (next.plane != modal.plane && modal.cutter != CutterComp::kOff) {
     return fail(AlarmId::kPlaneChangeInComp, "plane change with G41/G42 active", loc(cur_col));
@@ -581,7 +581,7 @@ Flow<Step> Interpreter::Impl::commit_call(const BlockPlan& plan) {
   if (plan.action == Action::kMacroCall) {
     if (plan.call_repeats == 0) return Step::kContinue;
     auto c = macro_call(plan.call_program, plan.call_repeats, false, loc(cur_col));
-    if (!c) return std::unexpected(c.error());
+    SKIPNC_TRY(c);
     return Step::kContinue;
   }
   modal_macro_program = plan.call_program;
@@ -693,28 +693,24 @@ Flow<Step> Interpreter::Impl::commit_action(const Words& words, const BlockPlan&
   const SourceLoc at = loc(cur_col);
   switch (plan.action) {
     case Action::kNgc:
-      if (auto r = ngc_action(words, plan.action_code, out); !r) return std::unexpected(r.error());
+      SKIPNC_TRY(ngc_action(words, plan.action_code, out));
       return Step::kContinue;
     case Action::kDataSetting:
-      if (auto r = data_setting(words, at); !r) return std::unexpected(r.error());
+      SKIPNC_TRY(data_setting(words, at));
       return Step::kContinue;
     case Action::kLatheCoordSet:
-      if (auto r = lathe_coordinate_setting(words); !r) return std::unexpected(r.error());
+      SKIPNC_TRY(lathe_coordinate_setting(words));
       return Step::kContinue;
     case Action::kLocalShift:
     case Action::kCoordSet:
-      if (auto r = commit_shift(words, plan.action == Action::kLocalShift); !r) {
-        return std::unexpected(r.error());
-      }
+      SKIPNC_TRY(commit_shift(words, plan.action == Action::kLocalShift));
       return Step::kContinue;
     case Action::kDwell:
-      if (auto r = dwell(words, out); !r) return std::unexpected(r.error());
+      SKIPNC_TRY(dwell(words, out));
       return Step::kContinue;
     case Action::kRefReturn:
     case Action::kRefReturn2:
-      if (auto r = reference_return(words, plan.action_code / 10, out); !r) {
-        return std::unexpected(r.error());
-      }
+      SKIPNC_TRY(reference_return(words, plan.action_code / 10, out));
       moved = true;
       return Step::kContinue;
     default:
@@ -734,7 +730,7 @@ Flow<Step> Interpreter::Impl::commit_action(const Words& words, const BlockPlan&
   if (plan.tool_pos_offset != 0) commit_tool_pos_offset(words, plan.tool_pos_offset);
   if (!skip) {
     auto c = check_nose_radius_comp(at);
-    if (!c) return std::unexpected(c.error());
+    SKIPNC_TRY(c);
   }
   auto m = motion(words, out, skip, plan.machine_coord);
   if (!m) return m;
@@ -760,7 +756,7 @@ Flow<Step> Interpreter::Impl::commit_sub_call(const Words& words) {
   }
   if (repeats < 1) return Step::kContinue;
   auto c = call(program, repeats, false, at);
-  if (!c) return std::unexpected(c.error());
+  SKIPNC_TRY(c);
   return Step::kContinue;
 }
 
@@ -786,7 +782,7 @@ Flow<Step> Interpreter::Impl::commit_local_sub_call(const Words& words) {
   }
   if (repeats < 1) return Step::kContinue;
   auto c = local_call(static_cast<std::int64_t>(p), repeats, at);
-  if (!c) return std::unexpected(c.error());
+  SKIPNC_TRY(c);
   return Step::kContinue;
 }
 
@@ -865,23 +861,23 @@ Flow<std::optional<Step>> Interpreter::Impl::commit_mill(const Words& words, con
                                                          CommandSink& out, bool& moved) {
   if (plan.mill.lookahead) {
     auto r = set_lookahead(words);
-    if (!r) return std::unexpected(r.error());
+    SKIPNC_TRY(r);
   }
   if (!plan.mill.no_effect.empty()) {
     auto w = warn("no_effect",
                   plan.mill.no_effect + " is accepted and changes nothing in the simulation",
                   loc(cur_col));
-    if (!w) return std::unexpected(w.error());
+    SKIPNC_TRY(w);
   }
   if (plan.mill.frame_code != 0) {
     auto r = apply_frame_code(words, plan.mill);
-    if (!r) return std::unexpected(r.error());
+    SKIPNC_TRY(r);
     if (*r) return Step::kContinue;
   }
   if (plan.action != Action::kNone) return std::optional<Step>{};
   if (modal.cycle != Cycle::kNone && (has_axis_word(words) || words.has('R'))) {
     auto m = canned_cycle(words, out);
-    if (!m) return std::unexpected(m.error());
+    SKIPNC_TRY(m);
     moved = true;
     return std::optional<Step>{Step::kContinue};
   }
@@ -894,29 +890,28 @@ Flow<Step> Interpreter::Impl::commit_block(const Words& words, const BlockPlan& 
   if (plan.call) return commit_call(plan);
   const ModalState before = modal;
   commit_modal(words, plan, out);
-  if (auto t = commit_tool(words, plan, before, out); !t) return std::unexpected(t.error());
+  SKIPNC_TRY(commit_tool(words, plan, before, out));
   commit_spindle(words, plan.spindle_changed, out);
   if (ngc) {
-    if (auto s = ngc_state_codes(words, before, loc(cur_col)); !s)
-      return std::unexpected(s.error());
+    SKIPNC_TRY(ngc_state_codes(words, before, loc(cur_col)));
   }
   if (plan.mill.polar) polar = *plan.mill.polar;
   skip_step = plan.mill.skip_step;
   commit_cycle_start(before);
   bool moved = false;
   auto mill = commit_mill(words, plan, out, moved);
-  if (!mill) return std::unexpected(mill.error());
+  SKIPNC_TRY(mill);
   if (plan.mill.g37) return g37_block(words, out);  // the block's last step
   auto a = *mill ? Result<Step>{**mill} : commit_action(words, plan, out, moved);
   if (!a || *a == Step::kSync) return a;
   auto m = commit_m_codes(words, out);
-  if (!m) return std::unexpected(m.error());
+  SKIPNC_TRY(m);
   if (*m) return **m;
   // G66: the modal macro runs after each block that moved, but not for the
   // moves of the macro it calls (nor of what that macro calls).
   if (moved && modal.modal_macro && modal_macro_program != 0 && !in_modal_call()) {
     auto c = macro_call(modal_macro_program, 1, true, loc(cur_col));
-    if (!c) return std::unexpected(c.error());
+    SKIPNC_TRY(c);
   }
   return Step::kContinue;
 }
@@ -993,7 +988,7 @@ void Interpreter::Impl::restore_block_state(const BlockUndo& u) {
 Flow<Step> Interpreter::Impl::execute_nc(const Words& words, CommandSink& out) {
   BlockPlan plan;
   auto p = plan_block(words, plan);
-  if (!p) return std::unexpected(p.error());
+  SKIPNC_TRY(p);
   const BlockUndo undo = save_block_state();
   block_buffer.cmds.clear();
   auto r = commit_block(words, plan, block_buffer);

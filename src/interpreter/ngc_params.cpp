@@ -247,7 +247,7 @@ Flow<std::string> Interpreter::Impl::ngc_message_text(std::string_view text, Sou
         continue;
       }
       auto v = read_ngc_named(name, where);
-      if (!v) return std::unexpected(v.error());
+      SKIPNC_TRY(v);
       std::snprintf(buf, sizeof buf, "%f", v->num());
       out += buf;
       continue;
@@ -263,7 +263,7 @@ Flow<std::string> Interpreter::Impl::ngc_message_text(std::string_view text, Sou
       continue;
     }
     auto v = read_ngc_param(n, where);
-    if (!v) return std::unexpected(v.error());
+    SKIPNC_TRY(v);
     std::snprintf(buf, sizeof buf, "%f", v->num());
     out += buf;
     i = k;
@@ -284,13 +284,13 @@ Flow<void> Interpreter::Impl::ngc_comments() {
       add_message(t.substr(i + 4));
     } else if (head.starts_with("debug,") || head.starts_with("print,")) {
       auto m = ngc_message_text(std::string_view(t).substr(i + 6), loc(c.column));
-      if (!m) return std::unexpected(m.error());
+      SKIPNC_TRY(m);
       add_message(*m);
     } else if (head.starts_with("abort,")) {
       // LinuxCNC "(ABORT, ...)": the run ends with the text (parameters
       // replaced as in DEBUG) as its error ("Comments" in the G-code overview).
       auto m = ngc_message_text(std::string_view(t).substr(i + 6), loc(c.column));
-      if (!m) return std::unexpected(m.error());
+      SKIPNC_TRY(m);
       const std::size_t text = std::min(m->find_first_not_of(" \t"), m->size());
       return fail(AlarmId::kUserAlarm, "(abort) " + m->substr(text), loc(c.column));
     } else {
@@ -333,7 +333,7 @@ void Interpreter::Impl::ngc_start() {
 Flow<void> Interpreter::Impl::load_ngc_var_file() {
   std::vector<double> values;
   auto r = load_var_file(mc.persistent_vars, var_file_numbers, values);
-  if (!r) return std::unexpected(r.error());
+  SKIPNC_TRY(r);
   for (std::size_t i = 0; i < var_file_numbers.size(); ++i) {
     const int n = var_file_numbers[i];
     if (n == 5220) {  // the coordinate system LinuxCNC starts in

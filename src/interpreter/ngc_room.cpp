@@ -122,7 +122,7 @@ Flow<void> Interpreter::Impl::ngc_log_comment(std::string_view text, SourceLoc w
     room.probe = -1;
   } else if (head.starts_with("log,") && room.log >= 0) {
     auto m = ngc_message_text(text.substr(4), where);
-    if (!m) return std::unexpected(m.error());
+    SKIPNC_TRY(m);
     NgcLogFile& f = room.files[static_cast<std::size_t>(room.log)];
     f.text += *m + "\n";
     ++f.lines;

@@ -108,16 +108,16 @@ Flow<void> Interpreter::Impl::skip_to_oword(const std::string& label, std::uint3
   if (auto it = f.file->ojumps.find(key); it != f.file->ojumps.end()) {
     const ProgramFile::OJump j = it->second;
     auto sk = src.seek(j.at);
-    if (!sk) return std::unexpected(sk.error());
+    SKIPNC_TRY(sk);
     auto got = read_block();
-    if (!got) return std::unexpected(got.error());
+    SKIPNC_TRY(got);
     f.resume = src.tell();
     return {};
   }
   for (;;) {
     const gcode::SourcePos here = src.tell();
     auto more = src.next(raw);
-    if (!more) return std::unexpected(more.error());
+    SKIPNC_TRY(more);
     if (!*more) {
       std::string want;
       for (int k = 1; k <= static_cast<int>(OKind::kContinue); ++k) {
@@ -133,7 +133,7 @@ Flow<void> Interpreter::Impl::skip_to_oword(const std::string& label, std::uint3
     cur_col = raw.column;
     auto parsed = gcode::parse_block(raw.text, SourceLoc{f.file->display, raw.line, raw.column},
                                      raw.offset, blk, parse_limits);
-    if (!parsed) return std::unexpected(parsed.error());
+    SKIPNC_TRY(parsed);
     if (blk.stmt.kind != gcode::StmtKind::kOword) continue;
     if ((kinds & bit(blk.stmt.okind)) == 0) continue;
     if (blk.names[static_cast<std::size_t>(blk.stmt.label)] != label) continue;
@@ -151,13 +151,13 @@ Flow<bool> Interpreter::Impl::find_sub(const std::string& label, ProgramFile*& f
   auto scan = [&](ProgramFile& pf) -> Result<bool> {
     if (!pf.subs_scanned) {
       auto opened = scanner_for(pf);
-      if (!opened) return std::unexpected(opened.error());
+      SKIPNC_TRY(opened);
       const std::unique_ptr<gcode::Source> scanner = std::move(*opened);
       gcode::RawBlock rb;
       gcode::Block b;
       for (;;) {
         auto more = scanner->next(rb);
-        if (!more) return std::unexpected(more.error());
+        SKIPNC_TRY(more);
         if (!*more) break;
         if (!may_be_oword(rb.text)) continue;
         auto parsed = gcode::parse_block(rb.text, SourceLoc{pf.display, rb.line, rb.column},
@@ -189,7 +189,7 @@ Flow<bool> Interpreter::Impl::find_sub(const std::string& label, ProgramFile*& f
   };
   for (ProgramFile* pf : {frames.back().file, files.front().get()}) {
     auto r = scan(*pf);
-    if (!r) return std::unexpected(r.error());
+    SKIPNC_TRY(r);
     if (*r) return true;
   }
   if (label.size() < 3 || label.front() != '<') return false;
@@ -207,9 +207,9 @@ Flow<bool> Interpreter::Impl::find_sub(const std::string& label, ProgramFile*& f
     }
     bool added = false;
     auto have = program_file(p, added);
-    if (!have) return std::unexpected(have.error());
+    SKIPNC_TRY(have);
     auto r = scan(**have);
-    if (!r) return std::unexpected(r.error());
+    SKIPNC_TRY(r);
     if (*r) return true;
     return fail(AlarmId::kProgramNotFound,
                 p.filename().string() + " has no " + shown(label) + " sub", where);
@@ -242,7 +242,7 @@ Flow<void> Interpreter::Impl::oword_call(const std::string& label, SourceLoc whe
   std::vector<double> args;
   for (const gcode::ExprId e : blk.args) {
     auto v = eval(e);
-    if (!v) return std::unexpected(v.error());
+    SKIPNC_TRY(v);
     args.push_back(v->num());
   }
   if (args.size() > 30) {
@@ -251,7 +251,7 @@ Flow<void> Interpreter::Impl::oword_call(const std::string& label, SourceLoc whe
   ProgramFile* file = nullptr;
   gcode::SourcePos at;
   auto found = find_sub(label, file, at, where);
-  if (!found) return std::unexpected(found.error());
+  SKIPNC_TRY(found);
   if (!*found) return fail(AlarmId::kProgramNotFound, sub_not_found(label), where);
   Frame f;
   f.file = file;
@@ -284,7 +284,7 @@ Flow<Step> Interpreter::Impl::oword_return(const gcode::Stmt& s, SourceLoc where
   std::optional<double> value;
   if (!blk.args.empty()) {
     auto v = eval(blk.args.front());
-    if (!v) return std::unexpected(v.error());
+    SKIPNC_TRY(v);
     value = v->num();
   }
   ngc_state_on_return();
@@ -292,7 +292,7 @@ Flow<Step> Interpreter::Impl::oword_return(const gcode::Stmt& s, SourceLoc where
   vars.pop_level();
   Frame& caller = frames.back();
   auto sk = caller.file->src->seek(caller.resume);
-  if (!sk) return std::unexpected(sk.error());
+  SKIPNC_TRY(sk);
   ngc_value_returned = value.has_value();
   if (value) ngc_value = Value::of(*value);
   return Step::kContinue;
@@ -306,7 +306,7 @@ Flow<Step> Interpreter::Impl::execute_oword(CommandSink& out) {
   if (s.target != gcode::kNoExpr) {
     // o[expr] call: the subroutine's number, rounded.
     auto v = eval(s.target);
-    if (!v) return std::unexpected(v.error());
+    SKIPNC_TRY(v);
     const double n = std::round(v->num());
     if (!(n >= 0 && n < 1e9)) {
       return fail(AlarmId::kProgramNotFound,
@@ -318,7 +318,7 @@ Flow<Step> Interpreter::Impl::execute_oword(CommandSink& out) {
     case OKind::kSub: {
       // A definition met in the flow of the program is passed over.
       auto k = skip_to_oword(label, bit(OKind::kEndsub), where);
-      if (!k) return std::unexpected(k.error());
+      SKIPNC_TRY(k);
       return Step::kContinue;
     }
     case OKind::kEndsub:
@@ -326,7 +326,7 @@ Flow<Step> Interpreter::Impl::execute_oword(CommandSink& out) {
       return oword_return(s, where);
     case OKind::kCall: {
       auto c = oword_call(label, where);
-      if (!c) return std::unexpected(c.error());
+      SKIPNC_TRY(c);
       return Step::kContinue;
     }
     case OKind::kIf:
@@ -344,7 +344,7 @@ Flow<Step> Interpreter::Impl::execute_oword(CommandSink& out) {
 // The condition of the O-word block being run: true when not zero.
 Flow<bool> Interpreter::Impl::oword_condition() {
   auto v = eval(blk.args.front());
-  if (!v) return std::unexpected(v.error());
+  SKIPNC_TRY(v);
   return v->num() != 0.0;
 }
 
@@ -354,15 +354,15 @@ Flow<Step> Interpreter::Impl::oword_branch(gcode::OKind kind, const std::string&
   switch (kind) {
     case OKind::kIf: {
       auto c = oword_condition();
-      if (!c) return std::unexpected(c.error());
+      SKIPNC_TRY(c);
       if (*c) return Step::kContinue;
       for (;;) {
         auto k = skip_to_oword(label, bit(OKind::kElseif) | bit(OKind::kElse) | bit(OKind::kEndif),
                                where);
-        if (!k) return std::unexpected(k.error());
+        SKIPNC_TRY(k);
         if (blk.stmt.okind != OKind::kElseif) return Step::kContinue;
         auto e = oword_condition();
-        if (!e) return std::unexpected(e.error());
+        SKIPNC_TRY(e);
         if (*e) return Step::kContinue;
       }
     }
@@ -370,7 +370,7 @@ Flow<Step> Interpreter::Impl::oword_branch(gcode::OKind kind, const std::string&
     case OKind::kElse: {
       // The end of a branch that ran: on past the endif.
       auto k = skip_to_oword(label, bit(OKind::kEndif), where);
-      if (!k) return std::unexpected(k.error());
+      SKIPNC_TRY(k);
       return Step::kContinue;
     }
     case OKind::kEndif:
@@ -395,7 +395,7 @@ Flow<Step> Interpreter::Impl::oword_loop(gcode::OKind kind, const std::string& l
   };
   auto seek_to = [&](gcode::SourcePos p) -> Flow<Step> {
     auto sk = f.file->src->seek(p);
-    if (!sk) return std::unexpected(sk.error());
+    SKIPNC_TRY(sk);
     f.resume = p;
     return Step::kContinue;
   };
@@ -404,7 +404,7 @@ Flow<Step> Interpreter::Impl::oword_loop(gcode::OKind kind, const std::string& l
     const OKind opened = l.kind;
     const std::string lab = l.label;
     auto sk = f.file->src->seek(l.body);
-    if (!sk) return std::unexpected(sk.error());
+    SKIPNC_TRY(sk);
     // The closing statement, found from the opening block.
     block_pos = l.start;
     auto k = skip_to_oword(lab,
@@ -412,7 +412,7 @@ Flow<Step> Interpreter::Impl::oword_loop(gcode::OKind kind, const std::string& l
                            : opened == OKind::kRepeat ? bit(OKind::kEndrepeat)
                                                       : bit(OKind::kWhile),
                            where);
-    if (!k) return std::unexpected(k.error());
+    SKIPNC_TRY(k);
     return Step::kContinue;
   };
   switch (kind) {
@@ -429,13 +429,13 @@ Flow<Step> Interpreter::Impl::oword_loop(gcode::OKind kind, const std::string& l
           f.oloops.back().kind == OKind::kDo) {
         // The end of a do loop.
         auto c = oword_condition();
-        if (!c) return std::unexpected(c.error());
+        SKIPNC_TRY(c);
         if (*c) return seek_to(f.oloops.back().body);
         f.oloops.pop_back();
         return Step::kContinue;
       }
       auto c = oword_condition();
-      if (!c) return std::unexpected(c.error());
+      SKIPNC_TRY(c);
       const bool again = !f.oloops.empty() && f.oloops.back().label == label &&
                          f.oloops.back().kind == OKind::kWhile &&
                          f.oloops.back().start == block_pos;
@@ -447,7 +447,7 @@ Flow<Step> Interpreter::Impl::oword_loop(gcode::OKind kind, const std::string& l
       }
       if (again) f.oloops.pop_back();
       auto k = skip_to_oword(label, bit(OKind::kEndwhile), where);
-      if (!k) return std::unexpected(k.error());
+      SKIPNC_TRY(k);
       return Step::kContinue;
     }
     case OKind::kEndwhile: {
@@ -459,11 +459,11 @@ Flow<Step> Interpreter::Impl::oword_loop(gcode::OKind kind, const std::string& l
     }
     case OKind::kRepeat: {
       auto v = eval(blk.args.front());
-      if (!v) return std::unexpected(v.error());
+      SKIPNC_TRY(v);
       const double n = std::round(v->num());
       if (n < 1) {
         auto k = skip_to_oword(label, bit(OKind::kEndrepeat), where);
-        if (!k) return std::unexpected(k.error());
+        SKIPNC_TRY(k);
         return Step::kContinue;
       }
       f.oloops.push_back(OLoop{label, OKind::kRepeat, block_pos, f.file->src->tell(), n});
@@ -523,7 +523,7 @@ Flow<void> Interpreter::Impl::ngc_assignments() {
   values.reserve(blk.assigns.size());
   for (const gcode::Assignment& a : blk.assigns) {
     auto v = eval(a.rhs);
-    if (!v) return std::unexpected(v.error());
+    SKIPNC_TRY(v);
     values.push_back(Value::of(v->num()));
   }
   for (std::size_t i = 0; i < blk.assigns.size(); ++i) {

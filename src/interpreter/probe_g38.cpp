@@ -56,7 +56,7 @@ Flow<Step> Interpreter::Impl::probe_block(const Words& words, const AxisVec& tar
   b.moved = moved;
   b.at = at;
   auto in = skip_rules::inputs(b, skip_rules::Form{}, dialect, params);
-  if (!in) return std::unexpected(std::move(in.error()));
+  SKIPNC_TRY(in);
   spec.input_count = 1;  // the probe input: the dialect's first
   spec.inputs[0] = in->addr[0];
   pending_skip.input_names[0] = config::signal_name(in->addr[0]);

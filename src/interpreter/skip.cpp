@@ -71,7 +71,7 @@ Flow<Step> Interpreter::Impl::skip_block(const Words& words, const AxisVec& targ
   b.at = at;
 
   auto form = skip_rules::form(b, sw, modal.cutter != CutterComp::kOff);
-  if (!form) return std::unexpected(std::move(form.error()));
+  SKIPNC_TRY(form);
   pending_skip = PendingSkip{};
   canon::Skip sk;
   sk.target = target;
@@ -80,14 +80,14 @@ Flow<Step> Interpreter::Impl::skip_block(const Words& words, const AxisVec& targ
   if (form->torque) {
     auto t =
         skip_rules::torque(b, *form, std::string_view(axis_letter.data(), axis_count), sw, params);
-    if (!t) return std::unexpected(std::move(t.error()));
+    SKIPNC_TRY(t);
     spec.torque_axis = t->axis;
     spec.torque_ends = t->ends;
     spec.torque_limit_pct = t->limit_pct;
     spec.torque_delay_s = t->delay_s;
   }
   auto in = skip_rules::inputs(b, *form, dialect, params);
-  if (!in) return std::unexpected(std::move(in.error()));
+  SKIPNC_TRY(in);
   spec.kind = in->kind;
   spec.input_count = in->count;
   for (int i = 0; i < in->count; ++i) {
@@ -99,7 +99,7 @@ Flow<Step> Interpreter::Impl::skip_block(const Words& words, const AxisVec& targ
   const skip_rules::FeedState fs{feed_mm_per_min(), feed_to_mm_per_min(last_cut_feed),
                                  mc.inch_machine};
   auto feed = skip_rules::feed(b, fs, sw, params);
-  if (!feed) return std::unexpected(std::move(feed.error()));
+  SKIPNC_TRY(feed);
   sk.feed_mm_per_min = *feed;
   if (words.has('F') && skip_rules::block_f_is_modal(sw)) last_cut_feed = modal.feed;
 
@@ -118,7 +118,7 @@ Flow<Step> Interpreter::Impl::skip_block(const Words& words, const AxisVec& targ
   spec.locked_stores_command = det.locked_stores_command;
 
   auto k = skip_rules::alarm_on_miss(b, sw, params);
-  if (!k) return std::unexpected(std::move(k.error()));
+  SKIPNC_TRY(k);
   spec.alarm_on_miss = *k;
   return queue_skip(sk, at, out);
 }

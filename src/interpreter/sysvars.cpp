@@ -234,7 +234,7 @@ Flow<Value> Interpreter::Impl::read_position(const sysvar::Range& r, int i, Sour
                           " ran to its end point without a signal: it holds that end point, "
                           "not a touch",
                       where);
-        if (!w) return std::unexpected(w.error());
+        SKIPNC_TRY(w);
       }
       v = have_skip ? skip_work[i] : 0.0;
       break;

@@ -134,7 +134,7 @@ Result<void> load_var_file(const std::string& path, std::vector<int>& numbers,
   numbers.clear();
   values.clear();
   auto text = read_kept_file(path, kParameterFileInput);
-  if (!text) return std::unexpected(text.error());
+  SKIPNC_TRY(text);
   std::vector<bool> seen(static_cast<std::size_t>(VariableStore::kNgcParams), false);
   std::istringstream in(*text);
   std::string line;
@@ -180,7 +180,7 @@ Result<void> save_var_file(const std::string& path, const std::vector<int>& numb
 // a damaged file is never half-used.
 Result<void> load_persistent(const std::string& path, std::array<Value, 500>& out) {
   auto text = read_kept_file(path, kVariableFileInput);
-  if (!text) return std::unexpected(text.error());
+  SKIPNC_TRY(text);
   std::array<Value, 500> vals{};
   std::istringstream in(*text);
   std::string line;
@@ -244,7 +244,7 @@ Result<PersistentLock> PersistentLock::acquire(const std::string& path, double w
   const std::string name = path + ".lock";
   // A device or a FIFO is never a persistent file (nor is "<it>.lock" made).
   if (struct stat st{}; ::stat(path.c_str(), &st) == 0) {
-    if (auto c = check_input_file(path, kVariableFileInput); !c) return std::unexpected(c.error());
+    SKIPNC_TRY(check_input_file(path, kVariableFileInput));
   }
   int fd = ::open(name.c_str(), O_RDWR | O_CREAT | O_CLOEXEC | O_NOFOLLOW, 0644);
   // A lock file this user may not write (made by another user in a shared

@@ -538,25 +538,25 @@ Result<std::vector<Triangle>> parse_ascii(std::string_view text, std::string_vie
     if (out.size() >= kMaxTriangles) {
       return stl_error(name, "more than " + std::to_string(kMaxTriangles) + " facets");
     }
-    if (auto r = expect("normal", facet); !r) return std::unexpected(r.error());
+    SKIPNC_TRY(expect("normal", facet));
     for (int k = 0; k < 3; ++k) {
-      if (auto n = number(facet); !n) return std::unexpected(n.error());
+      SKIPNC_TRY(number(facet));
     }
-    if (auto r = expect("outer", facet); !r) return std::unexpected(r.error());
-    if (auto r = expect("loop", facet); !r) return std::unexpected(r.error());
+    SKIPNC_TRY(expect("outer", facet));
+    SKIPNC_TRY(expect("loop", facet));
     Vec3 v[3];
     for (auto& vk : v) {
-      if (auto r = expect("vertex", facet); !r) return std::unexpected(r.error());
+      SKIPNC_TRY(expect("vertex", facet));
       double c[3];
       for (double& ck : c) {
         auto n = number(facet);
-        if (!n) return std::unexpected(n.error());
+        SKIPNC_TRY(n);
         ck = *n;
       }
       vk = Vec3{c[0], c[1], c[2]};
     }
-    if (auto r = expect("endloop", facet); !r) return std::unexpected(r.error());
-    if (auto r = expect("endfacet", facet); !r) return std::unexpected(r.error());
+    SKIPNC_TRY(expect("endloop", facet));
+    SKIPNC_TRY(expect("endfacet", facet));
     out.push_back(Triangle{v[0], v[1], v[2], {}});
   }
   return out;

@@ -31,16 +31,16 @@ Result<void> parse_scene_actions(const toml::table& root, std::string_view origi
     const auto* an = t.get("axis");
     if (an == nullptr) return config_error(t, origin, "needs axis = \"X\" (a machine axis)");
     auto a = get_string(*an, origin, "axis");
-    if (!a) return std::unexpected(a.error());
+    SKIPNC_TRY(a);
     l.axis = a->size() == 1 ? m.axis_index((*a)[0]) : -1;
     if (l.axis < 0)
       return config_error(*an, origin, "axis '" + *a + "' is not an axis of this machine");
     auto at = need_number(t, "at_time", origin, 0.0, 1e9);
-    if (!at) return std::unexpected(at.error());
+    SKIPNC_TRY(at);
     auto dur = need_number(t, "duration", origin, 0.0, 1e9);
-    if (!dur) return std::unexpected(dur.error());
+    SKIPNC_TRY(dur);
     auto tq = need_number(t, "torque", origin, -1e4, 1e4);
-    if (!tq) return std::unexpected(tq.error());
+    SKIPNC_TRY(tq);
     l.at_time_s = *at;
     l.duration_s = *dur;
     l.torque_pct = *tq;
@@ -54,7 +54,7 @@ Result<void> parse_scene_actions(const toml::table& root, std::string_view origi
     if (!k) return k;
     OperatorAction op;
     auto at = need_number(t, "at_time", origin, 0.0, 1e9);
-    if (!at) return std::unexpected(at.error());
+    SKIPNC_TRY(at);
     op.at_time_s = *at;
     for (auto [key, out] :
          {std::pair<std::string_view, std::optional<bool>*>{"feed_hold", &op.feed_hold},
@@ -62,13 +62,13 @@ Result<void> parse_scene_actions(const toml::table& root, std::string_view origi
           {"dry_run", &op.dry_run}}) {
       if (const auto* n = t.get(key)) {
         auto b = get_bool(*n, origin, key);
-        if (!b) return std::unexpected(b.error());
+        SKIPNC_TRY(b);
         *out = *b;
       }
     }
     if (const auto* n = t.get("override")) {
       auto v = get_number(*n, origin, "override", 0.0, 200.0);
-      if (!v) return std::unexpected(v.error());
+      SKIPNC_TRY(v);
       op.override_pct = *v;
     }
     if (!op.feed_hold && !op.interlock && !op.override_pct && !op.dry_run) {

@@ -76,7 +76,7 @@ struct Reader {
     std::array<double, N> out{};
     for (std::size_t i = 0; i < N; ++i) {
       auto v = get_number(*arr->get(i), origin, key, -kFar, kFar);
-      if (!v) return std::unexpected(v.error());
+      SKIPNC_TRY(v);
       out[i] = *v;
     }
     return out;
@@ -87,9 +87,9 @@ struct Reader {
   Result<std::pair<geo::Vec3, geo::Vec3>> corners(const toml::table& t, std::string_view what,
                                                   const toml::node& at) const {
     auto lo = vec<3>(t, "min");
-    if (!lo) return std::unexpected(lo.error());
+    SKIPNC_TRY(lo);
     auto hi = vec<3>(t, "max");
-    if (!hi) return std::unexpected(hi.error());
+    SKIPNC_TRY(hi);
     for (std::size_t i = 0; i < 3; ++i) {
       if (!((*hi)[i] > (*lo)[i])) {
         return config_error(at, origin, std::string(what) + ": max must exceed min on every axis");
@@ -146,7 +146,7 @@ class Frames {
       const auto* n = t.get("name");
       if (n == nullptr) return config_error(t, rd.origin, "[[frame]] needs a name");
       auto name = get_string(*n, rd.origin, "name");
-      if (!name) return std::unexpected(name.error());
+      SKIPNC_TRY(name);
       if (name->empty() || frames_.contains(*name)) {
         return config_error(*n, rd.origin,
                             "frame '" + *name + "' is " +
@@ -154,22 +154,22 @@ class Frames {
                                 " (machine and G54..G59 are built in)");
       }
       auto base = resolve(t, rd.origin, "base");
-      if (!base) return std::unexpected(base.error());
+      SKIPNC_TRY(base);
       geo::Vec3 o;
       if (t.get("origin") != nullptr) {
         auto v = rd.vec<3>(t, "origin");
-        if (!v) return std::unexpected(v.error());
+        SKIPNC_TRY(v);
         o = {(*v)[0], (*v)[1], (*v)[2]};
       }
       auto turn = rotation(t, rd.origin);
-      if (!turn) return std::unexpected(turn.error());
+      SKIPNC_TRY(turn);
       const auto& deg = *turn;
       const geo::Placement local = geo::Placement::turned_by(
           o, deg[0] * kPi / 180.0, deg[1] * kPi / 180.0, deg[2] * kPi / 180.0);
       Frame f{base->place.then(local), base->rotary};
       if (f.rotary.turns()) f.rotary.inner = base->rotary.inner.then(local);
       auto table = rotary(t, rd.origin, *base);
-      if (!table) return std::unexpected(table.error());
+      SKIPNC_TRY(table);
       if (table->turns()) {
         f.rotary = *table;
         f.rotary.table = f.place;
@@ -194,7 +194,7 @@ class Frames {
       return r;
     }
     auto name = get_string(*n, origin, "rotary");
-    if (!name) return std::unexpected(name.error());
+    SKIPNC_TRY(name);
     if (*name != "A" && *name != "B" && *name != "C") {
       return config_error(*n, origin, "rotary must be \"A\", \"B\" or \"C\" (about X, Y, Z)");
     }
@@ -228,7 +228,7 @@ class Frames {
     const auto* arr = n->as_array();
     if (arr == nullptr) {
       auto z = get_number(*n, origin, "rotation", -360.0, 360.0);
-      if (!z) return std::unexpected(z.error());
+      SKIPNC_TRY(z);
       deg[2] = *z;
       return deg;
     }
@@ -238,7 +238,7 @@ class Frames {
     }
     for (std::size_t i = 0; i < 3; ++i) {
       auto v = get_number(*arr->get(i), origin, "rotation", -360.0, 360.0);
-      if (!v) return std::unexpected(v.error());
+      SKIPNC_TRY(v);
       deg[i] = *v;
     }
     return deg;
@@ -250,7 +250,7 @@ class Frames {
     const auto* n = t.get(key);
     if (n == nullptr) return Frame{};
     auto name = get_string(*n, origin, key);
-    if (!name) return std::unexpected(name.error());
+    SKIPNC_TRY(name);
     auto it = frames_.find(*name);
     if (it == frames_.end()) {
       std::string known;
@@ -338,7 +338,7 @@ Result<void> parse_parts(const toml::table& root, const Reader& rd, PartSet& par
           check_keys(t, {"part", "frame", "min", "max"}, origin, "[[" + std::string(key) + "]]");
       if (!k) return k;
       auto box = rd.corners(t, "[[" + std::string(key) + "]]", t);
-      if (!box) return std::unexpected(box.error());
+      SKIPNC_TRY(box);
       Result<void> err;
       geo::Part& part = parts.get(t, origin, err);
       if (!err) return err;
@@ -357,15 +357,15 @@ Result<void> parse_parts(const toml::table& root, const Reader& rd, PartSet& par
                           "[[" + std::string(key) + "]]");
       if (!k) return k;
       auto c = rd.vec<2>(t, "center");
-      if (!c) return std::unexpected(c.error());
+      SKIPNC_TRY(c);
       auto radius = rd.number(t, "radius", 1e-6, kFar);
-      if (!radius) return std::unexpected(radius.error());
+      SKIPNC_TRY(radius);
       const std::optional<double> lo_def = hole ? std::optional<double>(-kFar) : std::nullopt;
       const std::optional<double> hi_def = hole ? std::optional<double>(kFar) : std::nullopt;
       auto bottom = rd.number(t, "bottom", -kFar, kFar, lo_def);
-      if (!bottom) return std::unexpected(bottom.error());
+      SKIPNC_TRY(bottom);
       auto top = rd.number(t, "top", -kFar, kFar, hi_def);
-      if (!top) return std::unexpected(top.error());
+      SKIPNC_TRY(top);
       if (!(*top > *bottom))
         return config_error(t, origin, "[[" + std::string(key) + "]]: top must exceed bottom");
       Result<void> err;
@@ -384,9 +384,9 @@ Result<void> parse_parts(const toml::table& root, const Reader& rd, PartSet& par
     auto k = check_keys(t, {"part", "frame", "center", "radius"}, origin, "[[sphere]]");
     if (!k) return k;
     auto c = rd.vec<3>(t, "center");
-    if (!c) return std::unexpected(c.error());
+    SKIPNC_TRY(c);
     auto radius = rd.number(t, "radius", 1e-6, kFar);
-    if (!radius) return std::unexpected(radius.error());
+    SKIPNC_TRY(radius);
     Result<void> err;
     geo::Part& part = parts.get(t, origin, err);
     if (!err) return err;
@@ -400,9 +400,9 @@ Result<void> parse_parts(const toml::table& root, const Reader& rd, PartSet& par
     const auto* fn = t.get("file");
     if (fn == nullptr) return config_error(t, origin, "[[mesh]] needs file = \"part.stl\"");
     auto file = get_string(*fn, origin, "file");
-    if (!file) return std::unexpected(file.error());
+    SKIPNC_TRY(file);
     auto scale = rd.number(t, "scale", 1e-6, 1e6, 1.0);
-    if (!scale) return std::unexpected(scale.error());
+    SKIPNC_TRY(scale);
     // Relative to the scene file's folder.
     std::filesystem::path path(*file);
     if (path.is_relative()) path = std::filesystem::path(origin).parent_path() / path;
@@ -424,9 +424,9 @@ Result<void> parse_parts(const toml::table& root, const Reader& rd, PartSet& par
     auto k = check_keys(t, {"part", "frame", "point", "normal"}, origin, "[[plane]]");
     if (!k) return k;
     auto pt = rd.vec<3>(t, "point");
-    if (!pt) return std::unexpected(pt.error());
+    SKIPNC_TRY(pt);
     auto n = rd.vec<3>(t, "normal");
-    if (!n) return std::unexpected(n.error());
+    SKIPNC_TRY(n);
     const geo::Vec3 nv{(*n)[0], (*n)[1], (*n)[2]};
     if (geo::length(nv) < 1e-9)
       return config_error(t, origin, "[[plane]]: normal must not be zero");
@@ -448,7 +448,7 @@ Result<double> probe_length(const toml::table& t, const Reader& rd, int tool, Pr
   std::optional<int> h;
   if (t.get("offset") != nullptr) {
     auto o = rd.integer(t, "offset", 1, rd.m.tool_offset_count, std::nullopt);
-    if (!o) return std::unexpected(o.error());
+    SKIPNC_TRY(o);
     h = static_cast<int>(*o);
   } else if (tool >= 1 && tool <= rd.m.tool_offset_count) {
     h = tool;
@@ -490,47 +490,47 @@ Result<ProbeSpec> parse_probe(const toml::table& t, const Reader& rd) {
                        "body_radius", "pre_travel", "max_overtravel", "lobing", "repeatability",
                        "seed", "on_m", "off_m", "start_time"},
                       origin, "[probe]");
-  if (!k) return std::unexpected(k.error());
+  SKIPNC_TRY(k);
   ProbeSpec p;
   auto sig = rd.signal(t, p.signal_name);
-  if (!sig) return std::unexpected(sig.error());
+  SKIPNC_TRY(sig);
   p.signal = *sig;
   auto tool = rd.integer(t, "tool", 0, 99999999, 0);
-  if (!tool) return std::unexpected(tool.error());
+  SKIPNC_TRY(tool);
   p.tool = static_cast<int>(*tool);
   const std::pair<std::string_view, double*> lengths[] = {{"stylus_length", &p.stylus_length},
                                                           {"body_radius", &p.body_radius},
                                                           {"repeatability", &p.repeatability}};
   for (const auto& [key, field] : lengths) {
     auto v = rd.number(t, key, 0.0, kFar, *field);
-    if (!v) return std::unexpected(v.error());
+    SKIPNC_TRY(v);
     *field = *v;
   }
   auto length = probe_length(t, rd, p.tool, p);
-  if (!length) return std::unexpected(length.error());
+  SKIPNC_TRY(length);
   p.length = *length;
   auto ball = rd.number(t, "ball_radius", 1e-3, 1000.0);
-  if (!ball) return std::unexpected(ball.error());
+  SKIPNC_TRY(ball);
   p.ball_radius = *ball;
   auto pre = rd.number(t, "pre_travel", 0.0, kFar, 0.0);
-  if (!pre) return std::unexpected(pre.error());
+  SKIPNC_TRY(pre);
   if (*pre >= p.ball_radius) {
     return config_error(*t.get("pre_travel"), origin,
                         "pre_travel must be smaller than ball_radius");
   }
   p.pre_travel = *pre;
   auto over = rd.number(t, "max_overtravel", 0.0, kFar);
-  if (!over) return std::unexpected(over.error());
+  SKIPNC_TRY(over);
   p.max_overtravel = *over;
   auto seed = rd.integer(t, "seed", 0, std::numeric_limits<std::int64_t>::max(), 1);
-  if (!seed) return std::unexpected(seed.error());
+  SKIPNC_TRY(seed);
   p.seed = static_cast<std::uint64_t>(*seed);
   auto on_m = rd.integer(t, "on_m", 0, 9999, 0);
-  if (!on_m) return std::unexpected(on_m.error());
+  SKIPNC_TRY(on_m);
   auto off_m = rd.integer(t, "off_m", 0, 9999, 0);
-  if (!off_m) return std::unexpected(off_m.error());
+  SKIPNC_TRY(off_m);
   auto start = rd.number(t, "start_time", 0.0, 60.0, 0.0);
-  if (!start) return std::unexpected(start.error());
+  SKIPNC_TRY(start);
   if (*on_m == 0 && (*off_m != 0 || *start != 0.0)) {
     return config_error(*t.get(*off_m != 0 ? "off_m" : "start_time"), origin,
                         "off_m and start_time need on_m: the M code that switches the probe on");
@@ -548,15 +548,15 @@ Result<ProbeSpec> parse_probe(const toml::table& t, const Reader& rd) {
                           "lobing must be a table: { amplitude = 0.002, lobes = 3, phase = 0 }");
     }
     auto lk = check_keys(*lt, {"amplitude", "lobes", "phase"}, origin, "lobing");
-    if (!lk) return std::unexpected(lk.error());
+    SKIPNC_TRY(lk);
     auto amp = rd.number(*lt, "amplitude", 0.0, p.ball_radius);
-    if (!amp) return std::unexpected(amp.error());
+    SKIPNC_TRY(amp);
     p.lobing = *amp;
     auto lobes = rd.integer(*lt, "lobes", 1, 24, 3);
-    if (!lobes) return std::unexpected(lobes.error());
+    SKIPNC_TRY(lobes);
     p.lobes = static_cast<int>(*lobes);
     auto phase = rd.number(*lt, "phase", -360.0, 360.0, 0.0);
-    if (!phase) return std::unexpected(phase.error());
+    SKIPNC_TRY(phase);
     p.lobing_phase_deg = *phase;
     if (p.pre_travel + p.lobing >= p.ball_radius) {
       return config_error(*n, origin,
@@ -571,33 +571,33 @@ Result<ToolSetterSpec> parse_setter(const toml::table& t, const Reader& rd, cons
       t,
       {"signal", "frame", "center", "top", "radius", "thickness", "pre_travel", "max_overtravel"},
       rd.origin, "[tool_setter]");
-  if (!k) return std::unexpected(k.error());
+  SKIPNC_TRY(k);
   ToolSetterSpec s;
   auto sig = rd.signal(t, s.signal_name);
-  if (!sig) return std::unexpected(sig.error());
+  SKIPNC_TRY(sig);
   s.signal = *sig;
   auto c = rd.vec<2>(t, "center");
-  if (!c) return std::unexpected(c.error());
+  SKIPNC_TRY(c);
   s.x = (*c)[0];
   s.y = (*c)[1];
   auto top = rd.number(t, "top", -kFar, kFar);
-  if (!top) return std::unexpected(top.error());
+  SKIPNC_TRY(top);
   s.top = *top;
   auto radius = rd.number(t, "radius", 1e-3, 1000.0);
-  if (!radius) return std::unexpected(radius.error());
+  SKIPNC_TRY(radius);
   s.radius = *radius;
   auto thick = rd.number(t, "thickness", 1e-3, 1000.0, 5.0);
-  if (!thick) return std::unexpected(thick.error());
+  SKIPNC_TRY(thick);
   s.thickness = *thick;
   auto pre = rd.number(t, "pre_travel", 0.0, 10.0, 0.0);
-  if (!pre) return std::unexpected(pre.error());
+  SKIPNC_TRY(pre);
   s.pre_travel = *pre;
   auto over = rd.number(t, "max_overtravel", 0.0, 1000.0, 1.0);
-  if (!over) return std::unexpected(over.error());
+  SKIPNC_TRY(over);
   s.max_overtravel = *over;
   // A disc: only its centre and top move with the frame.
   auto place = frames.resolve(t, rd.origin);
-  if (!place) return std::unexpected(place.error());
+  SKIPNC_TRY(place);
   if (place->rotary.turns()) {
     return config_error(*t.get("frame"), rd.origin,
                         "the tool setter cannot stand on a rotary table (its frame turns)");
@@ -615,16 +615,16 @@ constexpr double kMaxStockCells = 4e6;
 Result<StockSpec> parse_stock(const toml::table& t, const Reader& rd, const Frames& frames) {
   const auto origin = rd.origin;
   auto k = check_keys(t, {"frame", "min", "max", "resolution"}, origin, "[stock]");
-  if (!k) return std::unexpected(k.error());
+  SKIPNC_TRY(k);
   const toml::node* at_max = t.get("max");
   auto box = rd.corners(t, "[stock]", at_max != nullptr ? *at_max : t);
-  if (!box) return std::unexpected(box.error());
+  SKIPNC_TRY(box);
   auto res = rd.number(t, "resolution", 1e-3, 100.0, 0.5);
-  if (!res) return std::unexpected(res.error());
+  SKIPNC_TRY(res);
   // The cells are columns along the machine's Z on a grid along its X and
   // Y: a frame may move the stock, not turn it.
   auto frame = frames.resolve(t, origin);
-  if (!frame) return std::unexpected(frame.error());
+  SKIPNC_TRY(frame);
   if (frame->rotary.turns()) {
     return config_error(*t.get("frame"), origin,
                         "[stock]: the stock cannot stand on a rotary table (its frame turns)");
@@ -658,20 +658,20 @@ Result<StockSpec> parse_stock(const toml::table& t, const Reader& rd, const Fram
 Result<GaugeSpec> parse_gauge(const toml::table& t, const Reader& rd) {
   const auto origin = rd.origin;
   auto k = check_keys(t, {"axis", "center", "raw_diameter", "steps"}, origin, "[[gauge]]");
-  if (!k) return std::unexpected(k.error());
+  SKIPNC_TRY(k);
   GaugeSpec g;
   const auto* an = t.get("axis");
   if (an == nullptr) return config_error(t, origin, "needs axis = \"X\" (the infeed axis)");
   auto as = get_string(*an, origin, "axis");
-  if (!as) return std::unexpected(as.error());
+  SKIPNC_TRY(as);
   g.axis = as->size() == 1 ? rd.m.axis_index((*as)[0]) : -1;
   if (g.axis < 0)
     return config_error(*an, origin, "axis '" + *as + "' is not an axis of this machine");
   auto c = rd.number(t, "center", -kFar, kFar);
-  if (!c) return std::unexpected(c.error());
+  SKIPNC_TRY(c);
   g.center = *c;
   auto raw = rd.number(t, "raw_diameter", 1e-6, kFar);
-  if (!raw) return std::unexpected(raw.error());
+  SKIPNC_TRY(raw);
   g.raw_diameter = *raw;
   const auto* sn = t.get("steps");
   const auto* arr = sn != nullptr ? sn->as_array() : nullptr;
@@ -684,13 +684,13 @@ Result<GaugeSpec> parse_gauge(const toml::table& t, const Reader& rd) {
     if (st == nullptr)
       return config_error(e, origin, "each step is { signal = ..., diameter = ... }");
     auto sk = check_keys(*st, {"signal", "diameter"}, origin, "a gauge step");
-    if (!sk) return std::unexpected(sk.error());
+    SKIPNC_TRY(sk);
     GaugeStep step;
     auto sig = rd.signal(*st, step.signal_name);
-    if (!sig) return std::unexpected(sig.error());
+    SKIPNC_TRY(sig);
     step.signal = *sig;
     auto dia = rd.number(*st, "diameter", 0.0, g.raw_diameter);
-    if (!dia) return std::unexpected(dia.error());
+    SKIPNC_TRY(dia);
     step.diameter = *dia;
     g.steps.push_back(step);
   }
@@ -706,7 +706,7 @@ Result<canon::SignalAddr> scene_signal(const toml::table& t, std::string_view or
   if (n == nullptr)
     return config_error(t, origin, "needs signal = \"X0.4\" (or SKIP, SKIP1..SKIP12)");
   auto s = get_string(*n, origin, "signal");
-  if (!s) return std::unexpected(s.error());
+  SKIPNC_TRY(s);
   auto a = config::parse_signal_name(*s, d, p);
   if (!a) {
     return config_error(
@@ -724,12 +724,12 @@ Result<Probing> parse_probing(const toml::table& root, std::string_view origin,
   Probing out;
   Frames frames(m);
   auto r = frames.load(root, rd);
-  if (!r) return std::unexpected(r.error());
+  SKIPNC_TRY(r);
   PartSet parts(frames);
   r = parse_parts(root, rd, parts);
-  if (!r) return std::unexpected(r.error());
+  SKIPNC_TRY(r);
   r = parts.check_solids(origin);
-  if (!r) return std::unexpected(r.error());
+  SKIPNC_TRY(r);
   out.mesh_files = parts.mesh_files;
   out.parts = parts.take();
   for (const char* key : {"probe", "tool_setter", "stock"}) {
@@ -740,17 +740,17 @@ Result<Probing> parse_probing(const toml::table& root, std::string_view origin,
   }
   if (const auto* t = single(root, "probe")) {
     auto probe = parse_probe(*t, rd);
-    if (!probe) return std::unexpected(probe.error());
+    SKIPNC_TRY(probe);
     out.probe = *probe;
   }
   if (const auto* t = single(root, "tool_setter")) {
     auto setter = parse_setter(*t, rd, frames);
-    if (!setter) return std::unexpected(setter.error());
+    SKIPNC_TRY(setter);
     out.tool_setter = *setter;
   }
   if (const auto* t = single(root, "stock")) {
     auto stock = parse_stock(*t, rd, frames);
-    if (!stock) return std::unexpected(stock.error());
+    SKIPNC_TRY(stock);
     out.stock = *stock;
   }
   r = config::each_table(root, "tool", origin, [&](const toml::table& t) -> Result<void> {
@@ -758,32 +758,32 @@ Result<Probing> parse_probing(const toml::table& root, std::string_view origin,
     if (!k) return k;
     ToolSpec tool;
     auto num = rd.integer(t, "number", 1, 99999999, std::nullopt);
-    if (!num) return std::unexpected(num.error());
+    SKIPNC_TRY(num);
     tool.number = static_cast<int>(*num);
     if (out.tool(tool.number) != nullptr || (out.probe && out.probe->tool == tool.number)) {
       return config_error(t, origin, "tool " + std::to_string(tool.number) + " is defined twice");
     }
     auto len = rd.number(t, "length", 0.0, kFar);
-    if (!len) return std::unexpected(len.error());
+    SKIPNC_TRY(len);
     tool.length = *len;
     auto radius = rd.number(t, "radius", 0.0, 1000.0);
-    if (!radius) return std::unexpected(radius.error());
+    SKIPNC_TRY(radius);
     tool.radius = *radius;
     out.tools.push_back(tool);
     return {};
   });
-  if (!r) return std::unexpected(r.error());
+  SKIPNC_TRY(r);
   r = config::each_table(root, "gauge", origin, [&](const toml::table& t) -> Result<void> {
     auto g = parse_gauge(t, rd);
-    if (!g) return std::unexpected(g.error());
+    SKIPNC_TRY(g);
     out.gauges.push_back(*g);
     return {};
   });
-  if (!r) return std::unexpected(r.error());
+  SKIPNC_TRY(r);
   out.spindle_tool = out.probe ? out.probe->tool : 0;
   if (const auto* n = root.get("spindle_tool")) {
     auto v = rd.integer(root, "spindle_tool", 0, 99999999, std::nullopt);
-    if (!v) return std::unexpected(v.error());
+    SKIPNC_TRY(v);
     const int tool = static_cast<int>(*v);
     if (tool != 0 && out.tool(tool) == nullptr && !(out.probe && out.probe->tool == tool)) {
       return config_error(

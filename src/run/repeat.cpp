@@ -104,7 +104,7 @@ class OffsetWatch {
   Result<void> start(const interp::Setup& setup) {
     offsets_ = offset_variables(*setup.machine);
     auto fresh = interp::Interpreter::create(setup, AxisVec{});
-    if (!fresh) return std::unexpected(fresh.error());
+    SKIPNC_TRY(fresh);
     for (const auto& o : offsets_) initial_.push_back(read(**fresh, o.first));
     written_.assign(offsets_.size(), false);
     values_.resize(offsets_.size());
@@ -159,7 +159,7 @@ Result<RepeatOutcome> repeat_runs(const Session& s, const RepeatRequest& rq,
   interp::Setup setup;
   // Every repetition starts from the same #500-#999 (the file's) and none
   // writes them back: the scatter is the probe's alone.
-  if (auto r = take_persistent(m, setup); !r) return std::unexpected(r.error());
+  SKIPNC_TRY(take_persistent(m, setup));
   setup.variables.insert(setup.variables.end(), rq.variables.begin(), rq.variables.end());
   setup.machine = &m;
   setup.dialect = &s.dialect;
@@ -168,7 +168,7 @@ Result<RepeatOutcome> repeat_runs(const Session& s, const RepeatRequest& rq,
   setup.strict_allow = allowed_warnings(s, rq.program.allow);
   setup.dprnt_path = rq.dprnt_path;
   OffsetWatch offsets;  // offsets as the machine starts, to tell which ones the program wrote
-  if (auto r = offsets.start(setup); !r) return std::unexpected(r.error());
+  SKIPNC_TRY(offsets.start(setup));
 
   const auto& probe = s.scene.probing.probe;
   RepeatOutcome out;
@@ -195,7 +195,7 @@ Result<RepeatOutcome> repeat_runs(const Session& s, const RepeatRequest& rq,
     }
     sim::Simulator sim(m, s.dialect, *s.params, scene);
     auto res = sim.run(setup, opts);
-    if (!res) return std::unexpected(res.error());
+    SKIPNC_TRY(res);
     if (res->status == sim::RunStatus::kInterrupted) {
       out.interrupted = true;
       out.runs = run > 0 ? run - 1 : 0;  // this run is cut short: not counted

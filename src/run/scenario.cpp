@@ -116,7 +116,7 @@ Result<std::vector<ExpectResult>> check_outcome(const config::Dialect& d,
   for (const auto& e : expects) {
     if (e.kind != Expectation::Kind::kVariable) continue;
     auto ref = parse_var_ref("#" + e.var);
-    if (!ref) return std::unexpected(ref.error());
+    SKIPNC_TRY(ref);
     refs.push_back(*ref);
   }
   got.variables = read_variables(in, refs);
@@ -192,7 +192,7 @@ Result<RunOutcome> run_variation(const Session& s, const RunRequest& rq, const V
   config::MachineConfig m = s.machine;
   config::Parameters params = *s.params;
   interp::Setup setup;
-  if (auto r = prepare(s, rq, v, m, params, setup); !r) return std::unexpected(r.error());
+  SKIPNC_TRY(prepare(s, rq, v, m, params, setup));
   const machine::Scene scene = varied_scene(s.scene, m, v);
   sim::Simulator sim(m, s.dialect, params, scene);
   sim::RunOptions opts;
@@ -201,7 +201,7 @@ Result<RunOutcome> run_variation(const Session& s, const RunRequest& rq, const V
   std::unique_ptr<PlotCapture> plot;
   if (!rq.plot_files.empty()) plot = std::make_unique<PlotCapture>(m, opts);
   auto res = sim.run(setup, opts);
-  if (!res) return std::unexpected(res.error());
+  SKIPNC_TRY(res);
   report::ReportInput in = report_input(s, setup.program_name, std::move(*res));
   in.variables = read_variables(*sim.interpreter(), rq.vars);
   RunOutcome out;
@@ -230,7 +230,7 @@ Result<RunOutcome> run_variation(const Session& s, const RunRequest& rq, const V
   }
   if (!rq.expect.empty()) {
     auto checks = check_outcome(s.dialect, rq.expect, in.result, *sim.interpreter());
-    if (!checks) return std::unexpected(checks.error());
+    SKIPNC_TRY(checks);
     for (const auto& c : *checks) {
       if (!c.pass) out.failed_expectations.push_back(c.message);
     }

@@ -24,11 +24,11 @@ Result<void> open_session(const SessionOptions& o, const SessionTexts& texts, Se
   auto m = !s.texts.machine.empty() ? config::parse_machine(s.texts.machine, s.machine_file)
            : is_file                ? config::load_machine_file(s.machine_file)
                                     : config::builtin_machine(s.machine_file);
-  if (!m) return std::unexpected(m.error());
+  SKIPNC_TRY(m);
   s.machine = std::move(*m);
   const std::string dname = o.dialect.empty() ? s.machine.dialect : o.dialect;
   auto d = config::builtin_dialect(dname);
-  if (!d) return std::unexpected(d.error());
+  SKIPNC_TRY(d);
   s.dialect = std::move(*d);
   s.machine.dialect = dname;
   s.params = std::make_unique<config::Parameters>(&s.dialect);
@@ -38,7 +38,7 @@ Result<void> open_session(const SessionOptions& o, const SessionTexts& texts, Se
   }
   for (const auto& text : o.params) {
     auto setting = config::Parameters::parse_setting(text);
-    if (!setting) return std::unexpected(setting.error());
+    SKIPNC_TRY(setting);
     auto r = s.params->apply(*setting);
     if (!r) {
       Error e = r.error();
@@ -51,11 +51,11 @@ Result<void> open_session(const SessionOptions& o, const SessionTexts& texts, Se
   if (!chk) return chk;
   if (!s.texts.scene.empty()) {
     auto sc = machine::parse_scene(s.texts.scene, s.scene_file, s.machine, s.dialect, *s.params);
-    if (!sc) return std::unexpected(sc.error());
+    SKIPNC_TRY(sc);
     s.scene = std::move(*sc);
   } else if (!o.scene.empty()) {
     auto sc = machine::load_scene_file(s.scene_file, s.machine, s.dialect, *s.params);
-    if (!sc) return std::unexpected(sc.error());
+    SKIPNC_TRY(sc);
     s.scene = std::move(*sc);
   }
   return {};

@@ -236,11 +236,11 @@ Result<void> check_param_values(const VaryRule& r, const config::Parameters& bas
 
 Result<Check> parse_check(const std::string& text, std::vector<VarRef>& vars) {
   auto e = parse_expectation(text);
-  if (!e) return std::unexpected(e.error());
+  SKIPNC_TRY(e);
   Check c{std::move(*e), 0};
   if (c.e.kind != Expectation::Kind::kVariable) return c;
   auto ref = parse_var_ref("#" + c.e.var);
-  if (!ref) return std::unexpected(ref.error());
+  SKIPNC_TRY(ref);
   const auto it =
       std::find_if(vars.begin(), vars.end(), [&](const VarRef& v) { return v.key == ref->key; });
   c.var = static_cast<std::size_t>(it - vars.begin());
@@ -259,7 +259,7 @@ Result<toml::table> read_spec(const std::string& path) {
   auto spec_text = read_input_file(path, kSweepSpecInput);
   if (!spec_text) return fail(AlarmId::kConfig, spec_text.error().detail);
   auto parsed = config::parse_toml(*spec_text, path);
-  if (!parsed) return std::unexpected(parsed.error());
+  SKIPNC_TRY(parsed);
   static constexpr std::string_view kKeys[] = {"program", "machine", "scene",     "dialect",
                                                "include", "params",  "scenarios", "seed",
                                                "workers", "vars",    "expect",    "vary"};
@@ -305,20 +305,20 @@ struct SpecStrings {
 Result<SpecStrings> read_strings(const toml::table& root, const std::string& path) {
   SpecStrings out;
   auto program = spec_string(root, "program", path);
-  if (!program) return std::unexpected(program.error());
+  SKIPNC_TRY(program);
   if (program->empty())
     return std::unexpected(spec_error(path, root.source(), "program: required"));
   out.program = *program;
   for (auto [key, to] : {std::pair{"machine", &out.machine}, std::pair{"scene", &out.scene},
                          std::pair{"dialect", &out.dialect}}) {
     auto r = spec_string(root, key, path);
-    if (!r) return std::unexpected(r.error());
+    SKIPNC_TRY(r);
     *to = *r;
   }
   for (auto [key, to] : {std::pair{"include", &out.include}, std::pair{"params", &out.params},
                          std::pair{"vars", &out.vars}, std::pair{"expect", &out.expect}}) {
     auto r = string_array(root, key, path);
-    if (!r) return std::unexpected(r.error());
+    SKIPNC_TRY(r);
     *to = *r;
   }
   return out;
@@ -357,12 +357,12 @@ Result<void> read_request(const toml::table& root, const std::string& path, cons
   for (const auto& inc : sp.include) rq.include_dirs.push_back(relative_to(dir, inc));
   for (const auto& v : sp.vars) {
     auto ref = parse_var_ref(v);
-    if (!ref) return std::unexpected(ref.error());
+    SKIPNC_TRY(ref);
     rq.vars.push_back(*ref);
   }
   for (const auto& e : sp.expect) {
     auto c = parse_check(e, rq.vars);
-    if (!c) return std::unexpected(c.error());
+    SKIPNC_TRY(c);
     // alarm=NAME names an alarm of the session's dialect (as run --expect).
     if (auto n = check_alarm_name(c->e, plan.session.dialect); !n) {
       return std::unexpected(spec_error(path, root.get("expect")->source(), n.error().detail));
@@ -386,7 +386,7 @@ Result<VaryRule> read_vary(const toml::table& t, const std::string& path, const 
     return std::unexpected(spec_error(path, t.source(), "[[vary]]: what = \"...\" required"));
   auto rule = parse_target(*what, plan.session.machine);
   if (!rule) return std::unexpected(spec_error(path, t.get("what")->source(), rule.error().detail));
-  if (auto d = parse_draw(t, path, *rule); !d) return std::unexpected(d.error());
+  SKIPNC_TRY(parse_draw(t, path, *rule));
   if (auto c = check_param_values(*rule, *plan.session.params); !c) {
     return std::unexpected(spec_error(path, t.source(), c.error().detail));
   }
@@ -399,9 +399,9 @@ Result<void> load_sweep(const std::string& spec_path, const SweepOverrides& o, S
   plan.spec_path = spec_path;
   const std::string& path = plan.spec_path;
   auto root = read_spec(path);
-  if (!root) return std::unexpected(root.error());
+  SKIPNC_TRY(root);
   auto sp = read_strings(*root, path);
-  if (!sp) return std::unexpected(sp.error());
+  SKIPNC_TRY(sp);
   if (auto c = read_counts(*root, path, o, plan); !c) return c;
   const fs::path dir = fs::path(path).parent_path();
   std::string mname = sp->machine.empty() ? "mill3" : sp->machine;
@@ -419,7 +419,7 @@ Result<void> load_sweep(const std::string& spec_path, const SweepOverrides& o, S
   }
   for (const auto& e : *arr) {
     auto rule = read_vary(*e.as_table(), path, plan);
-    if (!rule) return std::unexpected(rule.error());
+    SKIPNC_TRY(rule);
     plan.vary.push_back(std::move(*rule));
   }
   return {};

@@ -334,7 +334,7 @@ Result<RunResult> Simulator::run(const interp::Setup& setup, const RunOptions& o
   RunResult res;
   const AxisVec home{};
   auto created = interp::Interpreter::create(setup, home);
-  if (!created) return std::unexpected(created.error());
+  SKIPNC_TRY(created);
   interp_ = std::move(*created);
   interp::Interpreter& in = *interp_;
 
