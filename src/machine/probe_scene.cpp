@@ -74,7 +74,7 @@ void ProbeScene::reset(const AxisVec& actual) noexcept {
   cutting_ = settling_ = cuts_now_ = false;
   edge_count_ = 0;
   touch_on_ = false;
-  column_anchor_clear_ = -1.0;
+  column_margin_ = -1.0;
   pending_tool_.reset();
   pending_power_.reset();
   powered_ = !(spec_.probe && spec_.probe->on_m != 0);
@@ -101,7 +101,7 @@ void ProbeScene::reset(const AxisVec& actual) noexcept {
 void ProbeScene::change_tool(const AxisVec& at) noexcept {
   spindle_tool_ = *pending_tool_;
   pending_tool_.reset();
-  column_anchor_clear_ = -1.0;
+  column_margin_ = -1.0;
   if (probe_) {
     bool now = false;
     if (probe_in_spindle()) {
@@ -272,20 +272,21 @@ void ProbeScene::check_collision(const AxisVec& before, const AxisVec& after) no
 // bound of the distance to the parts' bounding boxes; the stock's likewise,
 // and cutting only removes stock). Parts on a turning table have none.
 bool ProbeScene::column_clear(const geo::Column& c) noexcept {
-  constexpr double kSpare = 1e-6;  // mm
   const double h = 0.5 * (c.top - c.bottom);
-  const double need = std::sqrt(h * h + c.radius * c.radius) + kCollisionTol + kSpare;
   const geo::Vec3 mid{c.x, c.y, c.bottom + h};
-  const auto holds = [&] {
-    const double m = column_anchor_clear_ - need;
+  if (column_margin_ > 0.0) {
     const geo::Vec3 d = mid - column_anchor_;
-    return m > 0.0 && geo::dot(d, d) < m * m;
-  };
-  if (column_anchor_clear_ >= 0.0 && holds()) return true;
+    if (geo::dot(d, d) < column_margin_sq_) return true;
+  }
+  // A new anchor here; the column's size is the same until the tool changes.
+  constexpr double kSpare = 1e-6;  // mm
+  const double need = std::sqrt(h * h + c.radius * c.radius) + kCollisionTol + kSpare;
+  double clear = material_.clearance(mid);
+  if (!stock_.empty()) clear = std::min(clear, stock_.clearance(mid));
   column_anchor_ = mid;
-  column_anchor_clear_ = material_.clearance(mid);
-  if (!stock_.empty()) column_anchor_clear_ = std::min(column_anchor_clear_, stock_.clearance(mid));
-  return holds();
+  column_margin_ = clear - need;
+  column_margin_sq_ = column_margin_ * column_margin_;
+  return column_margin_ > 0.0;
 }
 
 }  // namespace skipnc::machine

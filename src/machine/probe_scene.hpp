@@ -184,10 +184,12 @@ class ProbeScene {
   // Something to sense or to hit: a probe, a setter, gauges or parts.
   bool senses_ = false;
   double touch_frac_ = 1.0;
-  // column_clear's anchor and its clearance (< 0: none; reset when what is in
-  // the spindle changes).
+  // column_clear's anchor, and how far the column may go from it (its
+  // clearance less the column's bounding radius; <= 0: none, and reset when
+  // what is in the spindle changes), with its square.
   geo::Vec3 column_anchor_;
-  double column_anchor_clear_ = -1.0;
+  double column_margin_ = -1.0;
+  double column_margin_sq_ = 0.0;
   AxisVec touch_at_;
   PlantFault fault_;
 };
