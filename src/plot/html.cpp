@@ -9,6 +9,7 @@
 
 #include "plot/assets.hpp"
 #include "plot/plot.hpp"
+#include "plot/svg_util.hpp"
 
 namespace skipnc::plot {
 namespace {
@@ -203,6 +204,12 @@ void write_meta(Json& j, const PlotModel& m) {
   j.str("tipNote", m.tip_note);
   j.str("skipLegend", m.skip_legend);
   j.value_raw("xyz", fmt::format("[{},{},{}]", m.xyz[0], m.xyz[1], m.xyz[2]));
+  // Where a crash, collision or protection alarm came: a marker in each view
+  // and the legend, as the SVG has.
+  if (m.alarm_at) {
+    j.vec3("alarmAt", *m.alarm_at);
+    j.str("alarmLegend", alarm_marker_legend(m.alarm_key));
+  }
   j.close('}');
   j.key("inks");
   j.open('{');

@@ -232,5 +232,29 @@ TEST(PlotTruth, LabelsInTheSideViewsDoNotStack) {
   }
 }
 
+// The HTML page of the same crash: the page's data carries the alarm's point
+// (the SVG's, in the plot's coordinates) and its legend, and its script draws
+// the marker in every view and in the legend.
+TEST(PlotTruth, CollisionsHaveAMarkerInTheHtmlPage) {
+  TempDir dir;
+  const std::string g = std::string(SKIPNC_SOURCE_DIR) + "/tests/golden/probing/crash";
+  const auto html = (dir.path / "crash.html").string();
+  const auto rep = (dir.path / "crash.json").string();
+  const auto r = run_cli({"run", g + ".nc", "-s", g + ".scene.toml", "-m", g + ".machine.toml",
+                          "--plot", html, "--report", rep, "-q"});
+  ASSERT_EQ(r.exit_code, 1);
+  const std::string page = read_file(html);
+  EXPECT_NE(page.find("\"alarmLegend\":\"probe crash: where the alarm came\""), std::string::npos);
+  const auto at = page.find("\"alarmAt\":[");
+  ASSERT_NE(at, std::string::npos);
+  // The point is the alarm's machine position (the plot is in machine
+  // coordinates here: G54 is zero), X first.
+  const json report = json::parse(read_file(rep));
+  const double x = std::stod(page.substr(at + 11, 40));
+  EXPECT_NEAR(x, report["alarm"]["machine_position"]["X"].get<double>(), 1e-6);
+  EXPECT_NE(page.find("K.drawAlarm(ctx, q.x, q.y)"), std::string::npos) << "each view draws it";
+  EXPECT_NE(page.find("K.drawAlarm(actx, 17, 8)"), std::string::npos) << "the legend draws it";
+}
+
 }  // namespace
 }  // namespace skipnc

@@ -228,6 +228,21 @@
     ctx.strokeStyle = st.stroke;
     ctx.strokeRect(x - 4, y - 4, 8, 8);
   }
+  // A crash, collision or protection alarm: a red cross in a circle.
+  function drawAlarm(ctx, x, y) {
+    ctx.setLineDash([]);
+    ctx.beginPath();
+    ctx.arc(x, y, 7, 0, 2 * Math.PI);
+    ctx.fillStyle = '#ffffff';
+    ctx.fill();
+    ctx.lineWidth = 2;
+    ctx.strokeStyle = '#c00000';
+    ctx.stroke();
+    ctx.beginPath();
+    ctx.moveTo(x - 4, y - 4); ctx.lineTo(x + 4, y + 4);
+    ctx.moveTo(x + 4, y - 4); ctx.lineTo(x - 4, y + 4);
+    ctx.stroke();
+  }
   function drawStart(ctx, x, y) {
     var st = ink('start');
     ctx.setLineDash([]);
@@ -269,4 +284,5 @@
   K.drawLatch = drawLatch;
   K.drawRest = drawRest;
   K.drawStart = drawStart;
+  K.drawAlarm = drawAlarm;
 })();

@@ -85,6 +85,11 @@
       var text = name === 'skip' && D.meta.skipLegend ? D.meta.skipLegend : st.legend;
       box.appendChild(K.el('div', {cls: 'item'}, [c, K.el('span', {text: text})]));
     });
+    if (D.meta.alarmAt) {
+      var ac = K.el('canvas'), actx = K.setupCanvas(ac, 34, 16);
+      K.drawAlarm(actx, 17, 8);
+      box.appendChild(K.el('div', {cls: 'item'}, [ac, K.el('span', {text: D.meta.alarmLegend})]));
+    }
     return box;
   }
   function skipCards() {

@@ -223,6 +223,7 @@
     D.skips.forEach(function (s) {
       [s.latch, s.rest].forEach(function (q) { var a = P(vs, q); placer.block({x: a.x - 6, y: a.y - 6, w: 12, h: 12}); });
     });
+    if (D.meta.alarmAt) { var am = P(vs, D.meta.alarmAt); placer.block({x: am.x - 8, y: am.y - 8, w: 16, h: 16}); }
     drawShapes(ctx, vs, notes, placer, shapeLabels);
     var dim = S.block >= 0 ? 0.28 : 1;
     ['rapid', 'feed', 'skip'].forEach(function (kind) {
@@ -260,6 +261,7 @@
     if (D.t.length) { var s0 = P(vs, K.samplePt(0)); K.drawStart(ctx, s0.x, s0.y); }
     D.skips.forEach(function (s) { var b = P(vs, s.rest); K.drawRest(ctx, b.x, b.y); });
     D.skips.forEach(function (s) { var a = P(vs, s.latch); K.drawLatch(ctx, a.x, a.y, s.triggered); });
+    if (D.meta.alarmAt) { var q = P(vs, D.meta.alarmAt); K.drawAlarm(ctx, q.x, q.y); }
     if (S.hoverT !== null && D.t.length) {
       var h = P(vs, pathAt(S.hoverT));
       ctx.strokeStyle = '#000'; ctx.lineWidth = 1; ctx.setLineDash([]);
