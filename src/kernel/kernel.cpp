@@ -366,10 +366,7 @@ void Kernel::monitor_skip(const TickInput& in) noexcept {
 // run replaces a cutting move's feed at once (the ratio is per segment). A
 // skip block with a fixed feed runs at 100 % whatever the override says.
 double Kernel::advance_time_scale() noexcept {
-  if (full_rate_) {
-    ramps_settled_ = true;
-    return 1.0;
-  }
+  if (full_rate_) return 1.0;  // the ramps are settled (quiet_ticks)
   const planner::Segment* seg = queue_.front();
   const bool cutting = seg != nullptr && (seg->kind == planner::Move::Kind::kLine ||
                                           seg->kind == planner::Move::Kind::kArc);
@@ -402,7 +399,7 @@ double Kernel::advance_time_scale() noexcept {
 }
 
 std::int64_t Kernel::quiet_ticks() const noexcept {
-  if (fault_ || followed_up_ || !ramps_settled_ || skip_latch_pending_) return 0;
+  if (fault_ || followed_up_ || !(full_rate_ || ramps_settled_) || skip_latch_pending_) return 0;
   if ((skip_.active && !skip_.done) || interpolator_.needs_in_position()) return 0;
   return interpolator_.quiet_ticks();
 }
@@ -424,7 +421,8 @@ void Kernel::tick(const TickInput& in, TickOutput& out) noexcept {
     const SignalEdge& edge = in.edges[static_cast<std::size_t>(e)];
     signals_.set(edge.addr, edge.level);
   }
-  const double scale = advance_time_scale();
+  // At full rate (no hold, override 100 %, no dry run) without a call.
+  const double scale = full_rate_ ? 1.0 : advance_time_scale();
   if (scale != time_scale_) {
     time_scale_ = scale;
     interpolator_.set_time_scale(time_scale_);
