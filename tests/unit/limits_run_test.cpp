@@ -216,7 +216,15 @@ TEST(LimitsRun, GotoInAProgramWithManyLabelsStaysInBoundedMemory) {
   }
   std::fprintf(stderr, "peak RSS: %ld kB for 4000 labels, %ld kB for 1000000\n", rs.exit.max_rss_kb,
                rb.exit.max_rss_kb);
-  EXPECT_LT(rb.exit.max_rss_kb, rs.exit.max_rss_kb + 8 * 1024);
+#if defined(__SANITIZE_ADDRESS__)
+  // ASan's allocator and shadow pages come on top even with the quarantine
+  // bounded: 38.9 MB against 49.0 MB measured (the Release binary: 7.2 MB
+  // against 8.1 MB, the bound that matters).
+  constexpr long kMoreKb = 16 * 1024;
+#else
+  constexpr long kMoreKb = 8 * 1024;
+#endif
+  EXPECT_LT(rb.exit.max_rss_kb, rs.exit.max_rss_kb + kMoreKb);
 }
 
 }  // namespace
