@@ -405,10 +405,11 @@ Result<RunResult> Simulator::run(const interp::Setup& setup, const RunOptions& o
   // --strict: a warning of the set-up (the probe's length against its H,
   // grbl on a lagging servo) is an alarm before the first block unless
   // --allow or the scene's [strict] allow names it.
+  // They are reported after the program's own (res.warnings, at the end).
+  std::vector<interp::Warning> setup_warnings;
+  if (auto w = probe_length_warning(plant.probing().spec())) setup_warnings.push_back(*w);
+  if (auto w = grbl_servo_warning(m_, d_)) setup_warnings.push_back(*w);
   if (setup.strict) {
-    std::vector<interp::Warning> setup_warnings;
-    if (auto w = probe_length_warning(plant.probing().spec())) setup_warnings.push_back(*w);
-    if (auto w = grbl_servo_warning(m_, d_)) setup_warnings.push_back(*w);
     if (const interp::Warning* w = first_refused(setup_warnings, setup.strict_allow)) {
       program_alarm =
           Error{AlarmId::kStrictWarning, w->code + ": " + w->text, SourceLoc{file_of(0), 0, 1}, -1};
@@ -656,8 +657,7 @@ Result<RunResult> Simulator::run(const interp::Setup& setup, const RunOptions& o
   for (const auto& msg : safety.messages()) res.messages.push_back(msg);
   res.warnings = in.warnings();
   for (const auto& w : safety.warnings()) res.warnings.push_back(w);
-  if (auto w = probe_length_warning(plant.probing().spec())) res.warnings.push_back(*w);
-  if (auto w = grbl_servo_warning(m_, d_)) res.warnings.push_back(*w);
+  for (auto& w : setup_warnings) res.warnings.push_back(std::move(w));
   // Every run that ended, by itself, by an alarm or by a signal (SIGTERM,
   // SIGINT: the run stops between periods) writes #500-#999 and the DPRNT
   // file (was: an interrupted run wrote neither).
