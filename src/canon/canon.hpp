@@ -130,8 +130,15 @@ struct AxisRate {
   double accel_mm_s2 = 0.0;
 };
 
+// A limit on how many motion commands the planner may know beyond the one
+// in motion, from the next motion command on (Haas G103 Pn: n blocks of
+// look-ahead); 0: no limit (the planner's whole queue).
+struct LookAhead {
+  int blocks = 0;
+};
+
 using Command = std::variant<Rapid, Feed, Arc, Dwell, Skip, Spindle, ToolSelect, MCode, Stop,
-                             Message, AxisRate>;
+                             Message, AxisRate, LookAhead>;
 
 struct Stamped {
   Command cmd;

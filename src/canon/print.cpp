@@ -186,6 +186,8 @@ void format_to(fmt::memory_buffer& out, const Stamped& s, const AxisNames& axes)
         } else if constexpr (std::is_same_v<T, AxisRate>) {
           fmt::format_to(it, "AXIS_RATE {} RATE={} ACCEL={}", axes.names[c.axis], c.rate_mm_per_min,
                          c.accel_mm_s2);
+        } else if constexpr (std::is_same_v<T, LookAhead>) {
+          fmt::format_to(it, "LOOKAHEAD {}", c.blocks);
         }
       },
       s.cmd);

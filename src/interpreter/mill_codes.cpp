@@ -171,7 +171,9 @@ Flow<bool> Interpreter::Impl::mill_code(int code, SourceLoc at, MillRequest& req
 
 // G103 Pn (Haas "G103 Limit Block Buffering"): look-ahead limited to n
 // blocks, 0-15; G103 alone or P0: no limit. Kept (#4xxx have no place for
-// it); what it changes for a probing macro, skipnc does at every block.
+// it) and sent to the planner (canon::LookAhead: the motion may know n
+// moves beyond the one running). What it changes for a probing macro (the
+// expressions evaluated in step with the motion), skipnc does at every block.
 Flow<void> Interpreter::Impl::set_lookahead(const Words& words) {
   if (!words.has('P')) {
     lookahead_limit = 0;
@@ -760,7 +762,7 @@ namespace skipnc::interp {
 
 bool g_code_without_effect(int code) noexcept {
   for (const auto& c : kMillCodes) {
-    if (c.code == code) return c.kind == Kind::kNoEffect || c.kind == Kind::kLookahead;
+    if (c.code == code) return c.kind == Kind::kNoEffect;
   }
   return false;
 }

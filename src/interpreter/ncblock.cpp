@@ -862,6 +862,7 @@ Flow<std::optional<Step>> Interpreter::Impl::commit_mill(const Words& words, con
   if (plan.mill.lookahead) {
     auto r = set_lookahead(words);
     SKIPNC_TRY(r);
+    emit(out, canon::LookAhead{lookahead_limit});
   }
   if (!plan.mill.no_effect.empty()) {
     auto w = warn("no_effect",

@@ -186,6 +186,9 @@ class Kernel {
   }
   // Room for one more command: the next push() takes it.
   bool can_push() const noexcept { return !queue_.full(); }
+  // Room for a command that may see at most `window` commands ahead of the
+  // one in motion (canon::LookAhead; 0: no limit).
+  bool can_push(int window) const noexcept { return queue_.has_room(window); }
   // Queues a motion or dwell command (other commands are not the kernel's).
   // Returns false when the queue is full, and then changes nothing (the
   // queue, the skip block's state and next_tag() are as they were): the

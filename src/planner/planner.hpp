@@ -126,6 +126,15 @@ class SegmentQueue {
   // New limits for the moves pushed from now on (the queued ones keep theirs).
   void set_limits(const Limits& limits) noexcept { limits_ = limits; }
   bool full() const noexcept { return count_ == ring_.size(); }
+  // Room for one more segment when the planner may know at most `window`
+  // segments beyond the one in motion (0: no limit but the ring's size).
+  // The front is popped when its end is reached and the next one starts in
+  // the same tick, before the producer pushes again: so that a segment
+  // starts with `window` segments known beyond it, the queue holds up to
+  // window + 2 (the one ending, the one starting, the window).
+  bool has_room(int window) const noexcept {
+    return !full() && (window <= 0 || count_ < static_cast<std::size_t>(window) + 2);
+  }
   bool empty() const noexcept { return count_ == 0; }
   std::size_t size() const noexcept { return count_; }
 

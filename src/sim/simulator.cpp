@@ -136,7 +136,7 @@ class Router final : public canon::CommandSink {
           if constexpr (std::is_same_v<T, canon::Rapid> || std::is_same_v<T, canon::Feed> ||
                         std::is_same_v<T, canon::Arc> || std::is_same_v<T, canon::Dwell> ||
                         std::is_same_v<T, canon::Skip>) {
-            Pending p{c, {}, {}};
+            Pending p{c, {}, {}, 0};
             if (frames_ != nullptr) p.frame = in_->work_frame();
             if constexpr (!std::is_same_v<T, canon::Dwell>) target_ = cmd.target;
             if (cuts_ != nullptr) {
@@ -146,7 +146,8 @@ class Router final : public canon::CommandSink {
               const bool cuts = kCutting && spindle_dir_ != 0;
               p.cut = CutNote{cuts, cuts ? target_ : AxisVec{}};
             }
-            if (backlog_.empty() && k_.can_push()) {
+            p.window = window_;
+            if (backlog_.empty() && k_.can_push(window_)) {
               push(p);
             } else {
               backlog_.push_back(std::move(p));
@@ -157,13 +158,15 @@ class Router final : public canon::CommandSink {
             messages.push_back(cmd.text);
           } else if constexpr (std::is_same_v<T, canon::AxisRate>) {
             k_.set_axis_rate(cmd);  // sent at rest (a grbl '$' line waits for the motion)
+          } else if constexpr (std::is_same_v<T, canon::LookAhead>) {
+            window_ = cmd.blocks;  // for the motion emitted from now on
           }
         },
         c.cmd);
   }
   // Moves the waiting motion to the kernel while it has room.
   void drain() {
-    while (!backlog_.empty() && k_.can_push() && !refused_) {
+    while (!backlog_.empty() && k_.can_push(backlog_.front().window) && !refused_) {
       push(backlog_.front());
       backlog_.pop_front();
     }
@@ -179,6 +182,7 @@ class Router final : public canon::CommandSink {
     canon::Stamped cmd;
     interp::WorkFrame frame;  // with a frame log
     CutNote cut;              // with a cut log
+    int window = 0;           // the look-ahead limit it was emitted under (G103)
   };
   void push(const Pending& p) {
     if (frames_ != nullptr) frames_->note(k_.next_tag(), p.frame);
@@ -192,6 +196,7 @@ class Router final : public canon::CommandSink {
   FrameLog* frames_;
   TagLog<CutNote>* cuts_;
   int spindle_dir_ = 0;
+  int window_ = 0;  // canon::LookAhead in force
   AxisVec target_;  // where the motion emitted so far ends
   std::deque<Pending> backlog_;
   std::optional<canon::Stamped> refused_;

@@ -107,6 +107,47 @@ TEST(CompatHaas, G103P1LeavesTheProbedValuesAsWithout) {
   EXPECT_EQ(var(a, 101), var(b, 101));
 }
 
+// G103 Pn limits the motion's look-ahead to n blocks: 50 collinear moves of
+// 0.2 mm at F6000 (100 mm/s) on the mill3 axes (2000 mm/s^2). Under G103 P1
+// a move starts knowing one more, so the axis must be able to stop within
+// 2 x 0.2 mm: v <= sqrt(2 x 2000 x 0.4) = 40 mm/s, and the 10 mm take at
+// least 0.25 s. Without a limit the machine goes faster than 40 mm/s, so it
+// ends sooner (0.15 s of motion at 100 mm/s plus its ramps and settling);
+// P2 (0.6 mm known: 49 mm/s) lies between. Under P15 (3.2 mm known: 113
+// mm/s would be allowed) the time is that of no limit; P0 lifts the limit.
+double short_moves_time(TempDir& dir, const std::string& head) {
+  std::string prog = head + "G90 G1 X0. F6000.\n";
+  for (int i = 1; i <= 50; ++i) prog += "X" + std::to_string(i * 0.2).substr(0, 5) + "\n";
+  const auto r = run(dir, prog + "M30\n");
+  EXPECT_EQ(r.exit.code, 0) << r.err;
+  EXPECT_NEAR(r.report["final"]["position"]["X"].get<double>(), 10.0, 1e-9);
+  return r.report["final"]["time"].get<double>();
+}
+
+TEST(CompatHaas, G103LimitsTheMotionLookAheadToPBlocks) {
+  TempDir dir;
+  const double free = short_moves_time(dir, "");
+  const double p1 = short_moves_time(dir, "G103 P1\n");
+  const double p2 = short_moves_time(dir, "G103 P2\n");
+  const double p15 = short_moves_time(dir, "G103 P15\n");
+  const double p0 = short_moves_time(dir, "G103 P1\nG103 P0\n");
+  EXPECT_GE(p1, 0.25);
+  EXPECT_LT(free, 0.25);
+  EXPECT_GT(p1, p2);
+  EXPECT_GT(p2, free);
+  EXPECT_NEAR(p15, free, 0.002);
+  EXPECT_EQ(p0, free);
+}
+
+TEST(CompatHaas, G103IsSentToTheMotionAsALookAheadCommand) {
+  TempDir dir;
+  const auto p = dir.write("p.nc", "G103 P2\nG1 X1. F100.\nG103\nM30\n");
+  const auto out = run_cli({"canon", "-m", mill(dir).string(), p.string()});
+  ASSERT_EQ(out.exit_code, 0);
+  EXPECT_NE(out.out.find("LOOKAHEAD 2\n"), std::string::npos) << out.out;
+  EXPECT_NE(out.out.find("LOOKAHEAD 0\n"), std::string::npos) << out.out;
+}
+
 TEST(CompatHaas, G31WithoutFeedInItsBlockIsRefused) {
   TempDir dir;
   const auto r = run(dir, "G1 F300.\nG31 Z-10.\nM30\n");
