@@ -73,6 +73,7 @@ constexpr Named kGNames[] = {
     {530, "machine coordinate system", nullptr},
     {540, "work coordinate system 1", nullptr},
     {541, "additional work coordinate systems", nullptr},
+    {544, "workpiece setting error compensation", nullptr},
     {550, "work coordinate system 2", nullptr},
     {560, "work coordinate system 3", nullptr},
     {570, "work coordinate system 4", nullptr},

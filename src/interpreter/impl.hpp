@@ -301,6 +301,8 @@ struct Interpreter::Impl {
   AxisVec pos;  // commanded machine position, mm
   // EXT, G54..G59, then G54.1 P1..P300 (mm); modal.work indexes it.
   std::vector<AxisVec> work_offsets;
+  // G54.4 workpiece setting error data, #26000-#26079 (conversion_3d.cpp).
+  std::array<Value, 80> setting_error_data{};
   AxisVec local_shift;         // G52
   AxisVec g92_shift;           // G92
   AxisVec tool_pos_offset;     // G45-G48 accumulated (dialects that have them)
@@ -584,8 +586,13 @@ struct Interpreter::Impl {
   static constexpr int kG37EpsilonParam = 6254;
   // G37.1: a dialect has it (not simulated) when it defines this (Mitsubishi).
   static constexpr int kG37_1SpeedParam = 8004;
+  static constexpr int kSettingErrorParam = 11200;  // G54.4 (fanuc.toml)
   Flow<bool> mill_code(int code, SourceLoc at, MillRequest& req) const;
   Flow<bool> apply_frame_code(const Words& words, const MillRequest& req);
+  // G68 I J K (conversion_3d.cpp): the frame with one more 3-D conversion.
+  Flow<xform::Transform> conversion_3d(const Words& words, const MillRequest& req,
+                                       const xform::Point& here) const;
+  Flow<xform::Transform> setting_error(const Words& words, const MillRequest& req) const;  // G54.4
   bool frame_active() const noexcept { return polar || frame.active(); }
   Flow<void> frame_targets(const Words& words, AxisVec& target, AxisMask& moved);
   // Cutter radius compensation (cutter_comp.hpp): the block's commands go

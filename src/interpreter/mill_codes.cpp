@@ -57,6 +57,8 @@ constexpr MillCode kMillCodes[] = {
     {511, Kind::kFrame, Cycle::kNone, "programmable mirror image"},
     {150, Kind::kFrame, Cycle::kNone, "polar coordinate command cancel"},
     {160, Kind::kFrame, Cycle::kNone, "polar coordinate command"},
+    // G54.4: where the dialect has its parameter (fanuc.toml 11200).
+    {544, Kind::kFrame, Cycle::kNone, "workpiece setting error compensation"},
     {51, Kind::kNoEffect, Cycle::kNone, "AI contour control / high-speed machining mode"},
     {80, Kind::kNoEffect, Cycle::kNone, "advanced preview control"},
     {131, Kind::kNoEffect, Cycle::kNone, "polar coordinate interpolation cancel"},
@@ -135,6 +137,7 @@ Flow<bool> Interpreter::Impl::mill_code(int code, SourceLoc at, MillRequest& req
   // Mitsubishi's G37.1 (M700V/M70V manual 15.1): only where the dialect
   // defines its TLM parameter 8004 (mitsubishi.toml); elsewhere no code.
   if (code == 371 && dialect.param(kG37_1SpeedParam) == nullptr) return false;
+  if (code == 544 && dialect.param(kSettingErrorParam) == nullptr) return false;
   if (code == 370 && dialect.param(kG37EpsilonParam) != nullptr) {
     req.g37 = true;  // the dialect has G37's parameters (fanuc.toml)
     return true;
@@ -206,10 +209,27 @@ Flow<bool> Interpreter::Impl::apply_frame_code(const Words& words, const MillReq
   xform::Transform next = frame;
   bool consumed = false;
   switch (req.frame_code) {
+    case 544: {
+      auto s = setting_error(words, req);  // conversion_3d.cpp
+      SKIPNC_TRY(s);
+      frame = *s;
+      return true;
+    }
     case 690:
       next.rotating = false;
+      next.conversions = 0;  // G69 ends both 3-D conversions too
       break;
     case 680: {
+      if (words.has('I') || words.has('J') || words.has('K') || frame.conversions > 0) {
+        auto k = conversion_3d(words, req, here);  // conversion_3d.cpp
+        SKIPNC_TRY(k);
+        frame = *k;
+        return true;
+      }
+      if (frame.setting_error) {
+        return fail(AlarmId::kNotSimulated,
+                    "G68 without I J K under G54.4 is not simulated by skipnc", req.frame_at);
+      }
       if (modal.plane != PlaneSel::kXY) {
         return fail(AlarmId::kNotSimulated,
                     "G68 in the G18/G19 plane is not simulated by skipnc (G17 only)", req.frame_at);
@@ -231,20 +251,6 @@ Flow<bool> Interpreter::Impl::apply_frame_code(const Words& words, const MillReq
           angle += frame.rotating ? rotation_angle : 0.0;
         }
       }
-      // The 3-D form `G68 X Y Z I J K R` turns about the vector I J K
-      // through X Y Z. Along Z it is the rotation above (Z0 I0 J0 K1 is what
-      // CAM posts write after an angle probing cycle); K < 0 turns the
-      // other way. Any other vector would be a 3-D conversion: not simulated.
-      if (words.has('I') || words.has('J') || words.has('K')) {
-        auto vec = [&](char l) { return words.has(l) ? word_length(words.at(l), false) : 0.0; };
-        if (vec('I') != 0.0 || vec('J') != 0.0 || vec('K') == 0.0) {
-          return fail(AlarmId::kNotSimulated,
-                      "G68 with a rotation vector I J K not along Z (3-D coordinate conversion) "
-                      "is not simulated by skipnc",
-                      req.frame_at);
-        }
-        if (vec('K') < 0.0) angle = -angle;
-      }
       next.rotating = true;
       next.angle_deg = angle;
       next.rotation_center = {c[0], c[1]};
@@ -256,6 +262,9 @@ Flow<bool> Interpreter::Impl::apply_frame_code(const Words& words, const MillReq
       next.scale = {1.0, 1.0, 1.0};
       break;
     case 510: {
+      if (frame.conversions > 0)
+        return fail(AlarmId::kNotSimulated, "G51 under G68 I J K is not simulated by skipnc",
+                    req.frame_at);
       const double inc = params.bit(config::param::kScalingFine) ? 0.00001 : 0.001;
       const bool calc = params.bit(config::param::kCalculatorDecimal);
       double all = params.get(config::param::kMagnification) * inc;
@@ -277,6 +286,9 @@ Flow<bool> Interpreter::Impl::apply_frame_code(const Words& words, const MillReq
     }
     case 511:
     case 501:
+      if (req.frame_code == 511 && frame.conversions > 0)
+        return fail(AlarmId::kNotSimulated, "G51.1 under G68 I J K is not simulated by skipnc",
+                    req.frame_at);
       for (int i = 0; i < 3; ++i) {
         if (xyz[static_cast<std::size_t>(i)] < 0 || !words.has("XYZ"[i])) continue;
         next.mirror[static_cast<std::size_t>(i)] = req.frame_code == 511;
@@ -333,7 +345,10 @@ Flow<void> Interpreter::Impl::frame_targets(const Words& words, AxisVec& target,
     const double v = word_length(words.at('Z'), false);
     p[2] = inc ? p[2] + v : v;
   }
-  if (frame.rotating && (named[0] || named[1])) named[0] = named[1] = true;
+  if ((frame.rotating || frame.conversions > 0) && (named[0] || named[1])) {
+    named[0] = named[1] = true;
+  }
+  if (frame.tilted() && (named[0] || named[1] || named[2])) named = {true, true, true};
   const xform::Point w = xform::to_work(frame, p);
   for (std::size_t i = 0; i < 3; ++i) {
     if (!named[i] || xyz[i] < 0) continue;

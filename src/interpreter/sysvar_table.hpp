@@ -51,6 +51,7 @@ enum class Id : std::uint8_t {
   kDWear,           // #12001..
   kDGeom,           // #13001..
   kWorkOffsetP300,  // #14001-#19980: G54.1 P1-P300, 20 per set
+  kSettingError,    // #26000-#26079: G54.4 data No. 00-07, 10 per set
 };
 
 enum Access : std::uint8_t { kRead = 1, kWrite = 2, kReadWrite = 3 };
@@ -111,6 +112,7 @@ inline constexpr Range kRanges[] = {
     {Id::kDWear, 12001, 12999, kReadWrite, false},
     {Id::kDGeom, 13001, 13999, kReadWrite, false},
     {Id::kWorkOffsetP300, 14001, 19980, kReadWrite, false},
+    {Id::kSettingError, 26000, 26079, kReadWrite, false},
 };
 
 // The older work-offset numbering: #2500 + 100 (axis - 1) + set.

@@ -158,6 +158,7 @@ Flow<Value> Interpreter::Impl::read_var(int n, SourceLoc where) {
                      0.0);
   }
   if (tool != nullptr) return Value::of(*tool * offset_unit_mm(*this) / unit_mm() + 0.0);
+  if (r->id == sysvar::Id::kSettingError) return setting_error_data[std::size_t(k - r->first)];
   if (k >= 5000) return read_position(*r, k - r->first, where);
   if (k >= 4000) return read_modal(*r, k - r->first);
   return read_control(*r, k);
@@ -368,6 +369,10 @@ Flow<void> Interpreter::Impl::write_var(int n, Value v, SourceLoc where) {
       if (!ok) return ok;
       work_offsets[static_cast<std::size_t>(set)][axis] =
           v.num() * unit_mm() / offset_unit_mm(*this);
+      return {};
+    }
+    if (r->id == sysvar::Id::kSettingError) {
+      setting_error_data[std::size_t(k - r->first)] = v;  // G54.4 (conversion_3d.cpp)
       return {};
     }
     if (!is_tool(*r)) return write_control(*r, k, v, where);

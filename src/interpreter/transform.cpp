@@ -18,7 +18,61 @@ std::array<double, 2> cos_sin_deg(double deg) noexcept {
   return {std::cos(rad), std::sin(rad)};
 }
 
+Matrix axis_angle(const Point& axis, double angle_deg) noexcept {
+  // Rodrigues: m = c I + s [n]x + (1 - c) n n^T, n the unit vector.
+  const double len = std::sqrt(axis[0] * axis[0] + axis[1] * axis[1] + axis[2] * axis[2]);
+  Matrix m{{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}};
+  if (len == 0.0) return m;
+  const Point n{axis[0] / len, axis[1] / len, axis[2] / len};
+  const auto [c, s] = cos_sin_deg(angle_deg);
+  const Matrix cross{{{0, -n[2], n[1]}, {n[2], 0, -n[0]}, {-n[1], n[0], 0}}};
+  for (std::size_t i = 0; i < 3; ++i) {
+    for (std::size_t j = 0; j < 3; ++j) {
+      m[i][j] = (i == j ? c : 0.0) + s * cross[i][j] + (1.0 - c) * n[i] * n[j];
+    }
+  }
+  return m;
+}
+
+Matrix turn_xyz(double da_deg, double db_deg, double dc_deg) noexcept {
+  const Matrix x = axis_angle({1, 0, 0}, da_deg), y = axis_angle({0, 1, 0}, db_deg),
+               z = axis_angle({0, 0, 1}, dc_deg);
+  auto mul = [](const Matrix& a, const Matrix& b) {
+    Matrix m{};
+    for (std::size_t i = 0; i < 3; ++i) {
+      for (std::size_t j = 0; j < 3; ++j) {
+        for (std::size_t k = 0; k < 3; ++k) m[i][j] += a[i][k] * b[k][j];
+      }
+    }
+    return m;
+  };
+  return mul(z, mul(y, x));
+}
+
+bool keeps_z(const Matrix& m) noexcept {
+  return m[2][0] == 0.0 && m[2][1] == 0.0 && m[0][2] == 0.0 && m[1][2] == 0.0;
+}
+
+bool Transform::tilted() const noexcept {
+  if (setting_error && !keeps_z(setting_turn)) return true;
+  for (int k = 0; k < conversions; ++k) {
+    if (!keeps_z(conversion[static_cast<std::size_t>(k)].m)) return true;
+  }
+  return false;
+}
+
 namespace {
+
+// p -> c + m (p - c), or m^T for the inverse; without c for a vector.
+Point convert(const Conversion& k, const Point& p, bool vector, bool inverse) {
+  const Point c = vector ? Point{} : k.center;
+  const Point d{p[0] - c[0], p[1] - c[1], p[2] - c[2]};
+  Point out = c;
+  for (std::size_t i = 0; i < 3; ++i) {
+    for (std::size_t j = 0; j < 3; ++j) out[i] += (inverse ? k.m[j][i] : k.m[i][j]) * d[j];
+  }
+  return out;
+}
 
 Point apply(const Transform& t, Point p, bool vector) {
   for (std::size_t i = 0; i < 3; ++i) {
@@ -35,6 +89,17 @@ Point apply(const Transform& t, Point p, bool vector) {
     p[0] = cx + c * dx - s * dy;
     p[1] = cy + s * dx + c * dy;
   }
+  // The last conversion is the innermost: the program frame is its frame.
+  for (int k = t.conversions - 1; k >= 0; --k) {
+    p = convert(t.conversion[static_cast<std::size_t>(k)], p, vector, false);
+  }
+  if (t.setting_error) {
+    const Conversion s{t.setting_turn, {}};
+    p = convert(s, p, false, false);
+    if (!vector) {
+      for (std::size_t i = 0; i < 3; ++i) p[i] += t.setting_shift[i];
+    }
+  }
   return p;
 }
 
@@ -50,6 +115,13 @@ Point vector_to_work(const Transform& t, const Point& v) noexcept {
 
 Point to_program(const Transform& t, const Point& work) noexcept {
   Point p = work;
+  if (t.setting_error) {
+    for (std::size_t i = 0; i < 3; ++i) p[i] -= t.setting_shift[i];
+    p = convert(Conversion{t.setting_turn, {}}, p, false, true);
+  }
+  for (int k = 0; k < t.conversions; ++k) {
+    p = convert(t.conversion[static_cast<std::size_t>(k)], p, false, true);
+  }
   if (t.rotating) {
     const auto [c, s] = cos_sin_deg(t.angle_deg);
     const double dx = p[0] - t.rotation_center[0], dy = p[1] - t.rotation_center[1];

@@ -1,0 +1,5 @@
+(G68 with I J K all 0: P/S alarm 5044, B-62764EN format error.)
+G21 G90 G17 G54 G0 X0 Y0 Z10.
+G68 X0 Y0 Z0 I0 J0 K0 R30.
+G1 X20. F100.
+M30

@@ -1,0 +1,1 @@
+../inch_bore_top.nc

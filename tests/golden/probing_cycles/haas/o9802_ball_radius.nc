@@ -1,0 +1,1 @@
+../o9802_ball_radius.nc

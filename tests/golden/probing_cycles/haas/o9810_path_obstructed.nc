@@ -1,0 +1,1 @@
+../o9810_path_obstructed.nc

@@ -1,0 +1,1 @@
+../o9811_missed_surface.nc

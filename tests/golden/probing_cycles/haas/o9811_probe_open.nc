@@ -1,0 +1,1 @@
+../o9811_probe_open.nc

@@ -1,0 +1,1 @@
+../o9811_x_y_extended_offset.nc

@@ -1,0 +1,1 @@
+../o9812_format_error.nc

@@ -1,0 +1,1 @@
+../o9812_pocket_x_y.nc

@@ -1,0 +1,1 @@
+../o9814_bore_sets_g54.nc

@@ -1,0 +1,1 @@
+../o9814_out_of_position.nc

@@ -1,0 +1,1 @@
+../o9819_pitch_circle.nc

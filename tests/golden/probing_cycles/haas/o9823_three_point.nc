@@ -1,0 +1,1 @@
+../o9823_three_point.nc

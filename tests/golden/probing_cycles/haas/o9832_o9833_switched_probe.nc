@@ -1,0 +1,1 @@
+../o9832_o9833_switched_probe.nc

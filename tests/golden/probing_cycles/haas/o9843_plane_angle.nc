@@ -1,0 +1,1 @@
+../o9843_plane_angle.nc

@@ -1,0 +1,1 @@
+../posted_bore_top.nc

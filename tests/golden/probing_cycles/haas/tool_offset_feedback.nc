@@ -1,0 +1,1 @@
+../tool_offset_feedback.nc

@@ -1,0 +1,30 @@
+%
+O02020 (PROBING-XY-OUTER-CORNER)
+(Written for skipnc in the output format of the Autodesk Fusion "HAAS -)
+(Next Generation Control" post [its probing case for this operation;)
+(haas_vf2_inspect_surface_ENSTA.cps of ThomasLeMezo/enstabretagne-)
+(inventor-cam], the Fanuc-post program ../outer_corner.nc in the Haas framing,)
+(run unmodified in the haas dialect with -I macros/probing; probe.vars is the control memory:)
+(#550 = 1 [the ball calibrated]. The part [part.scene.toml] sits off)
+(its CAD place by X-0.123 Y-0.044 Z-0.37 in G54 X-80 Y30.5 Z-229.5,)
+(the CAD features below are the true ones + [0.123, 0.044, 0.37]:)
+(the plate -X -Y corner: CAD X-69.877 Y-130.456, true X-70. Y-130.5.)
+(The probe at the corner - 6 in X and Y, at Z-5.: #135 = -70, #136 =)
+(-130.5, #140 = -0.123, #141 = -0.044; S1.)
+N10 G90 G94 G17
+N15 G21
+N20 G53 G0 Z0.
+N25 G53 G0 X0. Y0.
+N30 T20 M6
+N35 G54
+N40 G0 X-75.877 Y-136.456
+N45 G43 Z50. H20
+N50 G65 P9832
+N55 G65 P9810 Z-5. F1000.
+N60 G65 P9816 X-69.877 Y-130.456 Q5. S1.
+N65 G65 P9810 Z50.
+N70 G65 P9833
+N75 G53 G0 Z0.
+N80 G53 G0 X0. Y0.
+N85 M30
+%
