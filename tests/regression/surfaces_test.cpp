@@ -254,32 +254,41 @@ TEST(SurfacesSweep, JunitFileNeverReplacesAnInput) {
   EXPECT_FALSE(fs::exists(s.csv()));
 }
 
-// SIGTERM at any moment of a sweep (from 50 ms after the start, once the
-// handlers are set, to well into it): the table is whole and readable, each
+// SIGTERM at any moment of a sweep: the table is whole and readable, each
 // finished row in it, the rest not_run, whatever the instant. Two workers.
+// The first milliseconds too (0 to 50 ms: before main(), while the spec
+// loads, before the first scenario): skipnc is started with SIGINT and
+// SIGTERM blocked, as a caller does that must be able to stop it from its
+// first instant, and unblocks them once its handlers are set. Before, a
+// SIGTERM in those milliseconds was lost (the sweep ran to its end) or, before
+// main(), ended skipnc without a table.
+void sigterm_leaves_a_readable_table(int wait_ms, bool blocked_at_start) {
+  Sweep s("G91 G1 X0.1 F600\nG04 X0.3\nM30\n", "scenarios = 200000\nworkers = 2\n");
+  Child c({"sweep", s.spec.string(), "-q"}, "/dev/null", (s.dir.path / "err.txt").string(),
+          blocked_at_start);
+  std::this_thread::sleep_for(std::chrono::milliseconds(wait_ms));
+  c.signal(SIGTERM);
+  const auto e = c.wait(120.0);
+  ASSERT_TRUE(e.exited) << wait_ms << " ms: ended by signal " << e.signal;
+  const auto j = s.table();
+  ASSERT_FALSE(j.is_discarded()) << wait_ms << " ms";
+  const auto& sum = j["summary"];
+  const int done = sum["passed"].get<int>() + sum["failed"].get<int>();
+  EXPECT_EQ(done + sum["not_run"].get<int>() + sum["statuses"].value("interrupted", 0), 200000)
+      << wait_ms << " ms";
+  EXPECT_GT(sum["not_run"].get<int>(), 0) << wait_ms << " ms: the signal was not heard";
+  EXPECT_EQ(count_lines(read_file(s.csv())), 200001) << wait_ms << " ms";
+  int finished = 0;
+  for (const auto& row : j["rows"]) finished += row.value("status", "") == "completed" ? 1 : 0;
+  EXPECT_EQ(finished, done) << wait_ms << " ms";
+  EXPECT_EQ(e.code, 1) << wait_ms << " ms";
+}
+
 TEST(SurfacesSweep, SigtermAtAnyMomentLeavesAReadableTable) {
+  for (const int ms : {0, 2, 5, 10, 25, 50}) sigterm_leaves_a_readable_table(ms, true);
   std::mt19937 rng(31);
   std::uniform_int_distribution<int> ms(50, 1500);
-  for (int k = 0; k < 5; ++k) {
-    Sweep s("G91 G1 X0.1 F600\nG04 X0.3\nM30\n", "scenarios = 200000\nworkers = 2\n");
-    Child c({"sweep", s.spec.string(), "-q"}, "/dev/null", (s.dir.path / "err.txt").string());
-    const int wait_ms = ms(rng);
-    std::this_thread::sleep_for(std::chrono::milliseconds(wait_ms));
-    c.signal(SIGTERM);
-    const auto e = c.wait(120.0);
-    ASSERT_TRUE(e.exited) << wait_ms << " ms: ended by signal " << e.signal;
-    const auto j = s.table();
-    ASSERT_FALSE(j.is_discarded()) << wait_ms << " ms";
-    const auto& sum = j["summary"];
-    const int done = sum["passed"].get<int>() + sum["failed"].get<int>();
-    EXPECT_EQ(done + sum["not_run"].get<int>() + sum["statuses"].value("interrupted", 0), 200000)
-        << wait_ms << " ms";
-    EXPECT_EQ(count_lines(read_file(s.csv())), 200001) << wait_ms << " ms";
-    int finished = 0;
-    for (const auto& row : j["rows"]) finished += row.value("status", "") == "completed" ? 1 : 0;
-    EXPECT_EQ(finished, done) << wait_ms << " ms";
-    EXPECT_EQ(e.code, done == 200000 ? 0 : 1) << wait_ms << " ms";
-  }
+  for (int k = 0; k < 5; ++k) sigterm_leaves_a_readable_table(ms(rng), false);
 }
 
 // ---- 3. Every file the run reads is checked --------------------------------
