@@ -674,5 +674,43 @@ TEST(SurfacesTime, DwellBlocksHaveTheirTimeAndQuietPeriodsKeepTheTraceRows) {
   EXPECT_NEAR(times.back(), total, 1e-9);
 }
 
+// Issue 31: a very slow feed costs processor time in proportion to what
+// changes. G1 X1. F0.0001 is 600,000 s of motion, 600 million periods (about
+// 19 s of processor time period by period, more than the 5 s limits.max_cpu_s
+// allows here): its cruise is passed in a few steps, and the run ends with the
+// axis at X1.
+TEST(SurfacesTime, VerySlowFeedEndsInLittleProcessorTime) {
+  TempDir dir;
+  const auto prog = dir.write("p.nc", "G1 X1. F0.0001\nM30\n");
+  const auto machine = dir.write("m.toml", "extends = \"mill3\"\n[limits]\nmax_cpu_s = 5\n");
+  const auto r = run_with_report(dir, prog, {"-m", machine.string()}, 120.0);
+  ASSERT_TRUE(r.exit.exited) << "not ended within 120 s";
+  ASSERT_TRUE(r.report_ok) << r.err;
+  EXPECT_EQ(r.exit.code, 0) << r.report.dump(1);
+  EXPECT_NEAR(r.report.at("final").value("time", 0.0), 600000.0, 0.01);
+  EXPECT_DOUBLE_EQ(r.report.at("final").at("machine_position").value("X", 0.0), 1.0);
+}
+
+// A passed cruise gives the report of the period-by-period run: the same
+// program with a trace (which has every period run one by one, its rows
+// digit for digit) and without one (its cruises passed in closed form) gives
+// the same report, byte for byte. Three slow feeds on three axes, 102 s, on
+// mill3 (kp 30/s, feedforward 0.95) and on mill3_lowgain.
+TEST(SurfacesTime, VerySlowFeedGivesThePeriodByPeriodReport) {
+  TempDir dir;
+  const auto prog =
+      dir.write("p.nc", "G91 G1 X0.1 Y0.05 F0.3\nG1 Z-0.02 F0.03\nG1 X-0.1 F0.15\nM30\n");
+  const auto trace = dir.path / "t.csv";
+  for (const char* machine : {"mill3", "mill3_lowgain"}) {
+    const auto one_by_one = run_with_report(dir, prog, {"-m", machine, "--trace", trace.string()});
+    ASSERT_EQ(one_by_one.exit.code, 0) << one_by_one.err;
+    EXPECT_GT(count_lines(read_file(trace)), 102000) << machine;
+    const auto passed = run_with_report(dir, prog, {"-m", machine});
+    ASSERT_EQ(passed.exit.code, 0) << passed.err;
+    EXPECT_EQ(passed.report.dump(1), one_by_one.report.dump(1)) << machine;
+    EXPECT_NEAR(passed.report.at("final").value("time", 0.0), 102.361, 0.01) << machine;
+  }
+}
+
 }  // namespace
 }  // namespace skipnc::test
