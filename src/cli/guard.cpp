@@ -54,6 +54,14 @@ void install_signal_handlers() noexcept {
   // A file larger than `ulimit -f` allows: the write fails with EFBIG and the
   // run ends with the output's alarm and its report, not killed by SIGXFSZ.
   ::sigaction(SIGXFSZ, &ign, nullptr);
+  // A caller that must be able to stop skipnc from its first instant (before
+  // main() could set these handlers) starts it with SIGINT and SIGTERM
+  // blocked: they are unblocked here, a signal that came meanwhile is heard now.
+  sigset_t stop;
+  sigemptyset(&stop);
+  sigaddset(&stop, SIGINT);
+  sigaddset(&stop, SIGTERM);
+  ::sigprocmask(SIG_UNBLOCK, &stop, nullptr);
 }
 
 double process_cpu_s() noexcept {

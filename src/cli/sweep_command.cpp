@@ -16,6 +16,7 @@
 #include <iostream>
 
 #include "cli/commands.hpp"
+#include "cli/guard.hpp"
 #include "cli/junit.hpp"
 #include "cli/outputs.hpp"
 #include "core/file.hpp"
@@ -44,12 +45,21 @@ extern "C" void on_sweep_signal(int sig) {
   }
 }
 
+// First thing in the command: a signal from then on is the sweep's; one
+// that came before (main()'s handlers, set before anything else, kept it in
+// run_stop()) counts as the first, so the sweep takes no scenario and still
+// writes its table (before, a SIGTERM while the spec was loading was lost
+// and the sweep ran to its end).
 void install_sweep_signals() {
   struct sigaction sa {};
   sa.sa_handler = on_sweep_signal;
   sigemptyset(&sa.sa_mask);
   ::sigaction(SIGINT, &sa, nullptr);
   ::sigaction(SIGTERM, &sa, nullptr);
+  if (run_stop().signal.load() != 0 && g_signals.load() == 0) {
+    g_signals.fetch_add(1);
+    g_stop_taking.store(true);
+  }
 }
 
 // touch.sweep.toml -> touch.sweep.csv, beside the spec (never silently in
@@ -229,6 +239,7 @@ Result<void> open_tables(const run::SweepPlan& plan, TableFile& csv, TableFile& 
 }  // namespace
 
 int sweep_command(const SweepArgs& a) {
+  install_sweep_signals();
   run::SweepPlan plan;
   run::SweepOverrides o;
   if (a.scenarios > 0) o.scenarios = a.scenarios;
@@ -248,7 +259,6 @@ int sweep_command(const SweepArgs& a) {
     std::cerr << "skipnc: junit: no temporary file for the test cases\n";
     return 2;
   }
-  install_sweep_signals();
   run::SweepTable table(plan);
   csv.write(table.csv_header());
   json.write(table.json_head());

@@ -38,6 +38,38 @@ std::int64_t Interpolator::quiet_ticks() const noexcept {
   return n > 0.0 ? static_cast<std::int64_t>(std::fmin(n, 1e18)) : 0;
 }
 
+std::int64_t Interpolator::cruise_ticks() const noexcept {
+  if (ramp_ || hold_ || seg_ == nullptr || queue_.front() != seg_ || !seg_->started) return 0;
+  if (seg_->kind != planner::Move::Kind::kLine || scale_ != 1.0 || seg_ticks_ < 2) return 0;
+  const double period = queue_.limits().period_s;
+  if (seg_step_s_ != period) return 0;
+  // The last tick's command and the one before it, one period back, were
+  // both sampled in this segment (seg_ticks_ >= 2); that one must already
+  // be in the cruise, and the command n periods on still in it, below the
+  // segment's end less tick()'s slack, with two periods spare.
+  const double t = seg_time();
+  if (!(t - period > seg_->t_acc)) return 0;
+  const double end = std::fmin(seg_->t_acc + seg_->t_cruise, seg_->duration - period * 1e-6);
+  const double n = std::floor((end - t) / period) - 2.0;
+  return n > 0.0 ? static_cast<std::int64_t>(std::fmin(n, 1e15)) : 0;
+}
+
+void Interpolator::pass_cruise(std::int64_t n, AxisVec& before) noexcept {
+  const int axes = queue_.limits().axis_count;
+  AxisVec v;
+  double speed = 0.0;
+  seg_ticks_ += n - 1;
+  seg_->sample(seg_time(), axes, before, v, speed);
+  ++seg_ticks_;
+  seg_->sample(seg_time(), axes, pos_, vel_, speed_);
+  passed_line_ = 0;
+}
+
+AxisVec Interpolator::cruise_step() const noexcept {
+  const double period = queue_.limits().period_s;
+  return seg_ != nullptr ? seg_->unit * (seg_->v_cruise * period) : AxisVec{};
+}
+
 const AxisVec& Interpolator::tick() noexcept {
   const double period = queue_.limits().period_s;
   passed_line_ = 0;

@@ -65,6 +65,8 @@ class Interpolator {
   void set_position(const AxisVec& pos) noexcept;
   // Start point of the segment being interpolated (the position when idle).
   AxisVec segment_start() const noexcept;
+  // End point of the segment being interpolated (the position when idle).
+  AxisVec segment_end() const noexcept { return seg_ != nullptr ? seg_->end : pos_; }
 
   // Periods from now that tick() would run with nothing but its count of
   // periods changing (the same command, velocity and block): all but the
@@ -75,6 +77,19 @@ class Interpolator {
   // Passes n such periods in one step (n <= quiet_ticks()): the state is
   // that of n calls of tick(), bit for bit.
   void pass_quiet(std::int64_t n) noexcept { seg_ticks_ += n; }
+  // Periods from now in which tick() would only carry the command on along
+  // a feed's straight line at its constant cruise speed, the last tick's
+  // command and the one after the n periods included: all but the last
+  // three periods of the cruise (and of the segment). 0 otherwise: a ramp,
+  // a hold, a time scale other than 1, an arc, a rapid, a dwell, the
+  // acceleration and the deceleration, a segment's first two periods.
+  std::int64_t cruise_ticks() const noexcept;
+  // Passes n such periods in one step (n <= cruise_ticks()): the state is
+  // that of n calls of tick(), bit for bit (the command is a closed form of
+  // the count of periods); `before` gets the command of the (n-1)th call.
+  void pass_cruise(std::int64_t n, AxisVec& before) noexcept;
+  // The command's step per period in cruise (direction x speed x period).
+  AxisVec cruise_step() const noexcept;
   // A dwell that ended in the last tick without a period of its own (G04
   // X0, or one ended where the next block took the period): its line and
   // call context, so that it is counted as run. Line 0: none.

@@ -404,6 +404,32 @@ std::int64_t Kernel::quiet_ticks() const noexcept {
   return interpolator_.quiet_ticks();
 }
 
+std::int64_t Kernel::cruise_ticks() const noexcept {
+  if (fault_ || followed_up_ || !full_rate_ || skip_latch_pending_ || skip_.active) return 0;
+  if (interpolator_.needs_in_position()) return 0;
+  const std::int64_t n = interpolator_.cruise_ticks();
+  if (n <= 0) return 0;
+  // A straight line: within the stroke all along when its end is (its
+  // start, the command already checked, is).
+  const AxisVec end = interpolator_.segment_end();
+  const FaultLimits& f = cfg_.faults;
+  for (int i = 0; i < cfg_.limits.axis_count; ++i) {
+    const auto k = static_cast<std::size_t>(i);
+    if (end[i] > f.stroke_max[k] || end[i] < f.stroke_min[k]) return 0;
+  }
+  return n;
+}
+
+void Kernel::pass_cruise(std::int64_t n, TickOutput& out) noexcept {
+  tick_ += n;
+  interpolator_.pass_cruise(n, cmd_prev_);
+  cmd_ = interpolator_.position();
+  out.commanded = cmd_;
+  out.velocity = interpolator_.velocity();
+  out.path_speed = interpolator_.path_speed();
+  out.passed_dwell_line = 0;
+}
+
 void Kernel::tick(const TickInput& in, TickOutput& out) noexcept {
   ++tick_;
   followed_up_ = false;

@@ -231,6 +231,25 @@ class Kernel {
     interpolator_.pass_quiet(n);
   }
 
+  // Periods from now in which each tick would only carry the command on
+  // along a feed's straight line at its cruise speed (Interpolator::
+  // cruise_ticks): no skip block, no fault, full rate, the segment's end
+  // within the stroke. 0: none.
+  std::int64_t cruise_ticks() const noexcept;
+  // Passes n such periods at once (n <= cruise_ticks()): the command, the
+  // time and `out` are those of n ticks (the same block, speed and state);
+  // previous_command() is the command of the (n-1)th. The caller then gives
+  // the axes' position at the end (cruised()).
+  void pass_cruise(std::int64_t n, TickOutput& out) noexcept;
+  void cruised(const AxisVec& actual) noexcept { actual_prev_ = actual; }
+  const AxisVec& previous_command() const noexcept { return cmd_prev_; }
+  // The command's step per period in cruise.
+  AxisVec cruise_step() const noexcept { return interpolator_.cruise_step(); }
+  // The following error past which an axis alarms (excess error), mm.
+  double excess_error_mm(int axis) const noexcept {
+    return cfg_.faults.excess_error[static_cast<std::size_t>(axis)];
+  }
+
   // --- state ---------------------------------------------------------------
   Tick now() const noexcept { return tick_; }
   const ServoClock& clock() const noexcept { return cfg_.clock; }

@@ -116,6 +116,25 @@ std::int64_t Plant::quiet_ticks(Tick now) const noexcept {
   return n > 0.0 ? static_cast<std::int64_t>(std::fmin(n, 1e18)) : 0;
 }
 
+void Plant::pass_cruise(std::int64_t n, const AxisVec& from, const AxisVec& to, const AxisVec& step,
+                        kernel::TickInput& in) noexcept {
+  for (int i = 0; i < n_; ++i) {
+    const auto k_i = static_cast<std::size_t>(i);
+    const double e0 = from[i] - actual_[i];
+    const double ess = step[i] * lag_gain_[k_i];
+    const double e1 = ess + (e0 - ess) * std::pow(decay_[k_i], static_cast<double>(n));
+    const double a1 = to[i] - e1;
+    actual_[i] = a1;
+    const double fe = to[i] - a1;
+    const double limit = torque_max_[k_i];
+    torque_[i] = std::clamp(torque_per_mm_[k_i] * fe + 0.0, -limit, limit);
+  }
+  in.actual = actual_;
+  in.torque_pct = torque_;
+  in.edge_count = 0;
+  still_ = 0;
+}
+
 void Plant::advance_servo(Tick k, const AxisVec& before, const AxisVec& from,
                           const AxisVec& to) noexcept {
   const double t_now = scene_.loads.empty() ? 0.0 : clock_.seconds(k);  // only loads need it

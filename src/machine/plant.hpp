@@ -50,6 +50,27 @@ class Plant {
   // inline: it is asked every period).
   bool still() const noexcept { return still_ >= 2; }
   double clock_period_s() const noexcept { return clock_.period_s(); }
+  // Whether periods of a command moving at a constant velocity may be passed
+  // at once (pass_cruise): nothing of the scene senses, stops or loads the
+  // axes (no trigger, pulse, load, stop, probe, setter, gauge, part, stock),
+  // no axis is locked or torque-limited and every servo is a first-order
+  // lag (kp > 0).
+  bool can_cruise() const noexcept {
+    return plain_servo_ && locked_.empty() && !limited_ && sources_.empty() && probing_.inert();
+  }
+  // The following error the servo of `axis` settles at under a command
+  // moving `step` per period: (1 - feedforward) x velocity / kp.
+  double steady_error(int axis, double step) const noexcept {
+    return step * lag_gain_[static_cast<std::size_t>(axis)];
+  }
+  // Passes n periods of a command moving `step` per period, from `from`
+  // (the command at the start) to `to` (the command after n periods):
+  // the servo's own recurrence (e' = ess + (e - ess) d per period, d =
+  // exp(-kp T)) applied n times in closed form, e = ess + (e0 - ess) d^n.
+  // Exact in real arithmetic; in floating point within a few units in the
+  // last place of the positions of the period-by-period run.
+  void pass_cruise(std::int64_t n, const AxisVec& from, const AxisVec& to, const AxisVec& step,
+                   kernel::TickInput& in) noexcept;
   // Torque limit of each axis's servo from now on, % (0: torque_max only):
   // the motor torque saturates there (torque limit skip, kernel output).
   void set_torque_limit(const AxisVec& pct) noexcept {

@@ -58,6 +58,9 @@ class ProbeScene {
     touch_on_ = false;
     if (pending_tool_ || senses_) advance_sensors(before, after);
   }
+  // Nothing to sense, cut or collide with, and no tool change waiting:
+  // advance() does nothing (Plant::can_cruise).
+  bool inert() const noexcept { return !pending_tool_ && !senses_; }
   // Whether the tool in the spindle cuts in the next periods: the spindle
   // turns and the running command is a cutting move that ends at `end`
   // (the simulator knows the command; docs/scene.md, [stock]). A tool that

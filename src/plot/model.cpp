@@ -148,11 +148,10 @@ class ToolLengths {
       : scene_(scene), changes_(changes) {}
   double at(double t) const {
     if (scene_ == nullptr) return 0.0;
-    int tool = scene_->probing.spindle_tool;
-    for (const auto& c : changes_) {
-      if (c.t > t) break;
-      tool = c.tool;
-    }
+    // The last change at or before t (the changes are in time order).
+    const auto after = std::upper_bound(changes_.begin(), changes_.end(), t,
+                                        [](double x, const ToolChange& c) { return x < c.t; });
+    const int tool = after == changes_.begin() ? scene_->probing.spindle_tool : (after - 1)->tool;
     const auto& pr = scene_->probing;
     if (pr.probe && pr.probe->tool == tool) return pr.probe->length;
     const machine::ToolSpec* ts = pr.tool(tool);

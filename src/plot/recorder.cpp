@@ -99,7 +99,12 @@ void Recorder::emit(const canon::Stamped& c) {
           if (cmd.code == 6 && selected_tool_ >= 0) pending_tool_ = selected_tool_;
         } else if constexpr (std::is_same_v<T, canon::Skip>) {
           kind = MoveKind::kSkip;
-          skip_moves_.push_back(SkipMove{c.line, c.source, tail_, cmd.target, cmd.feed_mm_per_min});
+          if (skip_moves_.size() < d_.max_skip_moves) {
+            skip_moves_.push_back(
+                SkipMove{c.line, c.source, tail_, cmd.target, cmd.feed_mm_per_min});
+          } else {
+            ++skip_moves_dropped_;
+          }
           tail_from_trace_ = true;
         }
         if constexpr (std::is_same_v<T, canon::Rapid> || std::is_same_v<T, canon::Feed> ||
@@ -241,6 +246,22 @@ void Recorder::merge_blocks() {
   }
 }
 
+// A change to the tool already in the spindle changes nothing drawn and is
+// not kept. Past max_tool_changes every other change goes (the first and the
+// last stay): memory stays bounded however many changes the program makes.
+void Recorder::add_tool_change(double t, int tool) {
+  if (!tool_changes_.empty() && tool_changes_.back().tool == tool) return;
+  tool_changes_.push_back(ToolChange{t, tool});
+  if (tool_changes_.size() <= std::max<std::size_t>(d_.max_tool_changes, 2)) return;
+  std::vector<ToolChange> out;
+  out.reserve(tool_changes_.size() / 2 + 2);
+  for (std::size_t i = 0; i < tool_changes_.size(); ++i) {
+    if (i % 2 == 0 || i + 1 == tool_changes_.size()) out.push_back(tool_changes_[i]);
+  }
+  tool_changes_dropped_ += tool_changes_.size() - out.size();
+  tool_changes_ = std::move(out);
+}
+
 Sample Recorder::sample_of(const sim::TraceRow& r) {
   Sample cur;
   cur.t = r.time_s;
@@ -312,7 +333,7 @@ void Recorder::row(const sim::TraceRow& r) {
     return;
   }
   if (pending_tool_ >= 0 && cur.cmd == prev_.cmd) {
-    tool_changes_.push_back(ToolChange{cur.t, pending_tool_});
+    add_tool_change(cur.t, pending_tool_);
     pending_tool_ = -1;
   }
   const bool new_block = cur.line != prev_.line || cur.source != prev_.source;

@@ -83,6 +83,12 @@ struct Decimation {
   // runs, neighbouring runs are merged (skip blocks last).
   std::size_t max_kept = 80000;
   std::size_t max_blocks = 20000;
+  // Past max_skip_moves skip commands the later ones are not kept (their
+  // skip marks are drawn from where their blocks began); past
+  // max_tool_changes tool changes every other one is dropped, the first and
+  // the last kept.
+  std::size_t max_skip_moves = 20000;
+  std::size_t max_tool_changes = 20000;
   int keep_around_edge = 6;  // periods kept whole before and after a signal edge
 };
 
@@ -104,6 +110,10 @@ class Recorder final : public sim::TraceSink, public canon::CommandSink {
   const std::vector<std::string>& signal_names() const noexcept { return signal_names_; }
   const std::vector<ToolChange>& tool_changes() const noexcept { return tool_changes_; }
   std::uint64_t periods_seen() const noexcept { return rows_; }
+  // Skip commands not kept (past max_skip_moves), tool changes dropped
+  // (past max_tool_changes).
+  std::uint64_t skip_moves_dropped() const noexcept { return skip_moves_dropped_; }
+  std::uint64_t tool_changes_dropped() const noexcept { return tool_changes_dropped_; }
   // Tolerance multiplier reached (1, 2, 4, ...).
   double tolerance_scale() const noexcept { return scale_; }
   int axis_count() const noexcept { return n_; }
@@ -126,6 +136,7 @@ class Recorder final : public sim::TraceSink, public canon::CommandSink {
   void thin();
   void thin_pins();
   void merge_blocks();
+  void add_tool_change(double t, int tool);
   MoveKind take_kind(std::uint32_t line, std::uint32_t source);
 
   int n_ = 0;
@@ -138,6 +149,8 @@ class Recorder final : public sim::TraceSink, public canon::CommandSink {
   std::vector<std::string> signal_names_;
   std::deque<Pending> pending_;
   std::vector<ToolChange> tool_changes_;
+  std::uint64_t skip_moves_dropped_ = 0;
+  std::uint64_t tool_changes_dropped_ = 0;
   int selected_tool_ = -1;        // the last T word
   int pending_tool_ = -1;         // M06 seen, not yet placed in time
   AxisVec tail_;                  // target of the last motion command

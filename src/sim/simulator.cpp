@@ -327,6 +327,525 @@ std::optional<interp::Warning> grbl_servo_warning(const config::MachineConfig& m
   return std::nullopt;
 }
 
+// The kernel's settings for this machine and dialect: the in-position check
+// at the end of a rapid, unless the dialect's bit turns it off (Fanuc 1601#5
+// NCI).
+kernel::KernelConfig run_kernel_config(const config::MachineConfig& m, const config::Dialect& d,
+                                       const config::Parameters& p) {
+  kernel::KernelConfig kc = kernel::kernel_config(m);
+  kc.rapid_in_position = d.sw.rapid_no_in_position_param == 0 ||
+                         !p.bit(d.sw.rapid_no_in_position_param, d.sw.rapid_no_in_position_bit);
+  return kc;
+}
+
+// One run of a program: the interpreter, the kernel and the plant, servo
+// period by servo period (Simulator::run). Each step of a period is a
+// function of its own; their order in run() is the period's.
+class RunLoop {
+ public:
+  RunLoop(const config::MachineConfig& m, const config::Dialect& d, const config::Parameters& p,
+          const Scene& scene, interp::Interpreter& in, const interp::Setup& setup,
+          const RunOptions& opts)
+      : m_(m),
+        d_(d),
+        p_(p),
+        scene_(scene),
+        in_(in),
+        setup_(setup),
+        opts_(opts),
+        k_(run_kernel_config(m, d, p)),
+        plant_(m, scene, k_.clock()),
+        safety_(m, p, plant_, opts.commands),
+        has_stock_(!plant_.probing().stock().empty()),
+        router_(k_, &safety_, &in, opts.trace != nullptr ? &frames_ : nullptr,
+                has_stock_ ? &cuts_ : nullptr) {
+    set_up();
+  }
+  RunResult run();
+
+ private:
+  void set_up();
+  void strict_setup_warnings();
+  [[gnu::always_inline]] inline std::string_view file_of(std::uint32_t ctx) const;
+  void alarm(Error e, std::uint32_t ctx);
+  TraceRow trace_row();
+  [[gnu::always_inline]] inline void read_blocks();
+  [[gnu::always_inline]] inline void apply_operator_actions();
+  [[gnu::always_inline]] inline std::int64_t quiet_periods() const;
+  std::int64_t cruise_periods();
+  bool servo_settled() const;
+  void pass_cruise(std::int64_t n);
+  [[gnu::always_inline]] inline void servo_period();
+  [[gnu::always_inline]] inline bool period_alarm();
+  [[gnu::always_inline]] inline bool sync_interpreter();
+  [[gnu::always_inline]] inline bool run_stops();
+  void finish();
+  void save_persistent();
+
+  const config::MachineConfig& m_;
+  const config::Dialect& d_;
+  const config::Parameters& p_;
+  const Scene& scene_;
+  interp::Interpreter& in_;
+  const interp::Setup& setup_;
+  const RunOptions& opts_;
+  RunResult res_;
+  kernel::Kernel k_;
+  Plant plant_;
+  ProbeSafety safety_;
+  FrameLog frames_;
+  // Whether the running command cuts, for a scene with stock.
+  bool has_stock_;
+  TagLog<CutNote> cuts_;
+  Router router_;
+  AxisVec work_now_;
+  // Machine lock and Z-axis cancel (operator switches kept as parameters):
+  // the locked axes do not move, the command does.
+  AxisMask locked_;
+  kernel::OperatorState op_;
+  std::size_t next_action_ = 0;  // scene [[operator]] actions not yet applied
+  std::int64_t held_ticks_ = 0;  // periods the motion has stood held for ever
+  kernel::TickInput tin_;
+  kernel::TickOutput tout_;
+  AxisVec cmd_prev_;
+  bool waiting_ = false;  // the interpreter waits for a sync
+  bool ending_ = false;   // the program ended; the machine finishes its motion
+  bool held_ = false;     // an axis held away from its command ended the run
+  double next_progress_ = 1.0;
+  Tick next_cruise_try_ = 0;  // cruise_periods looks again from this period on
+  // A program error stops the reading of blocks; the motion already queued
+  // is finished first, as if the blocks ran one by one, so the stopping
+  // point does not depend on how far the planner had read ahead.
+  std::optional<Error> program_alarm_;
+  std::uint32_t program_alarm_context_ = 0;
+  BlockClock times_;
+  // The set-up's warnings (the probe's length against its H, grbl on a
+  // lagging servo), reported after the program's own.
+  std::vector<interp::Warning> setup_warnings_;
+};
+
+void RunLoop::set_up() {
+  const AxisVec home{};
+  k_.set_position(home);
+  plant_.reset(home);
+  plant_.for_each_signal([&](const canon::SignalAddr& a, bool on) { k_.preset_signal(a, on); });
+  frames_.note(0, in_.work_frame());
+  cuts_.note(0, CutNote{});
+  if (d_.sw.machine_lock_param != 0 && p_.get(d_.sw.machine_lock_param) != 0.0) {
+    for (int i = 0; i < m_.axis_count(); ++i) locked_.set(i);
+  }
+  if (d_.sw.z_cancel_param != 0 && p_.get(d_.sw.z_cancel_param) != 0.0 && m_.axis_index('Z') >= 0) {
+    locked_.set(m_.axis_index('Z'));
+  }
+  k_.set_locked_axes(locked_);
+  plant_.set_locked(locked_);
+  op_.dry_run_feed_mm_min = d_.sw.dry_run_feed_param != 0
+                                ? p_.get(d_.sw.dry_run_feed_param) * (m_.inch_machine ? 25.4 : 1.0)
+                                : 0.0;
+  tout_.commanded = home;
+  cmd_prev_ = home;
+  strict_setup_warnings();
+}
+
+// --strict: a warning of the set-up is an alarm before the first block
+// unless --allow or the scene's [strict] allow names it.
+void RunLoop::strict_setup_warnings() {
+  if (auto w = probe_length_warning(plant_.probing().spec())) setup_warnings_.push_back(*w);
+  if (auto w = grbl_servo_warning(m_, d_)) setup_warnings_.push_back(*w);
+  if (!setup_.strict) return;
+  if (const interp::Warning* w = first_refused(setup_warnings_, setup_.strict_allow)) {
+    program_alarm_ =
+        Error{AlarmId::kStrictWarning, w->code + ": " + w->text, SourceLoc{file_of(0), 0, 1}, -1};
+    ending_ = true;
+  }
+}
+
+// The file of a call context (interpreter storage; the table only grows
+// while blocks are read, and a motion alarm ends the reading).
+std::string_view RunLoop::file_of(std::uint32_t ctx) const {
+  const auto& cs = in_.contexts();
+  return ctx < cs.size() ? std::string_view(cs[ctx].file) : std::string_view(setup_.program_name);
+}
+
+void RunLoop::alarm(Error e, std::uint32_t ctx) {
+  res_.status = RunStatus::kAlarm;
+  res_.alarm = std::move(e);
+  res_.alarm_context = ctx;
+}
+
+// The trace's row of the period just run.
+TraceRow RunLoop::trace_row() {
+  TraceRow r;
+  r.tick = k_.now();
+  r.time_s = k_.clock().seconds(k_.now());
+  r.commanded = &cmd_prev_;
+  r.actual = &plant_.actual();
+  r.torque = &plant_.torque();
+  r.feed_mm_per_min = tout_.path_speed * 60.0;
+  r.line = tout_.line;
+  r.source = tout_.source;
+  work_now_ = frames_.at(tout_.tag).apply(plant_.actual(), m_.axis_count());
+  r.work = &work_now_;
+  r.file = file_of(tout_.source);
+  r.plant = &plant_;
+  r.handshake = tout_.handshake;
+  r.handshake_names = d_.handshake.empty() ? nullptr : &d_.handshake;
+  return r;
+}
+
+// Feeds the kernel until it is full or the interpreter must wait: first the
+// motion of the last block that did not fit, then new blocks. A signal is
+// heard between blocks too: a macro loop without motion runs many blocks
+// within one period.
+void RunLoop::read_blocks() {
+  router_.drain();
+  while (!waiting_ && !ending_ && router_.drained() && k_.can_accept() &&
+         !safety_.holds_reading() &&
+         !(opts_.interrupt != nullptr && opts_.interrupt->load(std::memory_order_relaxed))) {
+    auto st = in_.step(router_);
+    if (!st) {
+      program_alarm_ = st.error();
+      program_alarm_context_ = in_.context();
+      ending_ = true;
+      return;
+    }
+    if (*st == interp::Step::kSync) waiting_ = true;
+    if (*st == interp::Step::kEnd) ending_ = true;
+    const interp::Warning* strict_w =
+        setup_.strict ? first_refused(safety_.warnings(), setup_.strict_allow) : nullptr;
+    if (strict_w != nullptr) {
+      // --strict: the machine's warning (a skip move that cannot stop in
+      // the over-travel) is an alarm at its block unless --allow names
+      // it; as for any program alarm, what is already queued (the skip
+      // move too) runs first.
+      const interp::Warning& w = *strict_w;
+      program_alarm_ = Error{AlarmId::kStrictWarning, w.code + ": " + w.text,
+                             SourceLoc{file_of(w.context), w.line, 1}, -1};
+      program_alarm_context_ = w.context;
+      ending_ = true;
+      return;
+    }
+  }
+}
+
+// The operator's actions due by the start of this period.
+void RunLoop::apply_operator_actions() {
+  if (next_action_ >= scene_.operator_actions.size()) return;
+  const double t0 = k_.clock().seconds(k_.now());
+  bool changed = false;
+  for (; next_action_ < scene_.operator_actions.size() &&
+         scene_.operator_actions[next_action_].at_time_s <= t0 + 1e-12;
+       ++next_action_) {
+    const OperatorAction& a = scene_.operator_actions[next_action_];
+    if (a.feed_hold) op_.feed_hold = *a.feed_hold;
+    if (a.interlock) op_.interlock = *a.interlock;
+    if (a.override_pct) op_.override_pct = *a.override_pct;
+    if (a.dry_run) op_.dry_run = *a.dry_run;
+    changed = true;
+  }
+  if (changed) k_.set_operator(op_);
+}
+
+// Periods that would each repeat the last one, the time aside (a dwell, a
+// feed hold): the kernel's command stands, the machine is still, the
+// interpreter waits for the machine, and nothing of the scene, the
+// operator, the trace's --trace-every or the time limit is due before
+// them. They are passed in one step: the run is the same, bit for bit,
+// as one period at a time (G04 X1e9 took minutes of processor time).
+std::int64_t RunLoop::quiet_periods() const {
+  if (!plant_.still()) return 0;  // most periods: the axes move
+  const bool reading = !waiting_ && !ending_ && router_.drained() && k_.can_accept();
+  if (reading || tout_.line == 0 || !safety_.quiet(plant_)) return 0;
+  std::int64_t n = std::min(k_.quiet_ticks(), plant_.quiet_ticks(k_.now()));
+  if (n <= 0) return 0;
+  const Tick now = k_.now();
+  n = std::min<std::int64_t>(n, m_.limits.max_ticks - now - 2);
+  if (next_action_ < scene_.operator_actions.size()) {
+    const double at = scene_.operator_actions[next_action_].at_time_s;
+    n = std::min<std::int64_t>(
+        n, static_cast<std::int64_t>(std::floor(at / k_.clock().period_s())) - now - 2);
+  } else if (tout_.time_scale < 1e-12) {
+    return 0;  // held for ever: ends after a second (run_stops), period by period
+  }
+  if (opts_.trace != nullptr) {
+    const std::int64_t s = std::max<std::int64_t>(1, opts_.trace->stride());
+    n = std::min<std::int64_t>(n, (now / s + 1) * s - now - 1);  // the next row is written
+  }
+  return n;
+}
+
+// A servo whose following error is within this of where it settles under
+// the cruise's constant velocity may be passed over (cruise_periods): its
+// transient has decayed.
+constexpr double kCruiseSettledMm = 1e-9;
+// Fewer periods than this are run one by one (the checks cost more).
+constexpr std::int64_t kCruiseMinPeriods = 16;
+// After a look that found no cruise to pass, the periods before the next
+// look: most periods are in short moves or a servo's transient, and a look
+// every period cost a quarter of the run (short moves).
+constexpr std::int64_t kCruiseLookAgain = 64;
+constexpr std::int64_t kCruiseSettleAgain = 128;
+
+// Periods of a feed's cruise that can be passed at once: the command moves
+// along a straight line at constant speed (no skip block, full rate, its end
+// within the stroke), nothing of the scene can sense, stop or load the axes,
+// every servo has settled (kCruiseSettledMm) at a following error within its
+// limit, and no operator action or the time limit is due before them (the
+// progress display is then told the time after them). The command is a closed form of the count of
+// periods (the same bits as period by period); the servo's recurrence is applied in closed form
+// (Plant::pass_cruise), within 1e-9 mm of the period-by-period run (in practice a few units in the
+// last place of the positions: 1e-14 mm at 100 mm). A trace (--trace, --plot) asks for the rows of
+// those periods, digit for digit: with one, every period is run (a following error of exactly half
+// a printed digit, common with round feeds and gains, would print one way or the other). G1 X1.
+// F0.001 took 1.9 s of processor time for its 60 million periods, now 0.004 s.
+std::int64_t RunLoop::cruise_periods() {
+  const Tick now = k_.now();
+  next_cruise_try_ = now + kCruiseLookAgain;
+  if (opts_.trace != nullptr || !plant_.can_cruise()) return 0;
+  const bool reading = !waiting_ && !ending_ && router_.drained() && k_.can_accept();
+  if (reading || tout_.line == 0 || !safety_.quiet(plant_)) return 0;
+  std::int64_t n = k_.cruise_ticks();
+  if (n < kCruiseMinPeriods) return 0;
+  if (!servo_settled()) {
+    next_cruise_try_ = now + kCruiseSettleAgain;
+    return 0;
+  }
+  const double period = k_.clock().period_s();
+  n = std::min<std::int64_t>(n, m_.limits.max_ticks - now - 2);
+  if (next_action_ < scene_.operator_actions.size()) {
+    const double at = scene_.operator_actions[next_action_].at_time_s;
+    n = std::min<std::int64_t>(n, static_cast<std::int64_t>(std::floor(at / period)) - now - 2);
+  }
+  return n;
+}
+
+// Every axis's following error within kCruiseSettledMm of where the cruise
+// settles it, and that within the excess-error limit: along the passed
+// periods the error goes from the one to the other monotonically.
+bool RunLoop::servo_settled() const {
+  const AxisVec step = k_.cruise_step();
+  for (int i = 0; i < m_.axis_count(); ++i) {
+    const double ess = plant_.steady_error(i, step[i]);
+    const double e = cmd_prev_[i] - plant_.actual()[i];
+    if (!(std::fabs(e - ess) <= kCruiseSettledMm) || !(std::fabs(ess) < k_.excess_error_mm(i)))
+      return false;
+  }
+  return true;
+}
+
+// Passes n periods of the cruise: the kernel's command and time, then the
+// servo in closed form from the command before to the command after.
+void RunLoop::pass_cruise(std::int64_t n) {
+  const AxisVec from = cmd_prev_;
+  const AxisVec step = k_.cruise_step();
+  k_.pass_cruise(n, tout_);
+  cmd_prev_ = k_.previous_command();
+  plant_.pass_cruise(n, from, cmd_prev_, step, tin_);
+  k_.cruised(plant_.actual());
+  times_.period(tout_.source, tout_.line, k_.now());
+}
+
+// One servo period: the plant follows the kernel's last command, the kernel
+// ticks, the block's time and the trace's row are kept.
+void RunLoop::servo_period() {
+  const AxisVec& cmd = tout_.commanded;
+  if (tout_.torque_limited || plant_.torque_limited())
+    plant_.set_torque_limit(tout_.torque_limit_pct);
+  if (tout_.followed_up) cmd_prev_ = cmd;  // a jump of the command, not motion
+  // The period follows the command of the last tick: that command says
+  // whether the tool cuts in it.
+  if (has_stock_) {
+    const CutNote& cut = cuts_.at(tout_.tag);
+    plant_.probing().set_cutting(cut.cuts, cut.end);
+  }
+  plant_.advance(k_.now() + 1, cmd_prev_, cmd, tin_);
+  cmd_prev_ = cmd;
+  k_.tick(tin_, tout_);
+  times_.period(tout_.source, tout_.line, k_.now());
+  if (tout_.passed_dwell_line != 0) {
+    times_.passed(tout_.passed_dwell_source, tout_.passed_dwell_line, k_.now());
+  }
+  if (opts_.trace != nullptr) opts_.trace->row(trace_row());
+}
+
+// The alarms of the period just run: tool changes, probe crash, collision,
+// probe protection; then the kernel's faults: an excess following error (an
+// axis held by a stop while the command runs on, as a torque limit skip with
+// no torque limit commanded), an axis that never reaches its command at rest
+// (held by a stop short of it: the control would wait for ever), a command
+// beyond a stroke end (not given to the servo). True when one ends the run.
+bool RunLoop::period_alarm() {
+  // The file is named only when the check has something to look at (most
+  // periods have nothing: safety_.quiet).
+  const std::string_view file = safety_.quiet(plant_) ? std::string_view{} : file_of(tout_.source);
+  if (auto s = safety_.after_period(plant_, k_, tout_.line, file)) {
+    alarm(std::move(s->error), tout_.source);
+    res_.alarm_position = s->machine_position;
+    return true;
+  }
+  if (const kernel::Fault& f = tout_.fault) {
+    alarm(fault_alarm(m_, f, file_of(tout_.source), tout_.line), tout_.source);
+    held_ = f.kind != kernel::Fault::Kind::kStrokeLimit;
+    return true;
+  }
+  return false;
+}
+
+// The interpreter waiting for the machine (a skip block, a read of the
+// position) goes on once the motion has ended. True when that is an alarm.
+bool RunLoop::sync_interpreter() {
+  if (!(waiting_ && router_.drained() && k_.idle() && (!k_.skip().active || k_.skip().done)))
+    return false;
+  interp::SyncState s;
+  s.machine_position = k_.command();
+  s.actual_position = plant_.actual();
+  s.time_s = k_.clock().seconds(k_.now());
+  const kernel::SkipResult& sk = k_.skip();
+  if (sk.active) {
+    s.skip_done = true;
+    s.triggered = sk.triggered;
+    s.torque_reached = sk.torque_reached;
+    s.active_at_start = sk.active_at_start;
+    s.latch_machine = sk.latch_machine;
+    s.input_index = sk.input_index;
+    if (sk.triggered) s.time_s = sk.time_s;
+    s.machine_position = sk.stop_position;
+  }
+  k_.clear_skip();
+  waiting_ = false;
+  auto r = in_.sync(s);
+  if (!r) {
+    alarm(r.error(), in_.context());
+    return true;
+  }
+  return false;
+}
+
+// Whether the run ends after this period: the program ended and the motion
+// with it, a feed held for ever, the time limit, a signal. Else the progress
+// is said about every simulated second.
+bool RunLoop::run_stops() {
+  if (ending_ && router_.drained() && k_.idle()) {
+    if (program_alarm_) alarm(*program_alarm_, program_alarm_context_);
+    return true;
+  }
+  // A feed held for ever: the motion stands (feed hold, interlock or
+  // override 0 %: no profile time passes) with motion still to run, and
+  // no later [[operator]] action of the scene can release it. It ends
+  // after one second of it, not at limits.max_time_s.
+  const bool hold_forever =
+      tout_.time_scale < 1e-12 && !k_.idle() && next_action_ >= scene_.operator_actions.size();
+  held_ticks_ = hold_forever ? held_ticks_ + 1 : 0;
+  if (static_cast<double>(held_ticks_) * k_.clock().period_s() >= 1.0) {
+    alarm(Error{AlarmId::kTimeLimit, held_reason(op_) + held_never_released,
+                SourceLoc{file_of(tout_.source), tout_.line, 1}, -1},
+          tout_.source);
+    return true;
+  }
+  if (k_.now() >= m_.limits.max_ticks) {
+    alarm(Error{AlarmId::kTimeLimit, "the run passed limits.max_time_s of simulated time",
+                SourceLoc{file_of(tout_.source), tout_.line, 1}, -1},
+          tout_.source);
+    return true;
+  }
+  if (opts_.interrupt != nullptr && opts_.interrupt->load(std::memory_order_relaxed)) {
+    // The block the stop cut: the one the machine runs, or while the
+    // machine is idle the one the interpreter is at (a macro loop). Was
+    // always the interpreter's, a block or more ahead of the machine.
+    const bool moving = !k_.idle() && tout_.line != 0;
+    const std::uint32_t ctx = moving ? tout_.source : in_.context();
+    res_.status = RunStatus::kInterrupted;
+    res_.alarm = Error{AlarmId::kInterrupted, "stopped by a signal",
+                       SourceLoc{file_of(ctx), moving ? tout_.line : in_.line(), 1}, -1};
+    res_.alarm_context = ctx;
+    return true;
+  }
+  if (opts_.progress) {
+    const double t = k_.clock().seconds(k_.now());
+    if (t >= next_progress_) {
+      opts_.progress(t, in_.line());
+      next_progress_ = t + 1.0;
+    }
+  }
+  return false;
+}
+
+RunResult RunLoop::run() {
+  for (;;) {
+    read_blocks();
+    if (res_.status != RunStatus::kCompleted) break;
+    if (const auto& r = router_.refused()) {
+      alarm(Error{AlarmId::kInternal,
+                  "the kernel's motion queue refused a command although it had room",
+                  SourceLoc{file_of(r->source), r->line, 1}, -1},
+            r->source);
+      break;
+    }
+    apply_operator_actions();
+    if (const std::int64_t quiet = quiet_periods(); quiet > 0) {
+      k_.pass_quiet(quiet);
+      times_.period(tout_.source, tout_.line, k_.now());
+    } else if (k_.now() >= next_cruise_try_) {  // looked at every kCruiseLookAgain periods
+      if (const std::int64_t cruise = cruise_periods(); cruise > 0) pass_cruise(cruise);
+    }
+    servo_period();
+    if (period_alarm() || sync_interpreter() || run_stops()) break;
+  }
+  finish();
+  save_persistent();
+  return std::move(res_);
+}
+
+// What the run leaves: the last trace row, its time, where the axes are, the
+// skips, the stock, the messages and warnings.
+void RunLoop::finish() {
+  if (opts_.trace != nullptr && k_.now() > 0) opts_.trace->last(trace_row());
+  res_.ticks = k_.now();
+  res_.time_s = k_.clock().seconds(k_.now());
+  res_.block_times = times_.finish();
+  res_.period_s = k_.clock().period_s();
+  // Where the axes are: the command, unless an axis was held away from it
+  // (a fault) or held still (machine lock, Z-axis cancel: the machine
+  // stays where it is while the work position follows the command).
+  res_.final_machine = held_ ? plant_.actual() : k_.command();
+  res_.final_work = in_.work_from_machine(res_.final_machine);
+  for (int i = 0; i < m_.axis_count(); ++i) {
+    if (locked_.has(i)) res_.final_machine[i] = plant_.actual()[i];
+  }
+  res_.skips = in_.skips();
+  if (const interp::SkipRecord* p = in_.pending_skip(); p != nullptr && res_.alarm) {
+    res_.skips.push_back(cut_short_skip(*p, k_.skip(), res_.alarm_position, in_));
+    res_.skips.back().end_position = res_.final_work;  // where the alarm stopped the axes
+  }
+  if (has_stock_) res_.stock = stock_result(plant_.probing().stock());
+  res_.contexts = in_.contexts();
+  res_.program_inch = in_.modal().units == interp::Units::kInch;
+  res_.messages = in_.messages();
+  for (auto& msg : router_.messages) res_.messages.push_back(msg);
+  for (const auto& msg : safety_.messages()) res_.messages.push_back(msg);
+  res_.warnings = in_.warnings();
+  for (const auto& w : safety_.warnings()) res_.warnings.push_back(w);
+  for (auto& w : setup_warnings_) res_.warnings.push_back(std::move(w));
+}
+
+// Every run that ended, by itself, by an alarm or by a signal (SIGTERM,
+// SIGINT: the run stops between periods) writes #500-#999 and the DPRNT
+// file (was: an interrupted run wrote neither).
+void RunLoop::save_persistent() {
+  const std::size_t said = in_.messages().size();
+  auto saved = in_.save_persistent();
+  // What saving said (the log files written: ngc_room.cpp).
+  for (std::size_t i = said; i < in_.messages().size(); ++i)
+    res_.messages.push_back(in_.messages()[i]);
+  if (!saved && res_.status == RunStatus::kCompleted) alarm(saved.error(), 0);
+  // After an alarm the run's alarm stays the first one; the failed save is
+  // said in the messages (was: not said at all).
+  if (!saved && res_.status != RunStatus::kCompleted) {
+    res_.messages.push_back("persistent variables not saved: " + saved.error().detail);
+  }
+  in_.release_persistent();
+}
+
 }  // namespace
 
 Simulator::Simulator(const config::MachineConfig& m, const config::Dialect& d,
@@ -336,351 +855,12 @@ Simulator::Simulator(const config::MachineConfig& m, const config::Dialect& d,
 Simulator::~Simulator() = default;
 
 Result<RunResult> Simulator::run(const interp::Setup& setup, const RunOptions& opts) {
-  RunResult res;
-  const AxisVec home{};
-  auto created = interp::Interpreter::create(setup, home);
+  auto created = interp::Interpreter::create(setup, AxisVec{});
   SKIPNC_TRY(created);
   interp_ = std::move(*created);
-  interp::Interpreter& in = *interp_;
-
-  kernel::KernelConfig kc = kernel::kernel_config(m_);
-  // The in-position check at the end of a rapid, unless the dialect's bit
-  // turns it off (Fanuc 1601#5 NCI).
-  kc.rapid_in_position = d_.sw.rapid_no_in_position_param == 0 ||
-                         !p_.bit(d_.sw.rapid_no_in_position_param, d_.sw.rapid_no_in_position_bit);
-  kernel::Kernel k(kc);
-  Plant plant(m_, scene_, k.clock());
-  k.set_position(home);
-  plant.reset(home);
-  plant.for_each_signal([&](const canon::SignalAddr& a, bool on) { k.preset_signal(a, on); });
-  ProbeSafety safety(m_, p_, plant, opts.commands);
-  FrameLog frames;
-  frames.note(0, in.work_frame());
-  // Whether the running command cuts, for a scene with stock.
-  const bool has_stock = !plant.probing().stock().empty();
-  TagLog<CutNote> cuts;
-  cuts.note(0, CutNote{});
-  Router router(k, &safety, &in, opts.trace != nullptr ? &frames : nullptr,
-                has_stock ? &cuts : nullptr);
-  AxisVec work_now;
-  // Machine lock and Z-axis cancel (operator switches kept as parameters):
-  // the locked axes do not move, the command does.
-  AxisMask locked;
-  if (d_.sw.machine_lock_param != 0 && p_.get(d_.sw.machine_lock_param) != 0.0) {
-    for (int i = 0; i < m_.axis_count(); ++i) locked.set(i);
-  }
-  if (d_.sw.z_cancel_param != 0 && p_.get(d_.sw.z_cancel_param) != 0.0 && m_.axis_index('Z') >= 0) {
-    locked.set(m_.axis_index('Z'));
-  }
-  k.set_locked_axes(locked);
-  plant.set_locked(locked);
-  kernel::OperatorState op;
-  op.dry_run_feed_mm_min = d_.sw.dry_run_feed_param != 0
-                               ? p_.get(d_.sw.dry_run_feed_param) * (m_.inch_machine ? 25.4 : 1.0)
-                               : 0.0;
-  std::size_t next_action = 0;  // scene [[operator]] actions not yet applied
-  std::int64_t held_ticks = 0;  // periods the motion has stood held for ever
-
-  kernel::TickInput tin;
-  kernel::TickOutput tout;
-  tout.commanded = home;
-  AxisVec cmd_prev = home;
-  bool waiting = false;  // the interpreter waits for a sync
-  bool ending = false;   // the program ended; the machine finishes its motion
-  bool held = false;     // an axis held away from its command ended the run
-  double next_progress = 1.0;
-  // The file of a call context (interpreter storage; the table only grows
-  // while blocks are read, and a motion alarm ends the reading).
-  auto file_of = [&](std::uint32_t ctx) -> std::string_view {
-    const auto& cs = in.contexts();
-    return ctx < cs.size() ? std::string_view(cs[ctx].file) : std::string_view(setup.program_name);
-  };
-
-  auto alarm = [&](Error e, std::uint32_t ctx) {
-    res.status = RunStatus::kAlarm;
-    res.alarm = std::move(e);
-    res.alarm_context = ctx;
-  };
-  // A program error stops the reading of blocks; the motion already queued
-  // is finished first, as if the blocks ran one by one, so the stopping
-  // point does not depend on how far the planner had read ahead.
-  std::optional<Error> program_alarm;
-  BlockClock times;
-  std::uint32_t program_alarm_context = 0;
-  // --strict: a warning of the set-up (the probe's length against its H,
-  // grbl on a lagging servo) is an alarm before the first block unless
-  // --allow or the scene's [strict] allow names it.
-  // They are reported after the program's own (res.warnings, at the end).
-  std::vector<interp::Warning> setup_warnings;
-  if (auto w = probe_length_warning(plant.probing().spec())) setup_warnings.push_back(*w);
-  if (auto w = grbl_servo_warning(m_, d_)) setup_warnings.push_back(*w);
-  if (setup.strict) {
-    if (const interp::Warning* w = first_refused(setup_warnings, setup.strict_allow)) {
-      program_alarm =
-          Error{AlarmId::kStrictWarning, w->code + ": " + w->text, SourceLoc{file_of(0), 0, 1}, -1};
-      ending = true;
-    }
-  }
-
-  // The trace's row of the period just run.
-  auto trace_row = [&]() {
-    TraceRow r;
-    r.tick = k.now();
-    r.time_s = k.clock().seconds(k.now());
-    r.commanded = &cmd_prev;
-    r.actual = &plant.actual();
-    r.torque = &plant.torque();
-    r.feed_mm_per_min = tout.path_speed * 60.0;
-    r.line = tout.line;
-    r.source = tout.source;
-    work_now = frames.at(tout.tag).apply(plant.actual(), m_.axis_count());
-    r.work = &work_now;
-    r.file = file_of(tout.source);
-    r.plant = &plant;
-    r.handshake = tout.handshake;
-    r.handshake_names = d_.handshake.empty() ? nullptr : &d_.handshake;
-    return r;
-  };
-
-  // Periods that would each repeat the last one, the time aside (a dwell, a
-  // feed hold): the kernel's command stands, the machine is still, the
-  // interpreter waits for the machine, and nothing of the scene, the
-  // operator, the trace's --trace-every or the time limit is due before
-  // them. They are passed in one step: the run is the same, bit for bit,
-  // as one period at a time (G04 X1e9 took minutes of processor time).
-  auto quiet_periods = [&]() -> std::int64_t {
-    if (!plant.still()) return 0;  // most periods: the axes move
-    const bool reading = !waiting && !ending && router.drained() && k.can_accept();
-    if (reading || tout.line == 0 || !safety.quiet(plant)) return 0;
-    std::int64_t n = std::min(k.quiet_ticks(), plant.quiet_ticks(k.now()));
-    if (n <= 0) return 0;
-    const Tick now = k.now();
-    n = std::min<std::int64_t>(n, m_.limits.max_ticks - now - 2);
-    if (next_action < scene_.operator_actions.size()) {
-      const double at = scene_.operator_actions[next_action].at_time_s;
-      n = std::min<std::int64_t>(
-          n, static_cast<std::int64_t>(std::floor(at / k.clock().period_s())) - now - 2);
-    } else if (tout.time_scale < 1e-12) {
-      return 0;  // held for ever: ends after a second (below), period by period
-    }
-    if (opts.trace != nullptr) {
-      const std::int64_t s = std::max<std::int64_t>(1, opts.trace->stride());
-      n = std::min<std::int64_t>(n, (now / s + 1) * s - now - 1);  // the next row is written
-    }
-    return n;
-  };
-
-  for (;;) {
-    // Feed the kernel until it is full or the interpreter must wait: first
-    // the motion of the last block that did not fit, then new blocks.
-    // A signal is heard between blocks too: a macro loop without motion
-    // runs many blocks within one period.
-    router.drain();
-    while (!waiting && !ending && router.drained() && k.can_accept() && !safety.holds_reading() &&
-           !(opts.interrupt != nullptr && opts.interrupt->load(std::memory_order_relaxed))) {
-      auto st = in.step(router);
-      if (!st) {
-        program_alarm = st.error();
-        program_alarm_context = in.context();
-        ending = true;
-        break;
-      }
-      if (*st == interp::Step::kSync) waiting = true;
-      if (*st == interp::Step::kEnd) ending = true;
-      const interp::Warning* strict_w =
-          setup.strict ? first_refused(safety.warnings(), setup.strict_allow) : nullptr;
-      if (strict_w != nullptr) {
-        // --strict: the machine's warning (a skip move that cannot stop in
-        // the over-travel) is an alarm at its block unless --allow names
-        // it; as for any program alarm, what is already queued (the skip
-        // move too) runs first.
-        const interp::Warning& w = *strict_w;
-        program_alarm = Error{AlarmId::kStrictWarning, w.code + ": " + w.text,
-                              SourceLoc{file_of(w.context), w.line, 1}, -1};
-        program_alarm_context = w.context;
-        ending = true;
-        break;
-      }
-    }
-    if (res.status != RunStatus::kCompleted) break;
-    if (const auto& r = router.refused()) {
-      alarm(Error{AlarmId::kInternal,
-                  "the kernel's motion queue refused a command although it had room",
-                  SourceLoc{file_of(r->source), r->line, 1}, -1},
-            r->source);
-      break;
-    }
-
-    // The operator's actions due by the start of this period.
-    if (next_action < scene_.operator_actions.size()) {
-      const double t0 = k.clock().seconds(k.now());
-      bool changed = false;
-      for (; next_action < scene_.operator_actions.size() &&
-             scene_.operator_actions[next_action].at_time_s <= t0 + 1e-12;
-           ++next_action) {
-        const OperatorAction& a = scene_.operator_actions[next_action];
-        if (a.feed_hold) op.feed_hold = *a.feed_hold;
-        if (a.interlock) op.interlock = *a.interlock;
-        if (a.override_pct) op.override_pct = *a.override_pct;
-        if (a.dry_run) op.dry_run = *a.dry_run;
-        changed = true;
-      }
-      if (changed) k.set_operator(op);
-    }
-
-    if (const std::int64_t quiet = quiet_periods(); quiet > 0) {
-      k.pass_quiet(quiet);
-      times.period(tout.source, tout.line, k.now());
-    }
-
-    // One servo period.
-    const AxisVec& cmd = tout.commanded;
-    if (tout.torque_limited || plant.torque_limited())
-      plant.set_torque_limit(tout.torque_limit_pct);
-    if (tout.followed_up) cmd_prev = cmd;  // a jump of the command, not motion
-    // The period follows the command of the last tick: that command says
-    // whether the tool cuts in it.
-    if (has_stock) {
-      const CutNote& cut = cuts.at(tout.tag);
-      plant.probing().set_cutting(cut.cuts, cut.end);
-    }
-    plant.advance(k.now() + 1, cmd_prev, cmd, tin);
-    cmd_prev = cmd;
-    k.tick(tin, tout);
-    times.period(tout.source, tout.line, k.now());
-    if (tout.passed_dwell_line != 0) {
-      times.passed(tout.passed_dwell_source, tout.passed_dwell_line, k.now());
-    }
-    if (opts.trace != nullptr) opts.trace->row(trace_row());
-    // Tool changes, probe crash, collision, probe protection.
-    if (auto s = safety.after_period(plant, k, tout.line, file_of(tout.source))) {
-      alarm(std::move(s->error), tout.source);
-      res.alarm_position = s->machine_position;
-      break;
-    }
-    // The kernel's faults: an excess following error (an axis held by a
-    // stop while the command runs on, as a torque limit skip with no torque
-    // limit commanded), an axis that never reaches its command at rest (held
-    // by a stop short of it: the control would wait for ever), a command
-    // beyond a stroke end (not given to the servo).
-    if (const kernel::Fault& f = tout.fault) {
-      alarm(fault_alarm(m_, f, file_of(tout.source), tout.line), tout.source);
-      held = f.kind != kernel::Fault::Kind::kStrokeLimit;
-      break;
-    }
-
-    if (waiting && router.drained() && k.idle() && (!k.skip().active || k.skip().done)) {
-      interp::SyncState s;
-      s.machine_position = k.command();
-      s.actual_position = plant.actual();
-      s.time_s = k.clock().seconds(k.now());
-      const kernel::SkipResult& sk = k.skip();
-      if (sk.active) {
-        s.skip_done = true;
-        s.triggered = sk.triggered;
-        s.torque_reached = sk.torque_reached;
-        s.active_at_start = sk.active_at_start;
-        s.latch_machine = sk.latch_machine;
-        s.input_index = sk.input_index;
-        if (sk.triggered) s.time_s = sk.time_s;
-        s.machine_position = sk.stop_position;
-      }
-      k.clear_skip();
-      waiting = false;
-      auto r = in.sync(s);
-      if (!r) {
-        alarm(r.error(), in.context());
-        break;
-      }
-    }
-    if (ending && router.drained() && k.idle()) {
-      if (program_alarm) alarm(*program_alarm, program_alarm_context);
-      break;
-    }
-    // A feed held for ever: the motion stands (feed hold, interlock or
-    // override 0 %: no profile time passes) with motion still to run, and
-    // no later [[operator]] action of the scene can release it. It ends
-    // after one second of it, not at limits.max_time_s.
-    const bool hold_forever =
-        tout.time_scale < 1e-12 && !k.idle() && next_action >= scene_.operator_actions.size();
-    held_ticks = hold_forever ? held_ticks + 1 : 0;
-    if (static_cast<double>(held_ticks) * k.clock().period_s() >= 1.0) {
-      alarm(Error{AlarmId::kTimeLimit, held_reason(op) + held_never_released,
-                  SourceLoc{file_of(tout.source), tout.line, 1}, -1},
-            tout.source);
-      break;
-    }
-    if (k.now() >= m_.limits.max_ticks) {
-      alarm(Error{AlarmId::kTimeLimit, "the run passed limits.max_time_s of simulated time",
-                  SourceLoc{file_of(tout.source), tout.line, 1}, -1},
-            tout.source);
-      break;
-    }
-    if (opts.interrupt != nullptr && opts.interrupt->load(std::memory_order_relaxed)) {
-      // The block the stop cut: the one the machine runs, or while the
-      // machine is idle the one the interpreter is at (a macro loop). Was
-      // always the interpreter's, a block or more ahead of the machine.
-      const bool moving = !k.idle() && tout.line != 0;
-      const std::uint32_t ctx = moving ? tout.source : in.context();
-      res.status = RunStatus::kInterrupted;
-      res.alarm = Error{AlarmId::kInterrupted, "stopped by a signal",
-                        SourceLoc{file_of(ctx), moving ? tout.line : in.line(), 1}, -1};
-      res.alarm_context = ctx;
-      break;
-    }
-    if (opts.progress) {
-      const double t = k.clock().seconds(k.now());
-      if (t >= next_progress) {
-        opts.progress(t, in.line());
-        next_progress = t + 1.0;
-      }
-    }
-  }
-  if (opts.trace != nullptr && k.now() > 0) opts.trace->last(trace_row());
-  res.ticks = k.now();
-  res.time_s = k.clock().seconds(k.now());
-  res.block_times = times.finish();
-  res.period_s = k.clock().period_s();
-  // Where the axes are: the command, unless an axis was held away from it
-  // (a fault) or held still (machine lock, Z-axis cancel: the machine
-  // stays where it is while the work position follows the command).
-  res.final_machine = held ? plant.actual() : k.command();
-  res.final_work = in.work_from_machine(res.final_machine);
-  for (int i = 0; i < m_.axis_count(); ++i) {
-    if (locked.has(i)) res.final_machine[i] = plant.actual()[i];
-  }
-  res.skips = in.skips();
-  if (const interp::SkipRecord* p = in.pending_skip(); p != nullptr && res.alarm) {
-    res.skips.push_back(cut_short_skip(*p, k.skip(), res.alarm_position, in));
-    res.skips.back().end_position = res.final_work;  // where the alarm stopped the axes
-  }
-  if (has_stock) res.stock = stock_result(plant.probing().stock());
-  res.contexts = in.contexts();
-  res.program_inch = in.modal().units == interp::Units::kInch;
-  res.messages = in.messages();
-  for (auto& msg : router.messages) res.messages.push_back(msg);
-  for (const auto& msg : safety.messages()) res.messages.push_back(msg);
-  res.warnings = in.warnings();
-  for (const auto& w : safety.warnings()) res.warnings.push_back(w);
-  for (auto& w : setup_warnings) res.warnings.push_back(std::move(w));
-  // Every run that ended, by itself, by an alarm or by a signal (SIGTERM,
-  // SIGINT: the run stops between periods) writes #500-#999 and the DPRNT
-  // file (was: an interrupted run wrote neither).
-  {
-    const std::size_t said = in.messages().size();
-    auto saved = in.save_persistent();
-    // What saving said (the log files written: ngc_room.cpp).
-    for (std::size_t i = said; i < in.messages().size(); ++i)
-      res.messages.push_back(in.messages()[i]);
-    if (!saved && res.status == RunStatus::kCompleted) alarm(saved.error(), 0);
-    // After an alarm the run's alarm stays the first one; the failed save is
-    // said in the messages (was: not said at all).
-    if (!saved && res.status != RunStatus::kCompleted) {
-      res.messages.push_back("persistent variables not saved: " + saved.error().detail);
-    }
-  }
-  in.release_persistent();
-  return res;
+  // A loop of some kilobytes (the kernel's queue): on the heap.
+  auto loop = std::make_unique<RunLoop>(m_, d_, p_, scene_, *interp_, setup, opts);
+  return loop->run();
 }
 
 }  // namespace skipnc::sim

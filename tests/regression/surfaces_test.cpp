@@ -254,32 +254,41 @@ TEST(SurfacesSweep, JunitFileNeverReplacesAnInput) {
   EXPECT_FALSE(fs::exists(s.csv()));
 }
 
-// SIGTERM at any moment of a sweep (from 50 ms after the start, once the
-// handlers are set, to well into it): the table is whole and readable, each
+// SIGTERM at any moment of a sweep: the table is whole and readable, each
 // finished row in it, the rest not_run, whatever the instant. Two workers.
+// The first milliseconds too (0 to 50 ms: before main(), while the spec
+// loads, before the first scenario): skipnc is started with SIGINT and
+// SIGTERM blocked, as a caller does that must be able to stop it from its
+// first instant, and unblocks them once its handlers are set. Before, a
+// SIGTERM in those milliseconds was lost (the sweep ran to its end) or, before
+// main(), ended skipnc without a table.
+void sigterm_leaves_a_readable_table(int wait_ms, bool blocked_at_start) {
+  Sweep s("G91 G1 X0.1 F600\nG04 X0.3\nM30\n", "scenarios = 200000\nworkers = 2\n");
+  Child c({"sweep", s.spec.string(), "-q"}, "/dev/null", (s.dir.path / "err.txt").string(),
+          blocked_at_start);
+  std::this_thread::sleep_for(std::chrono::milliseconds(wait_ms));
+  c.signal(SIGTERM);
+  const auto e = c.wait(120.0);
+  ASSERT_TRUE(e.exited) << wait_ms << " ms: ended by signal " << e.signal;
+  const auto j = s.table();
+  ASSERT_FALSE(j.is_discarded()) << wait_ms << " ms";
+  const auto& sum = j["summary"];
+  const int done = sum["passed"].get<int>() + sum["failed"].get<int>();
+  EXPECT_EQ(done + sum["not_run"].get<int>() + sum["statuses"].value("interrupted", 0), 200000)
+      << wait_ms << " ms";
+  EXPECT_GT(sum["not_run"].get<int>(), 0) << wait_ms << " ms: the signal was not heard";
+  EXPECT_EQ(count_lines(read_file(s.csv())), 200001) << wait_ms << " ms";
+  int finished = 0;
+  for (const auto& row : j["rows"]) finished += row.value("status", "") == "completed" ? 1 : 0;
+  EXPECT_EQ(finished, done) << wait_ms << " ms";
+  EXPECT_EQ(e.code, 1) << wait_ms << " ms";
+}
+
 TEST(SurfacesSweep, SigtermAtAnyMomentLeavesAReadableTable) {
+  for (const int ms : {0, 2, 5, 10, 25, 50}) sigterm_leaves_a_readable_table(ms, true);
   std::mt19937 rng(31);
   std::uniform_int_distribution<int> ms(50, 1500);
-  for (int k = 0; k < 5; ++k) {
-    Sweep s("G91 G1 X0.1 F600\nG04 X0.3\nM30\n", "scenarios = 200000\nworkers = 2\n");
-    Child c({"sweep", s.spec.string(), "-q"}, "/dev/null", (s.dir.path / "err.txt").string());
-    const int wait_ms = ms(rng);
-    std::this_thread::sleep_for(std::chrono::milliseconds(wait_ms));
-    c.signal(SIGTERM);
-    const auto e = c.wait(120.0);
-    ASSERT_TRUE(e.exited) << wait_ms << " ms: ended by signal " << e.signal;
-    const auto j = s.table();
-    ASSERT_FALSE(j.is_discarded()) << wait_ms << " ms";
-    const auto& sum = j["summary"];
-    const int done = sum["passed"].get<int>() + sum["failed"].get<int>();
-    EXPECT_EQ(done + sum["not_run"].get<int>() + sum["statuses"].value("interrupted", 0), 200000)
-        << wait_ms << " ms";
-    EXPECT_EQ(count_lines(read_file(s.csv())), 200001) << wait_ms << " ms";
-    int finished = 0;
-    for (const auto& row : j["rows"]) finished += row.value("status", "") == "completed" ? 1 : 0;
-    EXPECT_EQ(finished, done) << wait_ms << " ms";
-    EXPECT_EQ(e.code, done == 200000 ? 0 : 1) << wait_ms << " ms";
-  }
+  for (int k = 0; k < 5; ++k) sigterm_leaves_a_readable_table(ms(rng), false);
 }
 
 // ---- 3. Every file the run reads is checked --------------------------------
@@ -663,6 +672,44 @@ TEST(SurfacesTime, DwellBlocksHaveTheirTimeAndQuietPeriodsKeepTheTraceRows) {
   for (std::size_t i = 0; i + 1 < times.size(); ++i)
     EXPECT_NEAR(times[i], 0.25 * static_cast<double>(i + 1), 1e-9);
   EXPECT_NEAR(times.back(), total, 1e-9);
+}
+
+// Issue 31: a very slow feed costs processor time in proportion to what
+// changes. G1 X1. F0.0001 is 600,000 s of motion, 600 million periods (about
+// 19 s of processor time period by period, more than the 5 s limits.max_cpu_s
+// allows here): its cruise is passed in a few steps, and the run ends with the
+// axis at X1.
+TEST(SurfacesTime, VerySlowFeedEndsInLittleProcessorTime) {
+  TempDir dir;
+  const auto prog = dir.write("p.nc", "G1 X1. F0.0001\nM30\n");
+  const auto machine = dir.write("m.toml", "extends = \"mill3\"\n[limits]\nmax_cpu_s = 5\n");
+  const auto r = run_with_report(dir, prog, {"-m", machine.string()}, 120.0);
+  ASSERT_TRUE(r.exit.exited) << "not ended within 120 s";
+  ASSERT_TRUE(r.report_ok) << r.err;
+  EXPECT_EQ(r.exit.code, 0) << r.report.dump(1);
+  EXPECT_NEAR(r.report.at("final").value("time", 0.0), 600000.0, 0.01);
+  EXPECT_DOUBLE_EQ(r.report.at("final").at("machine_position").value("X", 0.0), 1.0);
+}
+
+// A passed cruise gives the report of the period-by-period run: the same
+// program with a trace (which has every period run one by one, its rows
+// digit for digit) and without one (its cruises passed in closed form) gives
+// the same report, byte for byte. Three slow feeds on three axes, 102 s, on
+// mill3 (kp 30/s, feedforward 0.95) and on mill3_lowgain.
+TEST(SurfacesTime, VerySlowFeedGivesThePeriodByPeriodReport) {
+  TempDir dir;
+  const auto prog =
+      dir.write("p.nc", "G91 G1 X0.1 Y0.05 F0.3\nG1 Z-0.02 F0.03\nG1 X-0.1 F0.15\nM30\n");
+  const auto trace = dir.path / "t.csv";
+  for (const char* machine : {"mill3", "mill3_lowgain"}) {
+    const auto one_by_one = run_with_report(dir, prog, {"-m", machine, "--trace", trace.string()});
+    ASSERT_EQ(one_by_one.exit.code, 0) << one_by_one.err;
+    EXPECT_GT(count_lines(read_file(trace)), 102000) << machine;
+    const auto passed = run_with_report(dir, prog, {"-m", machine});
+    ASSERT_EQ(passed.exit.code, 0) << passed.err;
+    EXPECT_EQ(passed.report.dump(1), one_by_one.report.dump(1)) << machine;
+    EXPECT_NEAR(passed.report.at("final").value("time", 0.0), 102.361, 0.01) << machine;
+  }
 }
 
 }  // namespace

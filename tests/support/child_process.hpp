@@ -32,8 +32,12 @@ struct ChildExit {
 class Child {
  public:
   // Runs `skipnc args...` with standard output and error sent to the files.
+  // With `stop_signals_blocked`, SIGINT and SIGTERM are blocked from the
+  // start (posix_spawn's signal mask), as a caller does that must be able to
+  // stop skipnc before its main() runs: skipnc unblocks them once its
+  // handlers are set.
   Child(const std::vector<std::string>& args, const std::string& out_file = "/dev/null",
-        const std::string& err_file = "/dev/null") {
+        const std::string& err_file = "/dev/null", bool stop_signals_blocked = false) {
     std::vector<std::string> argv_s;
     argv_s.emplace_back(SKIPNC_BINARY);
     argv_s.insert(argv_s.end(), args.begin(), args.end());
@@ -45,8 +49,19 @@ class Child {
     posix_spawn_file_actions_addopen(&fa, 0, "/dev/null", O_RDONLY, 0);
     posix_spawn_file_actions_addopen(&fa, 1, out_file.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
     posix_spawn_file_actions_addopen(&fa, 2, err_file.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    posix_spawnattr_t attr;
+    posix_spawnattr_init(&attr);
+    if (stop_signals_blocked) {
+      sigset_t stop;
+      sigemptyset(&stop);
+      sigaddset(&stop, SIGINT);
+      sigaddset(&stop, SIGTERM);
+      posix_spawnattr_setsigmask(&attr, &stop);
+      posix_spawnattr_setflags(&attr, POSIX_SPAWN_SETSIGMASK);
+    }
     start_ = std::chrono::steady_clock::now();
-    started_ = ::posix_spawn(&pid_, argv[0], &fa, nullptr, argv.data(), environ) == 0;
+    started_ = ::posix_spawn(&pid_, argv[0], &fa, &attr, argv.data(), environ) == 0;
+    posix_spawnattr_destroy(&attr);
     posix_spawn_file_actions_destroy(&fa);
   }
   ~Child() {

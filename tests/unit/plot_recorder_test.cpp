@@ -190,6 +190,62 @@ TEST(PlotRecorder, ALongProgramKeepsAtMostTheBoundedSamplesAndBlocks) {
   EXPECT_EQ(plot::Decimation{}.max_blocks, 20000u);
 }
 
+// Issue 31: the skip commands and tool changes a plot keeps are bounded too.
+// 100,000 skip blocks, each with a T word and M06, placed at a period where
+// the command stands; the tool changes every other period (T2 T2 T1 T1 ...),
+// so half the M06 are for the tool already in the spindle and change
+// nothing. The recorder keeps the first max_skip_moves skip commands, in
+// order, and at most max_tool_changes tool changes, the first and the last
+// among them.
+TEST(PlotRecorder, SkipMovesAndToolChangesStayWithinTheirBounds) {
+  const auto m = mill3();
+  plot::Decimation d;
+  d.max_skip_moves = 300;
+  d.max_tool_changes = 400;
+  plot::Recorder rec(m, d);
+  const int n = 100000;
+  std::size_t most_changes = 0;
+  AxisVec at;
+  for (int k = 1; k <= n; ++k) {
+    canon::Stamped c;
+    c.line = static_cast<std::uint32_t>(k);
+    AxisVec target;
+    target[2] = -static_cast<double>(k);
+    c.cmd = canon::Skip{target, 100.0, {}};
+    rec.emit(c);
+    c.cmd = canon::ToolSelect{1 + (k / 2) % 2};
+    rec.emit(c);
+    c.cmd = canon::MCode{6};
+    rec.emit(c);
+    feed_row(rec, k, at, at, 0.0, static_cast<std::uint32_t>(k));
+    most_changes = std::max(most_changes, rec.tool_changes().size());
+  }
+  rec.finish();
+  ASSERT_EQ(rec.skip_moves().size(), d.max_skip_moves);
+  EXPECT_EQ(rec.skip_moves_dropped(), n - d.max_skip_moves);
+  for (std::size_t i = 0; i < rec.skip_moves().size(); ++i) {
+    EXPECT_EQ(rec.skip_moves()[i].line, i + 1);
+    EXPECT_DOUBLE_EQ(rec.skip_moves()[i].target[2], -static_cast<double>(i + 1));
+  }
+  EXPECT_LE(most_changes, d.max_tool_changes);
+  const auto& tc = rec.tool_changes();
+  ASSERT_GE(tc.size(), d.max_tool_changes / 2);
+  // The first row places nothing (no period before it); the first change is
+  // T2 at the second period, the last T1 at the last (k = n, n / 2 even).
+  EXPECT_DOUBLE_EQ(tc.front().t, 0.002);
+  EXPECT_EQ(tc.front().tool, 2);
+  EXPECT_DOUBLE_EQ(tc.back().t, n * 0.001);
+  EXPECT_EQ(tc.back().tool, 1);
+  for (std::size_t i = 1; i < tc.size(); ++i) {
+    EXPECT_LT(tc[i - 1].t, tc[i].t);
+  }
+  // One change every other period from the second on: 50,000, all counted.
+  EXPECT_EQ(tc.size() + rec.tool_changes_dropped(), static_cast<std::size_t>(n / 2));
+  // The default bounds are the ones docs/plot.md states.
+  EXPECT_EQ(plot::Decimation{}.max_skip_moves, 20000u);
+  EXPECT_EQ(plot::Decimation{}.max_tool_changes, 20000u);
+}
+
 // A real run: the probe touches a plane twice; a pulse on another input
 // comes and goes. Every edge is drawn to the servo period.
 TEST(PlotRecorder, SignalEdgesAndLatchesSurviveThinningOfARealRun) {
