@@ -152,101 +152,138 @@ std::optional<V2> meet(const Path& a, const Path& b, V2 ref) {
 
 }  // namespace
 
+namespace {
+
+// The offset path of an entity's move, `s` to its left.
+Path offset_path(bool arc, V2 p0, V2 p1, V2 c, bool ccw, double s) {
+  Path p;
+  p.arc = arc;
+  if (arc) {
+    p.c = c;
+    p.rho = length(p0 - c) + (ccw ? -s : s);
+  } else {
+    p.d = unit(p1 - p0);
+    p.q = p0 + left(p.d) * s;
+  }
+  return p;
+}
+
+}  // namespace
+
+// What a corner is: the two moves' directions and offsets at the point
+// where they meet.
+struct Compensator::Turn {
+  V2 c;       // the programmed corner
+  V2 t1, t2;  // directions of travel at the end of the first, the start of the second
+  double s1 = 0.0, s2 = 0.0;
+  V2 o1, o2;  // the offset vectors
+  V2 ref;     // between the two offset points: the intersection nearest it
+  double dt = 0.0;
+  int sign = 0;
+  bool straight = false, flip = false, inner = false;
+  Path p1, p2;  // the offset paths
+};
+
+Compensator::Turn Compensator::turn(const Entity& e1, const Entity& e2, Join join) {
+  Turn g;
+  g.c = e1.p1;
+  g.t1 = tangent(e1.arc, e1.p0, e1.p1, e1.c, e1.ccw, true);
+  g.t2 = tangent(e2.arc, e2.p0, e2.p1, e2.c, e2.ccw, false);
+  // At a cancel the second move's offset (type B) is taken with the first's.
+  g.s1 = e1.s;
+  g.s2 = join == Join::kCancel ? e1.s : e2.s;
+  g.o1 = left(g.t1) * g.s1;
+  g.o2 = left(g.t2) * g.s2;
+  const double sref = join == Join::kCancel ? g.s1 : g.s2;
+  const double cr = cross(g.t1, g.t2);
+  g.dt = dot(g.t1, g.t2);
+  g.sign = sref > 0.0 ? 1 : sref < 0.0 ? -1 : 0;
+  g.straight = std::fabs(cr) < kParallel && g.dt > 0.0;
+  g.flip = join == Join::kNormal && g.s1 * g.s2 < 0.0;
+  g.inner = !g.straight && g.sign * cr > 0.0;
+  g.ref = (g.c + g.o1 + g.c + g.o2) * 0.5;
+  g.p1 = offset_path(e1.arc, e1.p0, e1.p1, e1.c, e1.ccw, g.s1);
+  g.p2 = offset_path(e2.arc, e2.p0, e2.p1, e2.c, e2.ccw, g.s2);
+  return g;
+}
+
+// Round an outer corner under 90 degrees: the two vectors extended by the
+// radius along each move, joined by a line (Fanuc's L, r, r, L).
+void Compensator::acute(const Turn& g, const Entity& e1, const Entity& e2, Join join, Corner& k) {
+  const V2 p1 = g.c + g.o1 + g.t1 * std::fabs(g.s1);
+  const V2 p2 = g.c + g.o2 - g.t2 * std::fabs(g.s2);
+  if (e1.arc) {
+    k.end1 = g.c + g.o1;
+    k.inserts.push_back(p1);
+  } else {
+    k.end1 = p1;
+  }
+  if (join == Join::kCancel || !e2.arc) {
+    k.inserts.push_back(p2);
+    k.start2 = p2;
+  } else {
+    k.inserts.push_back(p2);
+    k.start2 = g.c + g.o2;
+  }
+}
+
+// A corner between two compensated moves.
+Result<void> Compensator::normal_corner(const Turn& g, const Entity& e1, const Entity& e2,
+                                        Corner& k) {
+  if (g.straight || g.flip || g.sign == 0) {
+    k.end1 = g.c + g.o1;
+    k.start2 = g.c + g.o2;
+  } else if (g.inner) {
+    auto p = meet(g.p1, g.p2, g.ref);
+    if (!p) {
+      return fail(AlarmId::kCompNoSolution,
+                  "cutter compensation: the offset paths of the two moves do not meet at "
+                  "the inner corner (" +
+                      mm(g.c.x) + ", " + mm(g.c.y) + ")");
+    }
+    k.end1 = k.start2 = *p;
+  } else if (g.dt >= 0.0) {
+    auto p = meet(g.p1, g.p2, g.ref);
+    if (p) {
+      k.end1 = k.start2 = *p;
+    } else {
+      acute(g, e1, e2, Join::kNormal, k);
+    }
+  } else {
+    acute(g, e1, e2, Join::kNormal, k);
+  }
+  return {};
+}
+
 Result<Compensator::Corner> Compensator::corner(const Entity& e1, const Entity& e2, Join join,
                                                 bool type_b) const {
-  const V2 c = e1.p1;
-  const V2 t1 = tangent(e1.arc, e1.p0, e1.p1, e1.c, e1.ccw, true);
-  const V2 t2 = tangent(e2.arc, e2.p0, e2.p1, e2.c, e2.ccw, false);
-  // At a cancel the second move's offset (type B) is taken with the first's.
-  const double s1 = e1.s;
-  const double s2 = join == Join::kCancel ? e1.s : e2.s;
-  const V2 o1 = left(t1) * s1;
-  const V2 o2 = left(t2) * s2;
-  const double sref = join == Join::kCancel ? s1 : s2;
-  const double cr = cross(t1, t2);
-  const double dt = dot(t1, t2);
-  const int sign = sref > 0.0 ? 1 : sref < 0.0 ? -1 : 0;
-  const bool straight = std::fabs(cr) < kParallel && dt > 0.0;
-  const bool flip = join == Join::kNormal && s1 * s2 < 0.0;
-  const bool inner = !straight && sign * cr > 0.0;
-  auto path = [](const Entity& e, double s) {
-    Path p;
-    p.arc = e.arc;
-    if (e.arc) {
-      p.c = e.c;
-      p.rho = length(e.p0 - e.c) + (e.ccw ? -s : s);
-    } else {
-      p.d = unit(e.p1 - e.p0);
-      p.q = e.p0 + left(p.d) * s;
-    }
-    return p;
-  };
+  const Turn g = turn(e1, e2, join);
   Corner k;
-  // Round an outer corner under 90 degrees: the two vectors extended by the
-  // radius along each move, joined by a line (Fanuc's L, r, r, L).
-  auto acute = [&] {
-    const V2 p1 = c + o1 + t1 * std::fabs(s1);
-    const V2 p2 = c + o2 - t2 * std::fabs(s2);
-    if (e1.arc) {
-      k.end1 = c + o1;
-      k.inserts.push_back(p1);
-    } else {
-      k.end1 = p1;
-    }
-    if (join == Join::kCancel || !e2.arc) {
-      k.inserts.push_back(p2);
-      k.start2 = p2;
-    } else {
-      k.inserts.push_back(p2);
-      k.start2 = c + o2;
-    }
-  };
-  const V2 ref = (c + o1 + c + o2) * 0.5;
+  const bool perpendicular = !type_b || g.inner || g.straight || g.sign == 0;
   switch (join) {
     case Join::kStartup:
-      if (!type_b || inner || straight || sign == 0) {
-        k.end1 = k.start2 = c + o2;  // perpendicular to the next move's start
-      } else if (dt >= 0.0) {
-        auto p = meet(path(e1, s1), path(e2, s2), ref);
-        k.end1 = k.start2 = p ? *p : c + o2;
+      if (perpendicular) {
+        k.end1 = k.start2 = g.c + g.o2;  // perpendicular to the next move's start
+      } else if (g.dt >= 0.0) {
+        auto p = meet(g.p1, g.p2, g.ref);
+        k.end1 = k.start2 = p ? *p : g.c + g.o2;
       } else {
-        acute();
+        acute(g, e1, e2, join, k);
       }
       break;
     case Join::kCancel:
-      if (!type_b || inner || straight || sign == 0) {
-        k.end1 = c + o1;  // perpendicular to the last move's end
-      } else if (dt >= 0.0) {
-        auto p = meet(path(e1, s1), path(e2, s2), ref);
-        k.end1 = p ? *p : c + o1;
+      if (perpendicular) {
+        k.end1 = g.c + g.o1;  // perpendicular to the last move's end
+      } else if (g.dt >= 0.0) {
+        auto p = meet(g.p1, g.p2, g.ref);
+        k.end1 = p ? *p : g.c + g.o1;
       } else {
-        acute();
+        acute(g, e1, e2, join, k);
       }
       k.start2 = k.inserts.empty() ? k.end1 : k.inserts.back();
       break;
     case Join::kNormal:
-      if (straight || flip || sign == 0) {
-        k.end1 = c + o1;
-        k.start2 = c + o2;
-      } else if (inner) {
-        auto p = meet(path(e1, s1), path(e2, s2), ref);
-        if (!p) {
-          return fail(AlarmId::kCompNoSolution,
-                      "cutter compensation: the offset paths of the two moves do not meet at "
-                      "the inner corner (" +
-                          mm(c.x) + ", " + mm(c.y) + ")");
-        }
-        k.end1 = k.start2 = *p;
-      } else if (dt >= 0.0) {
-        auto p = meet(path(e1, s1), path(e2, s2), ref);
-        if (p) {
-          k.end1 = k.start2 = *p;
-        } else {
-          acute();
-        }
-      } else {
-        acute();
-      }
+      SKIPNC_TRY(normal_corner(g, e1, e2, k));
       break;
   }
   return k;
@@ -329,99 +366,111 @@ std::uint32_t Compensator::flush(std::vector<canon::Stamped>& out) {
   return line;
 }
 
+Result<void> Compensator::offset_move(Entity e, const canon::Stamped& c, const BlockMode& mode,
+                                      std::vector<canon::Stamped>& out) {
+  if (e.arc) {
+    const double rho = length(e.p0 - e.c) + (e.ccw ? -e.s : e.s);
+    if (rho <= kSamePoint) {
+      return fail(AlarmId::kCompInterference,
+                  "cutter compensation: the arc of radius " + mm(length(e.p0 - e.c)) +
+                      " is inside the tool (offset " + mm(std::fabs(e.s)) + ")");
+    }
+  }
+  if (held_) {
+    auto k = corner(*held_, e, held_->startup ? Join::kStartup : Join::kNormal, mode.type_b);
+    SKIPNC_TRY(k);
+    auto s = send_held(*k, &c, out);
+    if (!s) return s;
+    e.start = k->start2;
+  } else if (!has_vector_) {
+    if (e.arc) {
+      return fail(AlarmId::kCompArcStartup,
+                  "cutter compensation start-up (G41/G42) in a G02/G03 block: start it with "
+                  "G00 or G01");
+    }
+    e.startup = true;
+    e.start = plane(tool_);
+  } else {
+    // The lookahead was broken: a line goes from where the tool is; an
+    // arc starts on its offset circle, joined by a line.
+    e.start =
+        e.arc ? e.p0 + left(tangent(true, e.p0, e.p1, e.c, e.ccw, false)) * e.s : plane(tool_);
+  }
+  held_ = e;
+  quiet_ = 0;
+  return {};
+}
+
+Result<void> Compensator::cancel_move(const Entity& e, const canon::Stamped& c,
+                                      const BlockMode& mode, std::vector<canon::Stamped>& out) {
+  if (e.arc && (held_ || has_vector_)) {
+    return fail(AlarmId::kCompArcStartup,
+                "cutter compensation cancel (G40) in a G02/G03 block: cancel it with G00 or "
+                "G01");
+  }
+  if (held_) {
+    auto k = corner(*held_, e, Join::kCancel, mode.type_b);
+    SKIPNC_TRY(k);
+    auto s = send_held(*k, &c, out);
+    if (!s) return s;
+  }
+  send(c, out);  // from where the tool is to the programmed point
+  has_vector_ = false;
+  return {};
+}
+
+Result<void> Compensator::block_command(const canon::Stamped& c, const BlockMode& mode,
+                                        std::vector<canon::Stamped>& out, bool& plane_move) {
+  const bool path_move = is_path_move(c.cmd);
+  const bool ends_lookahead =
+      std::holds_alternative<canon::Skip>(c.cmd) || std::holds_alternative<canon::Stop>(c.cmd);
+  if (ends_lookahead || (path_move && mode.suspend)) {
+    // G31, M00/M01/M02/M30, G28/G30/G53: what is held ends perpendicular;
+    // the move itself goes to its programmed point and the vector is gone
+    // (G28 in offset mode: cancelled at the intermediate point, restored by
+    // a start-up at the next move).
+    flush(out);
+    send(c, out);
+    if (const AxisVec* t = target_of(c.cmd)) prog_ = *t;
+    has_vector_ = false;
+    return {};
+  }
+  if (!path_move) {
+    if (held_) {
+      deferred_.push_back(c);
+    } else {
+      send(c, out);
+    }
+    return {};
+  }
+  const AxisVec& target = *target_of(c.cmd);
+  const bool is_arc = std::holds_alternative<canon::Arc>(c.cmd);
+  if (!is_arc && length(plane(target) - plane(prog_)) < kSamePoint) {
+    // No move in the offset plane (a Z move): the tool stays offset.
+    canon::Stamped m = c;
+    if (held_) {
+      deferred_.push_back(m);
+    } else {
+      set_plane(*target_of(m.cmd), plane(tool_));
+      send(std::move(m), out);
+    }
+    prog_ = target;
+    return {};
+  }
+  plane_move = true;
+  const Entity e = make(c, mode);
+  SKIPNC_TRY(mode.side != 0 ? offset_move(e, c, mode, out) : cancel_move(e, c, mode, out));
+  prog_ = target;
+  return {};
+}
+
 Result<void> Compensator::block(const std::vector<canon::Stamped>& cmds, const BlockMode& mode,
                                 std::vector<canon::Stamped>& out) {
   a0_ = mode.a0;
   a1_ = mode.a1;
   broke_ = 0;
   bool plane_move = false;
-  for (const canon::Stamped& c : cmds) {
-    const bool path_move = is_path_move(c.cmd);
-    const bool ends_lookahead =
-        std::holds_alternative<canon::Skip>(c.cmd) || std::holds_alternative<canon::Stop>(c.cmd);
-    if (ends_lookahead || (path_move && mode.suspend)) {
-      // G31, M00/M01/M02/M30, G28/G30/G53: what is held ends perpendicular;
-      // the move itself goes to its programmed point and the vector is gone
-      // (G28 in offset mode: cancelled at the intermediate point, restored by
-      // a start-up at the next move).
-      flush(out);
-      send(c, out);
-      if (const AxisVec* t = target_of(c.cmd)) prog_ = *t;
-      has_vector_ = false;
-      continue;
-    }
-    if (!path_move) {
-      if (held_) {
-        deferred_.push_back(c);
-      } else {
-        send(c, out);
-      }
-      continue;
-    }
-    const AxisVec& target = *target_of(c.cmd);
-    const bool is_arc = std::holds_alternative<canon::Arc>(c.cmd);
-    if (!is_arc && length(plane(target) - plane(prog_)) < kSamePoint) {
-      // No move in the offset plane (a Z move): the tool stays offset.
-      canon::Stamped m = c;
-      if (held_) {
-        deferred_.push_back(m);
-      } else {
-        set_plane(*target_of(m.cmd), plane(tool_));
-        send(std::move(m), out);
-      }
-      prog_ = target;
-      continue;
-    }
-    plane_move = true;
-    Entity e = make(c, mode);
-    if (mode.side != 0) {
-      if (e.arc) {
-        const double rho = length(e.p0 - e.c) + (e.ccw ? -e.s : e.s);
-        if (rho <= kSamePoint) {
-          return fail(AlarmId::kCompInterference,
-                      "cutter compensation: the arc of radius " + mm(length(e.p0 - e.c)) +
-                          " is inside the tool (offset " + mm(std::fabs(e.s)) + ")");
-        }
-      }
-      if (held_) {
-        auto k = corner(*held_, e, held_->startup ? Join::kStartup : Join::kNormal, mode.type_b);
-        SKIPNC_TRY(k);
-        auto s = send_held(*k, &c, out);
-        if (!s) return s;
-        e.start = k->start2;
-      } else if (!has_vector_) {
-        if (e.arc) {
-          return fail(AlarmId::kCompArcStartup,
-                      "cutter compensation start-up (G41/G42) in a G02/G03 block: start it with "
-                      "G00 or G01");
-        }
-        e.startup = true;
-        e.start = plane(tool_);
-      } else {
-        // The lookahead was broken: a line goes from where the tool is; an
-        // arc starts on its offset circle, joined by a line.
-        e.start =
-            e.arc ? e.p0 + left(tangent(true, e.p0, e.p1, e.c, e.ccw, false)) * e.s : plane(tool_);
-      }
-      held_ = e;
-      quiet_ = 0;
-    } else {
-      if (e.arc && (held_ || has_vector_)) {
-        return fail(AlarmId::kCompArcStartup,
-                    "cutter compensation cancel (G40) in a G02/G03 block: cancel it with G00 or "
-                    "G01");
-      }
-      if (held_) {
-        auto k = corner(*held_, e, Join::kCancel, mode.type_b);
-        SKIPNC_TRY(k);
-        auto s = send_held(*k, &c, out);
-        if (!s) return s;
-      }
-      send(c, out);  // from where the tool is to the programmed point
-      has_vector_ = false;
-    }
-    prog_ = target;
-  }
+  for (const canon::Stamped& c : cmds) SKIPNC_TRY(block_command(c, mode, out, plane_move));
   if (held_ && !plane_move) {
     // Blocks without a plane move: one is looked past, more end the held
     // move perpendicular (as does G40 in a block without a plane move).

@@ -96,6 +96,17 @@ class Compensator {
 
   Entity make(const canon::Stamped& cmd, const BlockMode& mode) const;
   Result<Corner> corner(const Entity& e1, const Entity& e2, Join join, bool type_b) const;
+  struct Turn;  // the geometry of one corner (cutter_comp.cpp)
+  static Turn turn(const Entity& e1, const Entity& e2, Join join);
+  static void acute(const Turn& g, const Entity& e1, const Entity& e2, Join join, Corner& k);
+  static Result<void> normal_corner(const Turn& g, const Entity& e1, const Entity& e2, Corner& k);
+  // block(): one command; a move in the offset plane with G41/G42 or G40.
+  Result<void> block_command(const canon::Stamped& c, const BlockMode& mode,
+                             std::vector<canon::Stamped>& out, bool& plane_move);
+  Result<void> offset_move(Entity e, const canon::Stamped& c, const BlockMode& mode,
+                           std::vector<canon::Stamped>& out);
+  Result<void> cancel_move(const Entity& e, const canon::Stamped& c, const BlockMode& mode,
+                           std::vector<canon::Stamped>& out);
   // `check`: the interference check of a line (not for a flush, which
   // cannot refuse: what it holds must go out).
   Result<void> send_held(const Corner& k, const canon::Stamped* next_stamp,

@@ -70,52 +70,64 @@ void shift_back(Builder& b, const Hole& h) {
   b.spindle(h.spindle_dir);
 }
 
-}  // namespace
-
-std::vector<Move> hole_moves(const Hole& h) {
-  Builder b(h.from);
-  const double back = return_level(h);
-  // LinuxCNC: up to the clearance level before the positioning.
-  if (h.linuxcnc_levels && h.from[2] < back) b.rapid_z(back);
-  // Operations 1 and 2: positioning at the present level, then down to R
-  // (G87: to the initial level, the tool goes down to R with its shift).
-  b.rapid_xy(h.at[0], h.at[1]);
-  if (h.kind == Cycle::kG87) {
-    b.rapid_z(h.initial);
+// G73 / G83: peck to the bottom, then out to the return level.
+void peck_moves(Builder& b, const Hole& h, double dir, double back) {
+  double reached = h.r;
+  if (h.kind == Cycle::kG73) {
+    // High-speed peck: after each peck a rapid retraction of d (5114).
+    for (;;) {
+      reached = next_peck(h, reached, dir);
+      b.feed_z(reached);
+      if (reached == h.bottom) break;
+      b.rapid_z(reached - dir * h.peck_clearance);
+    }
   } else {
-    b.rapid_z(h.r);
+    // Peck: after each peck back to R, then rapid down to d (5115) short of
+    // the depth reached.
+    for (;;) {
+      const double start = reached;
+      reached = next_peck(h, reached, dir);
+      if (start != h.r) b.rapid_z(start - dir * h.peck_clearance);
+      b.feed_z(reached);
+      if (reached == h.bottom) break;
+      b.rapid_z(h.r);
+    }
   }
+  b.rapid_z(back);
+}
+
+// G76 / G87: the shifted boring cycles.
+void shifted_bore_moves(Builder& b, const Hole& h, double back) {
+  if (h.kind == Cycle::kG76) {
+    b.feed_z(h.bottom);
+    b.dwell(h.dwell_s);
+    shift_away(b, h);
+    b.rapid_z(back);
+    shift_back(b, h);
+    return;
+  }
+  // Back boring: shifted down through the bore to R, back on the axis,
+  // spindle on, bore upward to Z, then out the same way.
+  shift_away(b, h);
+  b.rapid_z(h.r);
+  shift_back(b, h);
+  b.feed_z(h.bottom);
+  b.dwell(h.dwell_s);
+  shift_away(b, h);
+  b.rapid_z(h.initial);
+  shift_back(b, h);
+}
+
+// Operation 3 on: the hole itself, from R (G87: from the initial level).
+void cycle_moves(Builder& b, const Hole& h, double back) {
   const double dir = h.bottom < h.r ? -1.0 : 1.0;  // the drilling direction
   switch (h.kind) {
     case Cycle::kNone:
       break;
-    case Cycle::kG73: {
-      // High-speed peck: after each peck a rapid retraction of d (5114).
-      double reached = h.r;
-      for (;;) {
-        reached = next_peck(h, reached, dir);
-        b.feed_z(reached);
-        if (reached == h.bottom) break;
-        b.rapid_z(reached - dir * h.peck_clearance);
-      }
-      b.rapid_z(back);
+    case Cycle::kG73:
+    case Cycle::kG83:
+      peck_moves(b, h, dir, back);
       break;
-    }
-    case Cycle::kG83: {
-      // Peck: after each peck back to R, then rapid down to d (5115) short of
-      // the depth reached.
-      double reached = h.r;
-      for (;;) {
-        const double start = reached;
-        reached = next_peck(h, reached, dir);
-        if (start != h.r) b.rapid_z(start - dir * h.peck_clearance);
-        b.feed_z(reached);
-        if (reached == h.bottom) break;
-        b.rapid_z(h.r);
-      }
-      b.rapid_z(back);
-      break;
-    }
     case Cycle::kG74:
     case Cycle::kG84: {
       const TapDirs t = h.kind == Cycle::kG84 ? kRightHandTap : kLeftHandTap;
@@ -129,11 +141,8 @@ std::vector<Move> hole_moves(const Hole& h) {
       break;
     }
     case Cycle::kG76:
-      b.feed_z(h.bottom);
-      b.dwell(h.dwell_s);
-      shift_away(b, h);
-      b.rapid_z(back);
-      shift_back(b, h);
+    case Cycle::kG87:
+      shifted_bore_moves(b, h, back);
       break;
     case Cycle::kG81:
     case Cycle::kG82:
@@ -158,19 +167,25 @@ std::vector<Move> hole_moves(const Hole& h) {
       b.rapid_z(back);
       b.spindle(h.spindle_dir);
       break;
-    case Cycle::kG87:
-      // Back boring: shifted down through the bore to R, back on the axis,
-      // spindle on, bore upward to Z, then out the same way.
-      shift_away(b, h);
-      b.rapid_z(h.r);
-      shift_back(b, h);
-      b.feed_z(h.bottom);
-      b.dwell(h.dwell_s);
-      shift_away(b, h);
-      b.rapid_z(h.initial);
-      shift_back(b, h);
-      break;
   }
+}
+
+}  // namespace
+
+std::vector<Move> hole_moves(const Hole& h) {
+  Builder b(h.from);
+  const double back = return_level(h);
+  // LinuxCNC: up to the clearance level before the positioning.
+  if (h.linuxcnc_levels && h.from[2] < back) b.rapid_z(back);
+  // Operations 1 and 2: positioning at the present level, then down to R
+  // (G87: to the initial level, the tool goes down to R with its shift).
+  b.rapid_xy(h.at[0], h.at[1]);
+  if (h.kind == Cycle::kG87) {
+    b.rapid_z(h.initial);
+  } else {
+    b.rapid_z(h.r);
+  }
+  cycle_moves(b, h, back);
   return b.take();
 }
 
