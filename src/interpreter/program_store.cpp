@@ -344,6 +344,7 @@ Result<std::optional<ProgramAt>> ProgramStore::find_sub(const std::string& label
   }
   const std::string name = sub_file_stem(label);
   if (name.empty()) return std::nullopt;
+  if (auto known = subs_on_path_.find(label); known != subs_on_path_.end()) return known->second;
   for (const auto& d : include_dirs()) {
     const fs::path p = fs::path(d) / (name + ".ngc");
     std::error_code ec;
@@ -358,7 +359,10 @@ Result<std::optional<ProgramAt>> ProgramStore::find_sub(const std::string& label
     SKIPNC_TRY(have);
     auto r = sub_in_file(**have, label, where);
     SKIPNC_TRY(r);
-    if (*r) return r;
+    if (*r) {
+      subs_on_path_.emplace(label, **r);
+      return r;
+    }
     return fail(AlarmId::kProgramNotFound,
                 p.filename().string() + " has no " + shown_oword(label) + " sub", where);
   }

@@ -185,6 +185,10 @@ class ProgramStore {
 
   Options opt_;
   std::vector<std::unique_ptr<ProgramFile>> files_;
+  // The subs found in <name>.ngc on the include path, by label: a later call
+  // not answered by the running or the main file goes there at once (the
+  // folders are not searched again; the file is open already).
+  std::unordered_map<std::string, ProgramAt> subs_on_path_;
 };
 
 }  // namespace skipnc::interp

@@ -60,30 +60,24 @@ TEST(ProgramStore, ProgramsByNumberInTheMainFileFoldersAndLibraries) {
   t.write("ALL-PROG.TXT", "%\nO9810\nG0 X10.\nM99\nO9811\nG0 X11.\nM99\n%\n");
   Store s("O1\nG0 X0\nM98 P2\nM30\nO2\nG0 X2.\nM99\n", {t.path.string()});
 
-  auto in_main = s.store.find_program(2, kAt);
-  ASSERT_TRUE(in_main.has_value()) << in_main.error().detail;
-  EXPECT_EQ(in_main->file, &s.store.main_file());
-  EXPECT_EQ(block_at(*in_main), "G0 X2.");
-
-  auto alone = s.store.find_program(100, kAt);
-  ASSERT_TRUE(alone.has_value()) << alone.error().detail;
-  EXPECT_EQ(alone->file->display, "O100.nc");
-  EXPECT_EQ(block_at(*alone), "G1 X1.");
-
-  auto padded = s.store.find_program(42, kAt);
-  ASSERT_TRUE(padded.has_value()) << padded.error().detail;
-  EXPECT_EQ(padded->file->display, "O0042.nc");
-  EXPECT_EQ(block_at(*padded), "G0 X42.");
-
+  // O<number>: in the file shown as `file`, at the block `text`.
+  auto expect_program = [&](std::int64_t number, const std::string& file, const char* text) {
+    auto p = s.store.find_program(number, kAt);
+    ASSERT_TRUE(p.has_value()) << p.error().detail;
+    EXPECT_EQ(p->file->display, file) << "O" << number;
+    EXPECT_EQ(block_at(*p), text) << "O" << number;
+  };
+  expect_program(2, "main.nc", "G0 X2.");
+  expect_program(100, "O100.nc", "G1 X1.");
+  expect_program(42, "O0042.nc", "G0 X42.");
+  expect_program(9811, "ALL-PROG.TXT", "G0 X11.");
+  // Now loaded: found among the loaded files, in the same file object.
   auto second = s.store.find_program(9811, kAt);
-  ASSERT_TRUE(second.has_value()) << second.error().detail;
-  EXPECT_EQ(second->file->display, "ALL-PROG.TXT");
-  EXPECT_EQ(block_at(*second), "G0 X11.");
-  // Now loaded: found among the loaded files, the same file object.
   auto first = s.store.find_program(9810, kAt);
-  ASSERT_TRUE(first.has_value());
+  ASSERT_TRUE(first.has_value() && second.has_value());
   EXPECT_EQ(first->file, second->file);
   EXPECT_EQ(block_at(*first), "G0 X10.");
+  EXPECT_EQ(s.store.main_file().display, "main.nc");
 }
 
 TEST(ProgramStore, TheRunningFileIsSearchedFirst) {
@@ -150,6 +144,13 @@ TEST(ProgramStore, SubsInTheirOwnFileAndTheirErrors) {
   ASSERT_TRUE(sub.has_value() && sub->has_value());
   EXPECT_EQ((*sub)->file->display, "probe_x.ngc");
   EXPECT_EQ(block_at(**sub), "G38.2 X5 F50");
+
+  // Found once: the folders are not searched again (the file is open).
+  fs::remove(t.path / "probe_x.ngc");
+  auto again = s.store.find_sub("<PROBE_X>", kAt);
+  ASSERT_TRUE(again.has_value() && again->has_value());
+  EXPECT_EQ((*again)->file, (*sub)->file);
+  EXPECT_EQ((*again)->at, (*sub)->at);
 
   auto none = s.store.find_sub("<EMPTY>", kAt);
   ASSERT_FALSE(none.has_value());
