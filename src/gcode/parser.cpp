@@ -215,13 +215,9 @@ bool Parser::parse_sequence_number(bool strict) {
   return true;
 }
 
-// p_ at 'O': o<label> keyword [expr]... The label is a number ("o100",
-// leading zeros dropped) or a name ("o<probe_x>", upper-cased, spaces dropped).
-bool Parser::parse_oword(const char* at) {
-  ++p_;
-  std::string label;
-  ExprId computed = kNoExpr;
-  std::int64_t number = -1;
+// p_ after the 'o' of an O-word: its label, a number (`number` set too), a
+// <name>, or an [expression] (`computed`).
+inline bool Parser::parse_olabel(std::string& label, ExprId& computed, std::int64_t& number) {
   const int c = peek();
   if (c == '<') {
     std::string name;
@@ -238,6 +234,42 @@ bool Parser::parse_oword(const char* at) {
   } else {
     return unexpected("a number, <name> or [expression] after 'o'", p_);
   }
+  return true;
+}
+
+// p_ after an O-word's keyword: its [arguments], as many as `kind` takes
+// (comments between them read past).
+inline bool Parser::parse_oword_args(OKind kind) {
+  const bool needs_one = kind == OKind::kIf || kind == OKind::kElseif || kind == OKind::kWhile ||
+                         kind == OKind::kRepeat;
+  const bool takes_many = kind == OKind::kCall;
+  const bool takes_one = needs_one || kind == OKind::kReturn || kind == OKind::kEndsub;
+  for (int next = peek(); next == '[' || next == '('; next = peek()) {
+    if (next == '(') {  // a comment between the arguments (LinuxCNC reads past it)
+      if (!parse_comment()) return false;
+      continue;
+    }
+    if (!takes_many && !(takes_one && out_.args.empty())) {
+      return error(AlarmId::kMacroFormat, "this O-word statement takes no more arguments", p_);
+    }
+    const ExprId e = parse_bracket();
+    if (e == kFail) return false;
+    out_.args.push_back(e);
+  }
+  if (needs_one && out_.args.empty()) {
+    return unexpected("a [condition] or [count] after the O-word keyword", p_);
+  }
+  return true;
+}
+
+// p_ at 'O': o<label> keyword [expr]... The label is a number ("o100",
+// leading zeros dropped) or a name ("o<probe_x>", upper-cased, spaces dropped).
+bool Parser::parse_oword(const char* at) {
+  ++p_;
+  std::string label;
+  ExprId computed = kNoExpr;
+  std::int64_t number = -1;
+  if (!parse_olabel(label, computed, number)) return false;
   {
     // A program's title ("O100", "O<name>" alone, as LinuxCNC's Fanuc-style
     // numbered programs called by M98): a program number, no statement.
@@ -281,26 +313,7 @@ bool Parser::parse_oword(const char* at) {
   out_.stmt.okind = kind;
   out_.stmt.label = add_name(std::move(label));
   out_.stmt.target = computed;
-  const bool needs_one = kind == OKind::kIf || kind == OKind::kElseif || kind == OKind::kWhile ||
-                         kind == OKind::kRepeat;
-  const bool takes_many = kind == OKind::kCall;
-  const bool takes_one = needs_one || kind == OKind::kReturn || kind == OKind::kEndsub;
-  for (int next = peek(); next == '[' || next == '('; next = peek()) {
-    if (next == '(') {  // a comment between the arguments (LinuxCNC reads past it)
-      if (!parse_comment()) return false;
-      continue;
-    }
-    if (!takes_many && !(takes_one && out_.args.empty())) {
-      return error(AlarmId::kMacroFormat, "this O-word statement takes no more arguments", p_);
-    }
-    const ExprId e = parse_bracket();
-    if (e == kFail) return false;
-    out_.args.push_back(e);
-  }
-  if (needs_one && out_.args.empty()) {
-    return unexpected("a [condition] or [count] after the O-word keyword", p_);
-  }
-  return true;
+  return parse_oword_args(kind);
 }
 
 // p_ at a letter after an address: the function named there, or kNoExpr

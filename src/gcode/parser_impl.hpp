@@ -399,6 +399,9 @@ class Parser {
   bool parse_print(StmtKind kind, const char* at);
   bool parse_comment();
   bool parse_oword(const char* at);
+  [[gnu::always_inline]] bool parse_olabel(std::string& label, ExprId& computed,
+                                           std::int64_t& number);
+  [[gnu::always_inline]] bool parse_oword_args(OKind kind);
   bool parse_ngc_assign(const char* at);
   ExprId ngc_word_function(char c);
   [[gnu::noinline]] int ngc_precedence(Op op) const noexcept;

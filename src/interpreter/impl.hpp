@@ -1,7 +1,8 @@
 // Internal state of the interpreter, shared by its translation units:
 //   interpreter.cpp  reading and executing blocks, sync, the public interface
 //   macro_flow.cpp   macro statements: assignment, IF, GOTO, WHILE/DO/END, DPRNT
-//   macro_call.cpp   program lookup, M98/G65/G66 calls, M99 returns, arguments
+//   macro_call.cpp   M98/G65/G66 calls, M99 returns, arguments (programs are
+//                    found by the program store, program_store.hpp)
 //   expr.cpp         expression evaluation and the vacant rules
 //   sysvars.cpp      system variables (#3000.., #4000.., #5000..)
 //   ncblock.cpp      address words, modal groups, offsets, data setting
@@ -37,6 +38,7 @@
 #include "interpreter/cycles.hpp"
 #include "interpreter/interpreter.hpp"
 #include "interpreter/ngc_room.hpp"
+#include "interpreter/program_store.hpp"
 #include "interpreter/skip_rules.hpp"
 #include "interpreter/transform.hpp"
 
@@ -46,89 +48,9 @@ namespace sysvar {
 struct Range;
 }
 
-// True when `p` (after resolving links) lies inside folder `dir`
-// (macro_call.cpp): called programs stay inside the include folders.
-bool path_inside(const std::filesystem::path& p, const std::filesystem::path& dir);
-
-// A file of programs: the main program file or one found on the include path.
-struct ProgramFile {
-  std::string path;
-  std::string display;  // shown in errors (file name as given)
-  std::unique_ptr<gcode::Source> src;
-  // O numbers found so far and the position of the block after them.
-  std::unordered_map<std::int64_t, gcode::SourcePos> programs;
-  bool scanned = false;  // every O number of the file is in `programs`
-  // The GOTO / M99 P targets of each program of the file, keyed by the
-  // offset of the program's first block (macro_flow.cpp jump_to_label).
-  struct LabelIndex {
-    // Every N of the program sorted by (number, offset), found by one scan,
-    // when there are at most limits.max_label_index of them.
-    bool complete = false;
-    std::vector<std::pair<std::int64_t, gcode::SourcePos>> all;
-    // Otherwise the positions of each number asked for, one scan per number
-    // (a cache of at most kLabelCache numbers).
-    std::unordered_map<std::int64_t, std::vector<gcode::SourcePos>> asked;
-  };
-  static constexpr std::size_t kLabelCache = 4096;
-  std::unordered_map<std::uint64_t, LabelIndex> labels;
-  // A false WHILE: the position after its END, keyed by the WHILE block's
-  // offset, found by the first scan; later passes jump there at once.
-  std::unordered_map<std::uint64_t, gcode::SourcePos> while_exits;
-  // RS274NGC (oword.cpp): `o<label> sub` definitions of the file, by label,
-  // at the block after the sub (found by one scan of the file), and the
-  // O-word a skip forward from an O-word block found, keyed by that block's
-  // offset and what was looked for: later passes seek there at once.
-  std::unordered_map<std::string, gcode::SourcePos> subs;
-  std::unordered_set<std::string> endsubs;  // labels with an `o<label> endsub`
-  bool subs_scanned = false;
-  struct OJump {
-    gcode::SourcePos at;     // the O-word block found
-    gcode::SourcePos after;  // the block after it
-  };
-  std::unordered_map<std::uint64_t, OJump> ojumps;
-};
-
-// An RS274NGC loop being run (o-word while, do, repeat).
-struct OLoop {
-  std::string label;
-  gcode::OKind kind = gcode::OKind::kNone;  // kWhile, kDo or kRepeat
-  gcode::SourcePos start;                   // the opening block
-  gcode::SourcePos body;                    // the block after it
-  double left = 0.0;                        // repeat: passes still to run
-};
-
-struct Loop {
-  int id = 0;
-  gcode::SourcePos pos;   // the WHILE (or DO) block
-  std::uint64_t end = 0;  // offset of its END block, once known
-  bool end_known = false;
-};
-
 // Additional work coordinate systems G54.1 P1-P300 follow EXT and G54-G59.
 inline constexpr int kExtraWorkSystems = 300;
 inline constexpr int kWorkSystems = 7 + kExtraWorkSystems;
-
-// One level of the call stack.
-struct Frame {
-  ProgramFile* file = nullptr;
-  gcode::SourcePos start;     // first block of the program
-  gcode::SourcePos resume;    // next block to read when this frame runs again
-  std::int64_t program = 0;   // O number (0: main program without one)
-  std::uint32_t context = 0;  // CallContext index
-  int repeats_left = 0;       // M98 L / G65 L
-  bool macro = false;         // G65/G66 call: owns a local-variable level
-  bool modal_call = false;    // a G66 call (no re-entry of the modal macro inside)
-  std::vector<Loop> loops;
-  // RS274NGC: a frame opened by `o<label> call` (its label), and its loops.
-  std::string sub_label;
-  std::vector<OLoop> oloops;
-  // M97 (Haas): a local subprogram of the caller's program. `start` is its
-  // first block (where L repeats begin); its GOTO and M99 P labels are those
-  // of the whole program, which begins at `program_start`.
-  bool local = false;
-  gcode::SourcePos program_start;
-  const gcode::SourcePos& label_origin() const noexcept { return local ? program_start : start; }
-};
 
 // One word's value after evaluation.
 struct WordVal {
@@ -278,8 +200,10 @@ struct Interpreter::Impl {
   std::array<int, 26> axis_of_letter{};  // -1 when the letter is not an axis
   std::uint32_t axis_letters = 0;        // bit c set: letter 'A' + c is an axis
 
-  std::vector<std::unique_ptr<ProgramFile>> files;
-  std::vector<Frame> frames;
+  // Program files, their indexes, include folders, the call stack
+  // (program_store.hpp); `frames` is its call stack.
+  ProgramStore programs;
+  std::vector<Frame>& frames = programs.frames;
   std::vector<CallContext> contexts;  // every call path met; [0] the main program
   gcode::Block blk;
   BlockBuffer block_buffer;  // the running block's commands (reused)
@@ -418,10 +342,13 @@ struct Interpreter::Impl {
 
   // macro_flow.cpp
   Flow<Step> execute_statement(CommandSink& out);
+  Flow<Step> goto_statement(const gcode::Stmt& s, SourceLoc where);
+  Flow<Step> loop_statement(const gcode::Stmt& s, SourceLoc where);  // WHILE, DO
+  Flow<Step> pass_false_while(int id, SourceLoc where);
+  Flow<Step> end_statement(int id, SourceLoc where);
   Flow<bool> condition(gcode::ExprId cond, SourceLoc where);
   // GOTO / M99 P: the first N n after the block at offset `from`, else the first one.
   Flow<void> jump_to_label(std::int64_t n, std::uint64_t from, SourceLoc where);
-  Flow<gcode::SourcePos> find_label(std::int64_t n, std::uint64_t from, SourceLoc where);
   Flow<void> find_loop_end(Loop& l);
   Flow<void> leave_loops_for(std::uint64_t target);
   Flow<void> print_line(SourceLoc where);
@@ -430,14 +357,15 @@ struct Interpreter::Impl {
   // oword.cpp: RS274NGC O-word statements and parameter settings
   Flow<Step> execute_oword(CommandSink& out);
   Flow<void> oword_call(const std::string& label, SourceLoc where);
-  std::string sub_not_found(const std::string& label) const;
-  Flow<bool> find_sub(const std::string& label, ProgramFile*& file, gcode::SourcePos& at,
-                      SourceLoc where);
   Flow<void> skip_to_oword(const std::string& label, std::uint32_t kinds, SourceLoc where);
   Flow<Step> oword_return(const gcode::Stmt& s, SourceLoc where);
   Flow<bool> oword_condition();
   Flow<Step> oword_branch(gcode::OKind kind, const std::string& label, SourceLoc where);
   Flow<Step> oword_loop(gcode::OKind kind, const std::string& label, SourceLoc where);
+  Flow<Step> oword_while(const std::string& label, SourceLoc where);
+  Flow<Step> oword_break(gcode::OKind kind, const std::string& label, SourceLoc where);
+  Flow<Step> oword_seek(gcode::SourcePos p);
+  Flow<Step> oword_leave(const OLoop& l, SourceLoc where);
   Flow<void> ngc_assignments();
   // ngc_params.cpp: LinuxCNC's numbered and named parameters
   Flow<Value> read_ngc_param(int n, SourceLoc where);
@@ -488,15 +416,10 @@ struct Interpreter::Impl {
   Flow<void> data_setting_ngc(const Words& words, SourceLoc where);
 
   // macro_call.cpp
-  Flow<void> find_program(std::int64_t number, ProgramFile*& file, gcode::SourcePos& pos,
-                          SourceLoc where);
   Flow<void> call(std::int64_t program, int repeats, bool macro, SourceLoc where,
                   bool modal_call = false);
   std::uint32_t context_of(CallContext c);  // index of c, added when new
   Flow<void> push_frame(Frame f, std::string call, SourceLoc where);
-  std::vector<std::string> include_dirs() const;
-  Result<ProgramFile*> program_file(const std::filesystem::path& p, bool& added);
-  Result<std::unique_ptr<gcode::Source>> scanner_for(const ProgramFile& pf) const;
   Flow<Step> return_from_sub(std::optional<std::int64_t> label, SourceLoc where);
   Flow<void> local_call(std::int64_t label, int repeats, SourceLoc where);
   Flow<void> macro_call(std::int64_t program, int repeats, bool modal_call, SourceLoc where);

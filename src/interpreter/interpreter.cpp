@@ -105,23 +105,17 @@ Flow<void> Interpreter::Impl::init(const AxisVec& start) {
                       " cannot be set before a run (#1-#33, #100-#199, #500-#999)");
     }
   }
-  auto file = std::make_unique<ProgramFile>();
-  file->display = setup.program_name;
-  if (setup.program_path.empty()) {
-    file->src = gcode::make_string_source(setup.program_name, setup.program_text, source_limits());
-  } else {
-    file->path = setup.program_path;
-    auto src = gcode::open_file_source(setup.program_path, setup.program_name, source_limits());
-    SKIPNC_TRY(src);
-    file->src = std::move(*src);
-  }
-  Frame main;
-  main.file = file.get();
-  main.start = file->src->tell();
-  main.resume = main.start;
-  contexts.push_back(CallContext{file->display, 0, CallContext::kNone, 0, "", file->path});
-  files.push_back(std::move(file));
-  frames.push_back(main);
+  ProgramStore::Options store;
+  store.main_name = setup.program_name;
+  store.main_path = setup.program_path;
+  store.main_text = &setup.program_text;
+  store.include_dirs = setup.include_dirs;
+  store.source = source_limits();
+  store.parse = parse_limits;
+  store.max_label_index = mc.limits.max_label_index;
+  SKIPNC_TRY(programs.open(std::move(store)));
+  const ProgramFile& file = programs.main_file();
+  contexts.push_back(CallContext{file.display, 0, CallContext::kNone, 0, "", file.path});
   return {};
 }
 

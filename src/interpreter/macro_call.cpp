@@ -1,207 +1,13 @@
 // Calls: program lookup, M98 subprogram calls, G65 / G66 macro calls with
 // their arguments, and M99 returns.
 //
-// Program lookup (docs/macro.md): O<n> is looked for, as a number (O0010 is
-// O10), in the running file, the main program file and every file already
-// loaded; then on the include path (-I, else the main program's folder), in
-// order, as the files O<n>.nc, O<n>.NC, o<n>.nc, <n>.nc, O<n>, and with the
-// number padded to four digits (O0010.nc, O0010); then inside the folder's
-// library files (*.nc, *.txt, *.prg, *.tap holding several programs, like a
-// punched ALL-PROG file), in name order. An -I that names a file makes that
-// file a library. A program can only name a
-// number: the file name is built here from digits, so no path a program
-// writes can reach outside the include folders, and a file found there
-// through a link that leads outside them is refused.
-#include <algorithm>
-#include <cstdio>
+// Programs are found by the program store (program_store.cpp).
 #include <cstring>
-#include <filesystem>
-#include <string_view>
-#include <vector>
+#include <string>
 
 #include "interpreter/impl.hpp"
 
 namespace skipnc::interp {
-
-namespace fs = std::filesystem;
-
-// True when `p` (after resolving links) lies inside folder `dir`.
-bool path_inside(const fs::path& p, const fs::path& dir) {
-  std::error_code ec;
-  const fs::path rp = fs::weakly_canonical(p, ec);
-  if (ec) return false;
-  const fs::path rd = fs::weakly_canonical(dir, ec);
-  if (ec) return false;
-  auto r = std::mismatch(rd.begin(), rd.end(), rp.begin(), rp.end());
-  return r.first == rd.end();
-}
-
-namespace {
-
-// The file names that hold program O<n> alone, in the order they are tried.
-std::vector<std::string> program_file_names(std::int64_t number) {
-  const std::string n = std::to_string(number);
-  std::vector<std::string> names = {"O" + n + ".nc", "O" + n + ".NC", "o" + n + ".nc", n + ".nc",
-                                    "O" + n};
-  if (number < 1000) {
-    char padded[24];
-    std::snprintf(padded, sizeof padded, "%04lld", static_cast<long long>(number));
-    names.push_back("O" + std::string(padded) + ".nc");
-    names.push_back("O" + std::string(padded));
-  }
-  return names;
-}
-
-// The endings of the files of an include folder that are searched as
-// libraries (several programs in one file, like a punched ALL-PROG file).
-constexpr std::string_view kLibraryEndings[] = {".nc",  ".NC",  ".txt", ".TXT",
-                                                ".prg", ".PRG", ".tap", ".TAP"};
-
-// The library files of `dir` in name order: files with a library ending,
-// other than the ones named after the program (tried before), that stay
-// inside the folder when links are followed.
-std::vector<fs::path> library_files(const fs::path& dir, const std::vector<std::string>& skip) {
-  std::vector<fs::path> out;
-  std::error_code ec;
-  for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
-    const fs::path& p = it->path();
-    const std::string name = p.filename().string();
-    const bool library =
-        std::ranges::any_of(kLibraryEndings, [&](std::string_view e) { return name.ends_with(e); });
-    if (!library || std::ranges::find(skip, name) != skip.end()) continue;
-    std::error_code fe;
-    if (!fs::is_regular_file(p, fe) || !path_inside(p, dir)) continue;
-    out.push_back(p);
-  }
-  std::ranges::sort(out);
-  return out;
-}
-
-}  // namespace
-
-Flow<void> Interpreter::Impl::find_program(std::int64_t number, ProgramFile*& file,
-                                           gcode::SourcePos& at, SourceLoc where) {
-  auto scan = [&](ProgramFile& pf) -> Result<bool> {
-    if (auto it = pf.programs.find(number); it != pf.programs.end()) {
-      file = &pf;
-      at = it->second;
-      return true;
-    }
-    if (pf.scanned) return false;
-    // Scan the file once for program numbers with a source of its own, so
-    // the running read position is not disturbed.
-    auto opened = scanner_for(pf);
-    SKIPNC_TRY(opened);
-    const std::unique_ptr<gcode::Source> scanner = std::move(*opened);
-    gcode::RawBlock rb;
-    for (;;) {
-      auto more = scanner->next(rb);
-      SKIPNC_TRY(more);
-      if (!*more) break;
-      std::size_t i = 0;
-      while (i < rb.text.size() && (rb.text[i] == ' ' || rb.text[i] == '\t')) ++i;
-      if (i < rb.text.size() && (rb.text[i] == 'O' || rb.text[i] == 'o' || rb.text[i] == ':')) {
-        std::int64_t n = 0;
-        std::size_t j = i + 1;
-        int digits = 0;
-        while (j < rb.text.size() && rb.text[j] >= '0' && rb.text[j] <= '9' && digits < 12) {
-          n = n * 10 + (rb.text[j] - '0');
-          ++j;
-          ++digits;
-        }
-        if (digits > 0) pf.programs.emplace(n, scanner->tell());
-      }
-    }
-    pf.scanned = true;
-    if (auto it = pf.programs.find(number); it != pf.programs.end()) {
-      file = &pf;
-      at = it->second;
-      return true;
-    }
-    return false;
-  };
-  for (ProgramFile* pf : {frames.back().file, files.front().get()}) {
-    auto r = scan(*pf);
-    SKIPNC_TRY(r);
-    if (*r) return {};
-  }
-  for (auto& pf : files) {
-    auto r = scan(*pf);
-    SKIPNC_TRY(r);
-    if (*r) return {};
-  }
-  const std::vector<std::string> dirs = include_dirs();
-  const std::string n = std::to_string(number);
-  const std::vector<std::string> names = program_file_names(number);
-  // A file not loaded yet: opened, scanned, kept in `files`. Null when it is
-  // already loaded (its programs were searched above).
-  auto load = [&](const fs::path& p) -> Result<ProgramFile*> {
-    bool added = false;
-    auto pf = program_file(p, added);
-    SKIPNC_TRY(pf);
-    return added ? *pf : nullptr;
-  };
-  std::vector<std::string> libraries_tried;
-  // A library: a file holding several programs (%, O9810 ... M99, O9811 ...
-  // M99, %), searched for the O number only.
-  auto search_library = [&](const fs::path& p) -> Result<bool> {
-    libraries_tried.push_back(p.filename().string());
-    auto pf = load(p);
-    SKIPNC_TRY(pf);
-    if (*pf == nullptr) return false;
-    return scan(**pf);
-  };
-  for (const auto& d : dirs) {
-    std::error_code ec;
-    if (fs::is_regular_file(d, ec)) {  // -I ALL-PROG.TXT: a library file
-      auto r = search_library(fs::path(d));
-      SKIPNC_TRY(r);
-      if (*r) return {};
-      continue;
-    }
-    const fs::path dir(d.empty() ? "." : d);
-    for (const auto& name : names) {
-      const fs::path p = dir / name;
-      if (!fs::is_regular_file(p, ec)) continue;
-      if (!path_inside(p, dir)) {
-        return fail(AlarmId::kProgramNotFound,
-                    "program O" + n + ": '" + p.string() + "' leads outside the include folder",
-                    where);
-      }
-      auto pf = load(p);
-      SKIPNC_TRY(pf);
-      if (*pf == nullptr) continue;
-      auto r = scan(**pf);
-      SKIPNC_TRY(r);
-      if (*r) return {};
-      // A file named after the program without an O block: run it from the top.
-      file = *pf;
-      at = gcode::SourcePos{};
-      (*pf)->programs.emplace(number, at);
-      return {};
-    }
-    for (const fs::path& p : library_files(dir, names)) {
-      auto r = search_library(p);
-      SKIPNC_TRY(r);
-      if (*r) return {};
-    }
-  }
-  std::string detail = "program O" + n + " not found: looked in the programs loaded, then in";
-  for (const auto& d : dirs) detail += " '" + (d.empty() ? std::string(".") : d) + "'";
-  detail += " for";
-  for (const auto& name : names) detail += " " + name;
-  if (!libraries_tried.empty()) {
-    detail += ", and for O" + n + " inside";
-    constexpr std::size_t kShown = 8;  // library names listed; the rest are counted
-    for (std::size_t i = 0; i < libraries_tried.size() && i < kShown; ++i) {
-      detail += " " + libraries_tried[i];
-    }
-    if (libraries_tried.size() > kShown) {
-      detail += " and " + std::to_string(libraries_tried.size() - kShown) + " more files";
-    }
-  }
-  return fail(AlarmId::kProgramNotFound, detail, where);
-}
 
 // Nesting (Fanuc): G65/G66 macro calls up to 4 levels, M98 subprogram calls
 // up to 10 levels, each counted on its own (limits.max_macro_levels,
@@ -232,13 +38,11 @@ Flow<void> Interpreter::Impl::call(std::int64_t program, int repeats, bool macro
                     std::to_string(mc.limits.max_subprogram_levels) + " levels",
                 where);
   }
-  ProgramFile* file = nullptr;
-  gcode::SourcePos at;
-  auto found = find_program(program, file, at, where);
-  if (!found) return found;
+  auto found = programs.find_program(program, where);
+  SKIPNC_TRY(found);
   Frame f;
-  f.file = file;
-  f.start = at;
+  f.file = found->file;
+  f.start = found->at;
   f.program = program;
   f.repeats_left = repeats - 1;
   f.macro = macro;
@@ -259,7 +63,7 @@ Flow<void> Interpreter::Impl::local_call(std::int64_t label, int repeats, Source
                 where);
   }
   const gcode::SourcePos resume = frames.back().file->src->tell();
-  auto at = find_label(label, block_pos.offset, where);
+  auto at = programs.find_label(frames.back(), label, block_pos.offset, where);
   SKIPNC_TRY(at);
   const Frame& caller = frames.back();
   Frame f;
@@ -286,46 +90,6 @@ Flow<void> Interpreter::Impl::push_frame(Frame f, std::string call, SourceLoc wh
   frames.push_back(std::move(f));
   const Frame& top = frames.back();
   return top.file->src->seek(top.start);
-}
-
-// A second reader of a program file, for a scan that must not move the
-// running read position.
-Result<std::unique_ptr<gcode::Source>> Interpreter::Impl::scanner_for(const ProgramFile& pf) const {
-  if (pf.path.empty()) {
-    return gcode::make_string_source(pf.display, setup.program_text, source_limits());
-  }
-  return gcode::open_file_source(pf.path, pf.display, source_limits());
-}
-
-// Where called programs are looked for: the -I folders, else the folder of
-// the main program.
-std::vector<std::string> Interpreter::Impl::include_dirs() const {
-  std::vector<std::string> dirs = setup.include_dirs;
-  if (dirs.empty()) {
-    const fs::path parent = fs::path(setup.program_path).parent_path();
-    dirs.push_back(setup.program_path.empty() || parent.empty() ? std::string(".")
-                                                                : parent.string());
-  }
-  return dirs;
-}
-
-// The program file at `p`: the one already loaded, or opened now and kept in
-// `files` (`added` says which).
-Result<ProgramFile*> Interpreter::Impl::program_file(const fs::path& p, bool& added) {
-  added = false;
-  for (const auto& f : files) {
-    std::error_code ec;
-    if (!f->path.empty() && fs::equivalent(f->path, p, ec)) return f.get();
-  }
-  auto pf = std::make_unique<ProgramFile>();
-  pf->path = p.string();
-  pf->display = p.filename().string();
-  auto src = gcode::open_file_source(pf->path, pf->display, source_limits());
-  SKIPNC_TRY(src);
-  pf->src = std::move(*src);
-  files.push_back(std::move(pf));
-  added = true;
-  return files.back().get();
 }
 
 // M99 (or the end of a called program): runs the program again while

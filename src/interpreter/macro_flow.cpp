@@ -82,109 +82,13 @@ Flow<Step> Interpreter::Impl::execute_statement(CommandSink& out) {
       return Step::kContinue;
     }
     case StmtKind::kGoto:
-    case StmtKind::kIfGoto: {
-      if (s.kind == StmtKind::kIfGoto) {
-        auto c = condition(s.cond, where);
-        SKIPNC_TRY(c);
-        if (!*c) return Step::kContinue;
-      }
-      auto t = eval(s.target);
-      SKIPNC_TRY(t);
-      // Sequence numbers 1-99999 (Fanuc 0i/30i); the value is rounded.
-      const double n = std::round(t->num());
-      if (t->vacant || n < 1 || n > 99999) {
-        char buf[64];
-        std::snprintf(buf, sizeof buf, "GOTO %.6g: sequence numbers are 1 to 99999", t->num());
-        return fail(AlarmId::kIllegalSequenceNumber, t->vacant ? "GOTO a vacant variable" : buf,
-                    where);
-      }
-      auto j = jump_to_label(static_cast<std::int64_t>(n), block_pos.offset, where);
-      SKIPNC_TRY(j);
-      return Step::kContinue;
-    }
+    case StmtKind::kIfGoto:
+      return goto_statement(s, where);
     case StmtKind::kWhile:
-    case StmtKind::kDo: {
-      if (s.loop < 1 || s.loop > 3) {
-        return fail(AlarmId::kIllegalLoopNumber,
-                    "DO " + std::to_string(s.loop) + ": loop numbers are 1, 2 and 3", where);
-      }
-      bool run = true;
-      if (s.kind == StmtKind::kWhile) {
-        auto c = condition(s.cond, where);
-        SKIPNC_TRY(c);
-        run = *c;
-      }
-      Frame& f = frames.back();
-      const bool again = !f.loops.empty() && f.loops.back().pos.offset == block_pos.offset;
-      if (run) {
-        if (again) return Step::kContinue;
-        // A loop with the same number still on the stack: either this DO is
-        // inside it (illegal) or that loop was left by a GOTO.
-        for (std::size_t i = f.loops.size(); i-- > 0;) {
-          Loop& l = f.loops[i];
-          if (l.id != s.loop) continue;
-          auto e = find_loop_end(l);
-          SKIPNC_TRY(e);
-          if (block_pos.offset > l.pos.offset && block_pos.offset < l.end) {
-            return fail(AlarmId::kIllegalLoopNumber,
-                        "DO " + std::to_string(s.loop) + " inside a loop with the same number",
-                        where);
-          }
-          f.loops.resize(i);
-          break;
-        }
-        if (f.loops.size() >= 3) {
-          return fail(AlarmId::kIllegalLoopNumber, "loops nested more than 3 deep", where);
-        }
-        f.loops.push_back(Loop{s.loop, block_pos, 0, false});
-        return Step::kContinue;
-      }
-      if (again) f.loops.pop_back();
-      // Continue after the matching END (found once, then remembered: a false
-      // WHILE inside a loop costs one seek per pass, not a re-read).
-      if (auto known = f.file->while_exits.find(block_pos.offset);
-          known != f.file->while_exits.end()) {
-        auto sk = f.file->src->seek(known->second);
-        SKIPNC_TRY(sk);
-        f.resume = known->second;
-        return Step::kContinue;
-      }
-      const std::uint64_t while_at = block_pos.offset;
-      const int id = s.loop;
-      const SourceLoc start = where;
-      const std::uint64_t program_start = f.label_origin().offset;
-      for (;;) {
-        auto got = read_block();
-        SKIPNC_TRY(got);
-        if (!*got || blk.percent || (blk.has_o && block_pos.offset != program_start)) {
-          return fail(AlarmId::kMissingEnd, "no END " + std::to_string(id) + " for this DO", start);
-        }
-        if (blk.stmt.kind == StmtKind::kEnd && blk.stmt.loop == id) break;
-      }
-      f.resume = f.file->src->tell();
-      f.file->while_exits.emplace(while_at, f.resume);
-      return Step::kContinue;
-    }
-    case StmtKind::kEnd: {
-      if (s.loop < 1 || s.loop > 3) {
-        return fail(AlarmId::kIllegalLoopNumber,
-                    "END " + std::to_string(s.loop) + ": loop numbers are 1, 2 and 3", where);
-      }
-      Frame& f = frames.back();
-      if (f.loops.empty() || f.loops.back().id != s.loop) {
-        return fail(
-            AlarmId::kMissingEnd,
-            "END " + std::to_string(s.loop) + " without a matching DO " + std::to_string(s.loop),
-            where);
-      }
-      Loop& l = f.loops.back();
-      l.end = block_pos.offset;
-      l.end_known = true;
-      auto sk = f.file->src->seek(l.pos);
-      SKIPNC_TRY(sk);
-      f.resume = l.pos;
-      return Step::kContinue;
-    }
+    case StmtKind::kDo:
+      return loop_statement(s, where);
+    case StmtKind::kEnd:
+      return end_statement(s.loop, where);
     case StmtKind::kPopen:
       dprnt_open = true;
       dprnt_used = true;
@@ -204,6 +108,117 @@ Flow<Step> Interpreter::Impl::execute_statement(CommandSink& out) {
     case StmtKind::kNone:
       break;
   }
+  return Step::kContinue;
+}
+
+// GOTO n, IF [...] GOTO n.
+[[gnu::always_inline]] inline Flow<Step> Interpreter::Impl::goto_statement(const gcode::Stmt& s,
+                                                                           SourceLoc where) {
+  if (s.kind == gcode::StmtKind::kIfGoto) {
+    auto c = condition(s.cond, where);
+    SKIPNC_TRY(c);
+    if (!*c) return Step::kContinue;
+  }
+  auto t = eval(s.target);
+  SKIPNC_TRY(t);
+  // Sequence numbers 1-99999 (Fanuc 0i/30i); the value is rounded.
+  const double n = std::round(t->num());
+  if (t->vacant || n < 1 || n > 99999) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "GOTO %.6g: sequence numbers are 1 to 99999", t->num());
+    return fail(AlarmId::kIllegalSequenceNumber, t->vacant ? "GOTO a vacant variable" : buf, where);
+  }
+  auto j = jump_to_label(static_cast<std::int64_t>(n), block_pos.offset, where);
+  SKIPNC_TRY(j);
+  return Step::kContinue;
+}
+
+// WHILE [...] DO m, DO m: the loop entered (or entered again), or, for a
+// false WHILE, on after its END.
+[[gnu::always_inline]] inline Flow<Step> Interpreter::Impl::loop_statement(const gcode::Stmt& s,
+                                                                           SourceLoc where) {
+  if (s.loop < 1 || s.loop > 3) {
+    return fail(AlarmId::kIllegalLoopNumber,
+                "DO " + std::to_string(s.loop) + ": loop numbers are 1, 2 and 3", where);
+  }
+  bool run = true;
+  if (s.kind == gcode::StmtKind::kWhile) {
+    auto c = condition(s.cond, where);
+    SKIPNC_TRY(c);
+    run = *c;
+  }
+  Frame& f = frames.back();
+  const bool again = !f.loops.empty() && f.loops.back().pos.offset == block_pos.offset;
+  if (run) {
+    if (again) return Step::kContinue;
+    // A loop with the same number still on the stack: either this DO is
+    // inside it (illegal) or that loop was left by a GOTO.
+    for (std::size_t i = f.loops.size(); i-- > 0;) {
+      Loop& l = f.loops[i];
+      if (l.id != s.loop) continue;
+      auto e = find_loop_end(l);
+      SKIPNC_TRY(e);
+      if (block_pos.offset > l.pos.offset && block_pos.offset < l.end) {
+        return fail(AlarmId::kIllegalLoopNumber,
+                    "DO " + std::to_string(s.loop) + " inside a loop with the same number", where);
+      }
+      f.loops.resize(i);
+      break;
+    }
+    if (f.loops.size() >= 3) {
+      return fail(AlarmId::kIllegalLoopNumber, "loops nested more than 3 deep", where);
+    }
+    f.loops.push_back(Loop{s.loop, block_pos, 0, false});
+    return Step::kContinue;
+  }
+  if (again) f.loops.pop_back();
+  return pass_false_while(s.loop, where);
+}
+
+// A false WHILE: continue after the matching END (found once, then
+// remembered: a false WHILE inside a loop costs one seek per pass, not a
+// re-read).
+Flow<Step> Interpreter::Impl::pass_false_while(int id, SourceLoc where) {
+  Frame& f = frames.back();
+  if (auto known = f.file->while_exits.find(block_pos.offset); known != f.file->while_exits.end()) {
+    auto sk = f.file->src->seek(known->second);
+    SKIPNC_TRY(sk);
+    f.resume = known->second;
+    return Step::kContinue;
+  }
+  const std::uint64_t while_at = block_pos.offset;
+  const std::uint64_t program_start = f.label_origin().offset;
+  for (;;) {
+    auto got = read_block();
+    SKIPNC_TRY(got);
+    if (!*got || blk.percent || (blk.has_o && block_pos.offset != program_start)) {
+      return fail(AlarmId::kMissingEnd, "no END " + std::to_string(id) + " for this DO", where);
+    }
+    if (blk.stmt.kind == gcode::StmtKind::kEnd && blk.stmt.loop == id) break;
+  }
+  f.resume = f.file->src->tell();
+  f.file->while_exits.emplace(while_at, f.resume);
+  return Step::kContinue;
+}
+
+// END m: back to its DO.
+[[gnu::always_inline]] inline Flow<Step> Interpreter::Impl::end_statement(int id, SourceLoc where) {
+  if (id < 1 || id > 3) {
+    return fail(AlarmId::kIllegalLoopNumber,
+                "END " + std::to_string(id) + ": loop numbers are 1, 2 and 3", where);
+  }
+  Frame& f = frames.back();
+  if (f.loops.empty() || f.loops.back().id != id) {
+    return fail(AlarmId::kMissingEnd,
+                "END " + std::to_string(id) + " without a matching DO " + std::to_string(id),
+                where);
+  }
+  Loop& l = f.loops.back();
+  l.end = block_pos.offset;
+  l.end_known = true;
+  auto sk = f.file->src->seek(l.pos);
+  SKIPNC_TRY(sk);
+  f.resume = l.pos;
   return Step::kContinue;
 }
 
@@ -310,120 +325,10 @@ Flow<void> Interpreter::Impl::leave_loops_for(std::uint64_t target) {
   return {};
 }
 
-// One pass over the running program: `each(number, position)` for every
-// block with an N, in file order, until it returns false.
-template <class Each>
-Result<void> scan_program_labels(const Frame& f, const gcode::ParseLimits& limits, Each each) {
-  gcode::Source& src = *f.file->src;
-  const gcode::SourcePos& origin = f.label_origin();
-  auto s = src.seek(origin);
-  if (!s) return s;
-  gcode::RawBlock rb;
-  gcode::Block b;
-  // A main program read from the top begins with its own '%' and O block:
-  // they open the program; a '%' or O block after its first other block
-  // ends it.
-  bool body = false;
-  for (;;) {
-    const gcode::SourcePos at = src.tell();
-    auto more = src.next(rb);
-    SKIPNC_TRY(more);
-    if (!*more) break;
-    // Cheap test before parsing: only blocks with an N, or an O or '%'
-    // that ends the program, matter.
-    if (rb.text.find_first_of("NnOo:%") == std::string_view::npos) {
-      body = body || rb.text.find_first_not_of(" \t") != std::string_view::npos;
-      continue;
-    }
-    auto p = gcode::parse_block(rb.text, SourceLoc{f.file->display, rb.line, rb.column}, rb.offset,
-                                b, limits);
-    if (!p) continue;  // reported if the block is ever executed
-    const bool opens = b.percent || b.has_o;
-    if (opens && (body || (at.offset != origin.offset && origin.offset != 0))) break;
-    body = body || !opens;
-    if (b.has_n && !each(b.n, at)) break;
-  }
-  return {};
-}
-
-// Of positions in file order (`pos` of each element): the first after the
-// offset `from`, else the first; null when there is none.
-template <class It, class Pos>
-const gcode::SourcePos* first_after(It first, It last, std::uint64_t from, Pos pos) {
-  const gcode::SourcePos* any = nullptr;
-  for (; first != last; ++first) {
-    const gcode::SourcePos& p = pos(*first);
-    if (p.offset > from) return &p;
-    if (any == nullptr) any = &p;
-  }
-  return any;
-}
-
 // GOTO n / M99 Pn: the first N n after the block at `from`, else the first
-// in the program (Fanuc searches forward, then from the top). The index
-// holds every label of a program up to limits.max_label_index (one scan,
-// then a binary search per jump); a larger program keeps only the numbers
-// asked for, each found by its own scan, so memory stays bounded whatever
-// the file's size (issue 21: a 1 GB program with a GOTO held every label).
-Flow<gcode::SourcePos> Interpreter::Impl::find_label(std::int64_t n, std::uint64_t from,
-                                                     SourceLoc where) {
-  Frame& f = frames.back();
-  auto [it, fresh] = f.file->labels.try_emplace(f.label_origin().offset);
-  ProgramFile::LabelIndex& idx = it->second;
-  if (fresh) {
-    const auto cap = static_cast<std::size_t>(mc.limits.max_label_index);
-    bool over = false;
-    auto s = scan_program_labels(f, parse_limits, [&](std::int64_t num, gcode::SourcePos at) {
-      if (idx.all.size() == cap) {
-        over = true;
-        return false;
-      }
-      idx.all.emplace_back(num, at);
-      return true;
-    });
-    SKIPNC_TRY(s);
-    if (over) {
-      idx.all.clear();
-      idx.all.shrink_to_fit();
-    } else {
-      // By number, then file order (the scan's order is the offsets').
-      std::stable_sort(idx.all.begin(), idx.all.end(),
-                       [](const auto& x, const auto& y) { return x.first < y.first; });
-      idx.complete = true;
-    }
-  }
-  const gcode::SourcePos* found = nullptr;
-  if (idx.complete) {
-    auto [lo, hi] = std::equal_range(
-        idx.all.begin(), idx.all.end(), std::pair<std::int64_t, gcode::SourcePos>{n, {}},
-        [](const auto& x, const auto& y) { return x.first < y.first; });
-    found = first_after(
-        lo, hi, from, [](const auto& e) -> const auto& { return e.second; });
-  } else {
-    auto a = idx.asked.find(n);
-    if (a == idx.asked.end()) {
-      if (idx.asked.size() >= ProgramFile::kLabelCache) idx.asked.clear();
-      std::vector<gcode::SourcePos> at_n;
-      auto s = scan_program_labels(f, parse_limits, [&](std::int64_t num, gcode::SourcePos p) {
-        if (num == n) at_n.push_back(p);
-        return true;
-      });
-      SKIPNC_TRY(s);
-      a = idx.asked.emplace(n, std::move(at_n)).first;
-    }
-    found = first_after(
-        a->second.begin(), a->second.end(), from,
-        [](const gcode::SourcePos& p) -> const auto& { return p; });
-  }
-  if (found == nullptr) {
-    return fail(AlarmId::kSequenceNotFound,
-                "sequence number N" + std::to_string(n) + " not found in this program", where);
-  }
-  return *found;
-}
-
+// in the program (ProgramStore::find_label); loops the jump leaves are left.
 Flow<void> Interpreter::Impl::jump_to_label(std::int64_t n, std::uint64_t from, SourceLoc where) {
-  auto found = find_label(n, from, where);
+  auto found = programs.find_label(frames.back(), n, from, where);
   SKIPNC_TRY(found);
   Frame& f = frames.back();
   gcode::Source& src = *f.file->src;

@@ -14,7 +14,6 @@
 // file, so a loop runs without re-reading its body to find its end.
 #include <cctype>
 #include <cmath>
-#include <filesystem>
 #include <string>
 
 #include "interpreter/impl.hpp"
@@ -22,7 +21,6 @@
 namespace skipnc::interp {
 namespace {
 
-namespace fs = std::filesystem;
 using gcode::OKind;
 
 constexpr std::uint32_t bit(OKind k) noexcept {
@@ -67,33 +65,6 @@ const char* keyword(OKind k) noexcept {
   return "?";
 }
 
-// As LinuxCNC writes it: lower case (the parser keeps names upper case).
-std::string shown(const std::string& label) {
-  std::string s = "o" + label;
-  for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return s;
-}
-
-// Whether a raw line can be an O-word: after spaces, an optional '/n' and
-// an optional N number, an 'o'.
-bool may_be_oword(std::string_view t) noexcept {
-  std::size_t i = 0;
-  auto spaces = [&] {
-    while (i < t.size() && (t[i] == ' ' || t[i] == '\t')) ++i;
-  };
-  spaces();
-  if (i < t.size() && t[i] == '/') {
-    ++i;
-    if (i < t.size() && t[i] >= '1' && t[i] <= '9') ++i;
-    spaces();
-  }
-  if (i < t.size() && (t[i] == 'N' || t[i] == 'n')) {
-    ++i;
-    while (i < t.size() && ((t[i] >= '0' && t[i] <= '9') || t[i] == ' ' || t[i] == '\t')) ++i;
-  }
-  return i < t.size() && (t[i] == 'O' || t[i] == 'o');
-}
-
 }  // namespace
 
 // Reads forward from the current position to the O-word with `label` whose
@@ -123,7 +94,7 @@ Flow<void> Interpreter::Impl::skip_to_oword(const std::string& label, std::uint3
       for (int k = 1; k <= static_cast<int>(OKind::kContinue); ++k) {
         if ((kinds & bit(static_cast<OKind>(k))) == 0) continue;
         if (!want.empty()) want += ", ";
-        want += shown(label) + " " + keyword(static_cast<OKind>(k));
+        want += shown_oword(label) + " " + keyword(static_cast<OKind>(k));
       }
       return fail(AlarmId::kOwordFlow, "the file ends before " + want, where);
     }
@@ -141,93 +112,6 @@ Flow<void> Interpreter::Impl::skip_to_oword(const std::string& label, std::uint3
     f.file->ojumps.emplace(key, ProgramFile::OJump{here, f.resume});
     return {};
   }
-}
-
-// The `o<label> sub` of a call: in the file being run, in the main
-// program's file, then in <label>.ngc on the include path (LinuxCNC's
-// SUBROUTINE_PATH: a file named after the subroutine, holding it).
-Flow<bool> Interpreter::Impl::find_sub(const std::string& label, ProgramFile*& file,
-                                       gcode::SourcePos& at, SourceLoc where) {
-  auto scan = [&](ProgramFile& pf) -> Result<bool> {
-    if (!pf.subs_scanned) {
-      auto opened = scanner_for(pf);
-      SKIPNC_TRY(opened);
-      const std::unique_ptr<gcode::Source> scanner = std::move(*opened);
-      gcode::RawBlock rb;
-      gcode::Block b;
-      for (;;) {
-        auto more = scanner->next(rb);
-        SKIPNC_TRY(more);
-        if (!*more) break;
-        if (!may_be_oword(rb.text)) continue;
-        auto parsed = gcode::parse_block(rb.text, SourceLoc{pf.display, rb.line, rb.column},
-                                         rb.offset, b, parse_limits);
-        if (!parsed) continue;  // reported when (and if) the line runs
-        if (b.stmt.kind == gcode::StmtKind::kOword && b.stmt.okind == OKind::kSub) {
-          pf.subs.emplace(b.names[static_cast<std::size_t>(b.stmt.label)], scanner->tell());
-        }
-        if (b.stmt.kind == gcode::StmtKind::kOword && b.stmt.okind == OKind::kEndsub) {
-          pf.endsubs.insert(b.names[static_cast<std::size_t>(b.stmt.label)]);
-        }
-      }
-      pf.subs_scanned = true;
-    }
-    if (auto it = pf.subs.find(label); it != pf.subs.end()) {
-      // A sub without its endsub would run to the end of the file and end
-      // the program there: an alarm, as LinuxCNC's rs274 stops ("File ended
-      // with no percent sign or program end").
-      if (!pf.endsubs.contains(label)) {
-        return fail(AlarmId::kOwordFlow,
-                    shown(label) + " sub in " + pf.display + " has no " + shown(label) + " endsub",
-                    where);
-      }
-      file = &pf;
-      at = it->second;
-      return true;
-    }
-    return false;
-  };
-  for (ProgramFile* pf : {frames.back().file, files.front().get()}) {
-    auto r = scan(*pf);
-    SKIPNC_TRY(r);
-    if (*r) return true;
-  }
-  if (label.size() < 3 || label.front() != '<') return false;
-  // A named subroutine in a file of its own: <name>.ngc, lower case as
-  // LinuxCNC looks for it.
-  std::string name = label.substr(1, label.size() - 2);
-  for (char& c : name) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  for (const auto& d : include_dirs()) {
-    const fs::path p = fs::path(d) / (name + ".ngc");
-    std::error_code ec;
-    if (!fs::is_regular_file(p, ec)) continue;
-    if (!path_inside(p, fs::path(d))) {  // o</..>: as M98's files, inside the folder
-      return fail(AlarmId::kProgramNotFound,
-                  shown(label) + ": '" + p.string() + "' leads outside the include folder", where);
-    }
-    bool added = false;
-    auto have = program_file(p, added);
-    SKIPNC_TRY(have);
-    auto r = scan(**have);
-    SKIPNC_TRY(r);
-    if (*r) return true;
-    return fail(AlarmId::kProgramNotFound,
-                p.filename().string() + " has no " + shown(label) + " sub", where);
-  }
-  return false;
-}
-
-// What a call without its sub says: where it looked. LinuxCNC looks in the
-// running file, then <name>.ngc in the SUBROUTINE_PATH folders (here -I).
-std::string Interpreter::Impl::sub_not_found(const std::string& label) const {
-  std::string text = "no " + shown(label) + " sub: not in " + frames.back().file->display;
-  if (frames.back().file != files.front().get()) text += " nor " + files.front()->display;
-  if (label.size() < 3 || label.front() != '<') return text;
-  std::string name = label.substr(1, label.size() - 2);
-  for (char& c : name) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  text += ", and no " + name + ".ngc in the folders searched:";
-  for (const auto& d : include_dirs()) text += " '" + d + "'";
-  return text + " (a folder is added with -I)";
 }
 
 Flow<void> Interpreter::Impl::oword_call(const std::string& label, SourceLoc where) {
@@ -248,17 +132,15 @@ Flow<void> Interpreter::Impl::oword_call(const std::string& label, SourceLoc whe
   if (args.size() > 30) {
     return fail(AlarmId::kMacroFormat, "more than 30 arguments in a call", where);
   }
-  ProgramFile* file = nullptr;
-  gcode::SourcePos at;
-  auto found = find_sub(label, file, at, where);
+  auto found = programs.find_sub(label, where);
   SKIPNC_TRY(found);
-  if (!*found) return fail(AlarmId::kProgramNotFound, sub_not_found(label), where);
+  if (!*found) return fail(AlarmId::kProgramNotFound, programs.sub_not_found(label), where);
   Frame f;
-  f.file = file;
-  f.start = at;
+  f.file = (*found)->file;
+  f.start = (*found)->at;
   f.macro = true;
   f.sub_label = label;
-  auto pushed = push_frame(f, shown(label) + " call", where);
+  auto pushed = push_frame(f, shown_oword(label) + " call", where);
   if (!pushed) return pushed;
   vars.push_level();
   for (std::size_t i = 0; i < args.size(); ++i) {
@@ -274,12 +156,13 @@ Flow<Step> Interpreter::Impl::oword_return(const gcode::Stmt& s, SourceLoc where
   Frame& f = frames.back();
   if (frames.size() == 1 || f.sub_label.empty()) {
     return fail(AlarmId::kOwordFlow,
-                shown(label) + " " + keyword(s.okind) + " outside a subroutine", where);
+                shown_oword(label) + " " + keyword(s.okind) + " outside a subroutine", where);
   }
   if (f.sub_label != label) {
-    return fail(AlarmId::kOwordFlow,
-                shown(label) + " " + keyword(s.okind) + " in " + shown(f.sub_label) + " sub",
-                where);
+    return fail(
+        AlarmId::kOwordFlow,
+        shown_oword(label) + " " + keyword(s.okind) + " in " + shown_oword(f.sub_label) + " sub",
+        where);
   }
   std::optional<double> value;
   if (!blk.args.empty()) {
@@ -380,82 +263,126 @@ Flow<Step> Interpreter::Impl::oword_branch(gcode::OKind kind, const std::string&
   }
 }
 
+namespace {
+
+// The innermost loop of the frame with `label` (and kind `of`, unless kNone).
+OLoop* find_oloop(Frame& f, const std::string& label, OKind of) noexcept {
+  for (std::size_t i = f.oloops.size(); i-- > 0;) {
+    if (f.oloops[i].label == label && (of == OKind::kNone || f.oloops[i].kind == of)) {
+      return &f.oloops[i];
+    }
+  }
+  return nullptr;
+}
+
+}  // namespace
+
+// Reading goes on at `p` of the running frame.
+inline Flow<Step> Interpreter::Impl::oword_seek(gcode::SourcePos p) {
+  Frame& f = frames.back();
+  auto sk = f.file->src->seek(p);
+  SKIPNC_TRY(sk);
+  f.resume = p;
+  return Step::kContinue;
+}
+
+// Leaves a loop: past its closing statement, found from the opening block.
+Flow<Step> Interpreter::Impl::oword_leave(const OLoop& l, SourceLoc where) {
+  const OKind opened = l.kind;
+  const std::string label = l.label;
+  auto sk = frames.back().file->src->seek(l.body);
+  SKIPNC_TRY(sk);
+  block_pos = l.start;
+  auto k = skip_to_oword(label,
+                         opened == OKind::kWhile    ? bit(OKind::kEndwhile)
+                         : opened == OKind::kRepeat ? bit(OKind::kEndrepeat)
+                                                    : bit(OKind::kWhile),
+                         where);
+  SKIPNC_TRY(k);
+  return Step::kContinue;
+}
+
+// `while`: the end of a do loop, or the head of a while loop.
+inline Flow<Step> Interpreter::Impl::oword_while(const std::string& label, SourceLoc where) {
+  Frame& f = frames.back();
+  if (!f.oloops.empty() && f.oloops.back().label == label && f.oloops.back().kind == OKind::kDo) {
+    // The end of a do loop.
+    auto c = oword_condition();
+    SKIPNC_TRY(c);
+    if (*c) return oword_seek(f.oloops.back().body);
+    f.oloops.pop_back();
+    return Step::kContinue;
+  }
+  auto c = oword_condition();
+  SKIPNC_TRY(c);
+  const bool again = !f.oloops.empty() && f.oloops.back().label == label &&
+                     f.oloops.back().kind == OKind::kWhile && f.oloops.back().start == block_pos;
+  if (*c) {
+    if (!again) {
+      f.oloops.push_back(OLoop{label, OKind::kWhile, block_pos, f.file->src->tell(), 0.0});
+    }
+    return Step::kContinue;
+  }
+  if (again) f.oloops.pop_back();
+  auto k = skip_to_oword(label, bit(OKind::kEndwhile), where);
+  SKIPNC_TRY(k);
+  return Step::kContinue;
+}
+
+// `break` and `continue` of the loop labelled `label`.
+inline Flow<Step> Interpreter::Impl::oword_break(gcode::OKind kind, const std::string& label,
+                                                 SourceLoc where) {
+  Frame& f = frames.back();
+  OLoop* l = find_oloop(f, label, OKind::kNone);
+  if (l == nullptr) {
+    return fail(
+        AlarmId::kOwordFlow,
+        shown_oword(label) + " " + keyword(kind) + " outside a loop labelled " + shown_oword(label),
+        where);
+  }
+  f.oloops.resize(static_cast<std::size_t>(l - f.oloops.data()) + 1);
+  OLoop loop = f.oloops.back();
+  if (kind == OKind::kBreak) {
+    f.oloops.pop_back();
+    return oword_leave(loop, where);
+  }
+  switch (loop.kind) {
+    case OKind::kWhile:
+      return oword_seek(loop.start);  // the condition again
+    case OKind::kDo:
+      return oword_seek(loop.body);
+    default: {
+      OLoop& r = f.oloops.back();
+      r.left -= 1.0;
+      if (r.left >= 1.0) return oword_seek(r.body);
+      f.oloops.pop_back();
+      return oword_leave(loop, where);
+    }
+  }
+}
+
 // do / while / endwhile / repeat / endrepeat / break / continue, on the
 // frame's loop stack.
 Flow<Step> Interpreter::Impl::oword_loop(gcode::OKind kind, const std::string& label,
                                          SourceLoc where) {
   Frame& f = frames.back();
-  auto find_loop = [&](OKind of) -> OLoop* {
-    for (std::size_t i = f.oloops.size(); i-- > 0;) {
-      if (f.oloops[i].label == label && (of == OKind::kNone || f.oloops[i].kind == of)) {
-        return &f.oloops[i];
-      }
-    }
-    return nullptr;
-  };
-  auto seek_to = [&](gcode::SourcePos p) -> Flow<Step> {
-    auto sk = f.file->src->seek(p);
-    SKIPNC_TRY(sk);
-    f.resume = p;
-    return Step::kContinue;
-  };
-  // Leaves a loop: past its closing statement.
-  auto leave = [&](const OLoop& l) -> Flow<Step> {
-    const OKind opened = l.kind;
-    const std::string lab = l.label;
-    auto sk = f.file->src->seek(l.body);
-    SKIPNC_TRY(sk);
-    // The closing statement, found from the opening block.
-    block_pos = l.start;
-    auto k = skip_to_oword(lab,
-                           opened == OKind::kWhile    ? bit(OKind::kEndwhile)
-                           : opened == OKind::kRepeat ? bit(OKind::kEndrepeat)
-                                                      : bit(OKind::kWhile),
-                           where);
-    SKIPNC_TRY(k);
-    return Step::kContinue;
-  };
   switch (kind) {
     case OKind::kDo: {
       const gcode::SourcePos body = f.file->src->tell();
-      if (OLoop* l = find_loop(OKind::kDo); l != nullptr && l->start == block_pos) {
+      if (OLoop* l = find_oloop(f, label, OKind::kDo); l != nullptr && l->start == block_pos) {
         return Step::kContinue;  // a continue came back here
       }
       f.oloops.push_back(OLoop{label, OKind::kDo, block_pos, body, 0.0});
       return Step::kContinue;
     }
-    case OKind::kWhile: {
-      if (!f.oloops.empty() && f.oloops.back().label == label &&
-          f.oloops.back().kind == OKind::kDo) {
-        // The end of a do loop.
-        auto c = oword_condition();
-        SKIPNC_TRY(c);
-        if (*c) return seek_to(f.oloops.back().body);
-        f.oloops.pop_back();
-        return Step::kContinue;
-      }
-      auto c = oword_condition();
-      SKIPNC_TRY(c);
-      const bool again = !f.oloops.empty() && f.oloops.back().label == label &&
-                         f.oloops.back().kind == OKind::kWhile &&
-                         f.oloops.back().start == block_pos;
-      if (*c) {
-        if (!again) {
-          f.oloops.push_back(OLoop{label, OKind::kWhile, block_pos, f.file->src->tell(), 0.0});
-        }
-        return Step::kContinue;
-      }
-      if (again) f.oloops.pop_back();
-      auto k = skip_to_oword(label, bit(OKind::kEndwhile), where);
-      SKIPNC_TRY(k);
-      return Step::kContinue;
-    }
+    case OKind::kWhile:
+      return oword_while(label, where);
     case OKind::kEndwhile: {
       if (f.oloops.empty() || f.oloops.back().label != label ||
           f.oloops.back().kind != OKind::kWhile) {
-        return fail(AlarmId::kOwordFlow, shown(label) + " endwhile without its while", where);
+        return fail(AlarmId::kOwordFlow, shown_oword(label) + " endwhile without its while", where);
       }
-      return seek_to(f.oloops.back().start);
+      return oword_seek(f.oloops.back().start);
     }
     case OKind::kRepeat: {
       auto v = eval(blk.args.front());
@@ -472,42 +399,18 @@ Flow<Step> Interpreter::Impl::oword_loop(gcode::OKind kind, const std::string& l
     case OKind::kEndrepeat: {
       if (f.oloops.empty() || f.oloops.back().label != label ||
           f.oloops.back().kind != OKind::kRepeat) {
-        return fail(AlarmId::kOwordFlow, shown(label) + " endrepeat without its repeat", where);
+        return fail(AlarmId::kOwordFlow, shown_oword(label) + " endrepeat without its repeat",
+                    where);
       }
       OLoop& l = f.oloops.back();
       l.left -= 1.0;
-      if (l.left >= 1.0) return seek_to(l.body);
+      if (l.left >= 1.0) return oword_seek(l.body);
       f.oloops.pop_back();
       return Step::kContinue;
     }
     case OKind::kBreak:
-    case OKind::kContinue: {
-      OLoop* l = find_loop(OKind::kNone);
-      if (l == nullptr) {
-        return fail(AlarmId::kOwordFlow,
-                    shown(label) + " " + keyword(kind) + " outside a loop labelled " + shown(label),
-                    where);
-      }
-      f.oloops.resize(static_cast<std::size_t>(l - f.oloops.data()) + 1);
-      OLoop loop = f.oloops.back();
-      if (kind == OKind::kBreak) {
-        f.oloops.pop_back();
-        return leave(loop);
-      }
-      switch (loop.kind) {
-        case OKind::kWhile:
-          return seek_to(loop.start);  // the condition again
-        case OKind::kDo:
-          return seek_to(loop.body);
-        default: {
-          OLoop& r = f.oloops.back();
-          r.left -= 1.0;
-          if (r.left >= 1.0) return seek_to(r.body);
-          f.oloops.pop_back();
-          return leave(loop);
-        }
-      }
-    }
+    case OKind::kContinue:
+      return oword_break(kind, label, where);
     default:
       break;
   }
