@@ -62,14 +62,14 @@ Flow<xform::Transform> Interpreter::Impl::conversion_3d(const Words& words, cons
                           word_length(words.at('K'), false)};
   if (axis[0] == 0.0 && axis[1] == 0.0 && axis[2] == 0.0) return format("I, J and K are all 0");
   if (!words.has('R')) return format("no angular displacement R");
-  if (frame.conversions >= xform::kMaxConversions) {
+  if (frame.conversions() >= xform::kMaxConversions) {
     return format("a third G68 in the mode (the coordinate system is rotated twice at most)");
   }
   const double angle = angle_of(words.at('R'), params.bit(config::param::kCalculatorDecimal));
   // The centre, absolute in the frame this conversion is made in; a missing
   // axis: the first conversion's centre, else the present position.
-  xform::Transform next = frame;
-  const xform::Point fallback = frame.conversions > 0 ? frame.conversion[0].center : here;
+  xform::Spatial s = frame.spatial ? *frame.spatial : xform::Spatial{};
+  const xform::Point fallback = s.conversions > 0 ? s.conversion[0].center : here;
   xform::Conversion k;
   for (int i = 0; i < 3; ++i) {
     const char c = "XYZ"[i];
@@ -82,9 +82,9 @@ Flow<xform::Transform> Interpreter::Impl::conversion_3d(const Words& words, cons
     return fail(AlarmId::kNotSimulated,
                 "a G68 I J K not about Z in G41/G42 is not simulated by skipnc", at);
   }
-  next.conversion[static_cast<std::size_t>(next.conversions)] = k;
-  ++next.conversions;
-  return next;
+  s.conversion[static_cast<std::size_t>(s.conversions)] = k;
+  ++s.conversions;
+  return xform::with_spatial(frame, s);
 }
 
 // G54.4 Pn (Fanuc 30i/31i additional manual A-79634E "Workpiece Setting
@@ -115,20 +115,20 @@ Flow<xform::Transform> Interpreter::Impl::setting_error(const Words& words,
     return fail(AlarmId::kNotSimulated,
                 "G54.4 in the plane rotation mode (G68) is not simulated by skipnc", req.frame_at);
   }
-  xform::Transform next = frame;
+  xform::Spatial s = frame.spatial ? *frame.spatial : xform::Spatial{};
   const auto n = static_cast<std::size_t>(p.value);
   if (modal.cutter != CutterComp::kOff && n > 0) {
     return fail(AlarmId::kNotSimulated, "G54.4 in G41/G42 is not simulated by skipnc",
                 req.frame_at);
   }
-  next.setting_error = n > 0;
+  s.setting_error = n > 0;
   auto error = [&](std::size_t i) {
     return setting_error_data[i].num() + setting_error_data[10 * n + i].num();
   };
-  next.setting_shift = n > 0 ? xform::Point{error(0), error(1), error(2)} : xform::Point{};
-  next.setting_turn =
+  s.setting_shift = n > 0 ? xform::Point{error(0), error(1), error(2)} : xform::Point{};
+  s.setting_turn =
       xform::turn_xyz(n > 0 ? error(3) : 0.0, n > 0 ? error(4) : 0.0, n > 0 ? error(5) : 0.0);
-  return next;
+  return xform::with_spatial(frame, s);
 }
 
 }  // namespace skipnc::interp

@@ -217,16 +217,20 @@ Flow<bool> Interpreter::Impl::apply_frame_code(const Words& words, const MillReq
     }
     case 690:
       next.rotating = false;
-      next.conversions = 0;  // G69 ends both 3-D conversions too
+      if (frame.spatial) {  // G69 ends both 3-D conversions too, not G54.4
+        xform::Spatial s = *frame.spatial;
+        s.conversions = 0;
+        next = xform::with_spatial(next, s);
+      }
       break;
     case 680: {
-      if (words.has('I') || words.has('J') || words.has('K') || frame.conversions > 0) {
+      if (words.has('I') || words.has('J') || words.has('K') || frame.conversions() > 0) {
         auto k = conversion_3d(words, req, here);  // conversion_3d.cpp
         SKIPNC_TRY(k);
         frame = *k;
         return true;
       }
-      if (frame.setting_error) {
+      if (frame.setting_error()) {
         return fail(AlarmId::kNotSimulated,
                     "G68 without I J K under G54.4 is not simulated by skipnc", req.frame_at);
       }
@@ -262,7 +266,7 @@ Flow<bool> Interpreter::Impl::apply_frame_code(const Words& words, const MillReq
       next.scale = {1.0, 1.0, 1.0};
       break;
     case 510: {
-      if (frame.conversions > 0)
+      if (frame.conversions() > 0)
         return fail(AlarmId::kNotSimulated, "G51 under G68 I J K is not simulated by skipnc",
                     req.frame_at);
       const double inc = params.bit(config::param::kScalingFine) ? 0.00001 : 0.001;
@@ -286,7 +290,7 @@ Flow<bool> Interpreter::Impl::apply_frame_code(const Words& words, const MillReq
     }
     case 511:
     case 501:
-      if (req.frame_code == 511 && frame.conversions > 0)
+      if (req.frame_code == 511 && frame.conversions() > 0)
         return fail(AlarmId::kNotSimulated, "G51.1 under G68 I J K is not simulated by skipnc",
                     req.frame_at);
       for (int i = 0; i < 3; ++i) {
@@ -345,7 +349,7 @@ Flow<void> Interpreter::Impl::frame_targets(const Words& words, AxisVec& target,
     const double v = word_length(words.at('Z'), false);
     p[2] = inc ? p[2] + v : v;
   }
-  if ((frame.rotating || frame.conversions > 0) && (named[0] || named[1])) {
+  if ((frame.rotating || frame.conversions() > 0) && (named[0] || named[1])) {
     named[0] = named[1] = true;
   }
   if (frame.tilted() && (named[0] || named[1] || named[2])) named = {true, true, true};

@@ -165,8 +165,7 @@ Flow<void> Interpreter::Impl::arc(const Words& words, const AxisVec& target, Com
   // Under G51 / G51.1 / G68 (XY plane) the centre offset turns and scales with
   // the frame, and an odd number of mirrored axes reverses the direction.
   const bool framed = !mc.lathe() && frame.active() && modal.plane == PlaneSel::kXY;
-  if (!mc.lathe() && (frame.conversions > 0 || frame.setting_error) &&
-      (frame.tilted() || !framed)) {
+  if (!mc.lathe() && frame.spatial != nullptr && (frame.tilted() || !framed)) {
     // The program's arc plane is tilted out of the machine's planes.
     return fail(AlarmId::kNotSimulated,
                 "an arc under a G68 I J K or G54.4 that turns other than about Z (or outside "

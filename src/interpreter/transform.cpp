@@ -54,11 +54,17 @@ bool keeps_z(const Matrix& m) noexcept {
 }
 
 bool Transform::tilted() const noexcept {
-  if (setting_error && !keeps_z(setting_turn)) return true;
-  for (int k = 0; k < conversions; ++k) {
-    if (!keeps_z(conversion[static_cast<std::size_t>(k)].m)) return true;
+  if (!spatial) return false;
+  if (spatial->setting_error && !keeps_z(spatial->setting_turn)) return true;
+  for (int k = 0; k < spatial->conversions; ++k) {
+    if (!keeps_z(spatial->conversion[static_cast<std::size_t>(k)].m)) return true;
   }
   return false;
+}
+
+Transform with_spatial(Transform t, const Spatial& s) {
+  t.spatial = s.conversions > 0 || s.setting_error ? std::make_shared<const Spatial>(s) : nullptr;
+  return t;
 }
 
 namespace {
@@ -90,14 +96,15 @@ Point apply(const Transform& t, Point p, bool vector) {
     p[1] = cy + s * dx + c * dy;
   }
   // The last conversion is the innermost: the program frame is its frame.
-  for (int k = t.conversions - 1; k >= 0; --k) {
-    p = convert(t.conversion[static_cast<std::size_t>(k)], p, vector, false);
+  if (!t.spatial) return p;
+  const Spatial& sp = *t.spatial;
+  for (int k = sp.conversions - 1; k >= 0; --k) {
+    p = convert(sp.conversion[static_cast<std::size_t>(k)], p, vector, false);
   }
-  if (t.setting_error) {
-    const Conversion s{t.setting_turn, {}};
-    p = convert(s, p, false, false);
+  if (sp.setting_error) {
+    p = convert(Conversion{sp.setting_turn, {}}, p, false, false);
     if (!vector) {
-      for (std::size_t i = 0; i < 3; ++i) p[i] += t.setting_shift[i];
+      for (std::size_t i = 0; i < 3; ++i) p[i] += sp.setting_shift[i];
     }
   }
   return p;
@@ -115,12 +122,15 @@ Point vector_to_work(const Transform& t, const Point& v) noexcept {
 
 Point to_program(const Transform& t, const Point& work) noexcept {
   Point p = work;
-  if (t.setting_error) {
-    for (std::size_t i = 0; i < 3; ++i) p[i] -= t.setting_shift[i];
-    p = convert(Conversion{t.setting_turn, {}}, p, false, true);
-  }
-  for (int k = 0; k < t.conversions; ++k) {
-    p = convert(t.conversion[static_cast<std::size_t>(k)], p, false, true);
+  if (t.spatial) {
+    const Spatial& sp = *t.spatial;
+    if (sp.setting_error) {
+      for (std::size_t i = 0; i < 3; ++i) p[i] -= sp.setting_shift[i];
+      p = convert(Conversion{sp.setting_turn, {}}, p, false, true);
+    }
+    for (int k = 0; k < sp.conversions; ++k) {
+      p = convert(sp.conversion[static_cast<std::size_t>(k)], p, false, true);
+    }
   }
   if (t.rotating) {
     const auto [c, s] = cos_sin_deg(t.angle_deg);

@@ -27,6 +27,7 @@
 #pragma once
 
 #include <array>
+#include <memory>
 
 namespace skipnc::interp::xform {
 
@@ -44,6 +45,17 @@ struct Conversion {
 // system is rotated twice" at most).
 inline constexpr int kMaxConversions = 2;
 
+// The 3-D part of the frame: the conversions (G68 I J K, first to last) and
+// the G54.4 setting error. Held by pointer in Transform, null when neither
+// is on, so that the frame a block saves and restores stays small.
+struct Spatial {
+  std::array<Conversion, kMaxConversions> conversion{};
+  int conversions = 0;
+  bool setting_error = false;  // G54.4 Pn, n > 0
+  Matrix setting_turn{{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}};
+  Point setting_shift{};
+};
+
 struct Transform {
   std::array<bool, 3> mirror{};  // G51.1 per axis
   Point mirror_center{};
@@ -52,18 +64,17 @@ struct Transform {
   bool rotating = false;  // G68 in the XY plane
   double angle_deg = 0.0;
   std::array<double, 2> rotation_center{};
-  std::array<Conversion, kMaxConversions> conversion{};  // G68 I J K, first to last
-  int conversions = 0;
-  bool setting_error = false;  // G54.4 Pn, n > 0
-  Matrix setting_turn{{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}};
-  Point setting_shift{};
+  std::shared_ptr<const Spatial> spatial;  // null: no G68 I J K, no G54.4
+
+  int conversions() const noexcept { return spatial ? spatial->conversions : 0; }
+  bool setting_error() const noexcept { return spatial && spatial->setting_error; }
 
   // A conversion that moves Z (its vector not along Z): a program X or Y
   // move moves all three axes, and the program's XY plane is tilted.
   bool tilted() const noexcept;
 
   bool active() const noexcept {
-    return rotating || conversions > 0 || setting_error || mirror[0] || mirror[1] || mirror[2] ||
+    return rotating || spatial != nullptr || mirror[0] || mirror[1] || mirror[2] ||
            scale[0] != 1.0 || scale[1] != 1.0 || scale[2] != 1.0;
   }
 };
@@ -81,6 +92,10 @@ Point vector_to_work(const Transform& t, const Point& v) noexcept;
 // The rotation by `angle_deg` about the vector `axis` (right-handed, the
 // vector need not be a unit vector; a zero vector gives the identity).
 Matrix axis_angle(const Point& axis, double angle_deg) noexcept;
+
+// The frame with `s` as its 3-D part (null when s has no conversion and no
+// setting error).
+Transform with_spatial(Transform t, const Spatial& s);
 
 // Whether a turn keeps the Z axis (a turn about Z only).
 bool keeps_z(const Matrix& m) noexcept;

@@ -104,11 +104,16 @@ TEST(Polar, QuarterTurnsAreExact) {
 }
 
 // The 3-D coordinate conversion G68 X Y Z I J K R (B-62764EN): hand values.
+Transform turned(const Spatial& s) {
+  return with_spatial(Transform{}, s);
+}
+
 TEST(Conversion, NinetyAboutXTurnsYToZ) {
   // Right-handed about +X: +Y goes to +Z, +Z to -Y.
-  Transform t;
-  t.conversion[0].m = axis_angle({1, 0, 0}, 90);
-  t.conversions = 1;
+  Spatial s;
+  s.conversion[0].m = axis_angle({1, 0, 0}, 90);
+  s.conversions = 1;
+  const Transform t = turned(s);
   expect_point(to_work(t, {10, 20, 5}), {10, -5, 20});
   EXPECT_TRUE(t.tilted());
 }
@@ -116,47 +121,48 @@ TEST(Conversion, NinetyAboutXTurnsYToZ) {
 TEST(Conversion, AboutZIsThePlaneRotationAndNotTilted) {
   // I0 J0 K1 R90 about X10 Y5 turns X20 Y5 to X10 Y15 as G68 X10 Y5 R90;
   // K-1 the other way; Z is kept.
-  Transform t;
-  t.conversion[0] = {axis_angle({0, 0, 1}, 90), {10, 5, -3}};
-  t.conversions = 1;
-  expect_point(to_work(t, {20, 5, 7}), {10, 15, 7});
-  EXPECT_FALSE(t.tilted());
-  t.conversion[0].m = axis_angle({0, 0, -1}, 90);
-  expect_point(to_work(t, {20, 5, 7}), {10, -5, 7});
+  Spatial s;
+  s.conversion[0] = {axis_angle({0, 0, 1}, 90), {10, 5, -3}};
+  s.conversions = 1;
+  expect_point(to_work(turned(s), {20, 5, 7}), {10, 15, 7});
+  EXPECT_FALSE(turned(s).tilted());
+  s.conversion[0].m = axis_angle({0, 0, -1}, 90);
+  expect_point(to_work(turned(s), {20, 5, 7}), {10, -5, 7});
 }
 
 TEST(Conversion, OneTwentyAboutTheDiagonalPermutesTheAxes) {
   // 120 degrees about 1 1 1 carries X to Y, Y to Z, Z to X: d = 1 2 3 ->
   // 3 1 2 about the centre 10 20 30.
-  Transform t;
-  t.conversion[0] = {axis_angle({1, 1, 1}, 120), {10, 20, 30}};
-  t.conversions = 1;
-  const Point w = to_work(t, {11, 22, 33});
+  Spatial s;
+  s.conversion[0] = {axis_angle({1, 1, 1}, 120), {10, 20, 30}};
+  s.conversions = 1;
+  const Point w = to_work(turned(s), {11, 22, 33});
   for (std::size_t i = 0; i < 3; ++i) EXPECT_NEAR(w[i], (Point{13, 21, 32})[i], 1e-12);
 }
 
 TEST(Conversion, TheSecondIsInTheFirstsFrame) {
   // G68 ... I0 J0 K1 R90 then G68 I1 J0 K0 R90 (B-62764EN's example form):
   // 10 20 5 -> about X': 10 -5 20 -> about Z: 5 10 20.
-  Transform t;
-  t.conversion[0].m = axis_angle({0, 0, 1}, 90);
-  t.conversion[1].m = axis_angle({1, 0, 0}, 90);
-  t.conversions = 2;
-  expect_point(to_work(t, {10, 20, 5}), {5, 10, 20});
-  expect_point(to_program(t, {5, 10, 20}), {10, 20, 5});
+  Spatial s;
+  s.conversion[0].m = axis_angle({0, 0, 1}, 90);
+  s.conversion[1].m = axis_angle({1, 0, 0}, 90);
+  s.conversions = 2;
+  expect_point(to_work(turned(s), {10, 20, 5}), {5, 10, 20});
+  expect_point(to_program(turned(s), {5, 10, 20}), {10, 20, 5});
   // A vector turns without the centres.
-  t.conversion[0].center = {100, 200, 300};
-  expect_point(vector_to_work(t, {1, 0, 0}), {0, 1, 0});
+  s.conversion[0].center = {100, 200, 300};
+  expect_point(vector_to_work(turned(s), {1, 0, 0}), {0, 1, 0});
 }
 
 TEST(Conversion, ToProgramUndoesToWork) {
   std::mt19937 rng(11);
   std::uniform_real_distribution<double> u(-100, 100);
   for (int n = 0; n < 500; ++n) {
-    Transform t;
-    t.conversions = 2;
-    for (auto& k : t.conversion)
+    Spatial s;
+    s.conversions = 2;
+    for (auto& k : s.conversion)
       k = {axis_angle({u(rng), u(rng), u(rng)}, u(rng) * 3.6), {u(rng), u(rng), u(rng)}};
+    const Transform t = turned(s);
     const Point p{u(rng), u(rng), u(rng)};
     const Point back = to_program(t, to_work(t, p));
     for (std::size_t i = 0; i < 3; ++i) ASSERT_NEAR(back[i], p[i], 1e-9);
@@ -169,32 +175,39 @@ TEST(Conversion, ZeroVectorIsTheIdentity) {
   EXPECT_EQ(m[1][0], 0.0);
 }
 
+TEST(Conversion, NoneLeavesTheFrameSmall) {
+  // Without a conversion or a setting error the 3-D part is not held.
+  EXPECT_EQ(turned(Spatial{}).spatial, nullptr);
+  EXPECT_FALSE(turned(Spatial{}).active());
+}
+
 // G54.4 (A-79634E): the setting system's origin at d, turned about X, then
 // Y, then Z: work = d + R p.
 TEST(SettingError, TurnsAboutXThenZAndShifts) {
-  Transform t;
-  t.setting_error = true;
-  t.setting_turn = turn_xyz(90, 0, 90);
-  t.setting_shift = {1, 0, 0};
+  Spatial s;
+  s.setting_error = true;
+  s.setting_turn = turn_xyz(90, 0, 90);
+  s.setting_shift = {1, 0, 0};
+  const Transform t = turned(s);
   // 10 20 5 -> about X: 10 -5 20 -> about Z: 5 10 20 -> + d: 6 10 20.
   expect_point(to_work(t, {10, 20, 5}), {6, 10, 20});
   expect_point(to_program(t, {6, 10, 20}), {10, 20, 5});
   expect_point(vector_to_work(t, {0, 0, 1}), {1, 0, 0});  // Z -> -Y -> X
   EXPECT_TRUE(t.tilted());
-  t.setting_turn = turn_xyz(0, 0, 30);
-  EXPECT_FALSE(t.tilted());
+  s.setting_turn = turn_xyz(0, 0, 30);
+  EXPECT_FALSE(turned(s).tilted());
 }
 
 TEST(SettingError, IsOutsideTheConversion) {
   // G68 I0 J0 K1 R90 inside G54.4 dc 0 with d = 100 0 0: the conversion
   // turns first, the setting error shifts after: 10 0 0 -> 0 10 0 -> 100 10 0.
-  Transform t;
-  t.conversion[0].m = axis_angle({0, 0, 1}, 90);
-  t.conversions = 1;
-  t.setting_error = true;
-  t.setting_shift = {100, 0, 0};
-  expect_point(to_work(t, {10, 0, 0}), {100, 10, 0});
-  expect_point(to_program(t, {100, 10, 0}), {10, 0, 0});
+  Spatial s;
+  s.conversion[0].m = axis_angle({0, 0, 1}, 90);
+  s.conversions = 1;
+  s.setting_error = true;
+  s.setting_shift = {100, 0, 0};
+  expect_point(to_work(turned(s), {10, 0, 0}), {100, 10, 0});
+  expect_point(to_program(turned(s), {100, 10, 0}), {10, 0, 0});
 }
 
 }  // namespace
