@@ -5,7 +5,10 @@
 //                    found by the program store, program_store.hpp)
 //   expr.cpp         expression evaluation and the vacant rules
 //   sysvars.cpp      system variables (#3000.., #4000.., #5000..)
-//   ncblock.cpp      address words, modal groups, offsets, data setting
+//   ncblock.cpp      address words, the NC block as a transaction
+//   block_plan.cpp   the block's plan: codes, groups, addresses, modal state
+//   block_commit.cpp the block's commit: its steps in the control's order
+//   offsets.cpp      machine <-> work through the offsets, G43, G10
 //   motion.cpp       rapid, feed, arc, dwell commands
 //   skip.cpp         the skip family (G31): dialect rules in, results out
 //   skip_rules.cpp   the skip block's decisions as pure functions
@@ -33,10 +36,12 @@
 #include "gcode/ast.hpp"
 #include "gcode/parser.hpp"
 #include "gcode/source.hpp"
+#include "interpreter/block_state.hpp"
 #include "interpreter/codes.hpp"
 #include "interpreter/cutter_comp.hpp"
 #include "interpreter/cycles.hpp"
 #include "interpreter/interpreter.hpp"
+#include "interpreter/journal.hpp"
 #include "interpreter/ngc_room.hpp"
 #include "interpreter/program_store.hpp"
 #include "interpreter/skip_rules.hpp"
@@ -89,9 +94,6 @@ struct Words {
   }
 };
 
-// What the interpreter is waiting for at a synchronisation point.
-enum class Pending : std::uint8_t { kNone, kRerun, kSkip };
-
 // The codes of mill_codes.cpp seen in one block (planned, applied at commit).
 struct MillRequest {
   int frame_code = 0;     // 680 690 500 510 501 511 (x10), 0: none
@@ -121,26 +123,6 @@ struct BlockPlan {
   bool spindle_changed = false;
   MillRequest mill;  // cycles, frames, G16, G31.n, G37 (mill_codes.cpp)
   ModalState next;
-};
-
-// What a block may change before it fails: restored when it does.
-struct BlockUndo {
-  ModalState modal;
-  AxisVec pos, tool_pos_offset, g45_delta, lathe_tool_offset, tool_offset_pending;
-  AxisVec local_shift, g92_shift;
-  double length_offset = 0.0, last_e = 0.0, last_cut_feed = 0.0, turning_cycle_z = 0.0;
-  bool have_turning_cycle_z = false, motion_since_sync = false, ended = false;
-  int wear_offset = 0;
-  std::size_t messages = 0;
-  std::size_t warnings = 0;
-  Pending pending = Pending::kNone;
-  std::int64_t parts_count = 0;
-  cycles::Data cycle_data;
-  xform::Transform frame;
-  bool polar = false;
-  double polar_angle = 0.0, rotation_angle = 0.0;
-  int skip_step = 0;
-  bool skip_missed_unread = false;
 };
 
 // The commands of the block being executed, passed on when it succeeds.
@@ -190,7 +172,9 @@ Result<T> settled(Flow<T> f) {
   return fail(AlarmId::kInternal, "a live value was read outside a block");
 }
 
-struct Interpreter::Impl {
+// The small state a block may change is the base BlockState (block_state.hpp);
+// the large tables are journaled (journal.hpp).
+struct Interpreter::Impl : BlockState {
   Setup setup;
   const config::MachineConfig& mc;
   const config::Dialect& dialect;
@@ -210,48 +194,27 @@ struct Interpreter::Impl {
   Words cur_words;           // the current block's words (reused: cleared, not rebuilt, per block)
   gcode::RawBlock raw;       // the current block's text: valid until the next block is read
   gcode::SourcePos block_pos;  // position of the current block
-  Pending pending = Pending::kNone;
   PendingSkip pending_skip;
   bool rerun = false;  // re-executing the block after a sync
-  bool motion_since_sync = false;
-  bool ended = false;
-  // G103 Pn (Haas): the look-ahead limit the program set, 0: none. Not
-  // applied to the planner (docs/skip-dialects.md#haas).
-  int lookahead_limit = 0;
   std::uint32_t cur_line = 0;
   std::uint32_t cur_col = 1;
 
-  ModalState modal;
-  AxisVec pos;  // commanded machine position, mm
   // EXT, G54..G59, then G54.1 P1..P300 (mm); modal.work indexes it.
-  std::vector<AxisVec> work_offsets;
+  JournaledTable<AxisVec> work_offsets;
   // G54.4 workpiece setting error data, #26000-#26079 (conversion_3d.cpp).
   std::array<Value, 80> setting_error_data{};
-  AxisVec local_shift;         // G52
-  AxisVec g92_shift;           // G92
-  AxisVec tool_pos_offset;     // G45-G48 accumulated (dialects that have them)
-  AxisVec g45_delta;           // this block's G45-G48 change (incremental targets), mm
-  double length_offset = 0.0;  // active tool length offset (mm), on length_axis
   int length_axis = 2;
   // Lathe (lathe.cpp). Program values of an axis are `axis_scale` times its
   // machine coordinate: 2 for an X axis programmed in diameter (1006#3), 1
   // otherwise. Offsets (work, G50/G92, G52, T) are kept in program values.
   std::array<double, kMaxAxes> axis_scale{};
-  AxisVec lathe_tool_offset;     // T code: geometry + wear, program values (mm)
-  AxisVec tool_offset_pending;   // its last change not yet moved, machine mm (U/W moves)
-  int wear_offset = 0;           // lower digits of the T code
-  double turning_cycle_z = 0.0;  // G90 cycle: Z end of the last pass, machine mm
-  bool have_turning_cycle_z = false;
-  std::vector<config::ToolOffset> tools;  // index = offset number
+  JournaledTable<config::ToolOffset> tools;  // index = offset number
   VariableStore vars;
-  double last_cut_feed = 0.0;  // F of the last non-rapid move (program units), CompassNC G31
-  AxisVec skip_work;           // #5061.. (program units)
+  AxisVec skip_work;  // #5061.. (program units)
   AxisVec skip_machine;
   bool have_skip = false;
   SyncState last_sync;
   std::vector<std::string> messages;
-  std::int64_t message_bytes = 0;  // text kept in `messages` (limits.max_message_bytes)
-  bool messages_dropped = false;
   // Keeps an operator message for the report; past limits.max_message_bytes
   // the rest are dropped and one message says so (memory stays bounded, the
   // run goes on: a message is not the machine's business).
@@ -271,16 +234,11 @@ struct Interpreter::Impl {
   // fails instead, so the block that raised it ends the run.
   std::vector<Warning> warnings;
   Flow<void> warn(const char* code, std::string text, SourceLoc where);
-  // The last skip ran to its end point without a signal and #5061.. has not
-  // been read since (warning skip_missed_read).
-  bool skip_missed_unread = false;
   std::uint32_t skip_missed_line = 0;
   std::int64_t statements = 0;
-  std::int64_t parts_count = 0;
   std::int64_t parts_required = 0;
   double timer_ms_base = 0.0;           // #3001 = time - base
   double timer_h_base = 0.0;            // #3002
-  double last_e = 0.0;                  // #4108
   std::array<Value, 3> control_vars{};  // #3003 #3004 #3005
   bool nat = false;                     // 6004#0 NAT: signed ranges of ATAN / ASIN
   gcode::ParseLimits parse_limits;
@@ -297,14 +255,6 @@ struct Interpreter::Impl {
   std::string dprnt_text;
   bool dprnt_open = false;
   bool dprnt_used = false;
-
-  // mill_codes.cpp: canned cycle data (modal until G80 or group 01) and the
-  // program -> work frame (G68 rotation, G51 scaling, G51.1 mirror, G16).
-  cycles::Data cycle_data;
-  xform::Transform frame;
-  bool polar = false;           // G16
-  double polar_angle = 0.0;     // last polar angle (G91 adds to it)
-  double rotation_angle = 0.0;  // last G68 R (5400#0 RIN: G91 adds to it)
 
   // Held from the read of #500-#999 to their write (variables.hpp).
   PersistentLock persistent_lock;
@@ -330,6 +280,16 @@ struct Interpreter::Impl {
   Flow<void> init(const AxisVec& start);
   Flow<Step> step(CommandSink& out);
   Flow<Step> step_block(CommandSink& out);
+  void init_axes();
+  void init_tables();
+  Flow<void> init_variables();
+  Flow<void> open_main();
+  // The block read, to step_block: run it, read the next one, or the end.
+  enum class Read : std::uint8_t { kRun, kNext, kEnd };
+  Flow<Read> classify_block(Frame& f);
+  Flow<Read> end_of_file();
+  Flow<Read> percent_block(const Frame& f);
+  Flow<Read> program_number_block(Frame& f);
   Flow<Step> execute(CommandSink& out);
   Flow<bool> read_block();
   Flow<void> sync(const SyncState& s);
@@ -444,9 +404,24 @@ struct Interpreter::Impl {
   Flow<Value> read_named_var(const std::string& name, SourceLoc where);
   Flow<void> write_named_var(const std::string& name, Value v, SourceLoc where);
 
-  // ncblock.cpp
+  // ncblock.cpp (the transaction), block_plan.cpp (plan_*), block_commit.cpp
+  // (commit_*), offsets.cpp (the offsets, G43, G10)
   Flow<void> collect_words(Words& words);
   Flow<Step> execute_nc(const Words& words, CommandSink& out);
+  bool block_calls(const Words& words, const BlockPlan& plan) const noexcept;
+  void begin_tables(bool calls);
+  void commit_tables() noexcept;
+  void roll_back_tables(bool calls);
+  // What the block started from, beside BlockState and the journals (reused
+  // from block to block): the call stack and the G66 macro when the block
+  // may call, and the modal states M70/M73 saved (RS274NGC).
+  struct Before {
+    std::vector<Frame> frames;
+    std::int64_t modal_macro_program = 0;
+    std::array<Value, kLocalCount + 1> modal_macro_args{};
+    std::vector<NgcSavedState> saved_states;
+    bool had_saved_states = false;
+  } before_block;
   Flow<void> plan_block(const Words& words, BlockPlan& plan);
   Flow<void> plan_g_codes(const Words& words, BlockPlan& plan);
   Flow<void> plan_one_shot(const CodeDef& def, std::uint32_t col, BlockPlan& plan);
@@ -476,8 +451,6 @@ struct Interpreter::Impl {
   Flow<Step> commit_sub_call(const Words& words);
   Flow<Step> commit_sub_return(const Words& words);
   Flow<Step> commit_local_sub_call(const Words& words);
-  BlockUndo save_block_state() const;
-  void restore_block_state(const BlockUndo& u);
   double unit_mm() const noexcept { return modal.units == Units::kInch ? 25.4 : 1.0; }
   // mm per unit of the values an RS274NGC control stores (#5161-#5390): the
   // machine's unit, not the program's (ngc_codes.cpp).
@@ -501,8 +474,6 @@ struct Interpreter::Impl {
   static Flow<void> check_offset(double mm, const std::string& what, SourceLoc at);
 
   // mill_codes.cpp
-  // The G31.n of the block being executed (0: G31 or no skip), for skip_block.
-  int skip_step = 0;
   // Parameters of G31.n: the skip condition; the feed is the next number.
   static constexpr int kSkipStepParam = skip_rules::kStepParam;
   // G37: a dialect has it when it defines epsilon (mill_codes.cpp).
@@ -539,6 +510,10 @@ struct Interpreter::Impl {
   // skip.cpp
   Flow<Step> skip_block(const Words& words, const AxisVec& target, AxisMask moved,
                         CommandSink& out);
+  Flow<void> refuse_skip_arc(const Words& words, SourceLoc at) const;
+  skip_rules::BlockWords skip_words(const Words& words, AxisMask moved, SourceLoc at) const;
+  Flow<void> skip_inputs(const skip_rules::BlockWords& b, const skip_rules::Form& form,
+                         canon::SkipSpec& spec);
   Flow<void> finish_skip(const SyncState& s);
   AxisVec record_skip(const SyncState& s);
   Flow<Step> queue_skip(const canon::Skip& sk, SourceLoc at, CommandSink& out);

@@ -38,7 +38,8 @@ Interpreter::Impl::Impl(const Setup& s)
 
 Interpreter::Impl::~Impl() = default;
 
-Flow<void> Interpreter::Impl::init(const AxisVec& start) {
+// The axes' letters and scales; on a lathe, G-code system A's power-on modes.
+void Interpreter::Impl::init_axes() {
   axis_count = mc.axis_count();
   axis_of_letter.fill(-1);
   for (int i = 0; i < axis_count; ++i) {
@@ -58,9 +59,12 @@ Flow<void> Interpreter::Impl::init(const AxisVec& start) {
     if (params.bit(config::param::kDiameterX))
       axis_scale[static_cast<std::size_t>(mc.axis_index('X'))] = 2.0;
   }
-  pos = start;
+}
+
+// The language's parse settings, the offset tables from the machine file.
+void Interpreter::Impl::init_tables() {
   work_offsets.assign(kWorkSystems, AxisVec{});
-  std::copy(mc.work_offsets.begin(), mc.work_offsets.end(), work_offsets.begin());
+  std::copy(mc.work_offsets.begin(), mc.work_offsets.end(), work_offsets.setup().begin());
   parse_limits.max_bracket_depth = dialect.sw.macro_bracket_depth;
   ngc = dialect.sw.language == config::Language::kRs274ngc;
   grbl = dialect.sw.language == config::Language::kGrbl;
@@ -70,30 +74,31 @@ Flow<void> Interpreter::Impl::init(const AxisVec& start) {
   parse_limits.slash_comments = dialect.sw.slash_comments;
   nat = params.bit(config::param::kSignedArcFunctions);
   tools.assign(static_cast<std::size_t>(mc.tool_offset_count) + 1, config::ToolOffset{});
-  for (const auto& [n, t] : mc.tool_offsets) tools[static_cast<std::size_t>(n)] = t;
+  for (const auto& [n, t] : mc.tool_offsets) tools.setup()[static_cast<std::size_t>(n)] = t;
   modal.units = mc.inch_machine ? Units::kInch : Units::kMetric;
-  if (offset_unit_mm(*this) != 1.0) scale_offsets(work_offsets, tools, axis_count, unit_mm());
-  if (ngc || grbl) ngc_start();  // ngc_params.cpp
-  if (grbl) grbl_start();        // grbl_system.cpp
+  if (offset_unit_mm(*this) != 1.0) {
+    scale_offsets(work_offsets.setup(), tools.setup(), axis_count, unit_mm());
+  }
+}
+
+// The persistent variables (their file locked for the run), then the
+// values the caller gave (Setup::variables).
+Flow<void> Interpreter::Impl::init_variables() {
   if (!mc.persistent_vars.empty()) {
     // Locked until the run has written them back (save_persistent), so that
     // runs sharing the file do not lose each other's updates.
     auto l = PersistentLock::acquire(mc.persistent_vars, kPersistentLockWaitS);
     SKIPNC_TRY(l);
     persistent_lock = std::move(*l);
-    auto r = ngc ? load_ngc_var_file()  // ngc_params.cpp
-                 : Flow<void>(load_persistent(mc.persistent_vars, vars.persistent()));
-    if (!r) return r;
+    SKIPNC_TRY(ngc ? load_ngc_var_file()  // ngc_params.cpp
+                   : Flow<void>(load_persistent(mc.persistent_vars, vars.persistent())));
   }
   for (const auto& [n, v] : setup.variables) {
     if (ngc) {
-      auto w = write_ngc_param(n, Value::of(v), SourceLoc{});
-      if (!w) {
-        return fail(AlarmId::kUsage, "parameter #" + std::to_string(n) +
-                                         " cannot be set before a run (#1-#5060, #5071-#5209, "
-                                         "#5221-#5399)");
-      }
-      continue;
+      if (write_ngc_param(n, Value::of(v), SourceLoc{})) continue;
+      return fail(AlarmId::kUsage, "parameter #" + std::to_string(n) +
+                                       " cannot be set before a run (#1-#5060, #5071-#5209, "
+                                       "#5221-#5399)");
     }
     if (VariableStore::is_persistent(n)) {
       vars.persistent()[static_cast<std::size_t>(n - 500)] = Value::of(v);
@@ -105,6 +110,12 @@ Flow<void> Interpreter::Impl::init(const AxisVec& start) {
                       " cannot be set before a run (#1-#33, #100-#199, #500-#999)");
     }
   }
+  return {};
+}
+
+// The main program's file and its frame, the call path's root (the program
+// store, program_store.hpp).
+Flow<void> Interpreter::Impl::open_main() {
   ProgramStore::Options store;
   store.main_name = setup.program_name;
   store.main_path = setup.program_path;
@@ -117,6 +128,16 @@ Flow<void> Interpreter::Impl::init(const AxisVec& start) {
   const ProgramFile& file = programs.main_file();
   contexts.push_back(CallContext{file.display, 0, CallContext::kNone, 0, "", file.path});
   return {};
+}
+
+Flow<void> Interpreter::Impl::init(const AxisVec& start) {
+  init_axes();
+  pos = start;
+  init_tables();
+  if (ngc || grbl) ngc_start();  // ngc_params.cpp
+  if (grbl) grbl_start();        // grbl_system.cpp
+  SKIPNC_TRY(init_variables());
+  return open_main();
 }
 
 // Under --strict the warning is the block's alarm.
@@ -177,82 +198,102 @@ Flow<Step> Interpreter::Impl::step(CommandSink& out) {
   return r;
 }
 
+// The end of the running file: a subprogram returns, the main program ends.
+Flow<Interpreter::Impl::Read> Interpreter::Impl::end_of_file() {
+  if (frames.size() > 1) {
+    SKIPNC_TRY(return_from_sub(std::nullopt, loc(1)));
+    return Read::kNext;
+  }
+  SKIPNC_TRY(
+      warn("no_program_end", "the program ends at the end of its file without M02 or M30", loc(1)));
+  ended = true;
+  return Read::kEnd;
+}
+
+// A '%' line: the tape's start, a subprogram's end, or the main program's end.
+Flow<Interpreter::Impl::Read> Interpreter::Impl::percent_block(const Frame& f) {
+  if (frames.size() == 1 && block_pos.offset == f.start.offset) return Read::kNext;  // tape start
+  if (frames.size() > 1) {
+    SKIPNC_TRY(return_from_sub(std::nullopt, loc(1)));
+    return Read::kNext;
+  }
+  // FANUC: % before M02/M30 is an alarm (PS5010 END OF RECORD); skipnc
+  // ends the run there and says so (an alarm with --strict).
+  SKIPNC_TRY(warn("no_program_end", "the program reaches % without M02 or M30", loc(1)));
+  ended = true;
+  return Read::kEnd;
+}
+
+// A program number heads a program. Reaching the next program's O block
+// while running one means the running program ended without M99/M30:
+// Fanuc treats the O as the start of a new program.
+Flow<Interpreter::Impl::Read> Interpreter::Impl::program_number_block(Frame& f) {
+  if (block_pos.offset != f.start.offset && frames.size() > 1) {
+    SKIPNC_TRY(return_from_sub(std::nullopt, loc(1)));
+    return Read::kNext;
+  }
+  if (frames.size() == 1 && f.program == 0) {
+    f.program = blk.o;  // #4115 of the main program
+    contexts.front().program = blk.o;
+  }
+  return Read::kNext;
+}
+
+// What the block just read is to the run: one to execute, one passed over
+// (block delete, a program number, a comment line), or the program's end.
+Flow<Interpreter::Impl::Read> Interpreter::Impl::classify_block(Frame& f) {
+  // Block delete ("/" or "/n" at the start of the block): the block is
+  // read and ignored while the operator's switch n is on (the dialect's
+  // block_delete_param, bit n - 1).
+  if (blk.block_delete >= 1 && dialect.sw.block_delete_param != 0 &&
+      params.bit(dialect.sw.block_delete_param, blk.block_delete - 1)) {
+    return Read::kNext;
+  }
+  if (blk.percent) return percent_block(f);
+  if (blk.has_o && blk.words.empty() && blk.stmt.kind == gcode::StmtKind::kNone) {
+    return program_number_block(f);
+  }
+  if (blk.empty() && (ngc || grbl) && !blk.comments.empty()) {
+    return Read::kRun;  // (debug,..) reads parameters: it runs as a block (ngc_comments)
+  }
+  if (blk.empty()) {
+    for (const auto& c : blk.comments) {
+      const std::string& t = blk.names[static_cast<std::size_t>(c.text)];
+      if (t.size() >= 4 && (t.compare(0, 4, "MSG,") == 0)) add_message(t.substr(4));
+    }
+    return Read::kNext;
+  }
+  return Read::kRun;
+}
+
 Flow<Step> Interpreter::Impl::step_block(CommandSink& out) {
   if (ended) return Step::kEnd;
   if (pending != Pending::kNone) {
     return fail(AlarmId::kInternal, "step() called before sync()");
   }
-  if (!rerun) {
-    for (;;) {
-      Frame& f = frames.back();
-      auto got = read_block();
-      SKIPNC_TRY(got);
-      if (!*got) {
-        // End of file: a subprogram returns, the main program ends.
-        if (frames.size() > 1) {
-          auto r = return_from_sub(std::nullopt, loc(1));
-          if (!r) return r;
-          continue;
-        }
-        auto w = warn("no_program_end",
-                      "the program ends at the end of its file without M02 or M30", loc(1));
-        SKIPNC_TRY(w);
-        ended = true;
-        return Step::kEnd;
-      }
+  while (!rerun) {
+    // Reads blocks until one to execute is in `blk`, or the program ends.
+    Frame& f = frames.back();
+    auto got = read_block();
+    SKIPNC_TRY(got);
+    Read r = Read::kRun;
+    if (!*got) {
+      auto e = end_of_file();
+      SKIPNC_TRY(e);
+      r = *e;
+    } else {
       f.resume = f.file->src->tell();
-      // Block delete ("/" or "/n" at the start of the block): the block is
-      // read and ignored while the operator's switch n is on (the dialect's
-      // block_delete_param, bit n - 1).
-      if (blk.block_delete >= 1 && dialect.sw.block_delete_param != 0 &&
-          params.bit(dialect.sw.block_delete_param, blk.block_delete - 1)) {
-        continue;
+      if (blk.block_delete >= 1 || blk.percent || blk.has_o || blk.empty()) {
+        auto c = classify_block(f);  // a block to pass over, or the end
+        SKIPNC_TRY(c);
+        r = *c;
       }
-      if (blk.percent) {
-        if (frames.size() == 1 && block_pos.offset == f.start.offset) continue;  // tape start
-        if (frames.size() > 1) {
-          auto r = return_from_sub(std::nullopt, loc(1));
-          if (!r) return r;
-          continue;
-        }
-        // FANUC: % before M02/M30 is an alarm (PS5010 END OF RECORD); skipnc
-        // ends the run there and says so (an alarm with --strict).
-        auto w = warn("no_program_end", "the program reaches % without M02 or M30", loc(1));
-        SKIPNC_TRY(w);
-        ended = true;
-        return Step::kEnd;
-      }
-      if (blk.has_o && blk.words.empty() && blk.stmt.kind == gcode::StmtKind::kNone) {
-        // A program number heads a program. Reaching the next program's O
-        // block while running one means the running program ended without
-        // M99/M30: Fanuc treats the O as the start of a new program.
-        if (block_pos.offset != f.start.offset) {
-          if (frames.size() > 1) {
-            auto r = return_from_sub(std::nullopt, loc(1));
-            if (!r) return r;
-            continue;
-          }
-        }
-        if (frames.size() == 1 && f.program == 0) {
-          f.program = blk.o;  // #4115 of the main program
-          contexts.front().program = blk.o;
-        }
-        continue;
-      }
-      if (blk.empty() && (ngc || grbl) && !blk.comments.empty()) {
-        break;  // (debug,..) reads parameters: it runs as a block (ngc_comments)
-      }
-      if (blk.empty()) {
-        for (const auto& c : blk.comments) {
-          const std::string& t = blk.names[static_cast<std::size_t>(c.text)];
-          if (t.size() >= 4 && (t.compare(0, 4, "MSG,") == 0)) add_message(t.substr(4));
-        }
-        continue;
-      }
+    }
+    if (r == Read::kEnd) return Step::kEnd;
+    if (r == Read::kRun) {
+      SKIPNC_TRY(count_statement(loc(cur_col)));
       break;
     }
-    auto counted = count_statement(loc(cur_col));
-    SKIPNC_TRY(counted);
   }
   rerun = false;
   auto r = execute(out);

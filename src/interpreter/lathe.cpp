@@ -247,7 +247,7 @@ Flow<void> Interpreter::Impl::lathe_offset_setting(const Words& words, SourceLoc
                     std::to_string(10000 + mc.tool_offset_count),
                 loc(pw.column));
   }
-  auto& t = tools[static_cast<std::size_t>(n)];
+  auto& t = tools.write(static_cast<std::size_t>(n));
   struct Field {
     char set, add;
     double* value;

@@ -633,7 +633,7 @@ Flow<void> Interpreter::Impl::finish_g37(const SyncState& s) {
                     std::to_string(ps.g37_epsilon) + " mm)",
                 ps.loc);
   }
-  auto& t = tools[static_cast<std::size_t>(modal.h)];
+  auto& t = tools.write(static_cast<std::size_t>(modal.h));
   const double diff = diff_mm / offset_unit_mm(*this);  // stored numbers (offset_units.hpp)
   t.length_wear += modal.length == LengthComp::kMinus ? -diff : diff;
   Words none;

@@ -143,7 +143,7 @@ Flow<void> Interpreter::Impl::data_setting_ngc(const Words& words, SourceLoc whe
       auto ok = check_offset(o[i], "G10 L" + std::to_string(l) + " " + c, loc(words.at(c).column));
       if (!ok) return ok;
     }
-    work_offsets[static_cast<std::size_t>(set)] = o;
+    work_offsets.write(static_cast<std::size_t>(set)) = o;
     for (int i = 0; i < axis_count; ++i) {
       const char c = axis_letter[static_cast<std::size_t>(i)];
       const int j = ngc_axis_index(c);
@@ -155,7 +155,7 @@ Flow<void> Interpreter::Impl::data_setting_ngc(const Words& words, SourceLoc whe
     if (pv != std::trunc(pv) || pv < 1 || pv > mc.tool_offset_count) {
       return fail(AlarmId::kIllegalOffsetNumber, "G10 L1 P" + std::to_string(pv), p_at);
     }
-    auto& t = tools[static_cast<std::size_t>(pv)];
+    auto& t = tools.write(static_cast<std::size_t>(pv));
     for (const char c : {'Z', 'R'}) {
       if (!words.has(c)) continue;
       auto ok = check_offset(word_length(words.at(c), false) * unit_mm(),

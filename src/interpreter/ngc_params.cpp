@@ -106,7 +106,7 @@ void Interpreter::Impl::ngc_load_work(int set) {
   for (int i = 0; i < axis_count; ++i) {
     const int j = ngc_axis_index(axis_letter[static_cast<std::size_t>(i)]);
     if (j < 0) continue;
-    work_offsets[static_cast<std::size_t>(set)][i] =
+    work_offsets.write(static_cast<std::size_t>(set))[i] =
         vars.ngc_param(5221 + 20 * (set - 1) + j) * stored_mm();
   }
 }

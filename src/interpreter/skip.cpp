@@ -29,15 +29,9 @@ std::string upper(std::string s) {
 
 }  // namespace
 
-Flow<Step> Interpreter::Impl::skip_block(const Words& words, const AxisVec& target, AxisMask moved,
-                                         CommandSink& out) {
-  if (modal.motion == Motion::kProbe && !words.has_g(310)) {
-    return probe_block(words, target, moved, out);  // probe_g38.cpp
-  }
-  const SourceLoc at = loc(cur_col);
-  const config::Switches& sw = dialect.sw;
-  // G31 is a linear move on every control read (seeds 000-003: "linear
-  // interpolation"): arc words in its block are refused, not run straight.
+// G31 is a linear move on every control read (seeds 000-003: "linear
+// interpolation"): arc words in its block are refused, not run straight.
+Flow<void> Interpreter::Impl::refuse_skip_arc(const Words& words, SourceLoc at) const {
   for (const int g : {20, 30}) {
     if (words.has_g(g)) {
       return fail(AlarmId::kSkipSyntax,
@@ -55,6 +49,12 @@ Flow<Step> Interpreter::Impl::skip_block(const Words& words, const AxisVec& targ
                   loc(words.at(c).column));
     }
   }
+  return {};
+}
+
+// What the skip rules read of the block.
+skip_rules::BlockWords Interpreter::Impl::skip_words(const Words& words, AxisMask moved,
+                                                     SourceLoc at) const {
   skip_rules::BlockWords b;
   auto word = [&](char c) -> std::optional<skip_rules::Word> {
     if (!words.has(c)) return std::nullopt;
@@ -69,24 +69,25 @@ Flow<Step> Interpreter::Impl::skip_block(const Words& words, const AxisVec& targ
   b.moved = moved;
   b.step = skip_step;
   b.at = at;
+  return b;
+}
 
-  auto form = skip_rules::form(b, sw, modal.cutter != CutterComp::kOff);
-  SKIPNC_TRY(form);
-  pending_skip = PendingSkip{};
-  canon::Skip sk;
-  sk.target = target;
-  canon::SkipSpec& spec = sk.spec;
-  spec.p = form->p;
-  if (form->torque) {
+// The inputs that end the skip (and a torque limit skip's axis and limit);
+// their names go to the pending skip's record.
+Flow<void> Interpreter::Impl::skip_inputs(const skip_rules::BlockWords& b,
+                                          const skip_rules::Form& form, canon::SkipSpec& spec) {
+  const config::Switches& sw = dialect.sw;
+  spec.p = form.p;
+  if (form.torque) {
     auto t =
-        skip_rules::torque(b, *form, std::string_view(axis_letter.data(), axis_count), sw, params);
+        skip_rules::torque(b, form, std::string_view(axis_letter.data(), axis_count), sw, params);
     SKIPNC_TRY(t);
     spec.torque_axis = t->axis;
     spec.torque_ends = t->ends;
     spec.torque_limit_pct = t->limit_pct;
     spec.torque_delay_s = t->delay_s;
   }
-  auto in = skip_rules::inputs(b, *form, dialect, params);
+  auto in = skip_rules::inputs(b, form, dialect, params);
   SKIPNC_TRY(in);
   spec.kind = in->kind;
   spec.input_count = in->count;
@@ -95,14 +96,6 @@ Flow<Step> Interpreter::Impl::skip_block(const Words& words, const AxisVec& targ
     spec.inputs[n] = in->addr[n];
     pending_skip.input_names[n] = config::signal_name(in->addr[n]);
   }
-
-  const skip_rules::FeedState fs{feed_mm_per_min(), feed_to_mm_per_min(last_cut_feed),
-                                 mc.inch_machine};
-  auto feed = skip_rules::feed(b, fs, sw, params);
-  SKIPNC_TRY(feed);
-  sk.feed_mm_per_min = *feed;
-  if (words.has('F') && skip_rules::block_f_is_modal(sw)) last_cut_feed = modal.feed;
-
   const skip_rules::Detection det = skip_rules::detection(b, *in, length_axis, sw, params, mc);
   spec.active_low = det.active_low;
   spec.edge = det.edge;
@@ -116,10 +109,35 @@ Flow<Step> Interpreter::Impl::skip_block(const Words& words, const AxisVec& targ
   spec.latch_delay_s = det.latch_delay_s;
   spec.servo_delay_comp = det.servo_delay_comp;
   spec.locked_stores_command = det.locked_stores_command;
+  return {};
+}
+
+Flow<Step> Interpreter::Impl::skip_block(const Words& words, const AxisVec& target, AxisMask moved,
+                                         CommandSink& out) {
+  if (modal.motion == Motion::kProbe && !words.has_g(310)) {
+    return probe_block(words, target, moved, out);  // probe_g38.cpp
+  }
+  const SourceLoc at = loc(cur_col);
+  const config::Switches& sw = dialect.sw;
+  SKIPNC_TRY(refuse_skip_arc(words, at));
+  const skip_rules::BlockWords b = skip_words(words, moved, at);
+  auto form = skip_rules::form(b, sw, modal.cutter != CutterComp::kOff);
+  SKIPNC_TRY(form);
+  pending_skip = PendingSkip{};
+  canon::Skip sk;
+  sk.target = target;
+  SKIPNC_TRY(skip_inputs(b, *form, sk.spec));
+
+  const skip_rules::FeedState fs{feed_mm_per_min(), feed_to_mm_per_min(last_cut_feed),
+                                 mc.inch_machine};
+  auto feed = skip_rules::feed(b, fs, sw, params);
+  SKIPNC_TRY(feed);
+  sk.feed_mm_per_min = *feed;
+  if (words.has('F') && skip_rules::block_f_is_modal(sw)) last_cut_feed = modal.feed;
 
   auto k = skip_rules::alarm_on_miss(b, sw, params);
   SKIPNC_TRY(k);
-  spec.alarm_on_miss = *k;
+  sk.spec.alarm_on_miss = *k;
   return queue_skip(sk, at, out);
 }
 

@@ -327,7 +327,7 @@ double* Interpreter::Impl::tool_field(const sysvar::Range& r, int k) noexcept {
   if (slot > count) return nullptr;
   const bool short_table = r.id == sysvar::Id::kHWearShort || r.id == sysvar::Id::kHGeomShort;
   if (short_table && count > 200) return nullptr;
-  config::ToolOffset& t = tools[static_cast<std::size_t>(slot)];
+  config::ToolOffset& t = tools.write(static_cast<std::size_t>(slot));
   switch (r.id) {
     case sysvar::Id::kHWearShort:
     case sysvar::Id::kHWear:
@@ -367,7 +367,7 @@ Flow<void> Interpreter::Impl::write_var(int n, Value v, SourceLoc where) {
       }
       auto ok = check_offset(v.num() * unit_mm(), "#" + std::to_string(n), where);
       if (!ok) return ok;
-      work_offsets[static_cast<std::size_t>(set)][axis] =
+      work_offsets.write(static_cast<std::size_t>(set))[axis] =
           v.num() * unit_mm() / offset_unit_mm(*this);
       return {};
     }

@@ -27,11 +27,16 @@ VariableStore::VariableStore() {
 }
 
 void VariableStore::push_level() {
+  if (recording_) record(Undo::kPush, 0);
   locals_.emplace_back();
   named_local_.emplace_back();
 }
 
 void VariableStore::pop_level() {
+  if (recording_ && locals_.size() > 1) {
+    record(Undo::kPop, 0);
+    popped_.push_back(Level{locals_.back(), std::move(named_local_.back())});
+  }
   if (locals_.size() > 1) locals_.pop_back();
   if (named_local_.size() > 1) named_local_.pop_back();
 }
@@ -48,6 +53,7 @@ Value* VariableStore::local_named(const std::string& name) {
 }
 
 void VariableStore::set_local_named(const std::string& name, Value v) {
+  if (recording_) record_named(Undo::kLocalNamed, name);
   named_local_.back()[name] = v;
 }
 
@@ -58,7 +64,10 @@ Value VariableStore::get(int n) const noexcept {
   return Value::null();
 }
 
-void VariableStore::set(int n, Value v) noexcept {
+void VariableStore::set(int n, Value v) {
+  if (recording_) [[unlikely]] {
+    record(Undo::kNumbered, n);
+  }
   if (is_local(n)) {
     locals_.back()[static_cast<std::size_t>(n)] = v;
   } else if (is_common(n)) {
@@ -75,11 +84,81 @@ Value VariableStore::get_named(const std::string& name) const noexcept {
 }
 
 void VariableStore::set_named(const std::string& name, Value v) {
+  if (recording_) record_named(Undo::kNamed, name);
   named_[name] = v;
 }
 
 void VariableStore::clear_common() noexcept {
   common_.fill(Value::null());
+}
+
+// ---------------------------------------------------------------------------
+// The block's journal.
+
+void VariableStore::drop_records() noexcept {
+  undo_.clear();
+  popped_.clear();
+}
+
+void VariableStore::record(Undo::Kind kind, int n) {
+  Undo u;
+  u.kind = kind;
+  u.n = n;
+  if (kind == Undo::kNumbered) u.old = get(n);
+  if (kind == Undo::kNgcParam) {
+    u.old = Value::of(ngc_params_[static_cast<std::size_t>(n)]);
+    u.existed = ngc_touched_[static_cast<std::size_t>(n)];
+  }
+  undo_.push_back(std::move(u));
+}
+
+void VariableStore::record_named(Undo::Kind kind, const std::string& name) {
+  const auto& m = kind == Undo::kNamed ? named_ : named_local_.back();
+  Undo u;
+  u.kind = kind;
+  u.name = name;
+  if (auto it = m.find(name); it != m.end()) {
+    u.existed = true;
+    u.old = it->second;
+  }
+  undo_.push_back(std::move(u));
+}
+
+void VariableStore::undo(Undo& u) {
+  switch (u.kind) {
+    case Undo::kNumbered:
+      set(u.n, u.old);
+      break;
+    case Undo::kNgcParam:
+      ngc_params_[static_cast<std::size_t>(u.n)] = u.old.v;
+      ngc_touched_[static_cast<std::size_t>(u.n)] = u.existed;
+      break;
+    case Undo::kNamed:
+    case Undo::kLocalNamed: {
+      auto& m = u.kind == Undo::kNamed ? named_ : named_local_.back();
+      if (u.existed) {
+        m[u.name] = u.old;
+      } else {
+        m.erase(u.name);
+      }
+      break;
+    }
+    case Undo::kPush:
+      pop_level();
+      break;
+    case Undo::kPop:
+      locals_.push_back(popped_.back().locals);
+      named_local_.push_back(std::move(popped_.back().named));
+      popped_.pop_back();
+      break;
+  }
+}
+
+void VariableStore::roll_back() {
+  recording_ = false;
+  for (auto it = undo_.rbegin(); it != undo_.rend(); ++it) undo(*it);
+  persistent_dirty_ = dirty_before_;
+  drop_records();
 }
 
 namespace {

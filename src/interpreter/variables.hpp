@@ -43,7 +43,7 @@ class VariableStore {
   static bool is_common(int n) noexcept { return n >= 100 && n <= 199; }
   static bool is_persistent(int n) noexcept { return n >= 500 && n <= 999; }
   Value get(int n) const noexcept;
-  void set(int n, Value v) noexcept;
+  void set(int n, Value v);
 
   // Named variables (#<name>), created on first write.
   Value get_named(const std::string& name) const noexcept;
@@ -58,7 +58,10 @@ class VariableStore {
   void enable_ngc();
   bool ngc() const noexcept { return !ngc_params_.empty(); }
   double ngc_param(int n) const noexcept { return ngc_params_[static_cast<std::size_t>(n)]; }
-  void set_ngc_param(int n, double v) noexcept {
+  void set_ngc_param(int n, double v) {
+    if (recording_) [[unlikely]] {
+      record(Undo::kNgcParam, n);
+    }
     ngc_params_[static_cast<std::size_t>(n)] = v;
     ngc_touched_[static_cast<std::size_t>(n)] = true;
   }
@@ -74,7 +77,43 @@ class VariableStore {
   std::array<Value, 500>& persistent() noexcept { return persistent_; }
   bool persistent_dirty() const noexcept { return persistent_dirty_; }
 
+  // The journal of an NC block (docs/architecture.md "The block
+  // transaction"): between begin_block() and commit() or roll_back(), each
+  // write and each call level opened or closed is recorded, so that
+  // roll_back() leaves every variable and level as before the block.
+  void begin_block() noexcept {
+    dirty_before_ = persistent_dirty_;
+    recording_ = true;
+  }
+  void commit() noexcept {
+    recording_ = false;
+    if (!undo_.empty()) drop_records();
+  }
+  void roll_back();
+
  private:
+  struct Undo {
+    enum Kind : std::uint8_t { kNumbered, kNgcParam, kNamed, kLocalNamed, kPush, kPop };
+    Kind kind = kNumbered;
+    bool existed = false;  // kNamed, kLocalNamed: the name had a value; kNgcParam: touched
+    int n = 0;
+    Value old;
+    std::string name;
+  };
+  // A call level closed inside the block, kept for roll_back().
+  struct Level {
+    std::array<Value, kLocalCount + 1> locals;
+    std::unordered_map<std::string, Value> named;
+  };
+  [[gnu::noinline]] void record(Undo::Kind kind, int n);
+  void record_named(Undo::Kind kind, const std::string& name);
+  void undo(Undo& u);
+  void drop_records() noexcept;
+  bool recording_ = false;
+  bool dirty_before_ = false;
+  std::vector<Undo> undo_;
+  std::vector<Level> popped_;
+
   std::vector<std::array<Value, kLocalCount + 1>> locals_;
   std::array<Value, 100> common_{};      // #100-#199
   std::array<Value, 500> persistent_{};  // #500-#999

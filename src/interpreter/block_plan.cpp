@@ -1,0 +1,340 @@
+// Plan (plan_block): the NC block's G and M codes found in the code table,
+// their groups, addresses and values checked, the block's modal state built
+// in a BlockPlan. Nothing of the interpreter changes here.
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+
+#include "interpreter/codes.hpp"
+#include "interpreter/impl.hpp"
+#include "interpreter/offset_units.hpp"
+
+namespace skipnc::interp {
+namespace {
+
+// G codes that G-code system A (a lathe) gives another meaning or does not
+// have, with what to write instead. The turning cycles are not modelled.
+const char* lathe_refusal(int code) {
+  switch (code) {
+    case 910:
+      return " is not a code of G-code system A: U and W are the incremental X and Z";
+    case 920:
+      return " is the thread cutting cycle in G-code system A (not supported); G50 sets the "
+             "coordinate system";
+    case 940:
+      return " is the end-face cutting cycle in G-code system A (not supported); G98 is feed per "
+             "minute";
+    case 950:
+      return " is not a code of G-code system A: G99 is feed per revolution";
+    case 430:
+    case 440:
+    case 490:
+      return " is not a code of a lathe: the T code offsets the tool";
+    case 450:
+    case 460:
+    case 470:
+    case 480:
+      return " is not a code of a lathe";
+    default:
+      return nullptr;
+  }
+}
+
+std::string g_name(int code) {
+  return "G" + std::to_string(code / 10) + (code % 10 ? "." + std::to_string(code % 10) : "");
+}
+
+}  // namespace
+
+// Finds each G word in the code table, puts it in its group's slot and
+// takes the group-00 action. Two codes of one modal group: the dialect's
+// alarm, or the last one wins where the control says so
+// (g_same_group_last_wins). Two group-00 actions (G04 G31, G31 G28,
+// G31 G92) are always refused: the block could do only one of them.
+Flow<void> Interpreter::Impl::plan_g_codes(const Words& words, BlockPlan& plan) {
+  const bool lathe = mc.lathe();
+  for (int i = 0; i < words.g_count; ++i) {
+    const int code = words.g[static_cast<std::size_t>(i)];
+    const std::uint32_t col = words.g_col[static_cast<std::size_t>(i)];
+    const SourceLoc at = loc(col);
+    if (std::find(dialect.absent_g.begin(), dialect.absent_g.end(), code) !=
+        dialect.absent_g.end()) {
+      return fail(AlarmId::kUnknownGCode, g_name(code) + " is not a code of this control", at);
+    }
+    if (std::find(dialect.not_simulated_g.begin(), dialect.not_simulated_g.end(), code) !=
+        dialect.not_simulated_g.end()) {
+      return fail(AlarmId::kNotSimulated,
+                  g_name(code) + " is a code of this control that skipnc does not simulate", at);
+    }
+    const CodeDef* def = find_g(code, lathe);
+    if (def == nullptr) {
+      auto mill = mill_code(code, at, plan.mill);  // mill_codes.cpp
+      SKIPNC_TRY(mill);
+      if (*mill) continue;
+      if (lathe) {
+        if (const char* why = lathe_refusal(code))
+          return fail(AlarmId::kUnknownGCode, g_name(code) + why, at);
+      } else if (find_g(code, true) != nullptr) {
+        return fail(AlarmId::kUnknownGCode,
+                    g_name(code) + " is a code of the lathe (G-code system A) only", at);
+      }
+      return fail(AlarmId::kUnknownGCode, g_name(code), at);
+    }
+    if ((def->avail & kG38Dialect) != 0 && !dialect.sw.probe_g38) {
+      // Named as itself: G38.x is the straight probe, G92.1 and its kin
+      // are the codes of the G38 controls they are (their summary).
+      const bool probe = code >= 382 && code <= 385;
+      return fail(AlarmId::kUnknownGCode,
+                  g_name(code) + " (" + (probe ? std::string("straight probe") : def->summary) +
+                      ") is not a code of this control" + (probe ? "; it probes with G31" : ""),
+                  at);
+    }
+    if (code == 310 && !dialect.sw.skip_g31) {
+      return fail(AlarmId::kUnknownGCode,
+                  g_name(code) +
+                      " (skip function) is not a code of this control; it probes with "
+                      "G38.2-G38.5",
+                  at);
+    }
+    if ((def->avail & kToolPosOffsetDialect) != 0 && !dialect.sw.tool_position_offset) {
+      return fail(AlarmId::kUnknownGCode,
+                  g_name(code) + " (tool position offset) is not a code of this control", at);
+    }
+    if (def->group == Group::k00) {
+      auto r = plan_one_shot(*def, col, plan);
+      if (!r) return r;
+      continue;
+    }
+    const auto g = static_cast<std::size_t>(def->group);
+    if (plan.group[g] != nullptr && plan.group[g]->code != code &&
+        !dialect.sw.g_same_group_last_wins) {
+      return fail(AlarmId::kGCodeConflict,
+                  g_name(plan.group[g]->code) + " and " + g_name(code) + " are both of group " +
+                      std::to_string(static_cast<int>(def->group)),
+                  at);
+    }
+    plan.group[g] = def;
+    plan.column[g] = col;
+  }
+  return {};
+}
+
+Flow<void> Interpreter::Impl::plan_one_shot(const CodeDef& def, std::uint32_t col,
+                                            BlockPlan& plan) {
+  switch (def.action) {
+    case Action::kExactStop:
+      plan.exact_stop = true;
+      return {};
+    case Action::kMachineCoord:
+      plan.machine_coord = true;
+      return {};
+    default:
+      break;
+  }
+  if (plan.action != Action::kNone && plan.action_code != def.code) {
+    return fail(AlarmId::kGCodeConflict,
+                g_name(plan.action_code) + " and " + g_name(def.code) +
+                    " are both one-shot (group 00) commands",
+                loc(col));
+  }
+  plan.action = def.action;
+  plan.action_code = def.code;
+  if (def.action == Action::kToolPosOffset) plan.tool_pos_offset = def.code / 10;
+  return {};
+}
+
+// G65/G66 block: G, P and L are its own words, every other one an argument.
+Flow<void> Interpreter::Impl::plan_call(const Words& words, BlockPlan& plan) {
+  const SourceLoc at = loc(cur_col);
+  if (!call_block) {
+    return fail(AlarmId::kMacroFormat, "G65/G66 must be written as a number (G65, not G#i)", at);
+  }
+  for (int i = 0; i < words.g_count; ++i) {
+    const int code = words.g[static_cast<std::size_t>(i)];
+    if (code != 650 && code != 660) {
+      return fail(AlarmId::kIllegalArgumentAddress,
+                  g_name(code) + " in a G65/G66 block: G cannot be an argument",
+                  loc(words.g_col[static_cast<std::size_t>(i)]));
+    }
+  }
+  const bool g65 = plan.action == Action::kMacroCall;
+  if (!words.has('P')) {
+    return fail(AlarmId::kProgramNotFound,
+                g65 ? "G65 needs P (program number)" : "G66 needs P (program number)", at);
+  }
+  const double p = words.at('P').value;
+  const double l = words.has('L') ? words.at('L').value : 1.0;
+  if (p != std::trunc(p) || p < 1 || p > 99999999) {
+    return fail(AlarmId::kProgramNotFound, "P" + std::to_string(p) + " is not a program number",
+                loc(words.at('P').column));
+  }
+  if (l != std::trunc(l) || l < 0 || l > 9999) {
+    return fail(AlarmId::kBadValue, "L" + std::to_string(l) + ": repetitions are 0-9999",
+                loc(words.at('L').column));
+  }
+  plan.call_program = static_cast<std::int64_t>(p);
+  plan.call_repeats = static_cast<int>(l);
+  return {};
+}
+
+// Addresses that mean nothing here are refused, so a typo is not ignored.
+Flow<void> Interpreter::Impl::plan_addresses(const Words& words) const {
+  for (std::uint32_t rest = words.letters & ~axis_letters; rest != 0; rest &= rest - 1) {
+    const char letter = static_cast<char>('A' + std::countr_zero(rest));
+    if (mc.lathe() && (letter == 'U' || letter == 'W')) continue;
+    if (mc.lathe() && letter == 'H' && axis_of_letter['C' - 'A'] < 0) {
+      // H is the incremental C of system A; a lathe has no tool length offset.
+      return fail(AlarmId::kIllegalAddress, "address H (incremental C) on a lathe without a C axis",
+                  loc(words.at(letter).column));
+    }
+    if (letter == 'E' && ngc) {
+      // RS274NGC reads E only for G70, G76, M66, M67 and M68; of those skipnc
+      // passes on M67/M68. `G1 X1e-05` is X1 and an E word: refused, as
+      // LinuxCNC 2.9's rs274 refuses it (measured, tests/rs274).
+      if (has_m(words, 67) || has_m(words, 68)) continue;
+      return fail(AlarmId::kIllegalAddress, "E word with no G70, G76, M66, M67 or M68 to use it",
+                  loc(words.at(letter).column));
+    }
+    // grbl 1.1 reads F I J K L N P R S T and the axes; any other letter is
+    // error:20 (gcode.c, "Non-Command Words"): no D, E, H or Q.
+    const std::string_view known = grbl ? "FSTPRKLIJ" : "FSTHDPQRKLIJE";
+    if (known.find(letter) != std::string_view::npos) continue;
+    return fail(AlarmId::kIllegalAddress,
+                std::string("address ") + letter + " is not an address of this " +
+                    (grbl ? "control" : "machine"),
+                loc(words.at(letter).column));
+  }
+  return {};
+}
+
+bool Interpreter::Impl::has_m(const Words& words, int code) {
+  for (int i = 0; i < words.m_count; ++i) {
+    if (words.m[static_cast<std::size_t>(i)] == code) return true;
+  }
+  return false;
+}
+
+// An offset number word (D, H): whole, 0 to the machine's offset count.
+Flow<int> Interpreter::Impl::offset_number(const Words& words, char letter) const {
+  const double v = words.at(letter).value;
+  if (v != std::trunc(v) || v < 0 || v > mc.tool_offset_count) {
+    return fail(AlarmId::kIllegalOffsetNumber, std::string(1, letter) + fmt::format("{}", v),
+                loc(words.at(letter).column));
+  }
+  return static_cast<int>(v);
+}
+
+// G31.n (mill_codes.cpp) is the block's skip.
+Flow<void> Interpreter::Impl::plan_mill(BlockPlan& plan) const {
+  if (plan.mill.skip_step != 0) {
+    if (plan.action != Action::kNone && plan.action != Action::kSkip) {
+      return fail(AlarmId::kGCodeConflict,
+                  g_name(plan.action_code) + " and G31." + std::to_string(plan.mill.skip_step) +
+                      " are both one-shot (group 00) commands",
+                  loc(cur_col));
+    }
+    plan.action = Action::kSkip;
+    plan.action_code = 310;
+  }
+  return {};
+}
+
+void Interpreter::Impl::plan_cycle(BlockPlan& plan) const {
+  if (plan.group[static_cast<std::size_t>(Group::k01)] != nullptr && !mc.lathe()) {
+    plan.next.cycle = Cycle::kNone;
+  }
+  if (plan.mill.cycle) plan.next.cycle = *plan.mill.cycle;
+}
+
+// The block's modal state: the group codes, then F S T D.
+Flow<void> Interpreter::Impl::plan_modal(const Words& words, BlockPlan& plan) {
+  ModalState& next = plan.next;
+  for (const CodeDef* def : plan.group) {
+    if (def != nullptr && def->set != nullptr) def->set(next);
+  }
+  if (const CodeDef* w = plan.group[static_cast<std::size_t>(Group::k14)];
+      w != nullptr && w->code == 541) {
+    // G54.1 Pn: additional work coordinate system n (1-300), after EXT and
+    // G54-G59 in work_offsets. P omitted: P1.
+    const double pn = words.has('P') ? words.at('P').value : 1.0;
+    if (pn != std::trunc(pn) || pn < 1 || pn > kExtraWorkSystems) {
+      return fail(AlarmId::kIllegalOffsetNumber, "G54.1 P" + std::to_string(pn) + ": P1-P300",
+                  loc(words.has('P') ? words.at('P').column
+                                     : plan.column[static_cast<std::size_t>(Group::k14)]));
+    }
+    next.work = 6 + static_cast<int>(pn);
+  }
+  if (words.has('F')) {
+    const double f = words.at('F').value;
+    if (f < 0) return fail(AlarmId::kBadValue, "negative F", loc(words.at('F').column));
+    const bool block_only =
+        plan.action == Action::kSkip && !skip_rules::block_f_is_modal(dialect.sw);
+    if (!block_only) next.feed = f;
+  }
+  plan.spindle_changed = next.spindle_mode != modal.spindle_mode;
+  if (words.has('S')) {
+    const WordVal& sw = words.at('S');
+    if (mc.lathe() && sw.value < 0) return fail(AlarmId::kBadValue, "negative S", loc(sw.column));
+    if (mc.lathe() && plan.action == Action::kLatheCoordSet) {
+      next.spindle_clamp_rpm = sw.value;  // G50 S: the G96 speed limit
+    } else {
+      next.spindle = sw.value;
+      plan.spindle_changed = plan.spindle_changed || mc.lathe();
+    }
+  }
+  if (words.has('T') && !mc.lathe()) next.tool = static_cast<int>(words.at('T').value);
+  if (words.has('D')) {
+    auto d = offset_number(words, 'D');
+    SKIPNC_TRY(d);
+    next.d = *d;
+  }
+  if (words.has('H') && !mc.lathe()) {
+    auto h = offset_number(words, 'H');
+    SKIPNC_TRY(h);
+  }
+  if (next.plane != modal.plane && modal.cutter != CutterComp::kOff) {
+    return fail(AlarmId::kPlaneChangeInComp, "plane change with G41/G42 active", loc(cur_col));
+  }
+  if (next.cutter != CutterComp::kOff && frame.tilted()) {
+    // The offset would lie in the tilted program plane (conversion_3d.cpp).
+    return fail(AlarmId::kNotSimulated,
+                "G41/G42 under a tilted G68 I J K or G54.4 is not simulated by skipnc",
+                loc(cur_col));
+  }
+  return {};
+}
+
+Flow<void> Interpreter::Impl::plan_block(const Words& words, BlockPlan& plan) {
+  plan.next = modal;
+  auto g = plan_g_codes(words, plan);
+  if (!g) return g;
+  for (int i = 0; i < words.m_count; ++i) {
+    const int m = words.m[static_cast<std::size_t>(i)];
+    if (std::find(dialect.absent_m.begin(), dialect.absent_m.end(), m) != dialect.absent_m.end()) {
+      return fail(AlarmId::kUnknownMCode,
+                  "M" + std::to_string(m) + " is not a code of this control", loc(cur_col));
+    }
+    if (std::find(dialect.not_simulated_m.begin(), dialect.not_simulated_m.end(), m) !=
+        dialect.not_simulated_m.end()) {
+      return fail(
+          AlarmId::kNotSimulated,
+          "M" + std::to_string(m) + " is a code of this control that skipnc does not simulate",
+          loc(cur_col));
+    }
+  }
+  auto m = plan_mill(plan);
+  if (!m) return m;
+  const CodeDef* g12 = plan.group[static_cast<std::size_t>(Group::k12)];
+  plan.call = plan.action == Action::kMacroCall || (g12 != nullptr && g12->code == 660);
+  if (plan.call) return plan_call(words, plan);
+  auto a = plan_addresses(words);
+  if (!a) return a;
+  auto md = plan_modal(words, plan);
+  if (!md) return md;
+  plan_cycle(plan);
+  return {};
+}
+
+}  // namespace skipnc::interp

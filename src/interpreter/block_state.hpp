@@ -1,0 +1,70 @@
+// The interpreter's small state that an NC block may change, as one value.
+// `Interpreter::Impl` derives from it (the members keep their names); a
+// block starts from a copy of it and an alarmed block puts the copy back
+// with one assignment (ncblock.cpp execute_nc, docs/architecture.md "The
+// block transaction"). No member owns memory: the copy is a plain memcpy
+// of a few hundred bytes. The large tables a block may write (work
+// offsets, tool offsets, variables, the call stack) are journaled instead
+// (journal.hpp).
+#pragma once
+
+#include <cstdint>
+#include <type_traits>
+
+#include "core/axes.hpp"
+#include "interpreter/cycles.hpp"
+#include "interpreter/modal.hpp"
+#include "interpreter/transform.hpp"
+
+namespace skipnc::interp {
+
+// What the interpreter is waiting for at a synchronisation point.
+enum class Pending : std::uint8_t { kNone, kRerun, kSkip };
+
+struct BlockState {
+  ModalState modal;
+  AxisVec pos;                 // commanded machine position, mm
+  AxisVec local_shift;         // G52
+  AxisVec g92_shift;           // G92
+  AxisVec tool_pos_offset;     // G45-G48 accumulated (dialects that have them)
+  AxisVec g45_delta;           // this block's G45-G48 change (incremental targets), mm
+  double length_offset = 0.0;  // active tool length offset (mm), on length_axis
+  // Lathe (lathe.cpp): offsets are kept in program values.
+  AxisVec lathe_tool_offset;     // T code: geometry + wear, program values (mm)
+  AxisVec tool_offset_pending;   // its last change not yet moved, machine mm (U/W moves)
+  int wear_offset = 0;           // lower digits of the T code
+  double turning_cycle_z = 0.0;  // G90 cycle: Z end of the last pass, machine mm
+  bool have_turning_cycle_z = false;
+  double last_cut_feed = 0.0;  // F of the last non-rapid move (program units), CompassNC G31
+  double last_e = 0.0;         // #4108
+
+  Pending pending = Pending::kNone;
+  bool motion_since_sync = false;
+  bool ended = false;
+  // The last skip ran to its end point without a signal and #5061.. has not
+  // been read since (warning skip_missed_read).
+  bool skip_missed_unread = false;
+  // The G31.n of the block being executed (0: G31 or no skip), for skip_block.
+  int skip_step = 0;
+  std::int64_t parts_count = 0;
+  // G103 Pn (Haas): the look-ahead limit the program set, 0: none. Not
+  // applied to the planner (docs/skip-dialects.md#haas).
+  int lookahead_limit = 0;
+  // The operator messages' text kept (limits.max_message_bytes), and
+  // whether the later ones were dropped (Impl::add_message).
+  std::int64_t message_bytes = 0;
+  bool messages_dropped = false;
+
+  // mill_codes.cpp: canned cycle data (modal until G80 or group 01) and the
+  // program -> work frame (G68 rotation, G51 scaling, G51.1 mirror, G16).
+  cycles::Data cycle_data;
+  xform::Transform frame;
+  bool polar = false;           // G16
+  double polar_angle = 0.0;     // last polar angle (G91 adds to it)
+  double rotation_angle = 0.0;  // last G68 R (5400#0 RIN: G91 adds to it)
+};
+
+// The copy a block takes must stay a memcpy: no member may own memory.
+static_assert(std::is_trivially_copyable_v<BlockState>);
+
+}  // namespace skipnc::interp

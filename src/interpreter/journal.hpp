@@ -1,0 +1,52 @@
+// A table of the interpreter that an NC block may write (work offsets, tool
+// offsets), too large to copy for every block: each write made while a
+// block runs records the entry's old value first. A block that succeeds
+// drops the records (commit); an alarmed block puts the old values back,
+// latest first (roll_back). Outside a block (a macro statement is one
+// write) nothing is recorded. docs/architecture.md "The block transaction".
+#pragma once
+
+#include <cstddef>
+#include <utility>
+#include <vector>
+
+namespace skipnc::interp {
+
+template <class T>
+class JournaledTable {
+ public:
+  void assign(std::size_t n, const T& v) {
+    items_.assign(n, v);
+    undo_.clear();
+  }
+  std::size_t size() const noexcept { return items_.size(); }
+  const T& operator[](std::size_t i) const noexcept { return items_[i]; }
+  typename std::vector<T>::const_iterator begin() const noexcept { return items_.begin(); }
+  typename std::vector<T>::const_iterator end() const noexcept { return items_.end(); }
+
+  // Entry i for writing; inside a block its value is recorded first.
+  T& write(std::size_t i) {
+    if (recording_) undo_.emplace_back(i, items_[i]);
+    return items_[i];
+  }
+  // Every entry for writing, unrecorded: only before the run starts.
+  std::vector<T>& setup() noexcept { return items_; }
+
+  // The records are dropped when the block ends, so a block starts with none.
+  void begin_block() noexcept { recording_ = true; }
+  void commit() noexcept {
+    recording_ = false;
+    undo_.clear();
+  }
+  void roll_back() noexcept {
+    for (auto it = undo_.rbegin(); it != undo_.rend(); ++it) items_[it->first] = it->second;
+    commit();
+  }
+
+ private:
+  std::vector<T> items_;
+  std::vector<std::pair<std::size_t, T>> undo_;
+  bool recording_ = false;
+};
+
+}  // namespace skipnc::interp
