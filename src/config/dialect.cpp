@@ -119,6 +119,7 @@ std::vector<BoolKey> bool_keys(Switches& sw) {
       {"local_sub_call_m97", &sw.local_sub_call_m97},
       {"block_lookahead_g103", &sw.block_lookahead_g103},
       {"m99_p_jumps_in_subprogram", &sw.m99_p_jumps_in_subprogram},
+      {"conditional_m99", &sw.conditional_m99},
       {"haas_tool_offset_vars", &sw.haas_tool_offset_vars},
   };
 }

@@ -171,10 +171,15 @@ struct Switches {
   // M97 Pn Ll: a local subprogram call, to sequence number n of the running
   // program, l times, back with M99 (Haas; docs/skip-dialects.md#haas).
   bool local_sub_call_m97 = false;
-  // G103 Pn: block look-ahead limit, P 0-15 (Haas). Accepted; skipnc's
-  // interpreter already waits for the motion wherever a value it reads
-  // depends on it, which is what G103 P1 gives a probing macro.
+  // G103 Pn: block look-ahead limit, P 0-15 (Haas): the planner's window
+  // (canon::LookAhead). skipnc's interpreter already waits for the motion
+  // wherever a value it reads depends on it, which is what G103 P1 gives a
+  // probing macro.
   bool block_lookahead_g103 = false;
+  // `N50 [#100 LT 10] M99 P10`: an expression at the head of an M99 block
+  // makes it conditional (Haas: "The M99 conditional construct is unique to
+  // the Haas control"); false: a value without an address (Fanuc).
+  bool conditional_m99 = false;
   // M99 Pn in a subprogram: jumps to Nn of the same subprogram and stays in
   // it (Haas), or returns to Nn of the caller (false: Fanuc).
   bool m99_p_jumps_in_subprogram = false;

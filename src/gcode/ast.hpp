@@ -177,6 +177,9 @@ struct Block {
   std::vector<PrintItem> print_items;
   std::vector<ExprId> args;         // kOword: the [expr] arguments / condition
   std::vector<Assignment> assigns;  // RS274NGC parameter settings
+  // Haas's conditional M99 (`N50 [#100 LT 10] M99 P10`): the block runs only
+  // when the expression is not 0 (ParseLimits::conditional_m99).
+  ExprId condition = kNoExpr;
 
   void clear() noexcept {
     loc = {};
@@ -195,6 +198,7 @@ struct Block {
     print_items.clear();
     args.clear();
     assigns.clear();
+    condition = kNoExpr;
   }
   // True when the block has neither words nor a statement (only comments or nothing).
   bool empty() const noexcept {

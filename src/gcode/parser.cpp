@@ -490,10 +490,16 @@ inline Result<void> Parser::run() {
         const ExprId lhs = parse_var(false);
         ok = lhs != kFail && parse_assign_tail(lhs);
       }
+    } else if (c == '[' && conditional_m99_ && out_.words.empty() &&
+               out_.stmt.kind == StmtKind::kNone && out_.condition == kNoExpr) [[unlikely]] {
+      ok = parse_condition(at);
     } else {
       ok = bad_block_char(at);
     }
     if (!ok) return std::unexpected(std::move(*err_));
+  }
+  if (out_.condition != kNoExpr && !check_condition(condition_at_)) [[unlikely]] {
+    return std::unexpected(std::move(*err_));
   }
   if (err_) return std::unexpected(std::move(*err_));  // never expected: errors stop the parse
   return {};
@@ -523,6 +529,26 @@ bool Parser::parse_grbl_system(const char* at) {
   out_.names.push_back(std::move(text));
   p_ = out_.stmt.kind == StmtKind::kGrblJog ? q : end_;
   return true;
+}
+
+bool Parser::parse_condition(const char* at) {
+  p_ = at;
+  condition_at_ = at;
+  const ExprId e = parse_bracket();
+  if (e == kFail) return false;
+  out_.condition = e;
+  return true;
+}
+
+// The conditional form is M99's alone (Haas 96-8000, Macros, "Conditional
+// expressions"): before anything else it is a value without an address.
+bool Parser::check_condition(const char* at) {
+  for (const Word& w : out_.words) {
+    if (w.letter == 'M' && !w.is_expr && w.value == 99.0) return true;
+  }
+  return error(AlarmId::kNoAddress,
+               "an expression at the head of a block makes M99 conditional; this block has no M99",
+               at);
 }
 
 // A character that cannot start anything in a block.

@@ -15,6 +15,9 @@ struct ParseLimits {
   // `//` outside a ( ) comment starts a comment to the end of the block
   // (CompassNC, seed 003's example: `N12 G31 X100 F200 // ...`).
   bool slash_comments = false;
+  // `[expr] M99 ...`: a bracketed expression at the head of a block that
+  // holds M99 is its condition (Haas's conditional M99; Block::condition).
+  bool conditional_m99 = false;
 };
 
 // Parses the text of exactly one block (no end-of-block character inside,

@@ -156,7 +156,8 @@ class Parser {
         fast_digits_(std::min(max_digits_, kMantissaDigits)),
         max_depth_(std::clamp(limits.max_bracket_depth, 0, kMaxNestingHard)),
         ngc_(limits.syntax == Syntax::kRs274ngc),
-        grbl_(limits.syntax == Syntax::kGrbl) {
+        grbl_(limits.syntax == Syntax::kGrbl),
+        conditional_m99_(limits.conditional_m99) {
     // Typical blocks never grow the arrays past this: no reallocation while
     // the first blocks of a program are parsed.
     if (out_.words.capacity() < 16) out_.words.reserve(16);
@@ -165,6 +166,10 @@ class Parser {
   // (run, parse_word and try_keyword are inlined into their one caller: the
   // per-block path stays one function, as it was when they shared a file.)
   [[gnu::always_inline]] Result<void> run();
+  // Haas's `[expr] M99 ...`: the expression at the head of the block, then
+  // (at the block's end) the check that the block holds M99.
+  bool parse_condition(const char* at);
+  bool check_condition(const char* at);
   // Leaves exactly the nodes built in the block (whether run() succeeded or not).
   void finish() { nodes_.finish(); }
 
@@ -416,8 +421,10 @@ class Parser {
   int uint_digits_;  // digits of an unsigned integer (N, O, #n, ...)
   int fast_digits_;  // digits of a number that can be neither too many nor inexact
   int max_depth_;
-  bool ngc_;   // RS274NGC: O-words, several parameter settings, ';' comments, '**'
-  bool grbl_;  // grbl: numbers only, no parameters or expressions
+  bool ngc_;              // RS274NGC: O-words, several parameter settings, ';' comments, '**'
+  bool grbl_;             // grbl: numbers only, no parameters or expressions
+  bool conditional_m99_;  // `[expr] M99` (Haas)
+  const char* condition_at_ = nullptr;  // its '['
   int depth_ = 0;
   NodeSlots nodes_{out_.nodes};
   std::optional<Error> err_;  // the first error

@@ -72,6 +72,7 @@ void Interpreter::Impl::init_tables() {
                         : grbl ? gcode::Syntax::kGrbl
                                : gcode::Syntax::kMacroB;
   parse_limits.slash_comments = dialect.sw.slash_comments;
+  parse_limits.conditional_m99 = dialect.sw.conditional_m99;
   nat = params.bit(config::param::kSignedArcFunctions);
   tools.assign(static_cast<std::size_t>(mc.tool_offset_count) + 1, config::ToolOffset{});
   for (const auto& [n, t] : mc.tool_offsets) tools.setup()[static_cast<std::size_t>(n)] = t;
@@ -346,6 +347,14 @@ Flow<Step> Interpreter::Impl::execute(CommandSink& out) {
     }
     if (blk.has_n) modal.seq = static_cast<int>(blk.n % 100000000);  // #4114
     return execute_statement(out);
+  }
+  if (blk.condition != gcode::kNoExpr) [[unlikely]] {
+    // Haas's `[expr] M99 Pn`: every expression is a condition, 0 false and
+    // anything else true (96-8000, Macros, "Conditional expressions"); a
+    // false one passes the block by.
+    auto c = eval(blk.condition);
+    SKIPNC_TRY(c);
+    if (c->num() == 0.0) return Step::kContinue;
   }
   cur_words.clear();
   auto c = collect_words(cur_words);

@@ -148,6 +148,38 @@ TEST(CompatHaas, G103IsSentToTheMotionAsALookAheadCommand) {
   EXPECT_NE(out.out.find("LOOKAHEAD 0\n"), std::string::npos) << out.out;
 }
 
+// Haas 96-8000, Macros: `N50 [#100 LT 10] M99 P10` branches to N10 only
+// while #100 < 10. The loop below adds 1 to #100 from 0: it branches back
+// until #100 reaches 10, so #101 counts 10 passes; then it goes on to M30.
+// A plain expression is a condition too (not 0: true).
+TEST(CompatHaas, ConditionalM99BranchesOnlyWhenTrue) {
+  TempDir dir;
+  const std::string prog =
+      "#100 = 0\n#101 = 0\n#102 = 0\nN10 #100 = #100 + 1\n#101 = #101 + 1\n"
+      "N50 [#100 LT 10] M99 P10\n[#100 - 10] M99 P70\n#102 = 1\nN70 M30\n";
+  const auto r = run(dir, prog, "haas", {"--var", "100", "--var", "101", "--var", "102"});
+  ASSERT_EQ(r.exit.code, 0) << r.err;
+  EXPECT_EQ(var(r, 100), 10.0);
+  EXPECT_EQ(var(r, 101), 10.0);
+  EXPECT_EQ(var(r, 102), 1.0);  // [10 - 10] is 0: no branch over #102 = 1
+}
+
+TEST(CompatHaas, AnExpressionHeadingABlockWithoutM99IsRefused) {
+  TempDir dir;
+  const auto r = run(dir, "#1 = 1\n[#1 GT 0] G0 X1.\nM30\n");
+  ASSERT_TRUE(r.report_ok) << r.err;
+  EXPECT_EQ(r.exit.code, 1);
+  EXPECT_EQ(r.alarm()["code"], alarm_code(AlarmId::kNoAddress, "haas"));
+  EXPECT_EQ(r.alarm()["line"], 2);
+  EXPECT_EQ(r.alarm()["column"], 1);
+  // Fanuc has no conditional M99: the same head is a value without an address.
+  TempDir dir2;
+  const auto f = run(dir2, "#1 = 1\n[#1 GT 0] M99 P10\nN10 M30\n", "fanuc");
+  ASSERT_TRUE(f.report_ok) << f.err;
+  EXPECT_EQ(f.exit.code, 1);
+  EXPECT_EQ(f.alarm()["code"], alarm_code(AlarmId::kNoAddress, "fanuc"));
+}
+
 TEST(CompatHaas, G31WithoutFeedInItsBlockIsRefused) {
   TempDir dir;
   const auto r = run(dir, "G1 F300.\nG31 Z-10.\nM30\n");
