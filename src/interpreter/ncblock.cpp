@@ -140,7 +140,7 @@ Flow<void> Interpreter::Impl::collect_words(Words& words) {
       // A computed length is rounded to the address's least input increment,
       // as the control does (#1 = 12.3456, X#1 -> X12.346); macro arguments
       // keep their value.
-      if (length && !call_block && !ngc && !grbl) {
+      if (length && !call_block && lang->rules.round_computed_words) {
         v.value = std::round(v.value / word_inc) * word_inc + 0.0;
       }
     } else {
@@ -193,7 +193,7 @@ Flow<void> Interpreter::Impl::set_tool_length(const Words& words, LengthComp mod
     return {};
   }
   // LinuxCNC: G43 without H takes the tool in the spindle.
-  int h = (ngc || grbl) && !words.has('H') ? modal.tool : modal.h;
+  int h = lang->rules.g43_tool_in_spindle && !words.has('H') ? modal.tool : modal.h;
   if (words.has('H')) {
     const double v = words.at('H').value;
     if (v != std::trunc(v) || v < 0 || v > mc.tool_offset_count) {
@@ -226,7 +226,11 @@ Flow<void> Interpreter::Impl::check_offset(double mm, const std::string& what, S
 }
 
 Flow<void> Interpreter::Impl::data_setting(const Words& words, SourceLoc where) {
-  if (ngc || grbl) return data_setting_ngc(words, where);  // ngc_codes.cpp
+  return lang->data_setting(*this, words, where);
+}
+
+// The Fanuc family's G10.
+Flow<void> Interpreter::Impl::data_setting_fanuc(const Words& words, SourceLoc where) {
   if (mc.lathe() && !words.has('L')) return lathe_offset_setting(words, where);
   if (!words.has('L')) return fail(AlarmId::kBadValue, "G10 needs L", where);
   const int l = static_cast<int>(words.at('L').value);
@@ -423,7 +427,7 @@ Flow<void> Interpreter::Impl::plan_addresses(const Words& words) const {
       return fail(AlarmId::kIllegalAddress, "address H (incremental C) on a lathe without a C axis",
                   loc(words.at(letter).column));
     }
-    if (letter == 'E' && ngc) {
+    if (letter == 'E' && lang->rules.e_word_for_m67_only) {
       // RS274NGC reads E only for G70, G76, M66, M67 and M68; of those skipnc
       // passes on M67/M68. `G1 X1e-05` is X1 and an E word: refused, as
       // LinuxCNC 2.9's rs274 refuses it (measured, tests/rs274).
@@ -433,11 +437,11 @@ Flow<void> Interpreter::Impl::plan_addresses(const Words& words) const {
     }
     // grbl 1.1 reads F I J K L N P R S T and the axes; any other letter is
     // error:20 (gcode.c, "Non-Command Words"): no D, E, H or Q.
-    const std::string_view known = grbl ? "FSTPRKLIJ" : "FSTHDPQRKLIJE";
+    const std::string_view known = lang->rules.addresses;
     if (known.find(letter) != std::string_view::npos) continue;
     return fail(AlarmId::kIllegalAddress,
                 std::string("address ") + letter + " is not an address of this " +
-                    (grbl ? "control" : "machine"),
+                    lang->rules.address_owner,
                 loc(words.at(letter).column));
   }
   return {};
@@ -608,7 +612,8 @@ void Interpreter::Impl::commit_modal(const Words& words, const BlockPlan& plan, 
   const int seq = modal.seq;
   // LinuxCNC: selecting another coordinate system loads it from #5221..
   // (the same one again: "continuing to use same coordinate system").
-  if ((ngc || grbl) && plan.next.work != modal.work && plan.next.work >= 1 && plan.next.work <= 9) {
+  if (lang->rules.offsets_in_params && plan.next.work != modal.work && plan.next.work >= 1 &&
+      plan.next.work <= 9) {
     ngc_load_work(plan.next.work);
   }
   modal = plan.next;
@@ -667,7 +672,7 @@ Flow<void> Interpreter::Impl::commit_shift(const Words& words, bool local) {
     if (!ok) return ok;
   }
   (local ? local_shift : g92_shift) = shift;
-  if (!local && (ngc || grbl)) ngc_store_g92();
+  if (!local && lang->rules.offsets_in_params) ngc_store_g92();
   return {};
 }
 
@@ -812,7 +817,7 @@ Flow<std::optional<Step>> Interpreter::Impl::commit_m_codes(const Words& words, 
   for (int i = 0; i < words.m_count; ++i) {
     const int m = words.m[static_cast<std::size_t>(i)];
     modal.last_m = m;
-    if (ngc && m >= 70 && m <= 73) continue;  // ngc_state_codes
+    if (lang->rules.state_codes && m >= 70 && m <= 73) continue;  // ngc_state_codes
     switch (m_action(m)) {
       case MAction::kProgramStop:
         emit(out, canon::Stop{canon::StopKind::kProgramStop});
@@ -899,7 +904,7 @@ Flow<Step> Interpreter::Impl::commit_block(const Words& words, const BlockPlan& 
   commit_modal(words, plan, out);
   SKIPNC_TRY(commit_tool(words, plan, before, out));
   commit_spindle(words, plan.spindle_changed, out);
-  if (ngc) {
+  if (lang->rules.state_codes) {
     SKIPNC_TRY(ngc_state_codes(words, before, loc(cur_col)));
   }
   if (plan.mill.polar) polar = *plan.mill.polar;
