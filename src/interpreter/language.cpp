@@ -50,29 +50,11 @@ constexpr Language::Rules kGrblRules = [] {
   return r;
 }();
 
-// Macro B's variables given before a run (#1-#33, #100-#199, #500-#999).
-Flow<void> preset_macro_var(Interpreter::Impl& im, int n, double v) {
-  if (VariableStore::is_persistent(n)) {
-    im.vars.persistent()[static_cast<std::size_t>(n - 500)] = Value::of(v);
-  } else if (VariableStore::is_local(n) || VariableStore::is_common(n)) {
-    im.vars.set(n, Value::of(v));
-  } else {
-    return fail(AlarmId::kUsage, "variable #" + std::to_string(n) +
-                                     " cannot be set before a run (#1-#33, #100-#199, #500-#999)");
-  }
-  return {};
-}
-
-Result<void> save_macro_persistent(Interpreter::Impl& im) {
-  if (im.mc.persistent_vars.empty() || !im.vars.persistent_dirty()) return {};
-  return save_persistent(im.mc.persistent_vars, im.vars.persistent());
-}
-
-// The success flag of a G38 in a Macro B dialect (or grbl's), when it has one.
-void store_probe_flag(Interpreter::Impl& im, bool triggered) {
-  if (im.dialect.skip_vars.success_flag > 0) {
-    im.vars.set(im.dialect.skip_vars.success_flag, Value::of(triggered ? 1.0 : 0.0));
-  }
+// An O-word line of RS274NGC: its comments speak first.
+Flow<Step> oword_line(Interpreter::Impl& im, CommandSink& out) {
+  auto c = im.ngc_comments();
+  SKIPNC_TRY(c);
+  return im.execute_oword(out);  // oword.cpp
 }
 
 // An RS274NGC line of words: read with the parameters as they were before
@@ -104,7 +86,7 @@ std::unique_ptr<Language> make_language(config::Language kind) {
 }
 
 NgcState& Interpreter::Impl::ngc_state() noexcept {
-  return static_cast<Rs274ngc&>(*lang).state;
+  return static_cast<LinuxcncFamily&>(*lang).state;
 }
 
 GrblState& Interpreter::Impl::grbl_system() noexcept {
@@ -115,23 +97,70 @@ const GrblState& Interpreter::Impl::grbl_system() const noexcept {
   return static_cast<const Grbl&>(*lang).system;
 }
 
+// ---- What a language has unless it says otherwise: Macro B's
+
+Flow<void> Language::load_persistent(Impl& im) {
+  return Flow<void>(interp::load_persistent(im.mc.persistent_vars, im.vars.persistent()));
+}
+
+Result<void> Language::save_persistent(Impl& im) {
+  if (im.mc.persistent_vars.empty() || !im.vars.persistent_dirty()) return {};
+  return interp::save_persistent(im.mc.persistent_vars, im.vars.persistent());
+}
+
+// #1-#33, #100-#199, #500-#999.
+Flow<void> Language::preset(Impl& im, int n, double v) {
+  if (VariableStore::is_persistent(n)) {
+    im.vars.persistent()[static_cast<std::size_t>(n - 500)] = Value::of(v);
+  } else if (VariableStore::is_local(n) || VariableStore::is_common(n)) {
+    im.vars.set(n, Value::of(v));
+  } else {
+    return fail(AlarmId::kUsage, "variable #" + std::to_string(n) +
+                                     " cannot be set before a run (#1-#33, #100-#199, #500-#999)");
+  }
+  return {};
+}
+
+Flow<Value> Language::read_param(Impl& im, int n, SourceLoc where) {
+  return im.read_macro_var(n, where);  // sysvars.cpp
+}
+
+Flow<void> Language::write_param(Impl& im, int n, Value v, SourceLoc where) {
+  return im.write_macro_var(n, v, where);
+}
+
+Flow<Value> Language::read_named(Impl& im, const std::string& name, SourceLoc where) {
+  return im.read_macro_named(name, where);
+}
+
+Flow<void> Language::write_named(Impl& im, const std::string& name, Value v, SourceLoc where) {
+  return im.write_macro_named(name, v, where);
+}
+
+Flow<void> Language::reference_return(Impl& im, const Words& words, int g, CommandSink& out) {
+  return im.reference_return_fanuc(words, g, out);  // motion.cpp
+}
+
+Flow<void> Language::data_setting(Impl& im, const Words& words, SourceLoc where) {
+  return im.data_setting_fanuc(words, where);  // ncblock.cpp
+}
+
+// The dialect's success flag, when it has one.
+void Language::store_probe(Impl& im, bool triggered) {
+  if (im.dialect.skip_vars.success_flag > 0) {
+    im.vars.set(im.dialect.skip_vars.success_flag, Value::of(triggered ? 1.0 : 0.0));
+  }
+}
+
+bool Language::probe_inverted(const Impl& im, int param) const {
+  return im.params.bit(param, 0);
+}
+
 // ---- Macro B
 
 MacroB::MacroB() : Language(kMacroBRules, kMacroBExpr) {}
 
 void MacroB::start(Impl&) {}
-
-Flow<void> MacroB::load_persistent(Impl& im) {
-  return Flow<void>(interp::load_persistent(im.mc.persistent_vars, im.vars.persistent()));
-}
-
-Result<void> MacroB::save_persistent(Impl& im) {
-  return save_macro_persistent(im);
-}
-
-Flow<void> MacroB::preset(Impl& im, int n, double v) {
-  return preset_macro_var(im, n, v);
-}
 
 Flow<Step> MacroB::execute(Impl& im, CommandSink& out) {
   if (im.blk.stmt.kind != gcode::StmtKind::kNone) {
@@ -151,50 +180,45 @@ Flow<Step> MacroB::execute(Impl& im, CommandSink& out) {
   return im.execute_nc(im.cur_words, out);
 }
 
-Flow<Value> MacroB::read_param(Impl& im, int n, SourceLoc where) {
-  return im.read_macro_var(n, where);
+// ---- LinuxCNC and grbl
+
+// The log files of (LOGOPEN,..) and (PROBEOPEN ..), then the persistent
+// parameters.
+Result<void> LinuxcncFamily::save_persistent(Impl& im) {
+  if (auto l = im.write_ngc_logs(); !l) return l;  // ngc_room.cpp
+  return Language::save_persistent(im);
 }
 
-Flow<void> MacroB::write_param(Impl& im, int n, Value v, SourceLoc where) {
-  return im.write_macro_var(n, v, where);
+Flow<void> LinuxcncFamily::reference_return(Impl& im, const Words& words, int g, CommandSink& out) {
+  return im.ngc_reference_return(words, g, out);  // ngc_codes.cpp
 }
 
-Flow<Value> MacroB::read_named(Impl& im, const std::string& name, SourceLoc where) {
-  return im.read_macro_named(name, where);
-}
-
-Flow<void> MacroB::write_named(Impl& im, const std::string& name, Value v, SourceLoc where) {
-  return im.write_macro_named(name, v, where);
-}
-
-Flow<void> MacroB::reference_return(Impl& im, const Words& words, int g, CommandSink& out) {
-  return im.reference_return_fanuc(words, g, out);
-}
-
-Flow<void> MacroB::data_setting(Impl& im, const Words& words, SourceLoc where) {
-  return im.data_setting_fanuc(words, where);
-}
-
-void MacroB::store_probe(Impl& im, bool triggered) {
-  store_probe_flag(im, triggered);
-}
-
-bool MacroB::probe_inverted(const Impl& im, int param) const {
-  return im.params.bit(param, 0);
+Flow<void> LinuxcncFamily::data_setting(Impl& im, const Words& words, SourceLoc where) {
+  return im.ngc_data_setting(words, where);  // ngc_codes.cpp
 }
 
 // ---- RS274NGC
 
-Rs274ngc::Rs274ngc() : Language(kRs274ngcRules, kNgcExpr) {}
+Rs274ngc::Rs274ngc() : LinuxcncFamily(kRs274ngcRules, kNgcExpr) {}
 
 void Rs274ngc::start(Impl& im) {
   im.ngc_start();  // ngc_params.cpp
+}
+
+// RS274NGC: the words and the settings' values are read with the
+// parameters as they were before the line; then the settings take effect,
+// then the comments speak, then the codes run.
+Flow<Step> Rs274ngc::execute(Impl& im, CommandSink& out) {
+  if (im.blk.has_n) im.modal.seq = static_cast<int>(im.blk.n % 100000000);
+  if (im.blk.stmt.kind == gcode::StmtKind::kOword) return oword_line(im, out);
+  return words_line(im, out);
 }
 
 Flow<void> Rs274ngc::load_persistent(Impl& im) {
   return im.load_ngc_var_file();  // ngc_params.cpp
 }
 
+// The log files, then the parameter file.
 Result<void> Rs274ngc::save_persistent(Impl& im) {
   if (auto l = im.write_ngc_logs(); !l) return l;
   if (im.mc.persistent_vars.empty()) return {};
@@ -213,21 +237,8 @@ Flow<void> Rs274ngc::preset(Impl& im, int n, double v) {
                                    "#5221-#5399)");
 }
 
-// RS274NGC: the words and the settings' values are read with the
-// parameters as they were before the line; then the settings take effect,
-// then the comments speak, then the codes run.
-Flow<Step> Rs274ngc::execute(Impl& im, CommandSink& out) {
-  if (im.blk.has_n) im.modal.seq = static_cast<int>(im.blk.n % 100000000);
-  if (im.blk.stmt.kind == gcode::StmtKind::kOword) {
-    auto c = im.ngc_comments();
-    SKIPNC_TRY(c);
-    return im.execute_oword(out);  // oword.cpp
-  }
-  return words_line(im, out);
-}
-
 Flow<Value> Rs274ngc::read_param(Impl& im, int n, SourceLoc where) {
-  return im.read_ngc_param(n, where);
+  return im.read_ngc_param(n, where);  // ngc_params.cpp
 }
 
 Flow<void> Rs274ngc::write_param(Impl& im, int n, Value v, SourceLoc where) {
@@ -242,48 +253,24 @@ Flow<void> Rs274ngc::write_named(Impl& im, const std::string& name, Value v, Sou
   return im.write_ngc_named(name, v, where);
 }
 
-Flow<void> Rs274ngc::reference_return(Impl& im, const Words& words, int g, CommandSink& out) {
-  return im.ngc_reference_return(words, g, out);  // ngc_codes.cpp
-}
-
-Flow<void> Rs274ngc::data_setting(Impl& im, const Words& words, SourceLoc where) {
-  return im.ngc_data_setting(words, where);  // ngc_codes.cpp
-}
-
+// #5061-#5070 and the probe log.
 void Rs274ngc::store_probe(Impl& im, bool triggered) {
   im.ngc_store_probe(im.skip_work, triggered);
   im.ngc_probe_log();
 }
 
-bool Rs274ngc::probe_inverted(const Impl& im, int param) const {
-  return im.params.bit(param, 0);
-}
-
 // ---- grbl
 
-Grbl::Grbl() : Rs274ngc(kGrblRules, kNgcExpr) {}
+Grbl::Grbl() : LinuxcncFamily(kGrblRules, kNgcExpr) {}
 
 void Grbl::start(Impl& im) {
   im.ngc_start();   // ngc_params.cpp: G28, G30, G92 and the offsets in #5161..
   im.grbl_start();  // grbl_system.cpp
 }
 
-Flow<void> Grbl::load_persistent(Impl& im) {
-  return Flow<void>(interp::load_persistent(im.mc.persistent_vars, im.vars.persistent()));
-}
-
-Result<void> Grbl::save_persistent(Impl& im) {
-  if (auto l = im.write_ngc_logs(); !l) return l;
-  return save_macro_persistent(im);
-}
-
-Flow<void> Grbl::preset(Impl& im, int n, double v) {
-  return preset_macro_var(im, n, v);
-}
-
 Flow<Step> Grbl::execute(Impl& im, CommandSink& out) {
-  if (im.blk.stmt.kind == gcode::StmtKind::kOword) return Rs274ngc::execute(im, out);
   if (im.blk.has_n) im.modal.seq = static_cast<int>(im.blk.n % 100000000);
+  if (im.blk.stmt.kind == gcode::StmtKind::kOword) return oword_line(im, out);  // (no O in grbl)
   if (im.blk.stmt.kind != gcode::StmtKind::kNone) return im.execute_grbl_system(out);
   if (system.locked && !im.blk.words.empty()) {
     return fail(AlarmId::kGrblLocked,
@@ -291,26 +278,6 @@ Flow<Step> Grbl::execute(Impl& im, CommandSink& out) {
                 im.loc(im.blk.words.front().column));
   }
   return words_line(im, out);
-}
-
-Flow<Value> Grbl::read_param(Impl& im, int n, SourceLoc where) {
-  return im.read_macro_var(n, where);
-}
-
-Flow<void> Grbl::write_param(Impl& im, int n, Value v, SourceLoc where) {
-  return im.write_macro_var(n, v, where);
-}
-
-Flow<Value> Grbl::read_named(Impl& im, const std::string& name, SourceLoc where) {
-  return im.read_macro_named(name, where);
-}
-
-Flow<void> Grbl::write_named(Impl& im, const std::string& name, Value v, SourceLoc where) {
-  return im.write_macro_named(name, v, where);
-}
-
-void Grbl::store_probe(Impl& im, bool triggered) {
-  store_probe_flag(im, triggered);
 }
 
 // $6 as the program set it (grbl_system.cpp).

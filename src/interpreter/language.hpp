@@ -92,25 +92,28 @@ class Language {
 
   // The start of a run (offsets and tools set): the language's parameters.
   virtual void start(Impl& im) = 0;
-  // The machine's persistent parameters: read at the start (the file is
-  // locked), written at the end; a value given before the run (-D).
-  virtual Flow<void> load_persistent(Impl& im) = 0;
-  virtual Result<void> save_persistent(Impl& im) = 0;
-  virtual Flow<void> preset(Impl& im, int n, double v) = 0;
   // One block read: a statement, an O-word, a `$` line or words.
   virtual Flow<Step> execute(Impl& im, CommandSink& out) = 0;
+  // What follows is Macro B's unless the language says otherwise
+  // (language.cpp): the interpreter's variables and the Fanuc family's codes.
+  // The machine's persistent parameters: read at the start (the file is
+  // locked), written at the end (with the language's log files); a value
+  // given before the run (-D).
+  virtual Flow<void> load_persistent(Impl& im);
+  virtual Result<void> save_persistent(Impl& im);
+  virtual Flow<void> preset(Impl& im, int n, double v);
   // Numbered and named parameters.
-  virtual Flow<Value> read_param(Impl& im, int n, SourceLoc where) = 0;
-  virtual Flow<void> write_param(Impl& im, int n, Value v, SourceLoc where) = 0;
-  virtual Flow<Value> read_named(Impl& im, const std::string& name, SourceLoc where) = 0;
-  virtual Flow<void> write_named(Impl& im, const std::string& name, Value v, SourceLoc where) = 0;
+  virtual Flow<Value> read_param(Impl& im, int n, SourceLoc where);
+  virtual Flow<void> write_param(Impl& im, int n, Value v, SourceLoc where);
+  virtual Flow<Value> read_named(Impl& im, const std::string& name, SourceLoc where);
+  virtual Flow<void> write_named(Impl& im, const std::string& name, Value v, SourceLoc where);
   // G28 / G30 and G10.
-  virtual Flow<void> reference_return(Impl& im, const Words& words, int g, CommandSink& out) = 0;
-  virtual Flow<void> data_setting(Impl& im, const Words& words, SourceLoc where) = 0;
+  virtual Flow<void> reference_return(Impl& im, const Words& words, int g, CommandSink& out);
+  virtual Flow<void> data_setting(Impl& im, const Words& words, SourceLoc where);
   // After a G38 probe: where its result is kept; whether the probe input is
   // inverted (a parameter bit, or grbl's $6).
-  virtual void store_probe(Impl& im, bool triggered) = 0;
-  virtual bool probe_inverted(const Impl& im, int param) const = 0;
+  virtual void store_probe(Impl& im, bool triggered);
+  virtual bool probe_inverted(const Impl& im, int param) const;
 };
 
 // Fanuc Custom Macro B (and the dialects of its family).
@@ -118,21 +121,11 @@ class MacroB final : public Language {
  public:
   MacroB();
   void start(Impl& im) override;
-  Flow<void> load_persistent(Impl& im) override;
-  Result<void> save_persistent(Impl& im) override;
-  Flow<void> preset(Impl& im, int n, double v) override;
   Flow<Step> execute(Impl& im, CommandSink& out) override;
-  Flow<Value> read_param(Impl& im, int n, SourceLoc where) override;
-  Flow<void> write_param(Impl& im, int n, Value v, SourceLoc where) override;
-  Flow<Value> read_named(Impl& im, const std::string& name, SourceLoc where) override;
-  Flow<void> write_named(Impl& im, const std::string& name, Value v, SourceLoc where) override;
-  Flow<void> reference_return(Impl& im, const Words& words, int g, CommandSink& out) override;
-  Flow<void> data_setting(Impl& im, const Words& words, SourceLoc where) override;
-  void store_probe(Impl& im, bool triggered) override;
-  bool probe_inverted(const Impl& im, int param) const override;
 };
 
-// RS274NGC's own state (ngc_params.cpp, ngc_room.cpp, oword.cpp).
+// The state RS274NGC keeps, and grbl with it (ngc_params.cpp, ngc_room.cpp,
+// oword.cpp).
 struct NgcState {
   Value value;                        // #<_value>: the last return / endsub value
   bool value_returned = false;        // #<_value_returned>
@@ -140,27 +133,34 @@ struct NgcState {
   NgcRoom room;                       // M70-M73, log files (ngc_room.hpp)
 };
 
-// LinuxCNC's RS274NGC.
-class Rs274ngc : public Language {
+// What LinuxCNC and grbl share: their codes (G28/G30 through #5161..,
+// G10 L2/L20), the stored values in #5161-#5390, the comments' log files.
+class LinuxcncFamily : public Language {
+ public:
+  NgcState state;
+  Result<void> save_persistent(Impl& im) override;
+  Flow<void> reference_return(Impl& im, const Words& words, int g, CommandSink& out) override;
+  Flow<void> data_setting(Impl& im, const Words& words, SourceLoc where) override;
+
+ protected:
+  LinuxcncFamily(const Rules& r, const ExprRules& e) noexcept : Language(r, e) {}
+};
+
+// LinuxCNC's RS274NGC: its numbered and named parameters, O-words, the
+// parameter file.
+class Rs274ngc final : public LinuxcncFamily {
  public:
   Rs274ngc();
-  NgcState state;
   void start(Impl& im) override;
+  Flow<Step> execute(Impl& im, CommandSink& out) override;
   Flow<void> load_persistent(Impl& im) override;
   Result<void> save_persistent(Impl& im) override;
   Flow<void> preset(Impl& im, int n, double v) override;
-  Flow<Step> execute(Impl& im, CommandSink& out) override;
   Flow<Value> read_param(Impl& im, int n, SourceLoc where) override;
   Flow<void> write_param(Impl& im, int n, Value v, SourceLoc where) override;
   Flow<Value> read_named(Impl& im, const std::string& name, SourceLoc where) override;
   Flow<void> write_named(Impl& im, const std::string& name, Value v, SourceLoc where) override;
-  Flow<void> reference_return(Impl& im, const Words& words, int g, CommandSink& out) override;
-  Flow<void> data_setting(Impl& im, const Words& words, SourceLoc where) override;
   void store_probe(Impl& im, bool triggered) override;
-  bool probe_inverted(const Impl& im, int param) const override;
-
- protected:
-  Rs274ngc(const Rules& r, const ExprRules& e) noexcept : Language(r, e) {}
 };
 
 // grbl's own state (grbl_system.cpp).
@@ -173,22 +173,14 @@ struct GrblState {
   bool prb_ok = false;
 };
 
-// grbl: RS274NGC's codes and lines without parameters or subprograms, its
-// `$` system lines; the interpreter's own parameter reads go the Macro B way.
-class Grbl final : public Rs274ngc {
+// grbl: LinuxCNC's codes without parameters, expressions or subprograms, and
+// its `$` system lines; the interpreter's own variables are Macro B's.
+class Grbl final : public LinuxcncFamily {
  public:
   Grbl();
   GrblState system;
   void start(Impl& im) override;
-  Flow<void> load_persistent(Impl& im) override;
-  Result<void> save_persistent(Impl& im) override;
-  Flow<void> preset(Impl& im, int n, double v) override;
   Flow<Step> execute(Impl& im, CommandSink& out) override;
-  Flow<Value> read_param(Impl& im, int n, SourceLoc where) override;
-  Flow<void> write_param(Impl& im, int n, Value v, SourceLoc where) override;
-  Flow<Value> read_named(Impl& im, const std::string& name, SourceLoc where) override;
-  Flow<void> write_named(Impl& im, const std::string& name, Value v, SourceLoc where) override;
-  void store_probe(Impl& im, bool triggered) override;
   bool probe_inverted(const Impl& im, int param) const override;
 };
 
