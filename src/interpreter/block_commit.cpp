@@ -58,7 +58,8 @@ void Interpreter::Impl::commit_modal(const Words& words, const BlockPlan& plan, 
   const int seq = modal.seq;
   // LinuxCNC: selecting another coordinate system loads it from #5221..
   // (the same one again: "continuing to use same coordinate system").
-  if ((ngc || grbl) && plan.next.work != modal.work && plan.next.work >= 1 && plan.next.work <= 9) {
+  if (lang->rules.offsets_in_params && plan.next.work != modal.work && plan.next.work >= 1 &&
+      plan.next.work <= 9) {
     ngc_load_work(plan.next.work);
   }
   modal = plan.next;
@@ -117,7 +118,7 @@ Flow<void> Interpreter::Impl::commit_shift(const Words& words, bool local) {
     if (!ok) return ok;
   }
   (local ? local_shift : g92_shift) = shift;
-  if (!local && (ngc || grbl)) ngc_store_g92();
+  if (!local && lang->rules.offsets_in_params) ngc_store_g92();
   return {};
 }
 
@@ -262,7 +263,7 @@ Flow<std::optional<Step>> Interpreter::Impl::commit_m_codes(const Words& words, 
   for (int i = 0; i < words.m_count; ++i) {
     const int m = words.m[static_cast<std::size_t>(i)];
     modal.last_m = m;
-    if (ngc && m >= 70 && m <= 73) continue;  // ngc_state_codes
+    if (lang->rules.state_codes && m >= 70 && m <= 73) continue;  // ngc_state_codes
     switch (m_action(m)) {
       case MAction::kProgramStop:
         emit(out, canon::Stop{canon::StopKind::kProgramStop});
@@ -349,7 +350,7 @@ Flow<Step> Interpreter::Impl::commit_block(const Words& words, const BlockPlan& 
   commit_modal(words, plan, out);
   SKIPNC_TRY(commit_tool(words, plan, before, out));
   commit_spindle(words, plan.spindle_changed, out);
-  if (ngc) {
+  if (lang->rules.state_codes) {
     SKIPNC_TRY(ngc_state_codes(words, before, loc(cur_col)));
   }
   if (plan.mill.polar) polar = *plan.mill.polar;

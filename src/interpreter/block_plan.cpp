@@ -189,7 +189,7 @@ Flow<void> Interpreter::Impl::plan_addresses(const Words& words) const {
       return fail(AlarmId::kIllegalAddress, "address H (incremental C) on a lathe without a C axis",
                   loc(words.at(letter).column));
     }
-    if (letter == 'E' && ngc) {
+    if (letter == 'E' && lang->rules.e_word_for_m67_only) {
       // RS274NGC reads E only for G70, G76, M66, M67 and M68; of those skipnc
       // passes on M67/M68. `G1 X1e-05` is X1 and an E word: refused, as
       // LinuxCNC 2.9's rs274 refuses it (measured, tests/rs274).
@@ -199,11 +199,11 @@ Flow<void> Interpreter::Impl::plan_addresses(const Words& words) const {
     }
     // grbl 1.1 reads F I J K L N P R S T and the axes; any other letter is
     // error:20 (gcode.c, "Non-Command Words"): no D, E, H or Q.
-    const std::string_view known = grbl ? "FSTPRKLIJ" : "FSTHDPQRKLIJE";
+    const std::string_view known = lang->rules.addresses;
     if (known.find(letter) != std::string_view::npos) continue;
     return fail(AlarmId::kIllegalAddress,
                 std::string("address ") + letter + " is not an address of this " +
-                    (grbl ? "control" : "machine"),
+                    lang->rules.address_owner,
                 loc(words.at(letter).column));
   }
   return {};

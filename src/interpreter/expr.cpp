@@ -48,16 +48,15 @@ struct FuncContext {
   bool nat;                // 6004#0 NAT: signed ranges of ATAN / ASIN
   double round_increment;  // ROUND inside an address word (0: whole numbers)
   bool inch;               // ADP: the least input increment is 0.0001 inch
-  bool ngc = false;        // RS274NGC rules (FIX floor, FUP ceiling, no BIN/BCD/ADP/POW)
 };
 
 // LinuxCNC's TOLERANCE_EQUAL: EQ and NE of RS274NGC.
 constexpr double kNgcEqualTolerance = 0.0001;
 
-// The value of fn at x (and y, the second argument of ATAN and POW, when
-// given), in r; or the fault to raise. One set of rules for both evaluators.
-std::optional<Fault> function_value(gcode::Func fn, double x, const double* y,
-                                    const FuncContext& cx, double& r) noexcept {
+// The trigonometric functions (degrees) at x (and y, ATAN's second
+// argument, when given), in r; or the fault to raise.
+std::optional<Fault> trig_value(gcode::Func fn, double x, const double* y, bool nat,
+                                double& r) noexcept {
   using gcode::Func;
   auto bad = [](const char* what) { return Fault{AlarmId::kIllegalArgument, what}; };
   switch (fn) {
@@ -76,7 +75,7 @@ std::optional<Fault> function_value(gcode::Func fn, double x, const double* y,
     case Func::kAsin:
       if (x < -1.0 || x > 1.0) return bad("ASIN of a value outside -1..1");
       r = std::asin(x) / kRad;
-      if (!cx.nat && r < 0.0) r += 360.0;  // NAT = 0: 270..90
+      if (!nat && r < 0.0) r += 360.0;  // NAT = 0: 270..90
       return std::nullopt;
     case Func::kAcos:
       if (x < -1.0 || x > 1.0) return bad("ACOS of a value outside -1..1");
@@ -89,36 +88,21 @@ std::optional<Fault> function_value(gcode::Func fn, double x, const double* y,
       } else {
         r = std::atan(x) / kRad;
       }
-      if (!cx.nat && r < 0.0) r += 360.0;  // NAT = 0: 0..360
+      if (!nat && r < 0.0) r += 360.0;  // NAT = 0: 0..360
       return std::nullopt;
-    case Func::kSqrt:
-      if (x < 0.0) return bad("SQRT of a negative value");
-      r = std::sqrt(x);
-      return std::nullopt;
-    case Func::kAbs:
-      r = std::fabs(x);
-      return std::nullopt;
-    case Func::kRound:
-      r = cx.round_increment > 0.0 ? round_half_away(x / cx.round_increment) * cx.round_increment
-                                   : round_half_away(x);
-      return std::nullopt;
-    case Func::kFix:
-      r = cx.ngc ? std::floor(x) : std::trunc(x);
-      return std::nullopt;
-    case Func::kFup:
-      r = cx.ngc ? std::ceil(x) : x >= 0 ? std::ceil(x) : std::floor(x);
-      return std::nullopt;
-    case Func::kLn:
-      if (x <= 0.0) return bad("LN of a value that is not positive");
-      r = std::log(x);
-      return std::nullopt;
-    case Func::kExp:
-      r = std::exp(x);
-      return std::nullopt;
-    case Func::kExists:
-      break;  // evaluated by the interpreter (it names a parameter)
+    default:
+      return Fault{AlarmId::kMacroFormat, "function not available in this control"};
+  }
+}
+
+// Macro B's POW, BIN (BCD -> binary), BCD (binary -> BCD) and ADP, in r;
+// or the fault to raise.
+std::optional<Fault> fanuc_function_value(gcode::Func fn, double x, const double* y,
+                                          const FuncContext& cx, double& r) noexcept {
+  using gcode::Func;
+  auto bad = [](const char* what) { return Fault{AlarmId::kIllegalArgument, what}; };
+  switch (fn) {
     case Func::kPow:
-      if (cx.ngc) break;
       if (y == nullptr) return bad("POW needs two arguments");
       if (x < 0.0 && *y != std::trunc(*y))
         return bad("POW of a negative base to a fractional power");
@@ -126,8 +110,6 @@ std::optional<Fault> function_value(gcode::Func fn, double x, const double* y,
       r = std::pow(x, *y);
       return std::nullopt;
     case Func::kBin: {
-      if (cx.ngc) break;
-      // BCD -> binary
       if (x < 0 || x != std::trunc(x) || x > 9.0e15) return bad("BIN of a value that is not BCD");
       auto v = static_cast<std::uint64_t>(x);
       std::uint64_t out = 0, mul = 1;
@@ -142,7 +124,6 @@ std::optional<Fault> function_value(gcode::Func fn, double x, const double* y,
       return std::nullopt;
     }
     case Func::kBcd: {
-      if (cx.ngc) break;
       if (x < 0 || x != std::trunc(x) || x > 9.0e15)
         return bad("BCD of a negative or fractional value");
       auto v = static_cast<std::uint64_t>(x);
@@ -157,11 +138,61 @@ std::optional<Fault> function_value(gcode::Func fn, double x, const double* y,
       return std::nullopt;
     }
     case Func::kAdp:
-      if (cx.ngc) break;
       // ADP: the value of an argument written without a decimal point, as
       // if written with one (X10 -> #24 = 0.010 -> ADP[#24] = 10).
       r = x / (cx.inch ? 0.0001 : 0.001);
       return std::nullopt;
+    default:
+      return Fault{AlarmId::kMacroFormat, "function not available in this control"};
+  }
+}
+
+// The value of fn at x (and y, the second argument of ATAN and POW, when
+// given), in r; or the fault to raise, under the language's rules `R`. One
+// set of rules for both evaluators.
+template <class R>
+std::optional<Fault> function_value(gcode::Func fn, double x, const double* y,
+                                    const FuncContext& cx, double& r) noexcept {
+  using gcode::Func;
+  switch (fn) {
+    case Func::kSin:
+    case Func::kCos:
+    case Func::kTan:
+    case Func::kAsin:
+    case Func::kAcos:
+    case Func::kAtan:
+      return trig_value(fn, x, y, cx.nat, r);
+    case Func::kSqrt:
+      if (x < 0.0) return Fault{AlarmId::kIllegalArgument, "SQRT of a negative value"};
+      r = std::sqrt(x);
+      return std::nullopt;
+    case Func::kAbs:
+      r = std::fabs(x);
+      return std::nullopt;
+    case Func::kRound:
+      r = cx.round_increment > 0.0 ? round_half_away(x / cx.round_increment) * cx.round_increment
+                                   : round_half_away(x);
+      return std::nullopt;
+    case Func::kFix:
+      r = R::fix(x);
+      return std::nullopt;
+    case Func::kFup:
+      r = R::fup(x);
+      return std::nullopt;
+    case Func::kLn:
+      if (x <= 0.0) return Fault{AlarmId::kIllegalArgument, "LN of a value that is not positive"};
+      r = std::log(x);
+      return std::nullopt;
+    case Func::kExp:
+      r = std::exp(x);
+      return std::nullopt;
+    case Func::kPow:
+    case Func::kBin:
+    case Func::kBcd:
+    case Func::kAdp:
+      if constexpr (R::kFanucFunctions) return fanuc_function_value(fn, x, y, cx, r);
+      break;
+    case Func::kExists:  // evaluated by the interpreter (it names a parameter)
     case Func::kNone:
       break;
   }
@@ -271,24 +302,209 @@ constexpr bool ngc_own(gcode::Op op) noexcept {
          op == Op::kEq || op == Op::kNe;
 }
 
-// The context of the functions for the block being evaluated: RS274NGC's
-// signed ATAN/ASIN and whole-number ROUND, or Macro B's 6004#0 and increments.
-FuncContext func_context(const Interpreter::Impl& im) noexcept {
-  return FuncContext{im.nat || im.ngc, im.ngc ? 0.0 : im.word_round_increment,
-                     im.modal.units == Units::kInch, im.ngc};
+// The expression rules of each language, as types: the evaluators below
+// are compiled once for each (kMacroBExpr, kNgcExpr), so that no rule is
+// asked per node or per character.
+struct MacroBRules {
+  static constexpr bool kFanucFunctions = true;  // POW BIN BCD ADP
+  static double fix(double x) noexcept { return std::trunc(x); }
+  static double fup(double x) noexcept { return x >= 0 ? std::ceil(x) : std::floor(x); }
+  // 6004#0 and the increments of address words.
+  static FuncContext context(const Interpreter::Impl& im) noexcept {
+    return FuncContext{im.nat, im.word_round_increment, im.modal.units == Units::kInch};
+  }
+  [[gnu::always_inline]] static std::optional<Fault> binary(gcode::Op op, Value a, Value b,
+                                                            double& r) noexcept {
+    if (op == gcode::Op::kPow) {
+      return Fault{AlarmId::kMacroFormat, "'**' is not an operator of this control"};
+    }
+    return operator_value(op, a, b, r);
+  }
+  // #x on the fast path: local, common and persistent variables (false:
+  // the general path reads it).
+  static bool plain_var(const Interpreter::Impl& im, double x, Value& out) noexcept {
+    if (!(std::fabs(x) < 1e9)) return false;
+    int num = static_cast<int>(x);
+    if (num != x) num = static_cast<int>(round_half_away(x));  // #[1.6] is #2
+    if (num == 0) {
+      out = Value::null();
+      return true;
+    }
+    if (!VariableStore::is_local(num) && !VariableStore::is_common(num) &&
+        !VariableStore::is_persistent(num)) {
+      return false;
+    }
+    out = im.vars.get(num);
+    return true;
+  }
+  static Flow<Value> exists(Interpreter::Impl& im, const gcode::ExprNode& n) {
+    return fail(AlarmId::kMacroFormat, "function not available in this control", im.loc(n.column));
+  }
+};
+
+template <class R>
+Flow<Value> general(Interpreter::Impl& im, gcode::ExprId id);
+
+struct NgcRules {
+  static constexpr bool kFanucFunctions = false;  // no POW BIN BCD ADP ('**' is the power)
+  static double fix(double x) noexcept { return std::floor(x); }
+  static double fup(double x) noexcept { return std::ceil(x); }
+  // Signed ATAN / ASIN, ROUND to whole numbers.
+  static FuncContext context(const Interpreter::Impl& im) noexcept {
+    return FuncContext{true, 0.0, im.modal.units == Units::kInch};
+  }
+  [[gnu::always_inline]] static std::optional<Fault> binary(gcode::Op op, Value a, Value b,
+                                                            double& r) noexcept {
+    if (ngc_own(op)) return ngc_operator_value(op, a.num(), b.num(), r);
+    return operator_value(op, a, b, r);
+  }
+  // RS274NGC: #1-#30 of the call level and #31-#5060, 0 until set (no
+  // vacant value); the system parameters the general way.
+  static bool plain_var(const Interpreter::Impl& im, double x, Value& out) noexcept {
+    const double k = std::round(x);
+    if (!(k >= 1.0 && k < 5061.0)) return false;
+    const int num = static_cast<int>(k);
+    out = Value::of(num <= 30 ? im.vars.get(num).num() : im.vars.ngc_param(num));
+    return true;
+  }
+  // EXISTS[#<name>]: 1 when set; EXISTS[#n]: 1 when n is a parameter's
+  // number (#0-#5602).
+  static Flow<Value> exists(Interpreter::Impl& im, const gcode::ExprNode& n) {
+    const gcode::ExprNode& v = im.blk.nodes[static_cast<std::size_t>(n.a)];
+    if (v.op == gcode::Op::kVar) {
+      auto num = general<NgcRules>(im, v.a);
+      if (!num) return num;
+      const double k = std::round(num->num());
+      return Value::of(k >= 0 && k < VariableStore::kNgcParams ? 1.0 : 0.0);
+    }
+    if (v.op != gcode::Op::kNamedVar) {
+      return fail(AlarmId::kMacroFormat, "EXISTS takes a named parameter: EXISTS[#<name>]",
+                  im.loc(n.column));
+    }
+    return Value::of(im.ngc_named_exists(im.blk.names[static_cast<std::size_t>(v.name)]) ? 1.0
+                                                                                         : 0.0);
+  }
+};
+
+// The common case of evaluation, without building Result objects: numbers,
+// local/common/persistent variables, operators and functions
+// (operator_value and function_value hold their rules for both paths). It gives up
+// (false) wherever the rules need more: an alarm, a system or named
+// variable. eval() then evaluates the expression the
+// general way, which gives the same value or the alarm; nothing here has a
+// side effect, so the second pass is safe.
+template <class R>
+bool plain(const Interpreter::Impl& im, gcode::ExprId id, Value& out) noexcept {
+  if (id < 0 || static_cast<std::size_t>(id) >= im.blk.nodes.size()) return false;
+  const gcode::ExprNode& n = im.blk.nodes[static_cast<std::size_t>(id)];
+  using gcode::Op;
+  Value a, b;
+  switch (n.op) {
+    case Op::kNumber:
+      out = Value::of(n.value);
+      return true;
+    case Op::kVar:
+      if (!plain<R>(im, n.a, a)) return false;
+      return R::plain_var(im, a.num(), out);
+    case Op::kNeg:
+      if (!plain<R>(im, n.a, a)) return false;
+      out = Value::of(0.0 - a.num());
+      return true;
+    case Op::kFunc:
+      break;
+    case Op::kNamedVar:
+      return false;
+    default: {
+      if (!plain<R>(im, n.a, a) || !plain<R>(im, n.b, b)) return false;
+      double r = 0.0;
+      if (R::binary(n.op, a, b, r)) return false;
+      out = Value::of(r + 0.0);
+      return true;
+    }
+  }
+  if (!plain<R>(im, n.a, a)) return false;
+  double y = 0.0;
+  if (n.b != gcode::kNoExpr) {
+    if (!plain<R>(im, n.b, b)) return false;
+    y = b.num();
+  }
+  double r = 0.0;
+  if (function_value<R>(n.fn, a.num(), n.b != gcode::kNoExpr ? &y : nullptr, R::context(im), r)) {
+    return false;  // EXISTS too: it names a parameter (general)
+  }
+  if (!std::isfinite(r)) return false;
+  out = Value::of(r + 0.0);
+  return true;
 }
 
-// A binary operator under the dialect's rules, for both evaluators.
-[[gnu::always_inline]] inline std::optional<Fault> binary_value(gcode::Op op, Value a, Value b,
-                                                                bool ngc, double& r) noexcept {
-  if (ngc && ngc_own(op)) return ngc_operator_value(op, a.num(), b.num(), r);
-  if (op == gcode::Op::kPow) {
-    return Fault{AlarmId::kMacroFormat, "'**' is not an operator of this control"};
+// A function node, every rule with its alarms.
+template <class R>
+Flow<Value> general_function(Interpreter::Impl& im, const gcode::ExprNode& n) {
+  if (n.fn == gcode::Func::kExists) return R::exists(im, n);
+  auto a = general<R>(im, n.a);
+  if (!a) return a;
+  double y = 0.0;
+  if (n.b != gcode::kNoExpr) {
+    auto b = general<R>(im, n.b);
+    if (!b) return b;
+    y = b->num();
   }
-  return operator_value(op, a, b, r);
+  double r = 0.0;
+  if (auto f = function_value<R>(n.fn, a->num(), n.b != gcode::kNoExpr ? &y : nullptr,
+                                 R::context(im), r)) {
+    return fail(f->id, f->why, im.loc(n.column));
+  }
+  if (!std::isfinite(r)) return fail(AlarmId::kOverflow, "result out of range", im.loc(n.column));
+  return Value::of(r + 0.0);  // no -0
+}
+
+// Every rule, with its alarms (plain is the fast path of the same rules).
+template <class R>
+Flow<Value> general(Interpreter::Impl& im, gcode::ExprId id) {
+  if (id < 0 || static_cast<std::size_t>(id) >= im.blk.nodes.size()) {
+    return fail(AlarmId::kMacroFormat, "missing expression", im.loc(im.cur_col));
+  }
+  const gcode::ExprNode& n = im.blk.nodes[static_cast<std::size_t>(id)];
+  using gcode::Op;
+  switch (n.op) {
+    case Op::kNumber:
+      return Value::of(n.value);
+    case Op::kVar: {
+      auto num = im.var_number(id);
+      SKIPNC_TRY(num);
+      return im.read_var(*num, im.loc(n.column));
+    }
+    case Op::kNamedVar:
+      return im.read_named_var(im.blk.names[static_cast<std::size_t>(n.name)], im.loc(n.column));
+    case Op::kNeg: {
+      auto a = general<R>(im, n.a);
+      if (!a) return a;
+      return Value::of(0.0 - a->num());  // -#1 with #1 vacant is 0, not -0
+    }
+    case Op::kFunc:
+      return general_function<R>(im, n);
+    default: {
+      auto a = general<R>(im, n.a);
+      if (!a) return a;
+      auto b = general<R>(im, n.b);
+      if (!b) return b;
+      double r = 0.0;
+      if (auto f = R::binary(n.op, *a, *b, r)) return fail(f->id, f->why, im.loc(n.column));
+      return Value::of(r + 0.0);  // no -0
+    }
+  }
 }
 
 }  // namespace
+
+// A language's evaluator: both paths compiled for its rules.
+struct ExprRules {
+  bool (*plain)(const Interpreter::Impl&, gcode::ExprId, Value&) noexcept;
+  Flow<Value> (*general)(Interpreter::Impl&, gcode::ExprId);
+};
+
+const ExprRules kMacroBExpr{&plain<MacroBRules>, &general<MacroBRules>};
+const ExprRules kNgcExpr{&plain<NgcRules>, &general<NgcRules>};
 
 Flow<int> Interpreter::Impl::var_number(gcode::ExprId lhs) {
   const gcode::ExprNode& n = blk.nodes[static_cast<std::size_t>(lhs)];
@@ -315,152 +531,10 @@ Flow<void> Interpreter::Impl::assign(gcode::ExprId lhs, Value v) {
   return write_var(*num, v, loc(n.column));
 }
 
-// The common case of evaluation, without building Result objects: numbers,
-// local/common/persistent variables, operators and functions
-// (operator_value and function_value hold their rules for both paths). It gives up
-// (false) wherever the rules need more: an alarm, a system or named
-// variable. eval() then evaluates the expression the
-// general way, which gives the same value or the alarm; nothing here has a
-// side effect, so the second pass is safe.
-bool Interpreter::Impl::eval_plain(gcode::ExprId id, Value& out) const noexcept {
-  if (id < 0 || static_cast<std::size_t>(id) >= blk.nodes.size()) return false;
-  const gcode::ExprNode& n = blk.nodes[static_cast<std::size_t>(id)];
-  using gcode::Op;
-  Value a, b;
-  switch (n.op) {
-    case Op::kNumber:
-      out = Value::of(n.value);
-      return true;
-    case Op::kVar: {
-      if (!eval_plain(n.a, a)) return false;
-      if (ngc) {
-        // RS274NGC: #1-#30 of the call level and #31-#5060, 0 until set
-        // (no vacant value); the system parameters the general way.
-        const double k = std::round(a.num());
-        if (!(k >= 1.0 && k < 5061.0)) return false;
-        const int num = static_cast<int>(k);
-        out = Value::of(num <= 30 ? vars.get(num).num() : vars.ngc_param(num));
-        return true;
-      }
-      const double x = a.num();
-      if (!(std::fabs(x) < 1e9)) return false;
-      int num = static_cast<int>(x);
-      if (num != x) num = static_cast<int>(round_half_away(x));  // #[1.6] is #2
-      if (num == 0) {
-        out = Value::null();
-        return true;
-      }
-      if (!VariableStore::is_local(num) && !VariableStore::is_common(num) &&
-          !VariableStore::is_persistent(num)) {
-        return false;
-      }
-      out = vars.get(num);
-      return true;
-    }
-    case Op::kNeg:
-      if (!eval_plain(n.a, a)) return false;
-      out = Value::of(0.0 - a.num());
-      return true;
-    case Op::kFunc:
-      break;
-    case Op::kNamedVar:
-      return false;
-    default: {
-      if (!eval_plain(n.a, a) || !eval_plain(n.b, b)) return false;
-      double r = 0.0;
-      if (binary_value(n.op, a, b, ngc, r)) return false;
-      out = Value::of(r + 0.0);
-      return true;
-    }
-  }
-  if (!eval_plain(n.a, a)) return false;
-  double y = 0.0;
-  if (n.b != gcode::kNoExpr) {
-    if (!eval_plain(n.b, b)) return false;
-    y = b.num();
-  }
-  double r = 0.0;
-  if (function_value(n.fn, a.num(), n.b != gcode::kNoExpr ? &y : nullptr, func_context(*this), r)) {
-    return false;  // EXISTS too: it names a parameter (eval_general)
-  }
-  if (!std::isfinite(r)) return false;
-  out = Value::of(r + 0.0);
-  return true;
-}
-
 Flow<Value> Interpreter::Impl::eval(gcode::ExprId id) {
   Value v;
-  if (eval_plain(id, v)) return v;
-  return eval_general(id);
-}
-
-// Every rule, with its alarms (eval_plain is the fast path of the same rules).
-Flow<Value> Interpreter::Impl::eval_general(gcode::ExprId id) {
-  if (id < 0 || static_cast<std::size_t>(id) >= blk.nodes.size()) {
-    return fail(AlarmId::kMacroFormat, "missing expression", loc(cur_col));
-  }
-  const gcode::ExprNode& n = blk.nodes[static_cast<std::size_t>(id)];
-  using gcode::Op;
-  switch (n.op) {
-    case Op::kNumber:
-      return Value::of(n.value);
-    case Op::kVar: {
-      auto num = var_number(id);
-      SKIPNC_TRY(num);
-      return read_var(*num, loc(n.column));
-    }
-    case Op::kNamedVar:
-      return read_named_var(blk.names[static_cast<std::size_t>(n.name)], loc(n.column));
-    case Op::kNeg: {
-      auto a = eval_general(n.a);
-      if (!a) return a;
-      return Value::of(0.0 - a->num());  // -#1 with #1 vacant is 0, not -0
-    }
-    case Op::kFunc:
-      break;
-    default: {
-      auto a = eval_general(n.a);
-      if (!a) return a;
-      auto b = eval_general(n.b);
-      if (!b) return b;
-      double r = 0.0;
-      if (auto f = binary_value(n.op, *a, *b, ngc, r)) return fail(f->id, f->why, loc(n.column));
-      return Value::of(r + 0.0);  // no -0
-    }
-  }
-  // Functions.
-  if (n.fn == gcode::Func::kExists) {
-    const gcode::ExprNode& v = blk.nodes[static_cast<std::size_t>(n.a)];
-    if (ngc && v.op == Op::kVar) {
-      // A numbered parameter exists when its number is one (#0-#5602).
-      auto num = eval_general(v.a);
-      if (!num) return num;
-      const double k = std::round(num->num());
-      return Value::of(k >= 0 && k < VariableStore::kNgcParams ? 1.0 : 0.0);
-    }
-    if (!ngc || v.op != Op::kNamedVar) {
-      return fail(AlarmId::kMacroFormat,
-                  ngc ? "EXISTS takes a named parameter: EXISTS[#<name>]"
-                      : "function not available in this control",
-                  loc(n.column));
-    }
-    return Value::of(ngc_named_exists(blk.names[static_cast<std::size_t>(v.name)]) ? 1.0 : 0.0);
-  }
-  auto a = eval_general(n.a);
-  if (!a) return a;
-  double y = 0.0;
-  if (n.b != gcode::kNoExpr) {
-    auto b = eval_general(n.b);
-    if (!b) return b;
-    y = b->num();
-  }
-  double r = 0.0;
-  if (auto f = function_value(n.fn, a->num(), n.b != gcode::kNoExpr ? &y : nullptr,
-                              func_context(*this), r)) {
-    return fail(f->id, f->why, loc(n.column));
-  }
-  if (!std::isfinite(r)) return fail(AlarmId::kOverflow, "result out of range", loc(n.column));
-  return Value::of(r + 0.0);  // no -0
+  if (lang->expr.plain(*this, id, v)) return v;
+  return lang->expr.general(*this, id);
 }
 
 }  // namespace skipnc::interp

@@ -52,28 +52,27 @@ const config::ParamDef* def_of(const config::Dialect& d, int n) {
 // [parameters] applied), and the axes' rate, acceleration and travel.
 void Interpreter::Impl::grbl_start() {
   for (const auto& p : dialect.params) {
-    if (p.number < 1000) grbl_settings[p.number] = params.get(p.number);
+    if (p.number < 1000) grbl_system().settings[p.number] = params.get(p.number);
   }
   for (int i = 0; i < axis_count && i < 10; ++i) {
     const auto& a = mc.axes[static_cast<std::size_t>(i)];
-    grbl_settings[110 + i] = a.rapid_mm_min;
-    grbl_settings[120 + i] = a.accel_mm_s2;
-    grbl_settings[130 + i] = a.max_mm - a.min_mm;
+    grbl_system().settings[110 + i] = a.rapid_mm_min;
+    grbl_system().settings[120 + i] = a.accel_mm_s2;
+    grbl_system().settings[130 + i] = a.max_mm - a.min_mm;
   }
-  grbl_locked = grbl_setting(22) != 0.0;
-  if (grbl_locked) add_message("[MSG:'$H'|'$X' to unlock]");
+  grbl_system().locked = grbl_setting(22) != 0.0;
+  if (grbl_system().locked) add_message("[MSG:'$H'|'$X' to unlock]");
 }
 
 double Interpreter::Impl::grbl_setting(int n) const noexcept {
-  const auto it = grbl_settings.find(n);
-  return it != grbl_settings.end() ? it->second : 0.0;
+  const auto it = grbl_system().settings.find(n);
+  return it != grbl_system().settings.end() ? it->second : 0.0;
 }
 
 bool Interpreter::Impl::probe_inverted() const noexcept {
   const int n = dialect.sw.probe_invert_param;
   if (n == 0) return false;
-  if (grbl) return (static_cast<long long>(grbl_setting(n)) & 1) != 0;
-  return params.bit(n, 0);
+  return lang->probe_inverted(*this, n);  // a parameter bit, or grbl's $6
 }
 
 // Machine (or offset) values as grbl prints them: mm with 3 decimals, or
@@ -104,8 +103,8 @@ Flow<Step> Interpreter::Impl::execute_grbl_system(CommandSink& out) {
   }
   if (motion_since_sync) return need_sync();  // grbl: at rest (Idle) only
   if (text == "X") {
-    if (grbl_locked) add_message("[MSG:Caution: Unlocked]");
-    grbl_locked = false;  // not in alarm: no effect
+    if (grbl_system().locked) add_message("[MSG:Caution: Unlocked]");
+    grbl_system().locked = false;  // not in alarm: no effect
     return Step::kContinue;
   }
   if (text == "H") return grbl_home(out);
@@ -129,17 +128,17 @@ Flow<Step> Interpreter::Impl::grbl_report(const std::string& text) {
   } else if (text == "#") {
     grbl_list_offsets();
   } else if (text == "I") {
-    add_message("[VER:1.1h.20190825:" + grbl_build_info + "]");
+    add_message("[VER:1.1h.20190825:" + grbl_system().build_info + "]");
     add_message("[OPT:V,15,128]");
   } else if (text.starts_with("I=")) {
-    grbl_build_info = text.substr(2);
+    grbl_system().build_info = text.substr(2);
   } else if (text == "N") {
-    for (std::size_t i = 0; i < grbl_startup.size(); ++i) {
-      add_message(fmt::format("$N{}={}", i, grbl_startup[i]));
+    for (std::size_t i = 0; i < grbl_system().startup.size(); ++i) {
+      add_message(fmt::format("$N{}={}", i, grbl_system().startup[i]));
     }
   } else if (text.size() >= 3 && text[0] == 'N' && (text[1] == '0' || text[1] == '1') &&
              text[2] == '=') {
-    grbl_startup[static_cast<std::size_t>(text[1] - '0')] = text.substr(3);
+    grbl_system().startup[static_cast<std::size_t>(text[1] - '0')] = text.substr(3);
   } else {
     return fail(AlarmId::kGrblStatement, "$" + text + " is not a grbl system command",
                 loc(blk.stmt.column));
@@ -148,7 +147,7 @@ Flow<Step> Interpreter::Impl::grbl_report(const std::string& text) {
 }
 
 void Interpreter::Impl::grbl_list_settings() {
-  for (const auto& [n, v] : grbl_settings) {
+  for (const auto& [n, v] : grbl_system().settings) {
     const config::ParamDef* d = def_of(dialect, n);
     const bool integer = d != nullptr ? d->kind != config::ParamKind::kReal : false;
     add_message(fmt::format("${}={}", n, setting_text(v, integer)));
@@ -174,7 +173,7 @@ void Interpreter::Impl::grbl_list_offsets() {
   const bool inch = (static_cast<long long>(grbl_setting(13)) & 1) != 0;
   add_message(inch ? fmt::format("[TLO:{:.4f}]", length_offset / 25.4 + 0.0)
                    : fmt::format("[TLO:{:.3f}]", length_offset + 0.0));
-  add_message("[PRB:" + grbl_coords(grbl_prb) + (grbl_prb_ok ? ":1]" : ":0]"));
+  add_message("[PRB:" + grbl_coords(grbl_system().prb) + (grbl_system().prb_ok ? ":1]" : ":0]"));
 }
 
 // $G: "[GC:G0 G54 G17 G21 G90 G94 M5 M9 T0 F0 S0]" (grbl 1.1's
@@ -245,7 +244,7 @@ Flow<Step> Interpreter::Impl::grbl_store_setting(const std::string& text, Comman
   if ((n / 10 == 11 || n / 10 == 12) && v == 0.0) {
     return fail(AlarmId::kBadValue, fmt::format("${} = 0: a rate or acceleration above 0", n), at);
   }
-  grbl_settings[n] = v;
+  grbl_system().settings[n] = v;
   if (n / 10 == 11) emit(out, canon::AxisRate{axis, v, 0.0});
   if (n / 10 == 12) emit(out, canon::AxisRate{axis, 0.0, v});
   return Step::kContinue;
@@ -280,7 +279,7 @@ Flow<Step> Interpreter::Impl::grbl_home(CommandSink& out) {
   cycle({2});
   cycle({0, 1});
   motion_since_sync = true;
-  grbl_locked = false;
+  grbl_system().locked = false;
   return Step::kContinue;
 }
 
@@ -290,7 +289,7 @@ Flow<Step> Interpreter::Impl::grbl_home(CommandSink& out) {
 // they were ("Jogging commands do not alter the g-code parser state").
 Flow<Step> Interpreter::Impl::grbl_jog(CommandSink& out) {
   const SourceLoc at = loc(blk.stmt.column);
-  if (grbl_locked) return fail(AlarmId::kGrblNotIdle, "$J while grbl is in alarm", at);
+  if (grbl_system().locked) return fail(AlarmId::kGrblNotIdle, "$J while grbl is in alarm", at);
   cur_words.clear();
   auto w = collect_words(cur_words);
   SKIPNC_TRY(w);

@@ -1,5 +1,6 @@
 // Internal state of the interpreter, shared by its translation units:
 //   interpreter.cpp  reading and executing blocks, sync, the public interface
+//   language.cpp     the language objects (language.hpp): Macro B, RS274NGC, grbl
 //   macro_flow.cpp   macro statements: assignment, IF, GOTO, WHILE/DO/END, DPRNT
 //   macro_call.cpp   M98/G65/G66 calls, M99 returns, arguments (programs are
 //                    found by the program store, program_store.hpp)
@@ -40,8 +41,10 @@
 #include "interpreter/codes.hpp"
 #include "interpreter/cutter_comp.hpp"
 #include "interpreter/cycles.hpp"
+#include "interpreter/flow.hpp"
 #include "interpreter/interpreter.hpp"
 #include "interpreter/journal.hpp"
+#include "interpreter/language.hpp"
 #include "interpreter/ngc_room.hpp"
 #include "interpreter/program_store.hpp"
 #include "interpreter/skip_rules.hpp"
@@ -143,35 +146,6 @@ struct PendingSkip {
   double g37_epsilon = 0.0;  // G37: the allowed range, mm
 };
 
-// The block executor's outcome: a value, an alarm, or NeedSync. NeedSync is
-// not an alarm: the block read a live value (#5021.., #5041.., a skip
-// result) while motion it had queued was still to run. Nothing of the block
-// is committed; step() answers Step::kSync, and after sync() the same block
-// runs again with the machine's values.
-struct NeedSync {};
-using Halt = std::variant<Error, NeedSync>;
-template <class T>
-using Flow = std::expected<T, Halt>;
-
-inline std::unexpected<Halt> need_sync() {
-  return std::unexpected<Halt>(NeedSync{});
-}
-
-// The interpreter's public face returns alarms only: a NeedSync reaching it
-// means a live value was read outside a block, a bug, said as one.
-template <class T>
-Result<T> settled(Flow<T> f) {
-  if (f) {
-    if constexpr (std::is_void_v<T>) {
-      return {};
-    } else {
-      return std::move(*f);
-    }
-  }
-  if (auto* e = std::get_if<Error>(&f.error())) return std::unexpected(std::move(*e));
-  return fail(AlarmId::kInternal, "a live value was read outside a block");
-}
-
 // The small state a block may change is the base BlockState (block_state.hpp);
 // the large tables are journaled (journal.hpp).
 struct Interpreter::Impl : BlockState {
@@ -259,17 +233,18 @@ struct Interpreter::Impl : BlockState {
   // Held from the read of #500-#999 to their write (variables.hpp).
   PersistentLock persistent_lock;
 
-  // RS274NGC (LinuxCNC) and grbl: the dialect's language.
-  bool ngc = false;
-  bool grbl = false;
-  Value ngc_value;                    // #<_value>: the last return / endsub value
-  bool ngc_value_returned = false;    // #<_value_returned>
-  std::vector<int> var_file_numbers;  // the parameters the var file keeps (ngc_params.cpp)
+  // The dialect's language (language.hpp): its rules, its own state.
+  std::unique_ptr<Language> lang = make_language(dialect.sw.language);
+  // The state of RS274NGC and of grbl's `$` lines: asked for only on their
+  // own paths (the language is then RS274NGC or grbl, resp. grbl).
+  NgcState& ngc_state() noexcept;  // language.cpp
+  GrblState& grbl_system() noexcept;
+  const GrblState& grbl_system() const noexcept;
 
   // How the program text is cut into blocks: ';' is a comment in RS274NGC and grbl.
   gcode::SourceLimits source_limits() const noexcept {
     gcode::SourceLimits l;
-    l.semicolon_ends_block = dialect.sw.language == config::Language::kMacroB;
+    l.semicolon_ends_block = lang->rules.semicolon_ends_block;
     return l;
   }
 
@@ -290,7 +265,7 @@ struct Interpreter::Impl : BlockState {
   Flow<Read> end_of_file();
   Flow<Read> percent_block(const Frame& f);
   Flow<Read> program_number_block(Frame& f);
-  Flow<Step> execute(CommandSink& out);
+  Flow<Step> execute(CommandSink& out) { return lang->execute(*this, out); }  // language.cpp
   Flow<bool> read_block();
   Flow<void> sync(const SyncState& s);
   SourceLoc loc(std::uint32_t column) const noexcept {
@@ -340,12 +315,6 @@ struct Interpreter::Impl : BlockState {
   void ngc_load_work(int set);
   void ngc_start();
   // grbl's '$' system lines (grbl_system.cpp, docs/languages.md).
-  std::map<int, double> grbl_settings;      // $n: the dialect's table, the axes, what `$n=` set
-  std::string grbl_build_info;              // `$I=text`
-  std::array<std::string, 2> grbl_startup;  // `$N0=` `$N1=` (kept, not run)
-  bool grbl_locked = false;                 // $22 = 1: in alarm until `$H` or `$X`
-  AxisVec grbl_prb;                         // the last probe's [PRB:], machine mm
-  bool grbl_prb_ok = false;
   void grbl_start();
   double grbl_setting(int n) const noexcept;
   bool probe_inverted() const noexcept;
@@ -361,7 +330,6 @@ struct Interpreter::Impl : BlockState {
   Flow<void> load_ngc_var_file();
   int ngc_axis_index(char letter) const noexcept;  // X0 Y1 Z2 A3 B4 C5 U6 V7 W8, -1 else
   // ngc_room.cpp: M70-M73, log files, INI/HAL values (ngc_room.hpp)
-  NgcRoom room;
   Flow<void> ngc_state_codes(const Words& words, const ModalState& before, SourceLoc where);
   void ngc_restore_state(const NgcSavedState& s);
   void ngc_state_on_return();
@@ -373,7 +341,7 @@ struct Interpreter::Impl : BlockState {
   Flow<void> ngc_action(const Words& words, int code, CommandSink& out);
   void ngc_store_g92();
   Flow<void> ngc_reference_return(const Words& words, int g, CommandSink& out);
-  Flow<void> data_setting_ngc(const Words& words, SourceLoc where);
+  Flow<void> ngc_data_setting(const Words& words, SourceLoc where);
 
   // macro_call.cpp
   Flow<void> call(std::int64_t program, int repeats, bool macro, SourceLoc where,
@@ -387,14 +355,19 @@ struct Interpreter::Impl : BlockState {
   bool in_modal_call() const noexcept;
 
   // expr.cpp
+  // The language's evaluator (lang->expr): a fast path without alarms,
+  // then, where it gives up, every rule with its alarms.
   Flow<Value> eval(gcode::ExprId id);
-  Flow<Value> eval_general(gcode::ExprId id);
-  bool eval_plain(gcode::ExprId id, Value& out) const noexcept;
   Flow<int> var_number(gcode::ExprId lhs);
   Flow<void> assign(gcode::ExprId lhs, Value v);
 
-  // sysvars.cpp
+  // sysvars.cpp: read_var .. write_named_var ask the language; Macro B's
+  // variables are read_macro_var .. write_macro_named.
   Flow<Value> read_var(int n, SourceLoc where);
+  Flow<Value> read_macro_var(int n, SourceLoc where);
+  Flow<void> write_macro_var(int n, Value v, SourceLoc where);
+  Flow<Value> read_macro_named(const std::string& name, SourceLoc where);
+  Flow<void> write_macro_named(const std::string& name, Value v, SourceLoc where);
   Flow<Value> read_position(const sysvar::Range& r, int i, SourceLoc where);
   Value read_modal(const sysvar::Range& r, int i) const;
   Value read_control(const sysvar::Range& r, int n) const;
@@ -456,7 +429,9 @@ struct Interpreter::Impl : BlockState {
   // machine's unit, not the program's (ngc_codes.cpp).
   // The unit of #5161-#5390: the machine's (LinuxCNC); grbl keeps mm whatever
   // the machine file says (its internal unit; $13 changes only the reports).
-  double stored_mm() const noexcept { return mc.inch_machine && !grbl ? 25.4 : 1.0; }
+  double stored_mm() const noexcept {
+    return mc.inch_machine && lang->rules.params_in_machine_unit ? 25.4 : 1.0;
+  }
   double word_length(const WordVal& w, bool rotary) const noexcept;  // program units
   double offset_total(int axis) const noexcept;                      // mm
   double work_of(int axis, double machine_mm) const noexcept;        // program units
@@ -467,7 +442,8 @@ struct Interpreter::Impl : BlockState {
   double position_var(int axis, double machine_mm, bool tool_offsets) const noexcept;
   double machine_of(int axis, double work_units) const noexcept;  // mm
   Flow<void> set_tool_length(const Words& words, LengthComp mode);
-  Flow<void> data_setting(const Words& words, SourceLoc where);
+  Flow<void> data_setting(const Words& words, SourceLoc where);  // the language's G10
+  Flow<void> data_setting_fanuc(const Words& words, SourceLoc where);
   // An offset or stored position (G10, G92, G52, G50, #2001.., #5201..,
   // LinuxCNC #5161-#5390) beyond kMaxOffsetMm: illegal_offset_value.
   static constexpr double kMaxOffsetMm = 999999.999;
@@ -523,7 +499,8 @@ struct Interpreter::Impl : BlockState {
   Flow<void> finish_probe(const SyncState& s);
   Flow<void> arc(const Words& words, const AxisVec& target, CommandSink& out);
   Flow<void> dwell(const Words& words, CommandSink& out);
-  Flow<void> reference_return(const Words& words, int g, CommandSink& out);
+  Flow<void> reference_return(const Words& words, int g, CommandSink& out);  // the language's
+  Flow<void> reference_return_fanuc(const Words& words, int g, CommandSink& out);
   Flow<Step> canned_cycle(const Words& words, CommandSink& out);
   // The modal F as a path feed: in feed per revolution, times the spindle
   // speed at the present position (0 with the spindle stopped).

@@ -66,11 +66,7 @@ void Interpreter::Impl::init_tables() {
   work_offsets.assign(kWorkSystems, AxisVec{});
   std::copy(mc.work_offsets.begin(), mc.work_offsets.end(), work_offsets.setup().begin());
   parse_limits.max_bracket_depth = dialect.sw.macro_bracket_depth;
-  ngc = dialect.sw.language == config::Language::kRs274ngc;
-  grbl = dialect.sw.language == config::Language::kGrbl;
-  parse_limits.syntax = ngc    ? gcode::Syntax::kRs274ngc
-                        : grbl ? gcode::Syntax::kGrbl
-                               : gcode::Syntax::kMacroB;
+  parse_limits.syntax = lang->rules.syntax;
   parse_limits.slash_comments = dialect.sw.slash_comments;
   parse_limits.conditional_m99 = dialect.sw.conditional_m99;
   nat = params.bit(config::param::kSignedArcFunctions);
@@ -91,25 +87,10 @@ Flow<void> Interpreter::Impl::init_variables() {
     auto l = PersistentLock::acquire(mc.persistent_vars, kPersistentLockWaitS);
     SKIPNC_TRY(l);
     persistent_lock = std::move(*l);
-    SKIPNC_TRY(ngc ? load_ngc_var_file()  // ngc_params.cpp
-                   : Flow<void>(load_persistent(mc.persistent_vars, vars.persistent())));
+    SKIPNC_TRY(lang->load_persistent(*this));
   }
   for (const auto& [n, v] : setup.variables) {
-    if (ngc) {
-      if (write_ngc_param(n, Value::of(v), SourceLoc{})) continue;
-      return fail(AlarmId::kUsage, "parameter #" + std::to_string(n) +
-                                       " cannot be set before a run (#1-#5060, #5071-#5209, "
-                                       "#5221-#5399)");
-    }
-    if (VariableStore::is_persistent(n)) {
-      vars.persistent()[static_cast<std::size_t>(n - 500)] = Value::of(v);
-    } else if (VariableStore::is_local(n) || VariableStore::is_common(n)) {
-      vars.set(n, Value::of(v));
-    } else {
-      return fail(AlarmId::kUsage,
-                  "variable #" + std::to_string(n) +
-                      " cannot be set before a run (#1-#33, #100-#199, #500-#999)");
-    }
+    SKIPNC_TRY(lang->preset(*this, n, v));
   }
   return {};
 }
@@ -135,8 +116,7 @@ Flow<void> Interpreter::Impl::init(const AxisVec& start) {
   init_axes();
   pos = start;
   init_tables();
-  if (ngc || grbl) ngc_start();  // ngc_params.cpp
-  if (grbl) grbl_start();        // grbl_system.cpp
+  lang->start(*this);  // language.cpp
   SKIPNC_TRY(init_variables());
   return open_main();
 }
@@ -254,7 +234,7 @@ Flow<Interpreter::Impl::Read> Interpreter::Impl::classify_block(Frame& f) {
   if (blk.has_o && blk.words.empty() && blk.stmt.kind == gcode::StmtKind::kNone) {
     return program_number_block(f);
   }
-  if (blk.empty() && (ngc || grbl) && !blk.comments.empty()) {
+  if (blk.empty() && lang->rules.comment_line_runs && !blk.comments.empty()) {
     return Read::kRun;  // (debug,..) reads parameters: it runs as a block (ngc_comments)
   }
   if (blk.empty()) {
@@ -306,60 +286,6 @@ Flow<Step> Interpreter::Impl::step_block(CommandSink& out) {
     return Step::kSync;
   }
   return r;
-}
-
-Flow<Step> Interpreter::Impl::execute(CommandSink& out) {
-  if (ngc || grbl) {
-    // RS274NGC: the words and the settings' values are read with the
-    // parameters as they were before the line; then the settings take
-    // effect, then the comments speak, then the codes run.
-    if (blk.has_n) modal.seq = static_cast<int>(blk.n % 100000000);
-    if (blk.stmt.kind == gcode::StmtKind::kOword) {
-      auto c = ngc_comments();
-      SKIPNC_TRY(c);
-      return execute_oword(out);  // oword.cpp
-    }
-    if (grbl) {
-      if (blk.stmt.kind != gcode::StmtKind::kNone) return execute_grbl_system(out);
-      if (grbl_locked && !blk.words.empty()) {
-        return fail(AlarmId::kGrblLocked,
-                    "grbl is in alarm until $H or $X ($22 = 1: homing is required at start)",
-                    loc(blk.words.front().column));
-      }
-    }
-    cur_words.clear();
-    auto w = collect_words(cur_words);
-    SKIPNC_TRY(w);
-    auto a = ngc_assignments();
-    SKIPNC_TRY(a);
-    auto c = ngc_comments();
-    SKIPNC_TRY(c);
-    if (blk.words.empty()) return Step::kContinue;
-    return execute_nc(cur_words, out);
-  }
-  if (blk.stmt.kind != gcode::StmtKind::kNone) {
-    if (!blk.words.empty()) {
-      // Fanuc: an NC statement and a macro statement in one block (PS0127).
-      const gcode::Word& w = blk.words.front();
-      return fail(AlarmId::kNcMacroStatement,
-                  std::string("NC address ") + w.letter + " and a macro statement in one block",
-                  loc(w.column));
-    }
-    if (blk.has_n) modal.seq = static_cast<int>(blk.n % 100000000);  // #4114
-    return execute_statement(out);
-  }
-  if (blk.condition != gcode::kNoExpr) [[unlikely]] {
-    // Haas's `[expr] M99 Pn`: every expression is a condition, 0 false and
-    // anything else true (96-8000, Macros, "Conditional expressions"); a
-    // false one passes the block by.
-    auto c = eval(blk.condition);
-    SKIPNC_TRY(c);
-    if (c->num() == 0.0) return Step::kContinue;
-  }
-  cur_words.clear();
-  auto c = collect_words(cur_words);
-  SKIPNC_TRY(c);
-  return execute_nc(cur_words, out);
 }
 
 Flow<void> Interpreter::Impl::sync(const SyncState& s) {
@@ -454,18 +380,8 @@ Result<void> Interpreter::save_persistent() {
   // The DPRNT file (--dprnt) is written here too, whole, once per run.
   auto d = impl_->write_dprnt();
   if (!d) return d;
-  if (auto l = impl_->write_ngc_logs(); !l) return l;
-  Result<void> r;
-  if (!impl_->mc.persistent_vars.empty() && impl_->ngc) {
-    std::vector<double> values;
-    for (const int n : impl_->var_file_numbers) {
-      auto v = impl_->read_ngc_param(n, SourceLoc{});
-      values.push_back(v ? v->num() : 0.0);
-    }
-    r = save_var_file(impl_->mc.persistent_vars, impl_->var_file_numbers, values);
-  } else if (!impl_->mc.persistent_vars.empty() && impl_->vars.persistent_dirty()) {
-    r = interp::save_persistent(impl_->mc.persistent_vars, impl_->vars.persistent());
-  }
+  // The language's log files and persistent parameters (language.cpp).
+  Result<void> r = impl_->lang->save_persistent(*impl_);
   impl_->persistent_lock.release();
   return r;
 }

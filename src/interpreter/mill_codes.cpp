@@ -667,7 +667,7 @@ Flow<Step> Interpreter::Impl::canned_cycle(const Words& words, CommandSink& out)
   if (words.has('Q')) d.q = std::fabs(word_length(words.at('Q'), false));
   if (words.has('P')) {
     const WordVal& p = words.at('P');
-    if (ngc || grbl) {
+    if (lang->rules.dwell_p_seconds) {
       d.p_ms = p.value * 1000.0;  // LinuxCNC: the dwell P is in seconds
     } else if (p.has_point) {
       // As G04 P: milliseconds, written without a decimal point (PS0007).
@@ -742,7 +742,7 @@ Flow<Step> Interpreter::Impl::canned_cycle(const Words& words, CommandSink& out)
     h.spindle_dir = modal.spindle_dir != 0 ? modal.spindle_dir : 1;
     // LinuxCNC's levels (cycles.hpp): rise to the clearance level first,
     // G98 to the higher of R and the start, taps feeding out to it.
-    h.linuxcnc_levels = ngc || grbl;
+    h.linuxcnc_levels = lang->rules.cycle_levels_linuxcnc;
     for (const cycles::Move& m : cycles::hole_moves(h)) {
       const xform::Point w = xform::to_work(frame, m.to);
       AxisVec mp = base;

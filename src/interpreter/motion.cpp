@@ -10,7 +10,7 @@ namespace skipnc::interp {
 
 Flow<void> Interpreter::Impl::dwell(const Words& words, CommandSink& out) {
   double seconds = 0.0;
-  if ((ngc || grbl) && words.has('P')) {
+  if (lang->rules.dwell_p_seconds && words.has('P')) {
     seconds = words.at('P').value;  // LinuxCNC and grbl: P in seconds
   } else if (words.has('P')) {
     const WordVal& p = words.at('P');
@@ -38,7 +38,11 @@ Flow<void> Interpreter::Impl::dwell(const Words& words, CommandSink& out) {
 }
 
 Flow<void> Interpreter::Impl::reference_return(const Words& words, int g, CommandSink& out) {
-  if (ngc || grbl) return ngc_reference_return(words, g, out);  // ngc_codes.cpp
+  return lang->reference_return(*this, words, g, out);
+}
+
+// The Fanuc family's G28 / G30.
+Flow<void> Interpreter::Impl::reference_return_fanuc(const Words& words, int g, CommandSink& out) {
   // G30: P2-P4 choose the 2nd-4th reference point (P omitted: the 2nd), from
   // the machine file's [reference_points]; G28: the reference position,
   // machine zero.
@@ -81,7 +85,7 @@ Flow<Step> Interpreter::Impl::motion(const Words& words, CommandSink& out, bool 
   // LinuxCNC and grbl move in machine coordinates only with G0 or G1: G53
   // with G38.n or an arc is refused (LinuxCNC rs274ngc check_g_codes,
   // "Must use G0 or G1 with G53"; grbl gcode.c, error 30).
-  if (g53 && (ngc || grbl) &&
+  if (g53 && lang->rules.g53_g0_g1_only &&
       (skip || (modal.motion != Motion::kRapid && modal.motion != Motion::kLinear))) {
     return fail(AlarmId::kG53Motion,
                 skip ? "G53 with a probe move (G38.n): G53 moves only with G0 or G1"
@@ -89,7 +93,7 @@ Flow<Step> Interpreter::Impl::motion(const Words& words, CommandSink& out, bool 
                 loc(cur_col));
   }
   // G53 G01 is a feed in machine coordinates on LinuxCNC and grbl.
-  if (g53 && !skip && !((ngc || grbl) && modal.motion == Motion::kLinear)) {
+  if (g53 && !skip && !(lang->rules.g53_g0_g1_only && modal.motion == Motion::kLinear)) {
     // G53 positions at rapid traverse whatever the modal motion (B-63944EN
     // "Machine coordinate system"); in G91 it is an incremental rapid.
     emit(out, canon::Rapid{target, params.bit(config::param::kLinearRapid)});
@@ -133,35 +137,124 @@ Flow<Step> Interpreter::Impl::motion(const Words& words, CommandSink& out, bool 
   return Step::kContinue;
 }
 
-Flow<void> Interpreter::Impl::arc(const Words& words, const AxisVec& target, CommandSink& out) {
+namespace {
+
+// The arc's plane (its two axes and the normal) and the words of its centre
+// offset (I J, K I or J K).
+struct ArcPlane {
   canon::Plane pl;
   char ci = 'I', cj = 'J';
-  auto idx = [&](char c) { return axis_of_letter[static_cast<std::size_t>(c - 'A')]; };
-  switch (modal.plane) {
-    case PlaneSel::kXY:
-      pl = {idx('X'), idx('Y'), idx('Z')};
-      ci = 'I';
-      cj = 'J';
-      break;
+};
+
+ArcPlane arc_plane(const Interpreter::Impl& im) noexcept {
+  auto idx = [&](char c) { return im.axis_of_letter[static_cast<std::size_t>(c - 'A')]; };
+  switch (im.modal.plane) {
     case PlaneSel::kZX:
-      pl = {idx('Z'), idx('X'), idx('Y')};
-      ci = 'K';
-      cj = 'I';
-      break;
+      return {{idx('Z'), idx('X'), idx('Y')}, 'K', 'I'};
     case PlaneSel::kYZ:
-      pl = {idx('Y'), idx('Z'), idx('X')};
-      ci = 'J';
-      cj = 'K';
+      return {{idx('Y'), idx('Z'), idx('X')}, 'J', 'K'};
+    case PlaneSel::kXY:
       break;
   }
+  return {{idx('X'), idx('Y'), idx('Z')}, 'I', 'J'};
+}
+
+// What the centre is found from: the start and end in the plane (machine
+// mm), the direction, the frame (G51 / G51.1 / G68 in the XY plane) and
+// the radius tolerance.
+struct ArcGeometry {
+  double sx, sy, ex, ey;
+  bool ccw, framed;
+  double tol;
+};
+
+// The centre of an arc given by its radius R (R < 0: the long way). (The
+// helpers of arc are inlined: one call per arc block.)
+[[gnu::always_inline]] inline Flow<void> arc_center_r(const Interpreter::Impl& im,
+                                                      const Words& words, const ArcGeometry& g,
+                                                      SourceLoc at, double& cx, double& cy) {
+  const SourceLoc r_at = im.loc(words.at('R').column);
+  const double r = im.word_length(words.at('R'), false) * im.unit_mm() *
+                   (g.framed ? std::fabs(im.frame.scale[0]) : 1.0);
+  const double dx = g.ex - g.sx, dy = g.ey - g.sy;
+  const double d = std::hypot(dx, dy);
+  if (d < 1e-9) {
+    return fail(AlarmId::kArcBadCenter, "a full circle cannot be programmed with R; use I, J or K",
+                at);
+  }
+  if (r == 0.0) return fail(AlarmId::kArcBadCenter, "R0", r_at);
+  const double half = d / 2.0;
+  if (half > std::fabs(r) + g.tol) {
+    return fail(AlarmId::kArcRadiusMismatch,
+                "R" + std::to_string(std::fabs(r)) + " is smaller than half the chord " +
+                    std::to_string(half),
+                r_at);
+  }
+  const double h = std::sqrt(std::max(0.0, r * r - half * half));
+  // Left of the chord for a short ccw arc; right for cw; R < 0 takes the long way.
+  double side = g.ccw ? 1.0 : -1.0;
+  if (r < 0) side = -side;
+  cx = g.sx + dx / 2.0 - side * h * dy / d;
+  cy = g.sy + dy / 2.0 + side * h * dx / d;
+  return {};
+}
+
+// Whether the start and end radii differ too much, under the language's rule.
+[[gnu::always_inline]] inline bool radius_error(const Interpreter::Impl& im, double r0, double r1,
+                                                double tol) noexcept {
+  if (!im.lang->rules.arc_radius_linuxcnc) return std::fabs(r1 - r0) > tol;
+  // LinuxCNC (interp_arc.cc): refused when the radii differ by more than
+  // 100 times the tolerance, or by more than the tolerance and 0.1 %;
+  // the tolerance is 2 * 0.01 mm * sqrt(2) (2 * 0.001 inch * sqrt(2) in G20).
+  const double abs_tol =
+      (im.modal.units == Units::kInch ? 0.001 * 25.4 : 0.01) * 2.0 * std::sqrt(2.0);
+  const double err = std::fabs(r1 - r0);
+  return err > 100.0 * abs_tol || (err / std::max(r0, r1) > 0.001 && err > abs_tol);
+}
+
+// The centre of an arc given by I, J, K (G90.1: absolute in work coordinates).
+[[gnu::always_inline]] inline Flow<void> arc_center_ijk(const Interpreter::Impl& im,
+                                                        const Words& words, const ArcPlane& ap,
+                                                        const ArcGeometry& g, SourceLoc at,
+                                                        double& cx, double& cy) {
+  const char ci = ap.ci, cj = ap.cj;
+  double oi = words.has(ci) ? im.word_length(words.at(ci), false) * im.unit_mm() : 0.0;
+  double oj = words.has(cj) ? im.word_length(words.at(cj), false) * im.unit_mm() : 0.0;
+  if (im.modal.arc_ijk_absolute) {
+    // G90.1: I J K are the centre in work coordinates.
+    oi = words.has(ci) ? im.machine_of(ap.pl.a0, oi / im.unit_mm()) - g.sx : 0.0;
+    oj = words.has(cj) ? im.machine_of(ap.pl.a1, oj / im.unit_mm()) - g.sy : 0.0;
+  }
+  if (g.framed) {
+    const xform::Point v = xform::vector_to_work(im.frame, {oi, oj, 0.0});
+    oi = v[0];
+    oj = v[1];
+  }
+  cx = g.sx + oi;
+  cy = g.sy + oj;
+  const double r0 = std::hypot(g.sx - cx, g.sy - cy);
+  const double r1 = std::hypot(g.ex - cx, g.ey - cy);
+  if (r0 < 1e-9) return fail(AlarmId::kArcBadCenter, "the arc's centre is its start point", at);
+  if (radius_error(im, r0, r1, g.tol)) {
+    return fail(AlarmId::kArcRadiusMismatch,
+                "start radius " + std::to_string(r0 / im.unit_mm()) + ", end radius " +
+                    std::to_string(r1 / im.unit_mm()),
+                at);
+  }
+  return {};
+}
+
+}  // namespace
+
+Flow<void> Interpreter::Impl::arc(const Words& words, const AxisVec& target, CommandSink& out) {
+  const ArcPlane ap = arc_plane(*this);
+  const canon::Plane& pl = ap.pl;
   const SourceLoc at = loc(cur_col);
   if (pl.a0 < 0 || pl.a1 < 0) {
     return fail(AlarmId::kIllegalPlaneAxis, "the selected plane's axes are not on this machine",
                 at);
   }
   if (feed_mm_per_min() <= 0.0) return fail(AlarmId::kNoFeed, "G02/G03 without a feed (F)", at);
-  const double sx = pos[pl.a0], sy = pos[pl.a1];
-  const double ex = target[pl.a0], ey = target[pl.a1];
   // Under G51 / G51.1 / G68 (XY plane) the centre offset turns and scales with
   // the frame, and an odd number of mirrored axes reverses the direction.
   const bool framed = !mc.lathe() && frame.active() && modal.plane == PlaneSel::kXY;
@@ -174,72 +267,25 @@ Flow<void> Interpreter::Impl::arc(const Words& words, const AxisVec& target, Com
   }
   const bool flipped = framed && ((frame.mirror[0] != (frame.scale[0] < 0.0)) !=
                                   (frame.mirror[1] != (frame.scale[1] < 0.0)));
-  const bool ccw = (modal.motion == Motion::kCcwArc) != flipped;
   const double tol = params.get(config::param::kArcRadiusTolerance) > 0
                          ? params.get(config::param::kArcRadiusTolerance)
                          : 0.02;
+  const ArcGeometry g{pos[pl.a0],
+                      pos[pl.a1],
+                      target[pl.a0],
+                      target[pl.a1],
+                      (modal.motion == Motion::kCcwArc) != flipped,
+                      framed,
+                      tol};
   double cx = 0, cy = 0;
   if (words.has('R')) {
-    const double r =
-        word_length(words.at('R'), false) * unit_mm() * (framed ? std::fabs(frame.scale[0]) : 1.0);
-    const double dx = ex - sx, dy = ey - sy;
-    const double d = std::hypot(dx, dy);
-    if (d < 1e-9) {
-      return fail(AlarmId::kArcBadCenter,
-                  "a full circle cannot be programmed with R; use I, J or K", at);
-    }
-    if (r == 0.0) return fail(AlarmId::kArcBadCenter, "R0", loc(words.at('R').column));
-    const double half = d / 2.0;
-    if (half > std::fabs(r) + tol) {
-      return fail(AlarmId::kArcRadiusMismatch,
-                  "R" + std::to_string(std::fabs(r)) + " is smaller than half the chord " +
-                      std::to_string(half),
-                  loc(words.at('R').column));
-    }
-    const double h = std::sqrt(std::max(0.0, r * r - half * half));
-    // Left of the chord for a short ccw arc; right for cw; R < 0 takes the long way.
-    double side = ccw ? 1.0 : -1.0;
-    if (r < 0) side = -side;
-    cx = sx + dx / 2.0 - side * h * dy / d;
-    cy = sy + dy / 2.0 + side * h * dx / d;
-  } else if ((ngc || grbl) && words.has('P') && words.at('P').value != 1.0) {
+    SKIPNC_TRY(arc_center_r(*this, words, g, at, cx, cy));
+  } else if (lang->rules.arc_turns_p && words.has('P') && words.at('P').value != 1.0) {
     return fail(AlarmId::kNotSimulated,
                 "G02/G03 P (an arc of more than one turn) is not simulated by skipnc",
                 loc(words.at('P').column));
-  } else if (words.has(ci) || words.has(cj)) {
-    double oi = words.has(ci) ? word_length(words.at(ci), false) * unit_mm() : 0.0;
-    double oj = words.has(cj) ? word_length(words.at(cj), false) * unit_mm() : 0.0;
-    if (modal.arc_ijk_absolute) {
-      // G90.1: I J K are the centre in work coordinates.
-      oi = words.has(ci) ? machine_of(pl.a0, oi / unit_mm()) - sx : 0.0;
-      oj = words.has(cj) ? machine_of(pl.a1, oj / unit_mm()) - sy : 0.0;
-    }
-    if (framed) {
-      const xform::Point v = xform::vector_to_work(frame, {oi, oj, 0.0});
-      oi = v[0];
-      oj = v[1];
-    }
-    cx = sx + oi;
-    cy = sy + oj;
-    const double r0 = std::hypot(sx - cx, sy - cy);
-    const double r1 = std::hypot(ex - cx, ey - cy);
-    if (r0 < 1e-9) return fail(AlarmId::kArcBadCenter, "the arc's centre is its start point", at);
-    bool radius_error = std::fabs(r1 - r0) > tol;
-    if (ngc || grbl) {
-      // LinuxCNC (interp_arc.cc): refused when the radii differ by more than
-      // 100 times the tolerance, or by more than the tolerance and 0.1 %;
-      // the tolerance is 2 * 0.01 mm * sqrt(2) (2 * 0.001 inch * sqrt(2) in G20).
-      const double abs_tol =
-          (modal.units == Units::kInch ? 0.001 * 25.4 : 0.01) * 2.0 * std::sqrt(2.0);
-      const double err = std::fabs(r1 - r0);
-      radius_error = err > 100.0 * abs_tol || (err / std::max(r0, r1) > 0.001 && err > abs_tol);
-    }
-    if (radius_error) {
-      return fail(AlarmId::kArcRadiusMismatch,
-                  "start radius " + std::to_string(r0 / unit_mm()) + ", end radius " +
-                      std::to_string(r1 / unit_mm()),
-                  at);
-    }
+  } else if (words.has(ap.ci) || words.has(ap.cj)) {
+    SKIPNC_TRY(arc_center_ijk(*this, words, ap, g, at, cx, cy));
   } else {
     return fail(AlarmId::kArcBadCenter, "G02/G03 needs R or the centre (I, J, K)", at);
   }
@@ -248,7 +294,7 @@ Flow<void> Interpreter::Impl::arc(const Words& words, const AxisVec& target, Com
   a.center0 = cx;
   a.center1 = cy;
   a.plane = pl;
-  a.ccw = ccw;
+  a.ccw = g.ccw;
   a.feed_mm_per_min = feed_mm_per_min();
   a.exact_stop = modal.path == PathMode::kExactStop || words.has_g(90);
   emit(out, a);

@@ -61,7 +61,7 @@ Flow<void> Interpreter::Impl::collect_words(Words& words) {
       // A computed length is rounded to the address's least input increment,
       // as the control does (#1 = 12.3456, X#1 -> X12.346); macro arguments
       // keep their value.
-      if (length && !call_block && !ngc && !grbl) {
+      if (length && !call_block && lang->rules.round_computed_words) {
         v.value = std::round(v.value / word_inc) * word_inc + 0.0;
       }
     } else {

@@ -102,12 +102,13 @@ Flow<void> Interpreter::Impl::ngc_reference_return(const Words& words, int g, Co
   return {};
 }
 
-Flow<void> Interpreter::Impl::data_setting_ngc(const Words& words, SourceLoc where) {
+Flow<void> Interpreter::Impl::ngc_data_setting(const Words& words, SourceLoc where) {
   if (!words.has('L')) return fail(AlarmId::kBadValue, "G10 needs L", where);
   // grbl refuses a G10 only without both P and L; P left out is P0, the
   // active system (grbl 1.1 gcode.c, "[G10 Errors]"): sender macros write
   // `G10 L20 Z15.5`. LinuxCNC needs P.
-  if (!words.has('P') && !grbl) return fail(AlarmId::kBadValue, "G10 needs P", where);
+  if (!words.has('P') && !lang->rules.g10_p_optional)
+    return fail(AlarmId::kBadValue, "G10 needs P", where);
   const double lv = words.at('L').value;
   const double pv = words.has('P') ? words.at('P').value : 0.0;
   const int l = static_cast<int>(lv);

@@ -131,8 +131,8 @@ std::optional<Flow<Value>> Interpreter::Impl::predefined_named(const std::string
     return of(abs ? tool / unit_mm() : position_var(a, tool, dialect.sw.current_tool_offsets));
   }
   if (n == "_line") return of(cur_line);
-  if (n == "_value") return of(ngc_value.num());
-  if (n == "_value_returned") return of(ngc_value_returned ? 1.0 : 0.0);
+  if (n == "_value") return of(ngc_state().value.num());
+  if (n == "_value_returned") return of(ngc_state().value_returned ? 1.0 : 0.0);
   if (n == "_call_level") return of(static_cast<double>(frames.size() - 1));
   if (n == "_task") return of(1.0);
   if (n == "_metric") return of(modal.units == Units::kMetric ? 1.0 : 0.0);
@@ -314,7 +314,7 @@ void Interpreter::Impl::ngc_store_probe(const AxisVec& latch_work, bool triggere
 // At the start: the parameter store, and #5221.. holding the machine file's
 // work offsets (grbl keeps G28, G30, G92 and the offsets in the same numbers).
 void Interpreter::Impl::ngc_start() {
-  vars.enable_ngc();
+  vars.enable_ngc_params();
   for (int set = 1; set <= 9; ++set) {
     for (int i = 0; i < axis_count; ++i) {
       const int j = ngc_axis_index(axis_letter[static_cast<std::size_t>(i)]);
@@ -331,11 +331,12 @@ void Interpreter::Impl::ngc_start() {
 // offsets); the run starts in the system of #5220 with the G92 of
 // #5210-#5219, as LinuxCNC does.
 Flow<void> Interpreter::Impl::load_ngc_var_file() {
+  std::vector<int>& numbers = ngc_state().var_file_numbers;
   std::vector<double> values;
-  auto r = load_var_file(mc.persistent_vars, var_file_numbers, values);
+  auto r = load_var_file(mc.persistent_vars, numbers, values);
   SKIPNC_TRY(r);
-  for (std::size_t i = 0; i < var_file_numbers.size(); ++i) {
-    const int n = var_file_numbers[i];
+  for (std::size_t i = 0; i < numbers.size(); ++i) {
+    const int n = numbers[i];
     if (n == 5220) {  // the coordinate system LinuxCNC starts in
       const double w = std::round(values[i]);
       if (w >= 1 && w <= 9) modal.work = static_cast<int>(w);
@@ -357,10 +358,9 @@ Flow<void> Interpreter::Impl::load_ngc_var_file() {
       if (j >= 0) g92_shift[i] = vars.ngc_param(5211 + j) * stored_mm();
     }
   }
-  for (int n = 5161; n <= 5390; ++n) var_file_numbers.push_back(n);
-  std::sort(var_file_numbers.begin(), var_file_numbers.end());
-  var_file_numbers.erase(std::unique(var_file_numbers.begin(), var_file_numbers.end()),
-                         var_file_numbers.end());
+  for (int n = 5161; n <= 5390; ++n) numbers.push_back(n);
+  std::sort(numbers.begin(), numbers.end());
+  numbers.erase(std::unique(numbers.begin(), numbers.end()), numbers.end());
   return {};
 }
 

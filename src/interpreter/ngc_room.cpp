@@ -44,7 +44,7 @@ Flow<void> Interpreter::Impl::ngc_state_codes(const Words& words, const ModalSta
     const int m = words.m[static_cast<std::size_t>(i)];
     if (m < 70 || m > 73) continue;
     const std::size_t level = frames.size();
-    auto& saved = room.saved;
+    auto& saved = ngc_state().room.saved;
     auto it = std::find_if(saved.begin(), saved.end(),
                            [&](const NgcSavedState& s) { return s.level == level; });
     if (m == 70 || m == 73) {
@@ -92,7 +92,7 @@ void Interpreter::Impl::ngc_restore_state(const NgcSavedState& s) {
 // what the level saved goes away with it.
 void Interpreter::Impl::ngc_state_on_return() {
   const std::size_t level = frames.size();
-  auto& saved = room.saved;
+  auto& saved = ngc_state().room.saved;
   for (const NgcSavedState& s : saved) {
     if (s.level == level && s.autorestore) ngc_restore_state(s);
   }
@@ -109,21 +109,22 @@ Flow<void> Interpreter::Impl::ngc_log_comment(std::string_view text, SourceLoc w
       return fail(AlarmId::kFileAccess,
                   "'" + n + "': a log file is a plain file name, written in --log-dir", where);
     }
-    room.files.push_back(NgcLogFile{n, {}, probe, 0});
-    (probe ? room.probe : room.log) = static_cast<int>(room.files.size()) - 1;
+    ngc_state().room.files.push_back(NgcLogFile{n, {}, probe, 0});
+    (probe ? ngc_state().room.probe : ngc_state().room.log) =
+        static_cast<int>(ngc_state().room.files.size()) - 1;
     return {};
   };
   if (head.starts_with("logopen,")) return open(text.substr(8), false);
   if (head.starts_with("logappend,")) return open(text.substr(10), false);
   if (head.starts_with("probeopen")) return open(text.substr(9), true);
   if (head.starts_with("logclose")) {
-    room.log = -1;
+    ngc_state().room.log = -1;
   } else if (head.starts_with("probeclose")) {
-    room.probe = -1;
-  } else if (head.starts_with("log,") && room.log >= 0) {
+    ngc_state().room.probe = -1;
+  } else if (head.starts_with("log,") && ngc_state().room.log >= 0) {
     auto m = ngc_message_text(text.substr(4), where);
     SKIPNC_TRY(m);
-    NgcLogFile& f = room.files[static_cast<std::size_t>(room.log)];
+    NgcLogFile& f = ngc_state().room.files[static_cast<std::size_t>(ngc_state().room.log)];
     f.text += *m + "\n";
     ++f.lines;
   }
@@ -133,8 +134,8 @@ Flow<void> Interpreter::Impl::ngc_log_comment(std::string_view text, SourceLoc w
 // After each G38: the nine coordinates X Y Z A B C U V W (#5061-#5069) on a
 // line of the open probe log, as LinuxCNC's "%f" prints them.
 void Interpreter::Impl::ngc_probe_log() {
-  if (room.probe < 0) return;
-  NgcLogFile& f = room.files[static_cast<std::size_t>(room.probe)];
+  if (ngc_state().room.probe < 0) return;
+  NgcLogFile& f = ngc_state().room.files[static_cast<std::size_t>(ngc_state().room.probe)];
   char buf[48];
   for (int n = 5061; n <= 5069; ++n) {
     std::snprintf(buf, sizeof buf, "%s%f", n == 5061 ? "" : " ", vars.ngc_param(n) + 0.0);
@@ -147,7 +148,7 @@ void Interpreter::Impl::ngc_probe_log() {
 // The files at the end of the run: written whole in setup.log_dir, or, with
 // none, their lines given as messages; either way one message names each.
 Result<void> Interpreter::Impl::write_ngc_logs() {
-  for (const NgcLogFile& f : room.files) {
+  for (const NgcLogFile& f : ngc_state().room.files) {
     const char* kind = f.probe ? "probe log '" : "log '";
     if (setup.log_dir.empty()) {
       add_message(kind + f.name + "': " + std::to_string(f.lines) +

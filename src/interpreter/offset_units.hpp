@@ -17,7 +17,7 @@ namespace skipnc::interp {
 // family) or 1 (stored in mm: LinuxCNC, grbl). `S` is the interpreter state.
 template <class S>
 double offset_unit_mm(const S& s) noexcept {
-  return s.ngc || s.grbl ? 1.0 : s.unit_mm();
+  return s.lang->rules.offsets_in_mm ? 1.0 : s.unit_mm();
 }
 
 }  // namespace skipnc::interp

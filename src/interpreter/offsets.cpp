@@ -56,7 +56,7 @@ Flow<void> Interpreter::Impl::set_tool_length(const Words& words, LengthComp mod
     return {};
   }
   // LinuxCNC: G43 without H takes the tool in the spindle.
-  int h = (ngc || grbl) && !words.has('H') ? modal.tool : modal.h;
+  int h = lang->rules.g43_tool_in_spindle && !words.has('H') ? modal.tool : modal.h;
   if (words.has('H')) {
     const double v = words.at('H').value;
     if (v != std::trunc(v) || v < 0 || v > mc.tool_offset_count) {
@@ -89,7 +89,11 @@ Flow<void> Interpreter::Impl::check_offset(double mm, const std::string& what, S
 }
 
 Flow<void> Interpreter::Impl::data_setting(const Words& words, SourceLoc where) {
-  if (ngc || grbl) return data_setting_ngc(words, where);  // ngc_codes.cpp
+  return lang->data_setting(*this, words, where);
+}
+
+// The Fanuc family's G10.
+Flow<void> Interpreter::Impl::data_setting_fanuc(const Words& words, SourceLoc where) {
   if (mc.lathe() && !words.has('L')) return lathe_offset_setting(words, where);
   if (!words.has('L')) return fail(AlarmId::kBadValue, "G10 needs L", where);
   const int l = static_cast<int>(words.at('L').value);

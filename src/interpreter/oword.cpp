@@ -147,7 +147,7 @@ Flow<void> Interpreter::Impl::oword_call(const std::string& label, SourceLoc whe
     vars.set(static_cast<int>(i) + 1, Value::of(args[i]));
   }
   for (int i = static_cast<int>(args.size()) + 1; i <= 30; ++i) vars.set(i, Value::of(0.0));
-  ngc_value_returned = false;
+  ngc_state().value_returned = false;
   return {};
 }
 
@@ -176,8 +176,8 @@ Flow<Step> Interpreter::Impl::oword_return(const gcode::Stmt& s, SourceLoc where
   Frame& caller = frames.back();
   auto sk = caller.file->src->seek(caller.resume);
   SKIPNC_TRY(sk);
-  ngc_value_returned = value.has_value();
-  if (value) ngc_value = Value::of(*value);
+  ngc_state().value_returned = value.has_value();
+  if (value) ngc_state().value = Value::of(*value);
   return Step::kContinue;
 }
 

@@ -92,18 +92,13 @@ Flow<void> Interpreter::Impl::finish_probe(const SyncState& s) {
                        : name + ": the probe was not in contact when the move began",
                 ps.loc);
   }
-  const AxisVec latch = record_skip(s);  // skip.cpp
-  if (ngc) {
-    ngc_store_probe(skip_work, s.triggered);
-    ngc_probe_log();
-  } else if (dialect.skip_vars.success_flag > 0) {
-    vars.set(dialect.skip_vars.success_flag, Value::of(s.triggered ? 1.0 : 0.0));
-  }
+  const AxisVec latch = record_skip(s);   // skip.cpp
+  lang->store_probe(*this, s.triggered);  // #5061-#5070 (RS274NGC) or a success flag
   if (dialect.sw.probe_report_line) {
     // grbl: "[PRB:x,y,z:1]", machine coordinates in mm, 3 decimals (inches,
     // 4 decimals, with $13 = 1); kept for `$#`.
-    grbl_prb = latch;
-    grbl_prb_ok = s.triggered;
+    grbl_system().prb = latch;
+    grbl_system().prb_ok = s.triggered;
     add_message("[PRB:" + grbl_coords(latch) + (s.triggered ? ":1]" : ":0]"));
   }
   if (!s.triggered && ps.alarm_on_miss) {

@@ -132,7 +132,10 @@ int haas_tool_var(int n) noexcept {
 }  // namespace
 
 Flow<Value> Interpreter::Impl::read_var(int n, SourceLoc where) {
-  if (ngc) return read_ngc_param(n, where);  // ngc_params.cpp
+  return lang->read_param(*this, n, where);  // RS274NGC's: ngc_params.cpp
+}
+
+Flow<Value> Interpreter::Impl::read_macro_var(int n, SourceLoc where) {
   if (dialect.sw.haas_tool_offset_vars) n = haas_tool_var(n);
   if (n == 0) return Value::null();
   if (n < 0) return fail(AlarmId::kIllegalVariable, "#" + std::to_string(n), where);
@@ -343,7 +346,10 @@ double* Interpreter::Impl::tool_field(const sysvar::Range& r, int k) noexcept {
 }
 
 Flow<void> Interpreter::Impl::write_var(int n, Value v, SourceLoc where) {
-  if (ngc) return write_ngc_param(n, v, where);  // ngc_params.cpp
+  return lang->write_param(*this, n, v, where);
+}
+
+Flow<void> Interpreter::Impl::write_macro_var(int n, Value v, SourceLoc where) {
   if (dialect.sw.haas_tool_offset_vars) n = haas_tool_var(n);
   if (VariableStore::is_local(n) || VariableStore::is_common(n) ||
       VariableStore::is_persistent(n)) {
@@ -439,7 +445,10 @@ Flow<void> Interpreter::Impl::write_control(const sysvar::Range& r, int n, Value
 }
 
 Flow<Value> Interpreter::Impl::read_named_var(const std::string& name, SourceLoc where) {
-  if (ngc) return read_ngc_named(name, where);  // ngc_params.cpp
+  return lang->read_named(*this, name, where);
+}
+
+Flow<Value> Interpreter::Impl::read_macro_named(const std::string& name, SourceLoc where) {
   if (!name.empty() && name.front() == '_') {
     const int n = system_number(name);
     if (n > 0) return read_var(n, where);
@@ -449,7 +458,10 @@ Flow<Value> Interpreter::Impl::read_named_var(const std::string& name, SourceLoc
 }
 
 Flow<void> Interpreter::Impl::write_named_var(const std::string& name, Value v, SourceLoc where) {
-  if (ngc) return write_ngc_named(name, v, where);  // ngc_params.cpp
+  return lang->write_named(*this, name, v, where);
+}
+
+Flow<void> Interpreter::Impl::write_macro_named(const std::string& name, Value v, SourceLoc where) {
   if (!name.empty() && name.front() == '_') {
     const int n = system_number(name);
     if (n > 0) return write_var(n, v, where);

@@ -41,7 +41,7 @@ void VariableStore::pop_level() {
   if (named_local_.size() > 1) named_local_.pop_back();
 }
 
-void VariableStore::enable_ngc() {
+void VariableStore::enable_ngc_params() {
   ngc_params_.assign(kNgcParams, 0.0);
   ngc_touched_.assign(kNgcParams, false);
 }

@@ -55,8 +55,7 @@ class VariableStore {
   // store, 0 until set (no vacant value); #1-#30 are local to a call level;
   // named parameters without a leading '_' are local to a call level too.
   static constexpr int kNgcParams = 5603;  // #0-#5602 (RS274NGC_MAX_PARAMETERS)
-  void enable_ngc();
-  bool ngc() const noexcept { return !ngc_params_.empty(); }
+  void enable_ngc_params();
   double ngc_param(int n) const noexcept { return ngc_params_[static_cast<std::size_t>(n)]; }
   void set_ngc_param(int n, double v) {
     if (recording_) [[unlikely]] {

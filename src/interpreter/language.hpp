@@ -1,0 +1,189 @@
+// The program languages (docs/languages.md): Fanuc Custom Macro B, LinuxCNC's
+// RS274NGC and grbl. One language object is chosen per run from the
+// dialect's `language` (make_language); the interpreter asks it wherever
+// the languages differ and tests no language itself.
+//
+// What a language decides comes in three kinds, by how often it is asked:
+// - `Rules`: answers fixed for the language (the syntax, the units of the
+//   stored offsets, which words a block may hold, ...), plain data read on
+//   the hot path without a call;
+// - the virtual functions: the work that differs (what a block is and how it
+//   runs, the parameters, reference return, G10, the probe's result, the
+//   persistent parameters), called at most once per block or per parameter
+//   read of the general path;
+// - `ExprRules` (expr.cpp): the expression evaluator compiled for the
+//   language's operators and functions, chosen once per expression.
+// The language's own state lives in its object: RS274NGC's #<_value>, the
+// parameter file's numbers, M70-M73 and the log files (NgcState); grbl's `$`
+// settings and probe report (GrblState).
+#pragma once
+
+#include <array>
+#include <map>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "config/dialect.hpp"
+#include "core/axes.hpp"
+#include "gcode/parser.hpp"
+#include "interpreter/flow.hpp"
+#include "interpreter/interpreter.hpp"
+#include "interpreter/ngc_room.hpp"
+#include "interpreter/variables.hpp"
+
+namespace skipnc::interp {
+
+struct Words;
+struct ExprRules;                    // expr.cpp
+extern const ExprRules kMacroBExpr;  // Macro B's operators and functions
+extern const ExprRules kNgcExpr;     // RS274NGC's (grbl's too: it has only numbers)
+
+class Language {
+ public:
+  using Impl = Interpreter::Impl;
+
+  struct Rules {
+    config::Language kind = config::Language::kMacroB;
+    gcode::Syntax syntax = gcode::Syntax::kMacroB;
+    // Lines: ';' ends a block (Macro B) or begins a comment; a line of
+    // comments alone runs as a block ((debug,..) reads parameters) or only
+    // shows its (MSG,..).
+    bool semicolon_ends_block = true;
+    bool comment_line_runs = false;
+    // Words: a computed length is rounded to the address's least input
+    // increment (X#1); the letters a block may hold besides the axes, G, M
+    // and N, and what the alarm for another calls the one that refuses it;
+    // E only with M67/M68 (RS274NGC).
+    bool round_computed_words = true;
+    std::string_view addresses = "FSTHDPQRKLIJE";
+    const char* address_owner = "machine";
+    bool e_word_for_m67_only = false;
+    // Codes: G04 P and a canned cycle's P in seconds (else milliseconds
+    // without a decimal point); G53 only with G0 or G1, G53 G1 a feed;
+    // G02/G03 P (turns); LinuxCNC's arc radius check and canned-cycle
+    // levels; G43 without H takes the tool in the spindle; G10 without P is
+    // the active system; M70-M73 save and restore the modal state.
+    bool dwell_p_seconds = false;
+    bool g53_g0_g1_only = false;
+    bool arc_turns_p = false;
+    bool arc_radius_linuxcnc = false;
+    bool cycle_levels_linuxcnc = false;
+    bool g43_tool_in_spindle = false;
+    bool g10_p_optional = false;
+    bool state_codes = false;
+    // Stored values: work and tool offsets kept in mm (else in the input
+    // unit in force, offset_units.hpp); #5161-#5390 hold G28, G30, G92 and
+    // the work offsets (selecting a system loads it, G92 stores there), in
+    // the machine's unit (LinuxCNC) or in mm (grbl).
+    bool offsets_in_mm = false;
+    bool offsets_in_params = false;
+    bool params_in_machine_unit = true;
+  };
+
+  Language(const Rules& r, const ExprRules& e) noexcept : rules(r), expr(e) {}
+  Language(const Language&) = delete;
+  Language& operator=(const Language&) = delete;
+  virtual ~Language() = default;
+
+  const Rules rules;
+  const ExprRules& expr;
+
+  // The start of a run (offsets and tools set): the language's parameters.
+  virtual void start(Impl& im) = 0;
+  // One block read: a statement, an O-word, a `$` line or words.
+  virtual Flow<Step> execute(Impl& im, CommandSink& out) = 0;
+  // What follows is Macro B's unless the language says otherwise
+  // (language.cpp): the interpreter's variables and the Fanuc family's codes.
+  // The machine's persistent parameters: read at the start (the file is
+  // locked), written at the end (with the language's log files); a value
+  // given before the run (-D).
+  virtual Flow<void> load_persistent(Impl& im);
+  virtual Result<void> save_persistent(Impl& im);
+  virtual Flow<void> preset(Impl& im, int n, double v);
+  // Numbered and named parameters.
+  virtual Flow<Value> read_param(Impl& im, int n, SourceLoc where);
+  virtual Flow<void> write_param(Impl& im, int n, Value v, SourceLoc where);
+  virtual Flow<Value> read_named(Impl& im, const std::string& name, SourceLoc where);
+  virtual Flow<void> write_named(Impl& im, const std::string& name, Value v, SourceLoc where);
+  // G28 / G30 and G10.
+  virtual Flow<void> reference_return(Impl& im, const Words& words, int g, CommandSink& out);
+  virtual Flow<void> data_setting(Impl& im, const Words& words, SourceLoc where);
+  // After a G38 probe: where its result is kept; whether the probe input is
+  // inverted (a parameter bit, or grbl's $6).
+  virtual void store_probe(Impl& im, bool triggered);
+  virtual bool probe_inverted(const Impl& im, int param) const;
+};
+
+// Fanuc Custom Macro B (and the dialects of its family).
+class MacroB final : public Language {
+ public:
+  MacroB();
+  void start(Impl& im) override;
+  Flow<Step> execute(Impl& im, CommandSink& out) override;
+};
+
+// The state RS274NGC keeps, and grbl with it (ngc_params.cpp, ngc_room.cpp,
+// oword.cpp).
+struct NgcState {
+  Value value;                        // #<_value>: the last return / endsub value
+  bool value_returned = false;        // #<_value_returned>
+  std::vector<int> var_file_numbers;  // the parameters the var file keeps (ngc_params.cpp)
+  NgcRoom room;                       // M70-M73, log files (ngc_room.hpp)
+};
+
+// What LinuxCNC and grbl share: their codes (G28/G30 through #5161..,
+// G10 L2/L20), the stored values in #5161-#5390, the comments' log files.
+class LinuxcncFamily : public Language {
+ public:
+  NgcState state;
+  Result<void> save_persistent(Impl& im) override;
+  Flow<void> reference_return(Impl& im, const Words& words, int g, CommandSink& out) override;
+  Flow<void> data_setting(Impl& im, const Words& words, SourceLoc where) override;
+
+ protected:
+  LinuxcncFamily(const Rules& r, const ExprRules& e) noexcept : Language(r, e) {}
+};
+
+// LinuxCNC's RS274NGC: its numbered and named parameters, O-words, the
+// parameter file.
+class Rs274ngc final : public LinuxcncFamily {
+ public:
+  Rs274ngc();
+  void start(Impl& im) override;
+  Flow<Step> execute(Impl& im, CommandSink& out) override;
+  Flow<void> load_persistent(Impl& im) override;
+  Result<void> save_persistent(Impl& im) override;
+  Flow<void> preset(Impl& im, int n, double v) override;
+  Flow<Value> read_param(Impl& im, int n, SourceLoc where) override;
+  Flow<void> write_param(Impl& im, int n, Value v, SourceLoc where) override;
+  Flow<Value> read_named(Impl& im, const std::string& name, SourceLoc where) override;
+  Flow<void> write_named(Impl& im, const std::string& name, Value v, SourceLoc where) override;
+  void store_probe(Impl& im, bool triggered) override;
+};
+
+// grbl's own state (grbl_system.cpp).
+struct GrblState {
+  std::map<int, double> settings;      // $n: the dialect's table, the axes, what `$n=` set
+  std::string build_info;              // `$I=text`
+  std::array<std::string, 2> startup;  // `$N0=` `$N1=` (kept, not run)
+  bool locked = false;                 // $22 = 1: in alarm until `$H` or `$X`
+  AxisVec prb;                         // the last probe's [PRB:], machine mm
+  bool prb_ok = false;
+};
+
+// grbl: LinuxCNC's codes without parameters, expressions or subprograms, and
+// its `$` system lines; the interpreter's own variables are Macro B's.
+class Grbl final : public LinuxcncFamily {
+ public:
+  Grbl();
+  GrblState system;
+  void start(Impl& im) override;
+  Flow<Step> execute(Impl& im, CommandSink& out) override;
+  bool probe_inverted(const Impl& im, int param) const override;
+};
+
+std::unique_ptr<Language> make_language(config::Language kind);
+
+}  // namespace skipnc::interp
