@@ -64,7 +64,10 @@ struct BlockState {
   double rotation_angle = 0.0;  // last G68 R (5400#0 RIN: G91 adds to it)
 };
 
-// The copy a block takes must stay a memcpy: no member may own memory.
-static_assert(std::is_trivially_copyable_v<BlockState>);
+// The copy a block takes must not allocate: no member may own memory, but
+// for the frame's 3-D part, which is immutable and shared (a copy counts a
+// reference, null when no G68 I J K or G54.4 is on).
+static_assert(std::is_nothrow_copy_assignable_v<BlockState>);
+static_assert(std::is_trivially_copyable_v<cycles::Data>);
 
 }  // namespace skipnc::interp

@@ -129,8 +129,9 @@ void Interpreter::Impl::begin_tables(bool calls) {
   work_offsets.begin_block();
   tools.begin_block();
   vars.begin_block();
-  before_block.had_saved_states = !room.saved.empty();
-  if (before_block.had_saved_states) before_block.saved_states = room.saved;
+  // M70-M73's saved states (RS274NGC), when there are any.
+  before_block.had_saved_states = lang->rules.state_codes && !ngc_state().room.saved.empty();
+  if (before_block.had_saved_states) before_block.saved_states = ngc_state().room.saved;
   if (!calls) return;
   before_block.frames = frames;
   before_block.modal_macro_program = modal_macro_program;
@@ -151,9 +152,9 @@ void Interpreter::Impl::roll_back_tables(bool calls) {
   tools.roll_back();
   vars.roll_back();
   if (before_block.had_saved_states) {
-    room.saved = before_block.saved_states;
-  } else {
-    room.saved.clear();
+    ngc_state().room.saved = before_block.saved_states;
+  } else if (lang->rules.state_codes) {
+    ngc_state().room.saved.clear();
   }
   if (!calls) return;
   frames = before_block.frames;

@@ -159,7 +159,7 @@ TEST(BlockJournal, ATableRollsBackItsWritesLatestFirst) {
 
 TEST(BlockJournal, VariablesRollBackWritesAndCallLevels) {
   VariableStore v;
-  v.enable_ngc();
+  v.enable_ngc_params();
   v.set(1, Value::of(1.0));
   v.set(100, Value::of(2.0));
   v.set_named("KEPT", Value::of(3.0));
