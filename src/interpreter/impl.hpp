@@ -269,8 +269,9 @@ struct Interpreter::Impl : BlockState {
   Flow<bool> read_block();
   Flow<void> sync(const SyncState& s);
   SourceLoc loc(std::uint32_t column) const noexcept {
-    return SourceLoc{frames.empty() ? std::string_view(setup.program_name)
-                                    : std::string_view(frames.back().file->display),
+    return SourceLoc{programs.frames.empty()
+                         ? std::string_view(setup.program_name)
+                         : std::string_view(programs.frames.back().file->display),
                      cur_line, column};
   }
   Flow<void> count_statement(SourceLoc where);

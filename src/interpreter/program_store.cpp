@@ -224,7 +224,7 @@ Result<void> ProgramStore::index(ProgramFile& pf) {
 
 inline Result<std::optional<ProgramAt>> ProgramStore::in_file(ProgramFile& pf,
                                                               std::int64_t number) {
-  SKIPNC_TRY(index(pf));
+  if (!pf.indexed) SKIPNC_TRY(index(pf));
   if (auto it = pf.programs.find(number); it != pf.programs.end()) {
     return ProgramAt{&pf, it->second};
   }
@@ -321,7 +321,7 @@ Result<ProgramAt> ProgramStore::find_program(std::int64_t number, SourceLoc wher
 inline Result<std::optional<ProgramAt>> ProgramStore::sub_in_file(ProgramFile& pf,
                                                                   const std::string& label,
                                                                   SourceLoc where) {
-  SKIPNC_TRY(index(pf));
+  if (!pf.indexed) SKIPNC_TRY(index(pf));
   auto it = pf.subs.find(label);
   if (it == pf.subs.end()) return std::nullopt;
   // A sub without its endsub would run to the end of the file and end the
