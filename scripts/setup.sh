@@ -4,7 +4,8 @@
 #   demo  only what building the skipnc binary needs (scripts/demo.sh)
 #   all   (default) also the tests, the Python module, the benchmarks, the
 #         plot page test (Chromium), the check build and fuzz stage (clang 16)
-#         and the formatting check (clang-format)
+#         and the formatting check (clang-format), the function-length
+#         check (universal-ctags)
 # Idempotent: packages already present are left alone.
 set -euo pipefail
 what=${1:-all}
@@ -24,7 +25,9 @@ case $what in
           chromium
           # the check build (scripts/build.sh check): clang 16 with its ASan, UBSan,
           # TSan and libFuzzer runtimes; the formatting check
-          clang-16 libclang-rt-16-dev clang-format) ;;
+          clang-16 libclang-rt-16-dev clang-format
+          # the function-length check (scripts/function_length.sh)
+          universal-ctags) ;;
   *) echo "setup.sh: unknown set '$what' (demo, all)" >&2; exit 2 ;;
 esac
 missing=()

@@ -82,92 +82,92 @@ const char* stop_name(StopKind k) {
   return "?";
 }
 
-}  // namespace
+// The lines of the common commands, written straight into the buffer.
+void write_feed(fmt::memory_buffer& out, std::uint32_t line, const Feed& c, const AxisNames& axes) {
+  LineWriter w(out);
+  w.integer(line);
+  w.text(" FEED");
+  w.axes(c.target, axes);
+  w.text(" F");
+  w.number(c.feed_mm_per_min);
+  if (c.exact_stop) w.text(" EXACT");
+  w.put('\n');
+}
 
-void format_to(fmt::memory_buffer& out, const Stamped& s, const AxisNames& axes) {
-  if (const auto* c = std::get_if<Feed>(&s.cmd)) {
-    LineWriter w(out);
-    w.integer(s.line);
-    w.text(" FEED");
-    w.axes(c->target, axes);
-    w.text(" F");
-    w.number(c->feed_mm_per_min);
-    if (c->exact_stop) w.text(" EXACT");
-    w.put('\n');
-    return;
+void write_rapid(fmt::memory_buffer& out, std::uint32_t line, const Rapid& c,
+                 const AxisNames& axes) {
+  LineWriter w(out);
+  w.integer(line);
+  w.text(" RAPID");
+  w.axes(c.target, axes);
+  if (!c.linear) w.text(" NONLINEAR");
+  w.put('\n');
+}
+
+void write_arc(fmt::memory_buffer& out, std::uint32_t line, const Arc& c, const AxisNames& axes) {
+  LineWriter w(out);
+  w.integer(line);
+  w.text(c.ccw ? " ARC_CCW" : " ARC_CW");
+  w.axes(c.target, axes);
+  w.text(" C");
+  w.put(axes.names[c.plane.a0]);
+  w.put('=');
+  w.number(c.center0);
+  w.text(" C");
+  w.put(axes.names[c.plane.a1]);
+  w.put('=');
+  w.number(c.center1);
+  w.text(" F");
+  w.number(c.feed_mm_per_min);
+  if (c.extra_turns != 0) {
+    w.text(" TURNS");
+    w.integer(c.extra_turns);
   }
-  if (const auto* c = std::get_if<Rapid>(&s.cmd)) {
-    LineWriter w(out);
-    w.integer(s.line);
-    w.text(" RAPID");
-    w.axes(c->target, axes);
-    if (!c->linear) w.text(" NONLINEAR");
-    w.put('\n');
-    return;
-  }
-  if (const auto* c = std::get_if<Arc>(&s.cmd)) {
-    LineWriter w(out);
-    w.integer(s.line);
-    w.text(c->ccw ? " ARC_CCW" : " ARC_CW");
-    w.axes(c->target, axes);
-    w.text(" C");
-    w.put(axes.names[c->plane.a0]);
-    w.put('=');
-    w.number(c->center0);
-    w.text(" C");
-    w.put(axes.names[c->plane.a1]);
-    w.put('=');
-    w.number(c->center1);
-    w.text(" F");
-    w.number(c->feed_mm_per_min);
-    if (c->extra_turns != 0) {
-      w.text(" TURNS");
-      w.integer(c->extra_turns);
-    }
-    if (c->exact_stop) w.text(" EXACT");
-    w.put('\n');
-    return;
-  }
+  if (c.exact_stop) w.text(" EXACT");
+  w.put('\n');
+}
+
+// "SKIP X.. F.. KIND=.. [P..] [IN=..] [TORQUE_AXIS=..] LOW|HIGH EDGE|LEVEL STOP=.. [K1]"
+void write_skip(fmt::memory_buffer& out, const Skip& c, const AxisNames& axes) {
   auto it = fmt::appender(out);
+  const SkipSpec& sp = c.spec;
   {
-    char buf[16];
-    const auto r = std::to_chars(buf, buf + sizeof buf, s.line);
-    out.append(buf, r.ptr);
-    out.push_back(' ');
+    LineWriter w(out);
+    w.text("SKIP");
+    w.axes(c.target, axes);
   }
+  fmt::format_to(it, " F{} KIND={}", c.feed_mm_per_min,
+                 sp.kind == SkipKind::kSkip        ? "skip"
+                 : sp.kind == SkipKind::kMultiStep ? "multi_step"
+                 : sp.kind == SkipKind::kProbe     ? "probe"
+                                                   : "torque");
+  if (sp.p >= 0) fmt::format_to(it, " P{}", sp.p);
+  for (int i = 0; i < sp.input_count; ++i) {
+    fmt::format_to(it, " IN={}{}.{}", sp.inputs[i].area, sp.inputs[i].byte,
+                   static_cast<int>(sp.inputs[i].bit));
+  }
+  if (sp.torque_ends) {
+    fmt::format_to(it, " TORQUE_AXIS={} LIMIT={}% DELAY={}", axes.names[sp.torque_axis],
+                   sp.torque_limit_pct, sp.torque_delay_s);
+  }
+  fmt::format_to(it, " {}{}{}{}", sp.active_low ? "LOW" : "HIGH", sp.edge ? " EDGE" : " LEVEL",
+                 sp.stop == SkipStop::kImmediate ? " STOP=immediate" : " STOP=decelerate",
+                 sp.alarm_on_miss ? " K1" : "");
+}
+
+// The text of the other commands after the line number (no newline).
+void write_other(fmt::memory_buffer& out, const Command& cmd, const AxisNames& axes) {
+  auto it = fmt::appender(out);
   std::visit(
       [&](const auto& c) {
         using T = std::decay_t<decltype(c)>;
         if constexpr (std::is_same_v<T, Rapid> || std::is_same_v<T, Feed> ||
                       std::is_same_v<T, Arc>) {
-          // written above
+          // written by format_to's own writers
         } else if constexpr (std::is_same_v<T, Dwell>) {
           fmt::format_to(it, "DWELL {}", c.seconds);
         } else if constexpr (std::is_same_v<T, Skip>) {
-          const SkipSpec& sp = c.spec;
-          {
-            LineWriter w(out);
-            w.text("SKIP");
-            w.axes(c.target, axes);
-          }
-          fmt::format_to(it, " F{} KIND={}", c.feed_mm_per_min,
-                         sp.kind == SkipKind::kSkip        ? "skip"
-                         : sp.kind == SkipKind::kMultiStep ? "multi_step"
-                         : sp.kind == SkipKind::kProbe     ? "probe"
-                                                           : "torque");
-          if (sp.p >= 0) fmt::format_to(it, " P{}", sp.p);
-          for (int i = 0; i < sp.input_count; ++i) {
-            fmt::format_to(it, " IN={}{}.{}", sp.inputs[i].area, sp.inputs[i].byte,
-                           static_cast<int>(sp.inputs[i].bit));
-          }
-          if (sp.torque_ends) {
-            fmt::format_to(it, " TORQUE_AXIS={} LIMIT={}% DELAY={}", axes.names[sp.torque_axis],
-                           sp.torque_limit_pct, sp.torque_delay_s);
-          }
-          fmt::format_to(it, " {}{}{}{}", sp.active_low ? "LOW" : "HIGH",
-                         sp.edge ? " EDGE" : " LEVEL",
-                         sp.stop == SkipStop::kImmediate ? " STOP=immediate" : " STOP=decelerate",
-                         sp.alarm_on_miss ? " K1" : "");
+          write_skip(out, c, axes);
         } else if constexpr (std::is_same_v<T, Spindle>) {
           fmt::format_to(it, "SPINDLE S{} {}", c.rpm,
                          c.direction > 0   ? "CW"
@@ -190,7 +190,20 @@ void format_to(fmt::memory_buffer& out, const Stamped& s, const AxisNames& axes)
           fmt::format_to(it, "LOOKAHEAD {}", c.blocks);
         }
       },
-      s.cmd);
+      cmd);
+}
+
+}  // namespace
+
+void format_to(fmt::memory_buffer& out, const Stamped& s, const AxisNames& axes) {
+  if (const auto* c = std::get_if<Feed>(&s.cmd)) return write_feed(out, s.line, *c, axes);
+  if (const auto* c = std::get_if<Rapid>(&s.cmd)) return write_rapid(out, s.line, *c, axes);
+  if (const auto* c = std::get_if<Arc>(&s.cmd)) return write_arc(out, s.line, *c, axes);
+  char buf[16];
+  const auto r = std::to_chars(buf, buf + sizeof buf, s.line);
+  out.append(buf, r.ptr);
+  out.push_back(' ');
+  write_other(out, s.cmd, axes);
   out.push_back('\n');
 }
 

@@ -19,6 +19,7 @@
 #include "report/report.hpp"
 #include "run/expect.hpp"
 #include "run/plot.hpp"
+#include "run/program_run.hpp"
 #include "run/scenario.hpp"
 #include "run/session.hpp"
 #include "sim/simulator.hpp"
@@ -136,19 +137,15 @@ std::vector<JunitCase> run_cases(const RunArgs& a, const report::ReportInput& in
   return cases;
 }
 
-// The --var and --expect arguments, read before the run: a bad one stops
-// the start.
-struct RunChecks {
-  std::vector<run::VarRef> vars;
-  std::vector<run::Expectation> expects;
-};
-
-Result<RunChecks> read_checks(const RunArgs& a, const run::Session& s) {
-  RunChecks c;
+// The run as the run library takes it: the program, and the --var,
+// --expect and --plot arguments, read before the run (a bad one stops the
+// start).
+Result<run::RunRequest> read_request(const RunArgs& a, const run::Session& s) {
+  run::RunRequest rq = program_request(a);
   for (const auto& v : a.vars) {
     auto r = run::parse_var_ref(v);
     SKIPNC_TRY(r);
-    c.vars.push_back(*r);
+    rq.vars.push_back(*r);
   }
   for (const auto& text : a.expect) {
     auto e = run::parse_expectation(text);
@@ -158,9 +155,20 @@ Result<RunChecks> read_checks(const RunArgs& a, const run::Session& s) {
       // Read after the run by run::check_outcome.
       SKIPNC_TRY(run::parse_var_ref("#" + e->var));
     }
-    c.expects.push_back(*e);
+    rq.expect.push_back(*e);
   }
-  return c;
+  rq.plot_files = a.plot;
+  return rq;
+}
+
+// The files the interpreter writes (--dprnt, --log-dir) and the stop flag
+// (signals, the processor-time limit, an output that cannot go on).
+run::RunIO run_io(const RunArgs& a) {
+  run::RunIO io;
+  io.interrupt = &run_stop().flag;
+  io.dprnt_path = a.dprnt;
+  io.log_dir = a.log_dir;
+  return io;
 }
 
 // The --trace file, open (none without --trace). A trace that cannot go on
@@ -172,33 +180,6 @@ Result<std::unique_ptr<report::CsvTrace>> open_trace(const RunArgs& a, const run
   SKIPNC_TRY(trace->open());
   trace->on_stop([] { run_stop().request(StopReason::kOutput); });
   return trace;
-}
-
-// The end of the trace and the pictures. An output that could not be
-// written is an alarm of the run, in the report too (before, a full disk left
-// "completed"). Returns whether one failed.
-bool finish_outputs(const RunArgs& a, const run::Session& s, const interp::Setup& setup,
-                    report::CsvTrace* trace, run::PlotCapture* plot, report::ReportInput& in) {
-  bool output_failed = false;
-  auto output_error = [&](const Error& e) {
-    std::cerr << "skipnc: " << e.detail << "\n";
-    output_failed = true;
-    if (in.result.status == sim::RunStatus::kCompleted) {
-      in.result.status = sim::RunStatus::kAlarm;
-      in.result.alarm = e;
-    }
-  };
-  if (trace != nullptr) {
-    if (auto f = trace->finish(); !f) output_error(f.error());
-  }
-  if (plot != nullptr) {
-    const std::string text =
-        setup.program_path.empty() ? setup.program_text : run::read_program_text(a.program);
-    if (auto w = plot->write(a.plot, s, in.result, {a.program, text, in.variables}); !w) {
-      output_error(w.error());
-    }
-  }
-  return output_failed;
 }
 
 // After the run and its checks: the JUnit file, the report, the summary and
@@ -234,52 +215,34 @@ int conclude(const RunArgs& a, const run::Session& s, report::ReportInput& in, s
 }
 
 // Runs a loaded session; writes report and trace. Returns the exit code.
-int execute(const RunArgs& a, run::Session& s, interp::Setup setup, bool explain) {
-  auto checks = read_checks(a, s);
-  if (!checks) return start_failure(a, checks.error(), &s);
+int execute(const RunArgs& a, run::Session& s, bool explain) {
+  auto rq = read_request(a, s);
+  if (!rq) return start_failure(a, rq.error(), &s);
   if (auto c = run::check_plot_files(a.plot); !c) return start_failure(a, c.error(), &s);
   if (auto c = check_outputs(a, s); !c) return start_failure(a, c.error(), &s);
   auto trace = open_trace(a, s);
   if (!trace) return start_failure(a, trace.error(), &s);
-  sim::Simulator sim(s.machine, s.dialect, *s.params, s.scene);
-  sim::RunOptions opts;
-  opts.trace = trace->get();
-  opts.interrupt = &run_stop().flag;
-  std::unique_ptr<run::PlotCapture> plot;
-  if (!a.plot.empty()) plot = std::make_unique<run::PlotCapture>(s.machine, opts);
+  run::RunIO io = run_io(a);
+  io.trace = trace->get();
   std::optional<Watchdog> watchdog;
+  io.progress = [&](double t, std::uint32_t line) { watchdog->update(t, line); };
+  const run::Rig rig = run::rig_of(s);
+  run::ProgramRun pr(rig, run::make_setup(s, rig, *rq, io), io, !a.plot.empty());
   watchdog.emplace(Watchdog::Options{s.machine.limits.max_cpu_s, a.progress,
                                      ::isatty(STDERR_FILENO) != 0 && !a.quiet && !explain});
-  opts.progress = [&](double t, std::uint32_t line) { watchdog->update(t, line); };
-  auto res = sim.run(setup, opts);
+  auto res = pr.run();
   watchdog.reset();
   if (!res) return start_failure(a, res.error(), &s);
-  explain_stop(*res, trace->get(), s.machine);
-  report::ReportInput in = run::report_input(s, a.program, std::move(*res));
-  in.variables = run::read_variables(*sim.interpreter(), checks->vars);
-  const bool output_failed = finish_outputs(a, s, setup, trace->get(), plot.get(), in);
-  // --expect: checked on the run's outcome; variables as the control holds them.
-  if (!checks->expects.empty()) {
-    auto verdicts = run::check_outcome(s.dialect, checks->expects, in.result, *sim.interpreter());
-    if (!verdicts) return start_failure(a, verdicts.error(), &s);
-    in.expectations = std::move(*verdicts);
-  }
-  const int rc = run::exit_code(in.result.status, output_failed, checks->expects, in.expectations);
-  return conclude(a, s, in, checks->expects.size(), rc, explain);
-}
-
-interp::Setup make_setup(const RunArgs& a, run::Session& s) {
-  interp::Setup setup;
-  setup.machine = &s.machine;
-  setup.dialect = &s.dialect;
-  setup.params = s.params.get();
-  set_program(a, setup);
-  setup.include_dirs = a.include;
-  setup.dprnt_path = a.dprnt;
-  setup.log_dir = a.log_dir;
-  setup.strict = a.strict;
-  setup.strict_allow = run::allowed_warnings(s, a.allow);
-  return setup;
+  report::CsvTrace* t = trace->get();
+  explain_stop(*res, t, s.machine);
+  // The end of the trace, then the pictures: one that could not be written
+  // is an alarm of the run.
+  std::function<Result<void>()> finish;
+  if (t != nullptr) finish = [t] { return t->finish(); };
+  auto c = pr.conclude(s, std::move(*res), *rq, a.program, finish,
+                       [](const Error& e) { std::cerr << "skipnc: " << e.detail << "\n"; });
+  if (!c) return start_failure(a, c.error(), &s);
+  return conclude(a, s, c->report, rq->expect.size(), c->exit_code, explain);
 }
 
 class PrintSink final : public canon::CommandSink {
@@ -337,7 +300,7 @@ int run_command(const RunArgs& a) {
   auto o = run::open_session(run::SessionOptions{a.machine, a.dialect, a.scene, a.params}, s);
   if (!o) return start_failure(a, o.error(), &s);
   if (auto c = run::check_allow(a.allow); !c) return start_failure(a, c.error(), &s);
-  return execute(a, s, make_setup(a, s), false);
+  return execute(a, s, false);
 }
 
 int canon_command(const RunArgs& a) {
@@ -345,7 +308,8 @@ int canon_command(const RunArgs& a) {
   auto o = run::open_session(run::SessionOptions{a.machine, a.dialect, "", a.params}, s);
   if (!o) return start_failure(a, o.error(), &s);
   if (auto c = run::check_allow(a.allow); !c) return start_failure(a, c.error(), &s);
-  auto in = interp::Interpreter::create(make_setup(a, s), AxisVec{});
+  auto in = interp::Interpreter::create(
+      run::make_setup(s, run::rig_of(s), program_request(a), run_io(a)), AxisVec{});
   if (!in) return start_failure(a, in.error(), &s);
   PrintSink sink(s.machine);
   Watchdog watchdog(Watchdog::Options{s.machine.limits.max_cpu_s, false, false});
@@ -660,42 +624,34 @@ int demo_command(const RunArgs& args) {
   auto sc = machine::parse_scene(scene->content, scene->path, s.machine, s.dialect, *s.params);
   if (!sc) return start_failure(a, sc.error(), &s);
   s.scene = std::move(*sc);
-  interp::Setup setup = make_setup(a, s);
-  setup.program_path.clear();
-  setup.program_text = std::string(prog->content);
-  sim::Simulator sim(s.machine, s.dialect, *s.params, s.scene);
   if (!a.quiet) print_demo_program(prog->content);
   if (auto c = run::check_plot_files(a.plot); !c) return start_failure(a, c.error(), &s);
   if (auto c = check_outputs(a, s); !c) return start_failure(a, c.error(), &s);
-  std::unique_ptr<report::CsvTrace> trace;
-  if (!a.trace.empty()) {
-    trace = std::make_unique<report::CsvTrace>(a.trace, s.machine, nullptr);
-    trace->every(a.trace_every);
-    auto t = trace->open();
-    if (!t) return start_failure(a, t.error(), &s);
-    trace->on_stop([] { run_stop().request(StopReason::kOutput); });
-  }
-  sim::RunOptions opts;
-  opts.trace = trace.get();
-  opts.interrupt = &run_stop().flag;
-  std::unique_ptr<run::PlotCapture> plot;
-  if (!a.plot.empty()) plot = std::make_unique<run::PlotCapture>(s.machine, opts);
-  auto res = sim.run(setup, opts);
+  auto trace = open_trace(a, s);
+  if (!trace) return start_failure(a, trace.error(), &s);
+  run::RunRequest rq = program_request(a);
+  rq.program_path.clear();  // the embedded text, named probe_demo.nc
+  rq.program_text = std::string(prog->content);
+  run::RunIO io = run_io(a);
+  io.trace = trace->get();
+  const run::Rig rig = run::rig_of(s);
+  run::ProgramRun pr(rig, run::make_setup(s, rig, rq, io), io, !a.plot.empty());
+  auto res = pr.run();
   if (!res) return start_failure(a, res.error(), &s);
-  explain_stop(*res, trace.get(), s.machine);
+  explain_stop(*res, trace->get(), s.machine);
   bool output_failed = false;
-  if (trace) {
-    if (auto f = trace->finish(); !f) {
+  if (*trace) {
+    if (auto f = (*trace)->finish(); !f) {
       std::cerr << "skipnc: " << f.error().detail << "\n";
       output_failed = true;
     }
   }
   const auto var = [&](int n) {
-    auto v = sim.interpreter()->read_variable(n);
+    auto v = pr.interpreter().read_variable(n);
     return v && !v->vacant ? v->v : 0.0;
   };
   if (!a.quiet) print_demo_outcome(*res, s, var);
-  output_failed |= !write_demo_outputs(a, s, *res, plot.get(), prog->content, var);
+  output_failed |= !write_demo_outputs(a, s, *res, pr.plot(), prog->content, var);
   if (!a.quiet) {
     std::cout
         << "\nTry it yourself: skipnc run PROGRAM --scene SCENE --report report.json --var 5063\n";

@@ -255,15 +255,19 @@ Result<void> finish_stdout() {
   return {};
 }
 
-void set_program(const RunArgs& a, interp::Setup& setup) {
+run::RunRequest program_request(const RunArgs& a) {
+  run::RunRequest rq;
   if (a.program == "-") {
-    setup.program_path.clear();
-    setup.program_text = a.program_text;
-    setup.program_name = "<stdin>";
-    return;
+    rq.program_text = a.program_text;
+    rq.program_name = "<stdin>";
+  } else {
+    rq.program_path = a.program;
+    rq.program_name = a.program;
   }
-  setup.program_path = a.program;
-  setup.program_name = a.program;
+  rq.include_dirs = a.include;
+  rq.strict = a.strict;
+  rq.allow = a.allow;
+  return rq;
 }
 
 Result<void> read_stdin_program(RunArgs& a) {

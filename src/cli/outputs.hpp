@@ -12,6 +12,7 @@
 #include "cli/guard.hpp"
 #include "interpreter/interpreter.hpp"
 #include "report/report.hpp"
+#include "run/scenario.hpp"
 #include "run/session.hpp"
 #include "sim/simulator.hpp"
 
@@ -22,9 +23,10 @@ namespace skipnc::cli {
 // numbers skipnc's own alarms alike (config: 9090, SN9090; base.toml).
 const config::Dialect* report_dialect(const RunArgs& a, const run::Session* s);
 
-// The program of a run: its file, or (program "-") the text read from
-// standard input, named "<stdin>" in errors and the report.
-void set_program(const RunArgs& a, interp::Setup& setup);
+// The program of a run as the run library takes it: its file, or (program
+// "-") the text read from standard input, named "<stdin>" in errors and the
+// report; the include folders, --strict and --allow.
+run::RunRequest program_request(const RunArgs& a);
 // Reads standard input whole into a.program_text when the program is "-";
 // an error names standard input.
 [[nodiscard]] Result<void> read_stdin_program(RunArgs& a);

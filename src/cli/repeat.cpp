@@ -49,21 +49,12 @@ int repeat_command(const RunArgs& a) {
   // The same outputs check as a single run: no report over the program.
   if (auto c = check_outputs(a, s); !c) return start_failure(a, c.error(), &s);
   run::RepeatRequest rq;
+  rq.program = program_request(a);
   for (const auto& v : a.vars) {
     auto r = run::parse_var_ref(v);
     if (!r) return start_failure(a, r.error(), &s);
     rq.program.vars.push_back(*r);
   }
-  if (a.program == "-") {  // standard input (main.cpp read it)
-    rq.program.program_text = a.program_text;
-    rq.program.program_name = "<stdin>";
-  } else {
-    rq.program.program_path = a.program;
-    rq.program.program_name = a.program;
-  }
-  rq.program.include_dirs = a.include;
-  rq.program.strict = a.strict;
-  rq.program.allow = a.allow;
   rq.dprnt_path = a.dprnt;
   rq.runs = a.repeat;
   if (a.seed >= 0) rq.seed = static_cast<std::uint64_t>(a.seed);

@@ -70,36 +70,31 @@ AxisVec Interpolator::cruise_step() const noexcept {
   return seg_ != nullptr ? seg_->unit * (seg_->v_cruise * period) : AxisVec{};
 }
 
-const AxisVec& Interpolator::tick() noexcept {
-  const double period = queue_.limits().period_s;
-  passed_line_ = 0;
+// The helpers of tick() are inlined into it (gnu::always_inline in the
+// header): split for reading, the tick compiles as one function.
 
-  if (ramp_) {
-    ++ramp_ticks_;
-    const double t = static_cast<double>(ramp_ticks_) * period;
-    const double t_stop = ramp_v0_ / ramp_decel_;
-    const double stop_dist = ramp_v0_ * ramp_v0_ / (2.0 * ramp_decel_);
-    if (t >= t_stop) {
-      pos_ = ramp_start_ + ramp_dir_ * stop_dist;
-      vel_ = AxisVec{};
-      speed_ = 0.0;
-      ramp_ = false;
-      // The queue was reset to this point when the ramp began; anything the
-      // caller queued since then already starts here.
-      if (queue_.empty()) queue_.reset(pos_);
-    } else {
-      pos_ = ramp_start_ + ramp_dir_ * ((ramp_v0_ - 0.5 * ramp_decel_ * t) * t);
-      speed_ = ramp_v0_ - ramp_decel_ * t;
-      vel_ = ramp_dir_ * speed_;
-    }
-    return pos_;
-  }
-
-  if (hold_) {
+inline const AxisVec& Interpolator::tick_ramp(double period) noexcept {
+  ++ramp_ticks_;
+  const double t = static_cast<double>(ramp_ticks_) * period;
+  const double t_stop = ramp_v0_ / ramp_decel_;
+  const double stop_dist = ramp_v0_ * ramp_v0_ / (2.0 * ramp_decel_);
+  if (t >= t_stop) {
+    pos_ = ramp_start_ + ramp_dir_ * stop_dist;
     vel_ = AxisVec{};
     speed_ = 0.0;
-    return pos_;
+    ramp_ = false;
+    // The queue was reset to this point when the ramp began; anything the
+    // caller queued since then already starts here.
+    if (queue_.empty()) queue_.reset(pos_);
+  } else {
+    pos_ = ramp_start_ + ramp_dir_ * ((ramp_v0_ - 0.5 * ramp_decel_ * t) * t);
+    speed_ = ramp_v0_ - ramp_decel_ * t;
+    vel_ = ramp_dir_ * speed_;
   }
+  return pos_;
+}
+
+inline bool Interpolator::start_front() noexcept {
   if (seg_ != nullptr && !still_front(queue_, seg_)) seg_ = nullptr;
   if (seg_ == nullptr) {
     planner::Segment* f = queue_.front();
@@ -107,7 +102,7 @@ const AxisVec& Interpolator::tick() noexcept {
       hold_ = true;  // a dwell or skip starts only with the axes in position
       vel_ = AxisVec{};
       speed_ = 0.0;
-      return pos_;
+      return false;
     }
     if (f != nullptr) released_ = false;
     seg_ = f;
@@ -115,7 +110,10 @@ const AxisVec& Interpolator::tick() noexcept {
     seg_offset_s_ = 0.0;
     if (seg_ != nullptr) seg_->started = true;
   }
+  return true;
+}
 
+inline void Interpolator::rebase_time_scale(double period) noexcept {
   const double step = scale_ > 0.0 ? period * scale_ : 0.0;
   if (step != seg_step_s_) {
     // A new time scale (override, feed hold): count again from the time
@@ -124,6 +122,9 @@ const AxisVec& Interpolator::tick() noexcept {
     seg_ticks_ = 0;
     seg_step_s_ = step;
   }
+}
+
+inline bool Interpolator::advance(double period) noexcept {
   // The duration is a closed-form real and the count times the period is
   // rounded once, so a segment meant to end on a period boundary may miss
   // it by a rounding either way: a segment that ends within a millionth of a
@@ -133,54 +134,78 @@ const AxisVec& Interpolator::tick() noexcept {
     const double t_end = static_cast<double>(seg_ticks_ + 1) * seg_step_s_ - seg_offset_s_;
     if (t_end < seg_->duration - slack) {
       ++seg_ticks_;
-      break;
+      return true;
     }
-    // The segment ends inside this period: land exactly on its end point and
-    // carry the rest of the period into the next one.
-    const double rest = std::max(0.0, t_end - seg_->duration);
-    // A dwell that ends at this period's end ran the whole period: the
-    // segment after it starts with the next period (it did not run in this
-    // one, and the period is the dwell's: G04 X5. is 5.000 s of its block).
-    // A dwell that ended with time to spare was met without a period of
-    // its own (G04 X0): it is said (passed_dwell_line).
-    const bool dwell = seg_->kind == planner::Move::Kind::kDwell;
-    const bool dwell_to_the_end = dwell && rest <= slack;
-    if (dwell && !dwell_to_the_end) {
-      passed_line_ = seg_->line;
-      passed_source_ = seg_->source;
-    }
-    pos_ = seg_->end;
-    line_ = seg_->line;
-    source_ = seg_->source;
-    tag_ = seg_->tag;
-    const bool check = seg_->in_position;
-    queue_.pop_front();
-    seg_ = nullptr;
-    // The next segment began `rest` before the end of this period: its
-    // first period is the one that is ending, less what this one took.
-    seg_ticks_ = 0;
-    seg_offset_s_ = seg_step_s_ - rest;
-    const planner::Segment* next = queue_.front();
-    if (check || (next != nullptr && next->wait_in_position)) {
-      // The in-position check: the next segment waits for release.
-      hold_ = true;
-      released_ = false;
-      break;
-    }
-    if (dwell_to_the_end) break;  // the next starts at the next period's start
-    seg_ = queue_.front();
-    if (seg_ != nullptr) seg_->started = true;
+    if (!end_segment(t_end, slack)) return false;
   }
+  return false;
+}
 
-  if (seg_ != nullptr) {
-    seg_->sample(seg_time(), queue_.limits().axis_count, pos_, vel_, speed_);
-    if (scale_ != 1.0) {
-      vel_ = vel_ * scale_;
-      speed_ *= scale_;
-    }
-    line_ = seg_->line;
-    source_ = seg_->source;
-    tag_ = seg_->tag;
+inline bool Interpolator::end_segment(double t_end, double slack) noexcept {
+  // The segment ends inside this period: land exactly on its end point and
+  // carry the rest of the period into the next one.
+  const double rest = std::max(0.0, t_end - seg_->duration);
+  // A dwell that ends at this period's end ran the whole period: the
+  // segment after it starts with the next period (it did not run in this
+  // one, and the period is the dwell's: G04 X5. is 5.000 s of its block).
+  // A dwell that ended with time to spare was met without a period of
+  // its own (G04 X0): it is said (passed_dwell_line).
+  const bool dwell = seg_->kind == planner::Move::Kind::kDwell;
+  const bool dwell_to_the_end = dwell && rest <= slack;
+  if (dwell && !dwell_to_the_end) {
+    passed_line_ = seg_->line;
+    passed_source_ = seg_->source;
+  }
+  pos_ = seg_->end;
+  line_ = seg_->line;
+  source_ = seg_->source;
+  tag_ = seg_->tag;
+  const bool check = seg_->in_position;
+  queue_.pop_front();
+  seg_ = nullptr;
+  // The next segment began `rest` before the end of this period: its
+  // first period is the one that is ending, less what this one took.
+  seg_ticks_ = 0;
+  seg_offset_s_ = seg_step_s_ - rest;
+  const planner::Segment* next = queue_.front();
+  if (check || (next != nullptr && next->wait_in_position)) {
+    // The in-position check: the next segment waits for release.
+    hold_ = true;
+    released_ = false;
+    return false;
+  }
+  if (dwell_to_the_end) return false;  // the next starts at the next period's start
+  seg_ = queue_.front();
+  if (seg_ != nullptr) seg_->started = true;
+  return true;
+}
+
+inline void Interpolator::sample_active() noexcept {
+  seg_->sample(seg_time(), queue_.limits().axis_count, pos_, vel_, speed_);
+  if (scale_ != 1.0) {
+    vel_ = vel_ * scale_;
+    speed_ *= scale_;
+  }
+  line_ = seg_->line;
+  source_ = seg_->source;
+  tag_ = seg_->tag;
+}
+
+const AxisVec& Interpolator::tick() noexcept {
+  const double period = queue_.limits().period_s;
+  passed_line_ = 0;
+  if (ramp_) [[unlikely]] {
+    return tick_ramp(period);
+  }
+  if (hold_) [[unlikely]] {
+    vel_ = AxisVec{};
+    speed_ = 0.0;
+    return pos_;
+  }
+  if (!start_front()) return pos_;
+  rebase_time_scale(period);
+  if (advance(period)) {
+    sample_active();
   } else {
     vel_ = AxisVec{};
     speed_ = 0.0;

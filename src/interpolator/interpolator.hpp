@@ -97,6 +97,24 @@ class Interpolator {
   std::uint32_t passed_dwell_source() const noexcept { return passed_source_; }
 
  private:
+  // The steps of tick(), inlined into it.
+  // The deceleration ramp of a skip stop: the position at this period's end.
+  [[gnu::always_inline]] const AxisVec& tick_ramp(double period) noexcept;
+  // Without an active segment, the queue's front becomes it; false when it
+  // waits for the axes in position (the interpolator holds).
+  [[gnu::always_inline]] bool start_front() noexcept;
+  // A new time scale (override, feed hold) counts again from the time reached.
+  [[gnu::always_inline]] void rebase_time_scale(double period) noexcept;
+  // Counts the period, ending every segment that ends inside it; true when
+  // a segment is active at the period's end.
+  [[gnu::always_inline]] bool advance(double period) noexcept;
+  // Ends the active segment at `t_end` (the period's end in its time); true
+  // when the next one takes the rest of the period.
+  [[gnu::always_inline]] bool end_segment(double t_end, double slack) noexcept;
+  // Position, velocity and block of the active segment (there is one) at
+  // this period's end.
+  [[gnu::always_inline]] void sample_active() noexcept;
+
   planner::SegmentQueue& queue_;
   // Time inside the active segment, s: seg_time(). Kept as a count of
   // periods, never as a sum of them (t += dt rounds at every period, and

@@ -280,6 +280,16 @@ class Material {
   void add_hole_features(int part, int hole);
   void add_rims(int part, int hole, int solid);
   bool contact_with(const Feature& f, Vec3 a, Vec3 b, double radius, Contact& c) const noexcept;
+  // The steps of contact_with, inlined into it (a hot path: every feature
+  // near the probe's path, every period).
+  [[gnu::always_inline]] bool accept_contact(const Feature& f, Vec3 a, Vec3 b, double t, Vec3 point,
+                                             Contact& c) const noexcept;
+  [[gnu::always_inline]] bool wall_contact(const Feature& f, Vec3 a, Vec3 b, double radius,
+                                           Contact& c) const noexcept;
+  [[gnu::always_inline]] bool segment_contact(const Feature& f, Vec3 a, Vec3 b, double radius,
+                                              Contact& c) const noexcept;
+  [[gnu::always_inline]] bool circle_contact(const Feature& f, Vec3 a, Vec3 b, double radius,
+                                             Contact& c) const noexcept;
   bool valid(const Feature& f, Vec3 q) const noexcept;
   double feature_distance(const Feature& f, Vec3 p, Vec3& closest) const noexcept;
   double part_sdf(const Part& part, Vec3 p) const noexcept;

@@ -330,57 +330,56 @@ class PartSet {
   geo::Part scratch_;
 };
 
-Result<void> parse_parts(const toml::table& root, const Reader& rd, PartSet& parts) {
+// [[box]] (a solid) or [[pocket]] (a hole): min and max corners.
+Result<void> parse_boxes(const toml::table& root, const Reader& rd, PartSet& parts,
+                         std::string_view key, bool hole) {
   const auto origin = rd.origin;
-  auto box_like = [&](std::string_view key, bool hole) {
-    return config::each_table(root, key, origin, [&](const toml::table& t) -> Result<void> {
-      auto k =
-          check_keys(t, {"part", "frame", "min", "max"}, origin, "[[" + std::string(key) + "]]");
-      if (!k) return k;
-      auto box = rd.corners(t, "[[" + std::string(key) + "]]", t);
-      SKIPNC_TRY(box);
-      Result<void> err;
-      geo::Part& part = parts.get(t, origin, err);
-      if (!err) return err;
-      const geo::Shape s = geo::make_box(box->first, box->second);
-      (hole ? part.holes : part.solids).push_back(s);
-      return {};
-    });
-  };
-  auto r = box_like("box", false);
-  if (!r) return r;
-  r = box_like("pocket", true);
-  if (!r) return r;
-  auto round = [&](std::string_view key, bool hole) {
-    return config::each_table(root, key, origin, [&](const toml::table& t) -> Result<void> {
-      auto k = check_keys(t, {"part", "frame", "center", "radius", "bottom", "top"}, origin,
-                          "[[" + std::string(key) + "]]");
-      if (!k) return k;
-      auto c = rd.vec<2>(t, "center");
-      SKIPNC_TRY(c);
-      auto radius = rd.number(t, "radius", 1e-6, kFar);
-      SKIPNC_TRY(radius);
-      const std::optional<double> lo_def = hole ? std::optional<double>(-kFar) : std::nullopt;
-      const std::optional<double> hi_def = hole ? std::optional<double>(kFar) : std::nullopt;
-      auto bottom = rd.number(t, "bottom", -kFar, kFar, lo_def);
-      SKIPNC_TRY(bottom);
-      auto top = rd.number(t, "top", -kFar, kFar, hi_def);
-      SKIPNC_TRY(top);
-      if (!(*top > *bottom))
-        return config_error(t, origin, "[[" + std::string(key) + "]]: top must exceed bottom");
-      Result<void> err;
-      geo::Part& part = parts.get(t, origin, err);
-      if (!err) return err;
-      const geo::Shape s = geo::make_cylinder((*c)[0], (*c)[1], *radius, *bottom, *top);
-      (hole ? part.holes : part.solids).push_back(s);
-      return {};
-    });
-  };
-  r = round("cylinder", false);
-  if (!r) return r;
-  r = round("bore", true);
-  if (!r) return r;
-  r = config::each_table(root, "sphere", origin, [&](const toml::table& t) -> Result<void> {
+  return config::each_table(root, key, origin, [&](const toml::table& t) -> Result<void> {
+    auto k = check_keys(t, {"part", "frame", "min", "max"}, origin, "[[" + std::string(key) + "]]");
+    if (!k) return k;
+    auto box = rd.corners(t, "[[" + std::string(key) + "]]", t);
+    SKIPNC_TRY(box);
+    Result<void> err;
+    geo::Part& part = parts.get(t, origin, err);
+    if (!err) return err;
+    const geo::Shape s = geo::make_box(box->first, box->second);
+    (hole ? part.holes : part.solids).push_back(s);
+    return {};
+  });
+}
+
+// [[cylinder]] (a solid) or [[bore]] (a hole, open at both ends by default).
+Result<void> parse_rounds(const toml::table& root, const Reader& rd, PartSet& parts,
+                          std::string_view key, bool hole) {
+  const auto origin = rd.origin;
+  return config::each_table(root, key, origin, [&](const toml::table& t) -> Result<void> {
+    auto k = check_keys(t, {"part", "frame", "center", "radius", "bottom", "top"}, origin,
+                        "[[" + std::string(key) + "]]");
+    if (!k) return k;
+    auto c = rd.vec<2>(t, "center");
+    SKIPNC_TRY(c);
+    auto radius = rd.number(t, "radius", 1e-6, kFar);
+    SKIPNC_TRY(radius);
+    const std::optional<double> lo_def = hole ? std::optional<double>(-kFar) : std::nullopt;
+    const std::optional<double> hi_def = hole ? std::optional<double>(kFar) : std::nullopt;
+    auto bottom = rd.number(t, "bottom", -kFar, kFar, lo_def);
+    SKIPNC_TRY(bottom);
+    auto top = rd.number(t, "top", -kFar, kFar, hi_def);
+    SKIPNC_TRY(top);
+    if (!(*top > *bottom))
+      return config_error(t, origin, "[[" + std::string(key) + "]]: top must exceed bottom");
+    Result<void> err;
+    geo::Part& part = parts.get(t, origin, err);
+    if (!err) return err;
+    const geo::Shape s = geo::make_cylinder((*c)[0], (*c)[1], *radius, *bottom, *top);
+    (hole ? part.holes : part.solids).push_back(s);
+    return {};
+  });
+}
+
+Result<void> parse_spheres(const toml::table& root, const Reader& rd, PartSet& parts) {
+  const auto origin = rd.origin;
+  return config::each_table(root, "sphere", origin, [&](const toml::table& t) -> Result<void> {
     auto k = check_keys(t, {"part", "frame", "center", "radius"}, origin, "[[sphere]]");
     if (!k) return k;
     auto c = rd.vec<3>(t, "center");
@@ -393,8 +392,12 @@ Result<void> parse_parts(const toml::table& root, const Reader& rd, PartSet& par
     part.solids.push_back(geo::make_sphere({(*c)[0], (*c)[1], (*c)[2]}, *radius));
     return {};
   });
-  if (!r) return r;
-  r = config::each_table(root, "mesh", origin, [&](const toml::table& t) -> Result<void> {
+}
+
+// [[mesh]]: an STL file, relative to the scene file's folder.
+Result<void> parse_meshes(const toml::table& root, const Reader& rd, PartSet& parts) {
+  const auto origin = rd.origin;
+  return config::each_table(root, "mesh", origin, [&](const toml::table& t) -> Result<void> {
     auto k = check_keys(t, {"part", "frame", "file", "scale"}, origin, "[[mesh]]");
     if (!k) return k;
     const auto* fn = t.get("file");
@@ -419,7 +422,10 @@ Result<void> parse_parts(const toml::table& root, const Reader& rd, PartSet& par
     part.meshes.push_back(std::move(mesh));
     return {};
   });
-  if (!r) return r;
+}
+
+Result<void> parse_planes(const toml::table& root, const Reader& rd, PartSet& parts) {
+  const auto origin = rd.origin;
   return config::each_table(root, "plane", origin, [&](const toml::table& t) -> Result<void> {
     auto k = check_keys(t, {"part", "frame", "point", "normal"}, origin, "[[plane]]");
     if (!k) return k;
@@ -436,6 +442,17 @@ Result<void> parse_parts(const toml::table& root, const Reader& rd, PartSet& par
     part.solids.push_back(geo::make_half_space({(*pt)[0], (*pt)[1], (*pt)[2]}, nv));
     return {};
   });
+}
+
+// The parts' shapes, kind by kind (an error in an earlier kind is reported first).
+Result<void> parse_parts(const toml::table& root, const Reader& rd, PartSet& parts) {
+  SKIPNC_TRY(parse_boxes(root, rd, parts, "box", false));
+  SKIPNC_TRY(parse_boxes(root, rd, parts, "pocket", true));
+  SKIPNC_TRY(parse_rounds(root, rd, parts, "cylinder", false));
+  SKIPNC_TRY(parse_rounds(root, rd, parts, "bore", true));
+  SKIPNC_TRY(parse_spheres(root, rd, parts));
+  SKIPNC_TRY(parse_meshes(root, rd, parts));
+  return parse_planes(root, rd, parts);
 }
 
 // The probe's length, gauge line to ball centre: the scene's `length` (the
@@ -483,6 +500,54 @@ Result<double> probe_length(const toml::table& t, const Reader& rd, int tool, Pr
   return *v;
 }
 
+// on_m, off_m, start_time: the M codes that switch the probe on and off.
+Result<void> parse_probe_switching(const toml::table& t, const Reader& rd, ProbeSpec& p) {
+  auto on_m = rd.integer(t, "on_m", 0, 9999, 0);
+  SKIPNC_TRY(on_m);
+  auto off_m = rd.integer(t, "off_m", 0, 9999, 0);
+  SKIPNC_TRY(off_m);
+  auto start = rd.number(t, "start_time", 0.0, 60.0, 0.0);
+  SKIPNC_TRY(start);
+  if (*on_m == 0 && (*off_m != 0 || *start != 0.0)) {
+    return config_error(*t.get(*off_m != 0 ? "off_m" : "start_time"), rd.origin,
+                        "off_m and start_time need on_m: the M code that switches the probe on");
+  }
+  if (*on_m != 0 && *on_m == *off_m) {
+    return config_error(*t.get("off_m"), rd.origin, "off_m must differ from on_m");
+  }
+  p.on_m = static_cast<int>(*on_m);
+  p.off_m = static_cast<int>(*off_m);
+  p.start_time_s = *start;
+  return {};
+}
+
+// lobing = { amplitude, lobes, phase }: the probe's trigger force by direction.
+Result<void> parse_lobing(const toml::table& t, const Reader& rd, ProbeSpec& p) {
+  if (const auto* n = t.get("lobing")) {
+    const auto* lt = n->as_table();
+    if (lt == nullptr) {
+      return config_error(*n, rd.origin,
+                          "lobing must be a table: { amplitude = 0.002, lobes = 3, phase = 0 }");
+    }
+    auto lk = check_keys(*lt, {"amplitude", "lobes", "phase"}, rd.origin, "lobing");
+    SKIPNC_TRY(lk);
+    auto amp = rd.number(*lt, "amplitude", 0.0, p.ball_radius);
+    SKIPNC_TRY(amp);
+    p.lobing = *amp;
+    auto lobes = rd.integer(*lt, "lobes", 1, 24, 3);
+    SKIPNC_TRY(lobes);
+    p.lobes = static_cast<int>(*lobes);
+    auto phase = rd.number(*lt, "phase", -360.0, 360.0, 0.0);
+    SKIPNC_TRY(phase);
+    p.lobing_phase_deg = *phase;
+    if (p.pre_travel + p.lobing >= p.ball_radius) {
+      return config_error(*n, rd.origin,
+                          "pre_travel + lobing amplitude must be smaller than ball_radius");
+    }
+  }
+  return {};
+}
+
 Result<ProbeSpec> parse_probe(const toml::table& t, const Reader& rd) {
   const auto origin = rd.origin;
   auto k = check_keys(t,
@@ -525,44 +590,8 @@ Result<ProbeSpec> parse_probe(const toml::table& t, const Reader& rd) {
   auto seed = rd.integer(t, "seed", 0, std::numeric_limits<std::int64_t>::max(), 1);
   SKIPNC_TRY(seed);
   p.seed = static_cast<std::uint64_t>(*seed);
-  auto on_m = rd.integer(t, "on_m", 0, 9999, 0);
-  SKIPNC_TRY(on_m);
-  auto off_m = rd.integer(t, "off_m", 0, 9999, 0);
-  SKIPNC_TRY(off_m);
-  auto start = rd.number(t, "start_time", 0.0, 60.0, 0.0);
-  SKIPNC_TRY(start);
-  if (*on_m == 0 && (*off_m != 0 || *start != 0.0)) {
-    return config_error(*t.get(*off_m != 0 ? "off_m" : "start_time"), origin,
-                        "off_m and start_time need on_m: the M code that switches the probe on");
-  }
-  if (*on_m != 0 && *on_m == *off_m) {
-    return config_error(*t.get("off_m"), origin, "off_m must differ from on_m");
-  }
-  p.on_m = static_cast<int>(*on_m);
-  p.off_m = static_cast<int>(*off_m);
-  p.start_time_s = *start;
-  if (const auto* n = t.get("lobing")) {
-    const auto* lt = n->as_table();
-    if (lt == nullptr) {
-      return config_error(*n, origin,
-                          "lobing must be a table: { amplitude = 0.002, lobes = 3, phase = 0 }");
-    }
-    auto lk = check_keys(*lt, {"amplitude", "lobes", "phase"}, origin, "lobing");
-    SKIPNC_TRY(lk);
-    auto amp = rd.number(*lt, "amplitude", 0.0, p.ball_radius);
-    SKIPNC_TRY(amp);
-    p.lobing = *amp;
-    auto lobes = rd.integer(*lt, "lobes", 1, 24, 3);
-    SKIPNC_TRY(lobes);
-    p.lobes = static_cast<int>(*lobes);
-    auto phase = rd.number(*lt, "phase", -360.0, 360.0, 0.0);
-    SKIPNC_TRY(phase);
-    p.lobing_phase_deg = *phase;
-    if (p.pre_travel + p.lobing >= p.ball_radius) {
-      return config_error(*n, origin,
-                          "pre_travel + lobing amplitude must be smaller than ball_radius");
-    }
-  }
+  SKIPNC_TRY(parse_probe_switching(t, rd, p));
+  SKIPNC_TRY(parse_lobing(t, rd, p));
   return p;
 }
 

@@ -8,6 +8,7 @@
 
 #include "core/utf8.hpp"
 #include "interpreter/interpreter.hpp"
+#include "run/program_run.hpp"
 #include "sim/simulator.hpp"
 
 namespace skipnc::run {
@@ -156,17 +157,16 @@ RepeatStats stats_of(const RepeatSeries& s) {
 Result<RepeatOutcome> repeat_runs(const Session& s, const RepeatRequest& rq,
                                   const std::atomic<bool>* interrupt) {
   config::MachineConfig m = s.machine;
-  interp::Setup setup;
   // Every repetition starts from the same #500-#999 (the file's) and none
   // writes them back: the scatter is the probe's alone.
-  SKIPNC_TRY(take_persistent(m, setup));
-  setup.variables.insert(setup.variables.end(), rq.variables.begin(), rq.variables.end());
-  setup.machine = &m;
-  setup.dialect = &s.dialect;
-  setup.params = s.params.get();
-  setup_program(rq.program, setup);
-  setup.strict_allow = allowed_warnings(s, rq.program.allow);
-  setup.dprnt_path = rq.dprnt_path;
+  std::vector<std::pair<int, double>> variables;
+  SKIPNC_TRY(take_persistent(m, variables));
+  variables.insert(variables.end(), rq.variables.begin(), rq.variables.end());
+  RunIO io;
+  io.interrupt = interrupt;
+  io.dprnt_path = rq.dprnt_path;
+  const interp::Setup setup = make_setup(s, Rig{&m, &s.dialect, s.params.get(), &s.scene},
+                                         rq.program, io, std::move(variables));
   OffsetWatch offsets;  // offsets as the machine starts, to tell which ones the program wrote
   SKIPNC_TRY(offsets.start(setup));
 
@@ -176,8 +176,6 @@ Result<RepeatOutcome> repeat_runs(const Session& s, const RepeatRequest& rq,
   out.scatter = probe && probe->repeatability != 0.0;
   out.runs = rq.runs;
   Collector series;
-  sim::RunOptions opts;
-  opts.interrupt = interrupt;
   for (int run = 0; run <= rq.runs; ++run) {
     if (interrupt != nullptr && interrupt->load(std::memory_order_relaxed)) {
       out.interrupted = true;
@@ -193,8 +191,8 @@ Result<RepeatOutcome> repeat_runs(const Session& s, const RepeatRequest& rq,
         scene.probing.probe->seed = out.seed + static_cast<std::uint64_t>(run - 1);
       }
     }
-    sim::Simulator sim(m, s.dialect, *s.params, scene);
-    auto res = sim.run(setup, opts);
+    ProgramRun pr(Rig{&m, &s.dialect, s.params.get(), &scene}, setup, io, false);
+    auto res = pr.run();
     SKIPNC_TRY(res);
     if (res->status == sim::RunStatus::kInterrupted) {
       out.interrupted = true;
@@ -210,8 +208,8 @@ Result<RepeatOutcome> repeat_runs(const Session& s, const RepeatRequest& rq,
         out.first_alarm = fmt::format("run {}: {}", run, describe(*res->alarm, &s.dialect));
       }
     }
-    series.run(s, rq, *res, *sim.interpreter(), nominal);
-    offsets.run(*sim.interpreter());
+    series.run(s, rq, *res, pr.interpreter(), nominal);
+    offsets.run(pr.interpreter());
   }
   offsets.add_to(series);
   out.series = series.take();

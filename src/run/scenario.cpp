@@ -8,6 +8,7 @@
 #include "config/skip_inputs.hpp"
 #include "interpreter/interpreter.hpp"
 #include "run/plot.hpp"
+#include "run/program_run.hpp"
 
 namespace skipnc::run {
 namespace {
@@ -140,28 +141,21 @@ int exit_code(sim::RunStatus status, bool output_failed, const std::vector<Expec
 
 namespace {
 
-Result<void> prepare(const Session& s, const RunRequest& rq, const Variation& v,
-                     config::MachineConfig& m, config::Parameters& params, interp::Setup& setup) {
-  if (auto r = apply_offsets(m, v); !r) return r;
-  for (const auto& p : v.params) {
-    if (auto r = params.apply(p); !r) return r;
-  }
-  if (!v.params.empty()) {
-    if (auto r = config::check_skip_addresses(s.dialect, params); !r) return r;
-  }
+// The variation's changes to the copies `m` and `params`, checked; the
+// starting variables (the persistent file's, then the variation's).
+Result<std::vector<std::pair<int, double>>> prepare(const Session& s, const RunRequest& rq,
+                                                    const Variation& v, config::MachineConfig& m,
+                                                    config::Parameters& params) {
+  SKIPNC_TRY(apply_offsets(m, v));
+  for (const auto& p : v.params) SKIPNC_TRY(params.apply(p));
+  if (!v.params.empty()) SKIPNC_TRY(config::check_skip_addresses(s.dialect, params));
   // alarm=NAME names an alarm of the dialect (as `skipnc run --expect`).
-  for (const auto& e : rq.expect) {
-    if (auto r = check_alarm_name(e, s.dialect); !r) return r;
-  }
-  if (auto r = check_plot_files(rq.plot_files); !r) return r;
-  if (auto r = take_persistent(m, setup); !r) return r;
-  setup.variables.insert(setup.variables.end(), v.variables.begin(), v.variables.end());
-  setup.machine = &m;
-  setup.dialect = &s.dialect;
-  setup.params = &params;
-  setup_program(rq, setup);
-  setup.strict_allow = allowed_warnings(s, rq.allow);
-  return {};
+  for (const auto& e : rq.expect) SKIPNC_TRY(check_alarm_name(e, s.dialect));
+  SKIPNC_TRY(check_plot_files(rq.plot_files));
+  std::vector<std::pair<int, double>> variables;
+  SKIPNC_TRY(take_persistent(m, variables));
+  variables.insert(variables.end(), v.variables.begin(), v.variables.end());
+  return variables;
 }
 
 }  // namespace
@@ -176,12 +170,13 @@ void setup_program(const RunRequest& rq, interp::Setup& setup) {
   setup.strict_allow = rq.allow;
 }
 
-Result<void> take_persistent(config::MachineConfig& m, interp::Setup& setup) {
+Result<void> take_persistent(config::MachineConfig& m,
+                             std::vector<std::pair<int, double>>& variables) {
   if (m.persistent_vars.empty()) return {};
   std::array<interp::Value, 500> kept{};
   if (auto r = interp::load_persistent(m.persistent_vars, kept); !r) return r;
   for (std::size_t i = 0; i < kept.size(); ++i) {
-    if (!kept[i].vacant) setup.variables.emplace_back(static_cast<int>(i) + 500, kept[i].v);
+    if (!kept[i].vacant) variables.emplace_back(static_cast<int>(i) + 500, kept[i].v);
   }
   m.persistent_vars.clear();
   return {};
@@ -191,34 +186,21 @@ Result<RunOutcome> run_variation(const Session& s, const RunRequest& rq, const V
                                  sim::TraceSink* trace, const std::atomic<bool>* interrupt) {
   config::MachineConfig m = s.machine;
   config::Parameters params = *s.params;
-  interp::Setup setup;
-  SKIPNC_TRY(prepare(s, rq, v, m, params, setup));
+  auto variables = prepare(s, rq, v, m, params);
+  SKIPNC_TRY(variables);
   const machine::Scene scene = varied_scene(s.scene, m, v);
-  sim::Simulator sim(m, s.dialect, params, scene);
-  sim::RunOptions opts;
-  opts.trace = trace;
-  opts.interrupt = interrupt;
-  std::unique_ptr<PlotCapture> plot;
-  if (!rq.plot_files.empty()) plot = std::make_unique<PlotCapture>(m, opts);
-  auto res = sim.run(setup, opts);
+  const Rig rig{&m, &s.dialect, &params, &scene};
+  RunIO io;
+  io.trace = trace;
+  io.interrupt = interrupt;
+  ProgramRun pr(rig, make_setup(s, rig, rq, io, std::move(*variables)), io, !rq.plot_files.empty());
+  auto res = pr.run();
   SKIPNC_TRY(res);
-  report::ReportInput in = report_input(s, setup.program_name, std::move(*res));
-  in.variables = read_variables(*sim.interpreter(), rq.vars);
+  auto c = pr.conclude(s, std::move(*res), rq, pr.setup().program_name);
+  SKIPNC_TRY(c);
+  const report::ReportInput& in = c->report;
   RunOutcome out;
-  if (plot) {
-    const std::string text =
-        rq.program_path.empty() ? rq.program_text : read_program_text(rq.program_path);
-    // A picture that could not be written is an alarm of the run, as on
-    // the command line.
-    if (auto w = plot->write(rq.plot_files, s, in.result, {setup.program_name, text, in.variables});
-        !w) {
-      out.output_failed = true;
-      if (in.result.status == sim::RunStatus::kCompleted) {
-        in.result.status = sim::RunStatus::kAlarm;
-        in.result.alarm = w.error();
-      }
-    }
-  }
+  out.output_failed = c->output_failed;
   out.status = in.result.status;
   out.time_s = in.result.time_s;
   if (in.result.alarm) {
@@ -228,17 +210,12 @@ Result<RunOutcome> run_variation(const Session& s, const RunRequest& rq, const V
     out.alarm_key = std::string(alarm_key(in.result.alarm->id));
     out.alarm_text = describe(*in.result.alarm, &s.dialect);
   }
-  if (!rq.expect.empty()) {
-    auto checks = check_outcome(s.dialect, rq.expect, in.result, *sim.interpreter());
-    SKIPNC_TRY(checks);
-    for (const auto& c : *checks) {
-      if (!c.pass) out.failed_expectations.push_back(c.message);
-    }
-    in.expectations = std::move(*checks);
+  for (const auto& check : in.expectations) {
+    if (!check.pass) out.failed_expectations.push_back(check.message);
   }
-  out.exit_code = exit_code(in.result.status, out.output_failed, rq.expect, in.expectations);
+  out.exit_code = c->exit_code;
   out.report_json = report::to_json(in);
-  out.variables = std::move(in.variables);
+  out.variables = in.variables;
   return out;
 }
 

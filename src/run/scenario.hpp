@@ -116,10 +116,11 @@ int exit_code(sim::RunStatus status, bool output_failed, const std::vector<Expec
 // folders, strict.
 void setup_program(const RunRequest& rq, interp::Setup& setup);
 
-// The machine's #500-#999 (its persistent-variable file) as starting values
-// of `setup`, and the file dropped from `m`: runs from the library read it,
-// never write it (runs in parallel must not write one file).
-[[nodiscard]] Result<void> take_persistent(config::MachineConfig& m, interp::Setup& setup);
+// The machine's #500-#999 (its persistent-variable file) added to the
+// starting `variables`, and the file dropped from `m`: runs from the library
+// read it, never write it (runs in parallel must not write one file).
+[[nodiscard]] Result<void> take_persistent(config::MachineConfig& m,
+                                           std::vector<std::pair<int, double>>& variables);
 
 // Reads a variable file: one "#<n> = <value>" per line, ';' comments (the
 // persistent-variable file's format, any settable variable).

@@ -243,19 +243,13 @@ void ProbeSafety::warn_braking(const canon::Skip& s, const canon::Stamped& at) {
                       record::Warning{"skip_braking", at.source, at.line, std::move(text)});
 }
 
-std::optional<SafetyAlarm> ProbeSafety::check_period(Plant& plant, const kernel::Kernel& k,
-                                                     std::uint32_t line, std::string_view file) {
-  // The line that was running during the period is the one the kernel
-  // showed after the previous tick.
-  const std::uint32_t at_line = period_line_ != 0 ? period_line_ : line;
-  period_line_ = line;
-  ProbeScene& ps = plant.probing();
+// The tool change and the probe's switch, made when the motion before them
+// has ended; switched on, the probe signals once its start-up time has passed.
+void ProbeSafety::make_switches(ProbeScene& ps, const kernel::Kernel& k) {
   if (tool_change_ && k.idle()) {
     ps.set_spindle_tool(*tool_change_);
     tool_change_.reset();
   }
-  // The probe's switch: made when the motion before it has ended; switched
-  // on, the probe signals once its start-up time has passed.
   const double now_s = k.clock().seconds(k.now());
   if (power_change_ && k.idle()) {
     if (*power_change_) {
@@ -282,6 +276,13 @@ std::optional<SafetyAlarm> ProbeSafety::check_period(Plant& plant, const kernel:
                                       now_s, probe->deflection())});
     }
   }
+}
+
+// The plant's fault of this period as an alarm: a collision, or a probe or
+// tool setter pushed past its over-travel (not while a skip stops the axes).
+std::optional<SafetyAlarm> ProbeSafety::fault_alarm(const ProbeScene& ps, const kernel::Kernel& k,
+                                                    std::uint32_t at_line,
+                                                    std::string_view file) const {
   const PlantFault& f = ps.fault();
   const SourceLoc loc{file, at_line, 1};
   switch (f.kind) {
@@ -318,7 +319,20 @@ std::optional<SafetyAlarm> ProbeSafety::check_period(Plant& plant, const kernel:
           f.at};
     }
   }
+  return std::nullopt;
+}
+
+std::optional<SafetyAlarm> ProbeSafety::check_period(Plant& plant, const kernel::Kernel& k,
+                                                     std::uint32_t line, std::string_view file) {
+  // The line that was running during the period is the one the kernel
+  // showed after the previous tick.
+  const std::uint32_t at_line = period_line_ != 0 ? period_line_ : line;
+  period_line_ = line;
+  ProbeScene& ps = plant.probing();
+  make_switches(ps, k);
+  if (auto alarm = fault_alarm(ps, k, at_line, file)) return alarm;
   if (protection_ && ps.touch_switched_on() && !(k.skip().active && k.skip().triggered)) {
+    const SourceLoc loc{file, at_line, 1};
     return SafetyAlarm{
         Error{
             AlarmId::kProbeProtection,

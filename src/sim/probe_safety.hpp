@@ -73,6 +73,9 @@ class ProbeSafety final : public canon::CommandSink {
  private:
   std::optional<SafetyAlarm> check_period(machine::Plant& plant, const kernel::Kernel& k,
                                           std::uint32_t line, std::string_view file);
+  void make_switches(machine::ProbeScene& ps, const kernel::Kernel& k);
+  std::optional<SafetyAlarm> fault_alarm(const machine::ProbeScene& ps, const kernel::Kernel& k,
+                                         std::uint32_t at_line, std::string_view file) const;
   std::string where(const AxisVec& machine) const;
   void warn_braking(const canon::Skip& s, const canon::Stamped& at);
   void warn_unreachable(const canon::Skip& s, const canon::Stamped& at);
