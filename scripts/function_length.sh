@@ -32,7 +32,8 @@ if [ "${1:-}" = --list ]; then
   [ -n "$long" ] && echo "$long"
   exit 0
 fi
-listed=$(grep -v '^[[:space:]]*\(#\|$\)' "$allow" | awk '{print $1, $2}' | sort -u)
+# (grep finds no line once the list is empty: not an error.)
+listed=$({ grep -v '^[[:space:]]*\(#\|$\)' "$allow" || true; } | awk '{print $1, $2}' | sort -u)
 found=$(echo "$long" | awk 'NF {print $2, $3}' | sort -u)
 status=0
 while read -r n file name; do

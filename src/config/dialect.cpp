@@ -332,23 +332,25 @@ Result<void> load_codes(const toml::table& t, std::string_view origin, Dialect& 
     const auto* arr = node.as_array();
     if (!arr) return config_error(node, origin, std::string(key.str()) + " must be an array");
     const bool m_codes = key.str() == "not_simulated_m" || key.str() == "absent_m";
-    std::vector<int>& out = key.str() == "absent_g"          ? d.absent_g
-                            : key.str() == "absent_m"        ? d.absent_m
-                            : key.str() == "not_simulated_m" ? d.not_simulated_m
-                                                             : d.not_simulated_g;
+    if (!m_codes) {
+      std::vector<GCode>& out = key.str() == "absent_g" ? d.absent_g : d.not_simulated_g;
+      out.clear();
+      for (const auto& e : *arr) {
+        const auto v = e.value<double>();
+        const auto g = v && *v <= 999 ? GCode::of_value(*v) : std::nullopt;
+        if (!g || std::round(*v * 10) != *v * 10) {
+          return config_error(e, origin, "a G code such as 54 or 54.1");
+        }
+        out.push_back(*g);
+      }
+      continue;
+    }
+    std::vector<int>& out = key.str() == "absent_m" ? d.absent_m : d.not_simulated_m;
     out.clear();
     for (const auto& e : *arr) {
-      if (m_codes) {
-        const auto v = e.value<std::int64_t>();
-        if (!v || *v < 0 || *v > 999) return config_error(e, origin, "an M code such as 66");
-        out.push_back(static_cast<int>(*v));
-        continue;
-      }
-      const auto v = e.value<double>();
-      if (!v || *v < 0 || *v > 999 || std::round(*v * 10) != *v * 10) {
-        return config_error(e, origin, "a G code such as 54 or 54.1");
-      }
-      out.push_back(static_cast<int>(std::lround(*v * 10)));
+      const auto v = e.value<std::int64_t>();
+      if (!v || *v < 0 || *v > 999) return config_error(e, origin, "an M code such as 66");
+      out.push_back(static_cast<int>(*v));
     }
   }
   return {};

@@ -12,6 +12,7 @@
 
 #include "canon/canon.hpp"
 #include "core/diag.hpp"
+#include "core/nc_code.hpp"
 
 namespace skipnc::config {
 
@@ -200,11 +201,11 @@ struct Dialect {
   SkipHandshakeNames handshake;
   // Fixed skip-input addresses, index 0 = first selectable input (P first).
   std::vector<canon::SignalAddr> fixed_skip_inputs;
-  // [codes] (x10, G54.1 = 541): codes this control does not have
-  // (unknown_g_code), and codes it has that skipnc does not simulate, among
-  // them those of skipnc's table that mean something else there (not_simulated).
-  std::vector<int> absent_g;
-  std::vector<int> not_simulated_g;
+  // [codes]: codes this control does not have (unknown_g_code), and codes
+  // it has that skipnc does not simulate, among them those of skipnc's table
+  // that mean something else there (not_simulated).
+  std::vector<GCode> absent_g;
+  std::vector<GCode> not_simulated_g;
   std::vector<int> not_simulated_m;  // M codes with an effect skipnc does not model
   std::vector<int> absent_m;         // M codes the control refuses (unknown_m_code)
 

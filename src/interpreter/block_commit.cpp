@@ -150,7 +150,7 @@ Flow<Step> Interpreter::Impl::commit_action(const Words& words, const BlockPlan&
   const SourceLoc at = loc(cur_col);
   switch (plan.action) {
     case Action::kNgc:
-      SKIPNC_TRY(ngc_action(words, plan.action_code, out));
+      SKIPNC_TRY(ngc_action(words, plan.action_code));
       return Step::kContinue;
     case Action::kDataSetting:
       SKIPNC_TRY(data_setting(words, at));
@@ -167,7 +167,7 @@ Flow<Step> Interpreter::Impl::commit_action(const Words& words, const BlockPlan&
       return Step::kContinue;
     case Action::kRefReturn:
     case Action::kRefReturn2:
-      SKIPNC_TRY(reference_return(words, plan.action_code / 10, out));
+      SKIPNC_TRY(reference_return(words, plan.action_code.number(), out));
       moved = true;
       return Step::kContinue;
     default:
@@ -327,7 +327,7 @@ Flow<std::optional<Step>> Interpreter::Impl::commit_mill(const Words& words, con
                   loc(cur_col));
     SKIPNC_TRY(w);
   }
-  if (plan.mill.frame_code != 0) {
+  if (plan.mill.frame != nullptr) {
     auto r = apply_frame_code(words, plan.mill);
     SKIPNC_TRY(r);
     if (*r) return Step::kContinue;

@@ -14,36 +14,18 @@
 namespace skipnc::interp {
 namespace {
 
-// G codes that G-code system A (a lathe) gives another meaning or does not
-// have, with what to write instead. The turning cycles are not modelled.
-const char* lathe_refusal(int code) {
-  switch (code) {
-    case 910:
-      return " is not a code of G-code system A: U and W are the incremental X and Z";
-    case 920:
-      return " is the thread cutting cycle in G-code system A (not supported); G50 sets the "
-             "coordinate system";
-    case 940:
-      return " is the end-face cutting cycle in G-code system A (not supported); G98 is feed per "
-             "minute";
-    case 950:
-      return " is not a code of G-code system A: G99 is feed per revolution";
-    case 430:
-    case 440:
-    case 490:
-      return " is not a code of a lathe: the T code offsets the tool";
-    case 450:
-    case 460:
-    case 470:
-    case 480:
-      return " is not a code of a lathe";
-    default:
-      return nullptr;
+// The unknown_g_code message of a code this machine does not read: what to
+// write instead on a lathe (a refusal of the table), or that it is a code
+// of the lathe only.
+std::string improper_g(GCode code, const CodeDef* refusal, bool lathe) {
+  if (refusal != nullptr) return code_name(code) + refusal->summary;
+  if (!lathe) {
+    const CodeDef* l = find_g(code, true);
+    if (l != nullptr && l->handler != Handler::kRefused) {
+      return code_name(code) + " is a code of the lathe (G-code system A) only";
+    }
   }
-}
-
-std::string g_name(int code) {
-  return "G" + std::to_string(code / 10) + (code % 10 ? "." + std::to_string(code % 10) : "");
+  return code_name(code);
 }
 
 }  // namespace
@@ -56,51 +38,30 @@ std::string g_name(int code) {
 Flow<void> Interpreter::Impl::plan_g_codes(const Words& words, BlockPlan& plan) {
   const bool lathe = mc.lathe();
   for (int i = 0; i < words.g_count; ++i) {
-    const int code = words.g[static_cast<std::size_t>(i)];
+    const GCode code = words.g[static_cast<std::size_t>(i)];
     const std::uint32_t col = words.g_col[static_cast<std::size_t>(i)];
     const SourceLoc at = loc(col);
     if (std::find(dialect.absent_g.begin(), dialect.absent_g.end(), code) !=
         dialect.absent_g.end()) {
-      return fail(AlarmId::kUnknownGCode, g_name(code) + " is not a code of this control", at);
+      return fail(AlarmId::kUnknownGCode, code_name(code) + " is not a code of this control", at);
     }
     if (std::find(dialect.not_simulated_g.begin(), dialect.not_simulated_g.end(), code) !=
         dialect.not_simulated_g.end()) {
       return fail(AlarmId::kNotSimulated,
-                  g_name(code) + " is a code of this control that skipnc does not simulate", at);
+                  code_name(code) + " is a code of this control that skipnc does not simulate", at);
     }
-    const CodeDef* def = find_g(code, lathe);
-    if (def == nullptr) {
-      auto mill = mill_code(code, at, plan.mill);  // mill_codes.cpp
+    const CodeDef* def = find_g(code, lathe);  // codes.cpp
+    if (def == nullptr || def->handler == Handler::kRefused) {
+      return fail(AlarmId::kUnknownGCode, improper_g(code, def, lathe), at);
+    }
+    if (auto why = not_in_dialect(*def, dialect.sw)) {
+      return fail(AlarmId::kUnknownGCode, std::move(*why), at);
+    }
+    if (!def->modal_state()) {
+      auto mill = mill_code(*def, at, plan.mill);  // mill_codes.cpp
       SKIPNC_TRY(mill);
       if (*mill) continue;
-      if (lathe) {
-        if (const char* why = lathe_refusal(code))
-          return fail(AlarmId::kUnknownGCode, g_name(code) + why, at);
-      } else if (find_g(code, true) != nullptr) {
-        return fail(AlarmId::kUnknownGCode,
-                    g_name(code) + " is a code of the lathe (G-code system A) only", at);
-      }
-      return fail(AlarmId::kUnknownGCode, g_name(code), at);
-    }
-    if ((def->avail & kG38Dialect) != 0 && !dialect.sw.probe_g38) {
-      // Named as itself: G38.x is the straight probe, G92.1 and its kin
-      // are the codes of the G38 controls they are (their summary).
-      const bool probe = code >= 382 && code <= 385;
-      return fail(AlarmId::kUnknownGCode,
-                  g_name(code) + " (" + (probe ? std::string("straight probe") : def->summary) +
-                      ") is not a code of this control" + (probe ? "; it probes with G31" : ""),
-                  at);
-    }
-    if (code == 310 && !dialect.sw.skip_g31) {
-      return fail(AlarmId::kUnknownGCode,
-                  g_name(code) +
-                      " (skip function) is not a code of this control; it probes with "
-                      "G38.2-G38.5",
-                  at);
-    }
-    if ((def->avail & kToolPosOffsetDialect) != 0 && !dialect.sw.tool_position_offset) {
-      return fail(AlarmId::kUnknownGCode,
-                  g_name(code) + " (tool position offset) is not a code of this control", at);
+      return fail(AlarmId::kUnknownGCode, improper_g(code, nullptr, lathe), at);
     }
     if (def->group == Group::k00) {
       auto r = plan_one_shot(*def, col, plan);
@@ -111,8 +72,8 @@ Flow<void> Interpreter::Impl::plan_g_codes(const Words& words, BlockPlan& plan) 
     if (plan.group[g] != nullptr && plan.group[g]->code != code &&
         !dialect.sw.g_same_group_last_wins) {
       return fail(AlarmId::kGCodeConflict,
-                  g_name(plan.group[g]->code) + " and " + g_name(code) + " are both of group " +
-                      std::to_string(static_cast<int>(def->group)),
+                  code_name(plan.group[g]->code) + " and " + code_name(code) +
+                      " are both of group " + std::to_string(static_cast<int>(def->group)),
                   at);
     }
     plan.group[g] = def;
@@ -135,13 +96,13 @@ Flow<void> Interpreter::Impl::plan_one_shot(const CodeDef& def, std::uint32_t co
   }
   if (plan.action != Action::kNone && plan.action_code != def.code) {
     return fail(AlarmId::kGCodeConflict,
-                g_name(plan.action_code) + " and " + g_name(def.code) +
+                code_name(plan.action_code) + " and " + code_name(def.code) +
                     " are both one-shot (group 00) commands",
                 loc(col));
   }
   plan.action = def.action;
   plan.action_code = def.code;
-  if (def.action == Action::kToolPosOffset) plan.tool_pos_offset = def.code / 10;
+  if (def.action == Action::kToolPosOffset) plan.tool_pos_offset = def.code.number();
   return {};
 }
 
@@ -152,10 +113,10 @@ Flow<void> Interpreter::Impl::plan_call(const Words& words, BlockPlan& plan) {
     return fail(AlarmId::kMacroFormat, "G65/G66 must be written as a number (G65, not G#i)", at);
   }
   for (int i = 0; i < words.g_count; ++i) {
-    const int code = words.g[static_cast<std::size_t>(i)];
-    if (code != 650 && code != 660) {
+    const GCode code = words.g[static_cast<std::size_t>(i)];
+    if (code != GCode(65) && code != GCode(66)) {
       return fail(AlarmId::kIllegalArgumentAddress,
-                  g_name(code) + " in a G65/G66 block: G cannot be an argument",
+                  code_name(code) + " in a G65/G66 block: G cannot be an argument",
                   loc(words.g_col[static_cast<std::size_t>(i)]));
     }
   }
@@ -231,12 +192,12 @@ Flow<void> Interpreter::Impl::plan_mill(BlockPlan& plan) const {
   if (plan.mill.skip_step != 0) {
     if (plan.action != Action::kNone && plan.action != Action::kSkip) {
       return fail(AlarmId::kGCodeConflict,
-                  g_name(plan.action_code) + " and G31." + std::to_string(plan.mill.skip_step) +
+                  code_name(plan.action_code) + " and G31." + std::to_string(plan.mill.skip_step) +
                       " are both one-shot (group 00) commands",
                   loc(cur_col));
     }
     plan.action = Action::kSkip;
-    plan.action_code = 310;
+    plan.action_code = GCode(31);
   }
   return {};
 }
@@ -255,7 +216,7 @@ Flow<void> Interpreter::Impl::plan_modal(const Words& words, BlockPlan& plan) {
     if (def != nullptr && def->set != nullptr) def->set(next);
   }
   if (const CodeDef* w = plan.group[static_cast<std::size_t>(Group::k14)];
-      w != nullptr && w->code == 541) {
+      w != nullptr && w->code == GCode(54, 1)) {
     // G54.1 Pn: additional work coordinate system n (1-300), after EXT and
     // G54-G59 in work_offsets. P omitted: P1.
     const double pn = words.has('P') ? words.at('P').value : 1.0;
@@ -313,21 +274,20 @@ Flow<void> Interpreter::Impl::plan_block(const Words& words, BlockPlan& plan) {
   for (int i = 0; i < words.m_count; ++i) {
     const int m = words.m[static_cast<std::size_t>(i)];
     if (std::find(dialect.absent_m.begin(), dialect.absent_m.end(), m) != dialect.absent_m.end()) {
-      return fail(AlarmId::kUnknownMCode,
-                  "M" + std::to_string(m) + " is not a code of this control", loc(cur_col));
+      return fail(AlarmId::kUnknownMCode, m_code_name(m) + " is not a code of this control",
+                  loc(cur_col));
     }
     if (std::find(dialect.not_simulated_m.begin(), dialect.not_simulated_m.end(), m) !=
         dialect.not_simulated_m.end()) {
-      return fail(
-          AlarmId::kNotSimulated,
-          "M" + std::to_string(m) + " is a code of this control that skipnc does not simulate",
-          loc(cur_col));
+      return fail(AlarmId::kNotSimulated,
+                  m_code_name(m) + " is a code of this control that skipnc does not simulate",
+                  loc(cur_col));
     }
   }
   auto m = plan_mill(plan);
   if (!m) return m;
   const CodeDef* g12 = plan.group[static_cast<std::size_t>(Group::k12)];
-  plan.call = plan.action == Action::kMacroCall || (g12 != nullptr && g12->code == 660);
+  plan.call = plan.action == Action::kMacroCall || (g12 != nullptr && g12->code == GCode(66));
   if (plan.call) return plan_call(words, plan);
   auto a = plan_addresses(words);
   if (!a) return a;

@@ -191,7 +191,7 @@ void Interpreter::Impl::grbl_modal_line() {
       motion = "G3";
       break;
     case Motion::kProbe:
-      motion = fmt::format("G38.{}", modal.probe - 380);
+      motion = code_name(modal.probe);
       break;
     default:
       break;
@@ -303,9 +303,9 @@ Flow<Step> Interpreter::Impl::grbl_jog(CommandSink& out) {
     }
   }
   for (int i = 0; i < cur_words.g_count; ++i) {
-    const int g = cur_words.g[static_cast<std::size_t>(i)];
-    if (g != 200 && g != 210 && g != 900 && g != 910 && g != 530) {
-      return fail(AlarmId::kGrblJogInvalid, fmt::format("$J with G{}", g / 10.0),
+    const GCode g = cur_words.g[static_cast<std::size_t>(i)];
+    if (g != GCode(20) && g != GCode(21) && g != GCode(90) && g != GCode(91) && g != GCode(53)) {
+      return fail(AlarmId::kGrblJogInvalid, "$J with " + code_name(g),
                   loc(cur_words.g_col[static_cast<std::size_t>(i)]));
     }
   }
@@ -314,7 +314,7 @@ Flow<Step> Interpreter::Impl::grbl_jog(CommandSink& out) {
   if (cur_words.g_count == static_cast<int>(cur_words.g.size())) {
     return fail(AlarmId::kGrblJogInvalid, "$J with too many G codes", at);
   }
-  cur_words.g[static_cast<std::size_t>(cur_words.g_count)] = 10;  // the jog is a G1
+  cur_words.g[static_cast<std::size_t>(cur_words.g_count)] = GCode(1);  // the jog is a G1
   cur_words.g_col[static_cast<std::size_t>(cur_words.g_count++)] = blk.stmt.column;
   const ModalState kept = modal;
   const double kept_cut_feed = last_cut_feed;

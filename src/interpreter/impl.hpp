@@ -73,7 +73,7 @@ struct Words {
   std::array<std::optional<WordVal>, 26> w;
   std::uint32_t letters = 0;  // bit c set: w[c] holds a word
   int g_count = 0;
-  std::array<int, 16> g{};  // G codes x10 (G54.1 -> 541)
+  std::array<GCode, 16> g{};
   std::array<std::uint32_t, 16> g_col{};
   int m_count = 0;
   std::array<int, 3> m{};
@@ -89,7 +89,7 @@ struct Words {
     g_count = 0;
     m_count = 0;
   }
-  bool has_g(int code) const noexcept {
+  bool has_g(GCode code) const noexcept {
     for (int i = 0; i < g_count; ++i) {
       if (g[static_cast<std::size_t>(i)] == code) return true;
     }
@@ -99,8 +99,8 @@ struct Words {
 
 // The codes of mill_codes.cpp seen in one block (planned, applied at commit).
 struct MillRequest {
-  int frame_code = 0;     // 680 690 500 510 501 511 (x10), 0: none
-  std::string no_effect;  // a code accepted without effect: what it is (warning)
+  const CodeDef* frame = nullptr;  // G68 G69 G50 G51 G50.1 G51.1, null: none
+  std::string no_effect;           // a code accepted without effect: what it is (warning)
   SourceLoc frame_at;
   std::optional<Cycle> cycle;
   std::optional<bool> polar;  // G16 (true) / G15 (false)
@@ -116,7 +116,7 @@ struct BlockPlan {
   std::array<const CodeDef*, kGroupSlots> group{};  // the block's code of each modal group
   std::array<std::uint32_t, kGroupSlots> column{};
   Action action = Action::kNone;  // the group-00 command (G09 and G53 are flags)
-  int action_code = 0;
+  GCode action_code;
   bool exact_stop = false;     // G09
   bool machine_coord = false;  // G53
   int tool_pos_offset = 0;     // 45..48 for G45-G48
@@ -141,7 +141,7 @@ struct PendingSkip {
   SourceLoc loc;
   std::array<std::string, canon::SkipSpec::kMaxInputs> input_names;
   int g37_axis = -1;         // G37: the measured axis (-1: a G31)
-  int g38 = 0;               // G38.n as 382..385 (0: not a G38 probe)
+  std::optional<GCode> g38;  // G38.2-G38.5 (none: not a G38 probe)
   double g37_target = 0.0;   // G37: the measuring position, machine mm
   double g37_epsilon = 0.0;  // G37: the allowed range, mm
 };
@@ -339,7 +339,7 @@ struct Interpreter::Impl : BlockState {
   Result<void> write_ngc_logs();
   std::optional<Flow<Value>> ngc_ini_hal(const std::string& n, SourceLoc where);
   // ngc_codes.cpp: LinuxCNC's and grbl's own codes
-  Flow<void> ngc_action(const Words& words, int code, CommandSink& out);
+  Flow<void> ngc_action(const Words& words, GCode code);
   void ngc_store_g92();
   Flow<void> ngc_reference_return(const Words& words, int g, CommandSink& out);
   Flow<void> ngc_data_setting(const Words& words, SourceLoc where);
@@ -458,7 +458,7 @@ struct Interpreter::Impl : BlockState {
   // G37.1: a dialect has it (not simulated) when it defines this (Mitsubishi).
   static constexpr int kG37_1SpeedParam = 8004;
   static constexpr int kSettingErrorParam = 11200;  // G54.4 (fanuc.toml)
-  Flow<bool> mill_code(int code, SourceLoc at, MillRequest& req) const;
+  Flow<bool> mill_code(const CodeDef& def, SourceLoc at, MillRequest& req) const;
   Flow<bool> apply_frame_code(const Words& words, const MillRequest& req);
   // G68 I J K (conversion_3d.cpp): the frame with one more 3-D conversion.
   Flow<xform::Transform> conversion_3d(const Words& words, const MillRequest& req,

@@ -25,72 +25,6 @@
 namespace skipnc::interp {
 namespace {
 
-enum class Kind : std::uint8_t { kCycle, kFrame, kNoEffect, kNotSimulated, kLookahead };
-
-struct MillCode {
-  int code;  // x10
-  Kind kind;
-  Cycle cycle;       // kCycle
-  const char* what;  // the function, in words
-};
-
-// The table. Codes of the lathe (G-code system A) are not here: a lathe
-// reads none of them (the core table refuses them with their own words).
-constexpr MillCode kMillCodes[] = {
-    {730, Kind::kCycle, Cycle::kG73, "high-speed peck drilling cycle"},
-    {740, Kind::kCycle, Cycle::kG74, "left-hand tapping cycle"},
-    {760, Kind::kCycle, Cycle::kG76, "fine boring cycle"},
-    {810, Kind::kCycle, Cycle::kG81, "drilling cycle, spot drilling"},
-    {820, Kind::kCycle, Cycle::kG82, "drilling cycle, counter boring (dwell)"},
-    {830, Kind::kCycle, Cycle::kG83, "peck drilling cycle"},
-    {840, Kind::kCycle, Cycle::kG84, "tapping cycle"},
-    {850, Kind::kCycle, Cycle::kG85, "boring cycle (feed out)"},
-    {860, Kind::kCycle, Cycle::kG86, "boring cycle (spindle stop, rapid out)"},
-    {870, Kind::kCycle, Cycle::kG87, "back boring cycle"},
-    {880, Kind::kCycle, Cycle::kG88, "boring cycle (dwell, spindle stop)"},
-    {890, Kind::kCycle, Cycle::kG89, "boring cycle (dwell, feed out)"},
-    {680, Kind::kFrame, Cycle::kNone, "coordinate system rotation"},
-    {690, Kind::kFrame, Cycle::kNone, "coordinate system rotation cancel"},
-    {500, Kind::kFrame, Cycle::kNone, "scaling cancel"},
-    {510, Kind::kFrame, Cycle::kNone, "scaling"},
-    {501, Kind::kFrame, Cycle::kNone, "programmable mirror image cancel"},
-    {511, Kind::kFrame, Cycle::kNone, "programmable mirror image"},
-    {150, Kind::kFrame, Cycle::kNone, "polar coordinate command cancel"},
-    {160, Kind::kFrame, Cycle::kNone, "polar coordinate command"},
-    // G54.4: where the dialect has its parameter (fanuc.toml 11200).
-    {544, Kind::kFrame, Cycle::kNone, "workpiece setting error compensation"},
-    {51, Kind::kNoEffect, Cycle::kNone, "AI contour control / high-speed machining mode"},
-    {80, Kind::kNoEffect, Cycle::kNone, "advanced preview control"},
-    {131, Kind::kNoEffect, Cycle::kNone, "polar coordinate interpolation cancel"},
-    {401, Kind::kNoEffect, Cycle::kNone, "normal direction control cancel"},
-    {121, Kind::kNotSimulated, Cycle::kNone, "polar coordinate interpolation"},
-    {71, Kind::kNotSimulated, Cycle::kNone, "cylindrical interpolation"},
-    {411, Kind::kNotSimulated, Cycle::kNone, "normal direction control left"},
-    {421, Kind::kNotSimulated, Cycle::kNone, "normal direction control right"},
-    // G37: simulated where the dialect has its parameters (fanuc.toml).
-    {370, Kind::kNotSimulated, Cycle::kNone, "automatic tool length measurement on this control"},
-    // G37.1: a code where the dialect has its parameters (Mitsubishi's TLM).
-    {371, Kind::kNotSimulated, Cycle::kNone, "automatic tool length measurement"},
-    // G31.1-G31.3: simulated where the dialect has their parameters.
-    {311, Kind::kNotSimulated, Cycle::kNone, "multi-step skip on this control"},
-    {312, Kind::kNotSimulated, Cycle::kNone, "multi-step skip on this control"},
-    {313, Kind::kNotSimulated, Cycle::kNone, "multi-step skip on this control"},
-    {682, Kind::kNotSimulated, Cycle::kNone, "tilted working plane command"},
-    {434, Kind::kNotSimulated, Cycle::kNone, "tool centre point control"},
-    {120, Kind::kNotSimulated, Cycle::kNone, "circle cutting (CW)"},
-    {130, Kind::kNotSimulated, Cycle::kNone, "circle cutting (CCW)"},
-    {600, Kind::kNotSimulated, Cycle::kNone, "single direction positioning"},
-    // G103: only where the dialect has it (haas.toml block_lookahead_g103).
-    {1030, Kind::kLookahead, Cycle::kNone, "block look-ahead limit"},
-};
-
-const MillCode* find(int code) {
-  for (const auto& c : kMillCodes) {
-    if (c.code == code) return &c;
-  }
-  return nullptr;
-}
-
 // G37 (B-63944EN "Automatic tool length measurement"): parameters 6241 the
 // measurement feed, 6251 gamma (the rapid approach ends gamma before the
 // measuring position), 6254 epsilon (the signal must come within epsilon of
@@ -108,10 +42,9 @@ constexpr MeasureSignal kMeasureSignals[] = {
 // Most pecks of one G73/G83 hole (see canned_cycle).
 constexpr double kMaxPecks = 10000;
 
-std::string name(int code) {
-  // As the manuals write them: G05.1, G08, G12.1.
-  return std::string(code < 100 ? "G0" : "G") + std::to_string(code / 10) +
-         (code % 10 ? "." + std::to_string(code % 10) : "");
+// As the manuals write them: G05.1, G08, G12.1.
+std::string name(GCode code) {
+  return code_name(code, CodeStyle::kManual);
 }
 
 // A value without decimal point in an address that is not a length: in
@@ -122,54 +55,59 @@ double scaled_word(const WordVal& w, double increment, bool calculator) {
 
 }  // namespace
 
-// A G code that the core table does not hold. Returns false when the code
-// is not a code of the mill here either (the caller raises the improper G
-// code alarm).
-Flow<bool> Interpreter::Impl::mill_code(int code, SourceLoc at, MillRequest& req) const {
-  const MillCode* c = find(code);
-  if (c == nullptr || mc.lathe()) return false;
-  if (code >= 311 && code <= 313 && dialect.param(kSkipStepParam) != nullptr) {
-    // Multi-step skip function 1: the dialect has its parameters
-    // (mitsubishi.toml); a G31 whose signals and feed come from them.
-    req.skip_step = code - 310;
-    return true;
-  }
-  // Mitsubishi's G37.1 (M700V/M70V manual 15.1): only where the dialect
-  // defines its TLM parameter 8004 (mitsubishi.toml); elsewhere no code.
-  if (code == 371 && dialect.param(kG37_1SpeedParam) == nullptr) return false;
-  if (code == 544 && dialect.param(kSettingErrorParam) == nullptr) return false;
-  if (code == 370 && dialect.param(kG37EpsilonParam) != nullptr) {
-    req.g37 = true;  // the dialect has G37's parameters (fanuc.toml)
-    return true;
-  }
-  switch (c->kind) {
-    case Kind::kCycle:
-      req.cycle = c->cycle;
+// A code of the mill beyond the modal groups and one-shot actions (its
+// handler kind in the code table). Returns false when the code is not a
+// code of this control after all (the caller raises the improper G code
+// alarm).
+Flow<bool> Interpreter::Impl::mill_code(const CodeDef& def, SourceLoc at, MillRequest& req) const {
+  const GCode code = def.code;
+  switch (def.handler) {
+    case Handler::kSkipStep:
+      if (dialect.param(kSkipStepParam) == nullptr) break;
+      // Multi-step skip function 1: the dialect has its parameters
+      // (mitsubishi.toml); a G31 whose signals and feed come from them.
+      req.skip_step = code.decimal();
       return true;
-    case Kind::kFrame:
-      if (code == 150 || code == 160) {
+    case Handler::kG37_1:
+      // Mitsubishi's G37.1 (M700V/M70V manual 15.1): only where the dialect
+      // defines its TLM parameter 8004 (mitsubishi.toml); elsewhere no code.
+      if (dialect.param(kG37_1SpeedParam) == nullptr) return false;
+      break;
+    case Handler::kG37:
+      if (dialect.param(kG37EpsilonParam) == nullptr) break;
+      req.g37 = true;  // the dialect has G37's parameters (fanuc.toml)
+      return true;
+    case Handler::kCycle:
+      req.cycle = def.cycle;
+      return true;
+    case Handler::kFrame:
+      if (def.frame == FrameCode::kSettingError && dialect.param(kSettingErrorParam) == nullptr) {
+        return false;
+      }
+      if (def.frame == FrameCode::kPolar || def.frame == FrameCode::kPolarCancel) {
         // Group 17: changes only how X and Y are read, from this block on.
-        req.polar = code == 160;
+        req.polar = def.frame == FrameCode::kPolar;
         return true;
       }
-      if (req.frame_code != 0) {
-        return fail(AlarmId::kGCodeConflict, name(req.frame_code) + " and " + name(code), at);
+      if (req.frame != nullptr) {
+        return fail(AlarmId::kGCodeConflict, name(req.frame->code) + " and " + name(code), at);
       }
-      req.frame_code = code;
+      req.frame = &def;
       req.frame_at = at;
       return true;
-    case Kind::kNoEffect:
-      req.no_effect = name(code) + " " + c->what;
+    case Handler::kNoEffect:
+      req.no_effect = name(code) + " " + def.summary;
       return true;
-    case Kind::kNotSimulated:
-      return fail(AlarmId::kNotSimulated,
-                  name(code) + " " + c->what + " is not simulated by skipnc", at);
-    case Kind::kLookahead:
-      if (!dialect.sw.block_lookahead_g103) return false;
+    case Handler::kLookahead:
       req.lookahead = true;
       return true;
+    default:
+      break;
   }
-  return false;
+  // kNotSimulated, and the dialect-dependent codes where the dialect has
+  // not their parameters.
+  return fail(AlarmId::kNotSimulated,
+              name(code) + " " + def.summary + " is not simulated by skipnc", at);
 }
 
 // G103 Pn (Haas "G103 Limit Block Buffering"): look-ahead limited to n
@@ -192,30 +130,112 @@ Flow<void> Interpreter::Impl::set_lookahead(const Words& words) {
   return {};
 }
 
+namespace {
+
+// Where the block's frame codes start from: the present position in the
+// work system and in the program frame, and the block's X Y Z words.
+struct FrameWords {
+  const Interpreter::Impl& in;
+  const Words& words;
+  std::array<int, 3> xyz;
+  xform::Point here_work, here;
+  FrameWords(const Interpreter::Impl& impl, const Words& w)
+      : in(impl),
+        words(w),
+        xyz{impl.axis_of_letter['X' - 'A'], impl.axis_of_letter['Y' - 'A'],
+            impl.axis_of_letter['Z' - 'A']} {
+    for (std::size_t i = 0; i < 3; ++i) {
+      here_work[i] = xyz[i] >= 0 ? impl.work_of(xyz[i], impl.pos[xyz[i]]) : 0.0;
+    }
+    here = xform::to_program(impl.frame, here_work);
+  }
+  // The word of X, Y or Z (i = 0..2), else `fallback`.
+  double word(int i, double fallback) const {
+    if (xyz[static_cast<std::size_t>(i)] < 0) return fallback;
+    const char c = "XYZ"[i];
+    return words.has(c) ? in.word_length(words.at(c), false) : fallback;
+  }
+};
+
+// G68: rotation about X Y (or the present position) by R.
+Flow<void> frame_rotation(Interpreter::Impl& in, const FrameWords& fw, const MillRequest& req,
+                          xform::Transform& next) {
+  const Words& words = fw.words;
+  if (in.frame.setting_error()) {
+    return fail(AlarmId::kNotSimulated, "G68 without I J K under G54.4 is not simulated by skipnc",
+                req.frame_at);
+  }
+  if (in.modal.plane != PlaneSel::kXY) {
+    return fail(AlarmId::kNotSimulated,
+                "G68 in the G18/G19 plane is not simulated by skipnc (G17 only)", req.frame_at);
+  }
+  // The centre: X Y (always absolute), else the present position; in
+  // G51 mode it is scaled too (B-63944EN "Scaling and coordinate system
+  // rotation").
+  xform::Transform before_rotation = in.frame;
+  before_rotation.rotating = false;
+  const xform::Point c =
+      words.has('X') || words.has('Y')
+          ? xform::to_work(before_rotation, {fw.word(0, fw.here[0]), fw.word(1, fw.here[1]), 0})
+          : fw.here_work;
+  double angle = in.params.get(config::param::kRotationAngle) * 0.001;
+  if (words.has('R')) {
+    angle = scaled_word(words.at('R'), 0.001, in.params.bit(config::param::kCalculatorDecimal));
+    if (in.params.bit(config::param::kRotationIncremental) &&
+        in.modal.distance == Distance::kIncremental) {
+      angle += in.frame.rotating ? in.rotation_angle : 0.0;
+    }
+  }
+  next.rotating = true;
+  next.angle_deg = angle;
+  next.rotation_center = {c[0], c[1]};
+  in.rotation_angle = angle;
+  return {};
+}
+
+// G51: magnification P (or I J K per axis) about X Y Z.
+Flow<void> frame_scaling(const Interpreter::Impl& in, const FrameWords& fw, const MillRequest& req,
+                         xform::Transform& next) {
+  const Words& words = fw.words;
+  if (in.frame.conversions() > 0) {
+    return fail(AlarmId::kNotSimulated, "G51 under G68 I J K is not simulated by skipnc",
+                req.frame_at);
+  }
+  const double inc = in.params.bit(config::param::kScalingFine) ? 0.00001 : 0.001;
+  const bool calc = in.params.bit(config::param::kCalculatorDecimal);
+  double all = in.params.get(config::param::kMagnification) * inc;
+  if (words.has('P')) all = scaled_word(words.at('P'), inc, calc);
+  std::array<double, 3> f{all, all, all};
+  for (int i = 0; i < 3; ++i) {
+    const char c = "IJK"[i];
+    if (words.has(c)) f[static_cast<std::size_t>(i)] = scaled_word(words.at(c), inc, calc);
+  }
+  for (double v : f) {
+    if (v == 0.0 || !std::isfinite(v)) {
+      return fail(AlarmId::kBadValue, "G51 magnification 0", req.frame_at);
+    }
+  }
+  next.scale = f;
+  next.scale_center = {fw.word(0, fw.here[0]), fw.word(1, fw.here[1]), fw.word(2, fw.here[2])};
+  return {};
+}
+
+}  // namespace
+
 // G68 G69 G50 G51 G50.1 G51.1, after the block's modes are committed.
 // Returns true when the block's axis words were the mode's data (no move).
 Flow<bool> Interpreter::Impl::apply_frame_code(const Words& words, const MillRequest& req) {
-  const int x = axis_of_letter['X' - 'A'], y = axis_of_letter['Y' - 'A'],
-            z = axis_of_letter['Z' - 'A'];
-  const std::array<int, 3> xyz{x, y, z};
-  const xform::Point here_work{x >= 0 ? work_of(x, pos[x]) : 0.0, y >= 0 ? work_of(y, pos[y]) : 0.0,
-                               z >= 0 ? work_of(z, pos[z]) : 0.0};
-  const xform::Point here = xform::to_program(frame, here_work);
-  auto word = [&](int i, double fallback) {
-    if (xyz[static_cast<std::size_t>(i)] < 0) return fallback;
-    const char c = "XYZ"[i];
-    return words.has(c) ? word_length(words.at(c), false) : fallback;
-  };
+  const FrameWords fw(*this, words);
   xform::Transform next = frame;
   bool consumed = false;
-  switch (req.frame_code) {
-    case 544: {
+  switch (req.frame != nullptr ? req.frame->frame : FrameCode::kNone) {
+    case FrameCode::kSettingError: {
       auto s = setting_error(words, req);  // conversion_3d.cpp
       SKIPNC_TRY(s);
       frame = *s;
       return true;
     }
-    case 690:
+    case FrameCode::kRotationCancel:
       next.rotating = false;
       if (frame.spatial) {  // G69 ends both 3-D conversions too, not G54.4
         xform::Spatial s = *frame.spatial;
@@ -223,80 +243,33 @@ Flow<bool> Interpreter::Impl::apply_frame_code(const Words& words, const MillReq
         next = xform::with_spatial(next, s);
       }
       break;
-    case 680: {
+    case FrameCode::kRotation:
       if (words.has('I') || words.has('J') || words.has('K') || frame.conversions() > 0) {
-        auto k = conversion_3d(words, req, here);  // conversion_3d.cpp
+        auto k = conversion_3d(words, req, fw.here);  // conversion_3d.cpp
         SKIPNC_TRY(k);
         frame = *k;
         return true;
       }
-      if (frame.setting_error()) {
-        return fail(AlarmId::kNotSimulated,
-                    "G68 without I J K under G54.4 is not simulated by skipnc", req.frame_at);
-      }
-      if (modal.plane != PlaneSel::kXY) {
-        return fail(AlarmId::kNotSimulated,
-                    "G68 in the G18/G19 plane is not simulated by skipnc (G17 only)", req.frame_at);
-      }
-      // The centre: X Y (always absolute), else the present position; in
-      // G51 mode it is scaled too (B-63944EN "Scaling and coordinate system
-      // rotation").
-      xform::Transform before_rotation = frame;
-      before_rotation.rotating = false;
-      const xform::Point c =
-          words.has('X') || words.has('Y')
-              ? xform::to_work(before_rotation, {word(0, here[0]), word(1, here[1]), 0})
-              : here_work;
-      double angle = params.get(config::param::kRotationAngle) * 0.001;
-      if (words.has('R')) {
-        angle = scaled_word(words.at('R'), 0.001, params.bit(config::param::kCalculatorDecimal));
-        if (params.bit(config::param::kRotationIncremental) &&
-            modal.distance == Distance::kIncremental) {
-          angle += frame.rotating ? rotation_angle : 0.0;
-        }
-      }
-      next.rotating = true;
-      next.angle_deg = angle;
-      next.rotation_center = {c[0], c[1]};
-      rotation_angle = angle;
+      SKIPNC_TRY(frame_rotation(*this, fw, req, next));
       consumed = true;
       break;
-    }
-    case 500:
+    case FrameCode::kScalingCancel:
       next.scale = {1.0, 1.0, 1.0};
       break;
-    case 510: {
-      if (frame.conversions() > 0)
-        return fail(AlarmId::kNotSimulated, "G51 under G68 I J K is not simulated by skipnc",
-                    req.frame_at);
-      const double inc = params.bit(config::param::kScalingFine) ? 0.00001 : 0.001;
-      const bool calc = params.bit(config::param::kCalculatorDecimal);
-      double all = params.get(config::param::kMagnification) * inc;
-      if (words.has('P')) all = scaled_word(words.at('P'), inc, calc);
-      std::array<double, 3> f{all, all, all};
-      for (int i = 0; i < 3; ++i) {
-        const char c = "IJK"[i];
-        if (words.has(c)) f[static_cast<std::size_t>(i)] = scaled_word(words.at(c), inc, calc);
-      }
-      for (double v : f) {
-        if (v == 0.0 || !std::isfinite(v)) {
-          return fail(AlarmId::kBadValue, "G51 magnification 0", req.frame_at);
-        }
-      }
-      next.scale = f;
-      next.scale_center = {word(0, here[0]), word(1, here[1]), word(2, here[2])};
+    case FrameCode::kScaling:
+      SKIPNC_TRY(frame_scaling(*this, fw, req, next));
       consumed = true;
       break;
-    }
-    case 511:
-    case 501:
-      if (req.frame_code == 511 && frame.conversions() > 0)
+    case FrameCode::kMirror:
+    case FrameCode::kMirrorCancel:
+      if (req.frame->frame == FrameCode::kMirror && frame.conversions() > 0) {
         return fail(AlarmId::kNotSimulated, "G51.1 under G68 I J K is not simulated by skipnc",
                     req.frame_at);
+      }
       for (int i = 0; i < 3; ++i) {
-        if (xyz[static_cast<std::size_t>(i)] < 0 || !words.has("XYZ"[i])) continue;
-        next.mirror[static_cast<std::size_t>(i)] = req.frame_code == 511;
-        next.mirror_center[static_cast<std::size_t>(i)] = word(i, 0.0);
+        if (fw.xyz[static_cast<std::size_t>(i)] < 0 || !words.has("XYZ"[i])) continue;
+        next.mirror[static_cast<std::size_t>(i)] = req.frame->frame == FrameCode::kMirror;
+        next.mirror_center[static_cast<std::size_t>(i)] = fw.word(i, 0.0);
       }
       consumed = true;
       break;
@@ -640,6 +613,127 @@ Flow<void> Interpreter::Impl::finish_g37(const SyncState& s) {
   return set_tool_length(none, modal.length);
 }
 
+namespace {
+
+// The hole data of a canned cycle block (R Z Q P) into `d`; returns the
+// repeats (K or L, else 1).
+Flow<int> read_hole_data(const Interpreter::Impl& in, const Words& words, cycles::Data& d) {
+  if (words.has('R')) {
+    d.r = in.word_length(words.at('R'), false);
+    d.have_r = true;
+  }
+  if (words.has('Z')) {
+    d.z = in.word_length(words.at('Z'), false);
+    d.have_z = true;
+  }
+  if (words.has('Q')) d.q = std::fabs(in.word_length(words.at('Q'), false));
+  if (words.has('P')) {
+    const WordVal& p = words.at('P');
+    if (in.lang->rules.dwell_p_seconds) {
+      d.p_ms = p.value * 1000.0;  // LinuxCNC: the dwell P is in seconds
+    } else if (p.has_point) {
+      // As G04 P: milliseconds, written without a decimal point (PS0007).
+      return fail(AlarmId::kBadDecimalPoint,
+                  "the dwell P of a canned cycle is in milliseconds, without decimal point",
+                  in.loc(p.column));
+    } else {
+      d.p_ms = p.value;
+    }
+  }
+  int repeats = 1;
+  const char kw = words.has('K') ? 'K' : words.has('L') ? 'L' : 0;
+  if (kw != 0) {
+    const double k = words.at(kw).value;
+    if (k != std::trunc(k) || k < 0 || k > 9999) {
+      return fail(AlarmId::kBadValue,
+                  std::string(1, kw) + std::to_string(k) + ": repeats are 0-9999",
+                  in.loc(words.at(kw).column));
+    }
+    repeats = static_cast<int>(k);
+  }
+  return repeats;
+}
+
+// The moves of one hole, through the frame, as commands.
+void emit_hole(Interpreter::Impl& in, const cycles::Hole& h, const AxisVec& base,
+               CommandSink& out) {
+  const int x = in.axis_of_letter['X' - 'A'], y = in.axis_of_letter['Y' - 'A'],
+            z = in.axis_of_letter['Z' - 'A'];
+  const bool linear = in.params.bit(config::param::kLinearRapid);
+  const double feed = in.feed_mm_per_min();
+  for (const cycles::Move& m : cycles::hole_moves(h)) {
+    const xform::Point w = xform::to_work(in.frame, m.to);
+    AxisVec mp = base;
+    if (x >= 0) mp[x] = in.machine_of(x, w[0]);
+    if (y >= 0) mp[y] = in.machine_of(y, w[1]);
+    mp[z] = in.machine_of(z, w[2]);
+    switch (m.kind) {
+      case cycles::MoveKind::kRapid:
+        in.emit(out, canon::Rapid{mp, linear});
+        in.pos = mp;
+        break;
+      case cycles::MoveKind::kFeed:
+        in.emit(out, canon::Feed{mp, feed, false});
+        in.pos = mp;
+        break;
+      case cycles::MoveKind::kDwell:
+        in.emit(out, canon::Dwell{m.seconds});
+        break;
+      case cycles::MoveKind::kSpindle:
+        in.emit(out, canon::Spindle{in.modal.spindle, m.spindle_dir});
+        break;
+      case cycles::MoveKind::kOrient:
+        in.emit(out, canon::MCode{19});
+        break;
+    }
+  }
+  in.motion_since_sync = true;
+}
+
+// The hole of the block's position `target`, from the present position.
+Flow<cycles::Hole> make_hole(const Interpreter::Impl& in, const Words& words,
+                             const AxisVec& target) {
+  const int x = in.axis_of_letter['X' - 'A'], y = in.axis_of_letter['Y' - 'A'],
+            z = in.axis_of_letter['Z' - 'A'];
+  auto program_point = [&](const AxisVec& m) {
+    xform::Point w{x >= 0 ? in.work_of(x, m[x]) : 0.0, y >= 0 ? in.work_of(y, m[y]) : 0.0,
+                   in.work_of(z, m[z])};
+    return xform::to_program(in.frame, w);
+  };
+  const cycles::Data& d = in.cycle_data;
+  const ModalState& modal = in.modal;
+  cycles::Hole h;
+  h.kind = modal.cycle;
+  h.ret = modal.ret;
+  h.from = program_point(in.pos);
+  const xform::Point hole = program_point(target);
+  h.at = {hole[0], hole[1]};
+  const cycles::Levels lv = cycles::resolve_levels(d, modal.distance == Distance::kIncremental);
+  if (cycles::pecks(modal.cycle) && std::fabs(lv.bottom - lv.r) / d.q > kMaxPecks) {
+    // A bound of skipnc's (the control has none): a Q far smaller than the
+    // depth would make millions of moves from one block.
+    return fail(AlarmId::kBadValue,
+                "Q" + std::to_string(d.q) + " makes more than " +
+                    std::to_string(static_cast<int>(kMaxPecks)) + " pecks in one hole",
+                words.has('Q') ? in.loc(words.at('Q').column) : in.loc(in.cur_col));
+  }
+  h.initial = d.initial;
+  h.r = lv.r;
+  h.bottom = lv.bottom;
+  h.q = d.q;
+  h.dwell_s = cycles::uses_p(modal.cycle) ? d.p_ms / 1000.0 : 0.0;
+  h.peck_clearance = in.params.get(modal.cycle == Cycle::kG73 ? 5114 : 5115) / in.unit_mm();
+  h.shift_dir =
+      cycles::shift_direction(static_cast<int>(in.params.get(config::param::kShiftDirection)) >> 4);
+  h.spindle_dir = modal.spindle_dir != 0 ? modal.spindle_dir : 1;
+  // LinuxCNC's levels (cycles.hpp): rise to the clearance level first,
+  // G98 to the higher of R and the start, taps feeding out to it.
+  h.linuxcnc_levels = in.lang->rules.cycle_levels_linuxcnc;
+  return h;
+}
+
+}  // namespace
+
 // One block in canned cycle mode: the hole data are updated from the block
 // and each hole (K repeats) is drilled. The moves are made in the program
 // frame and go through the frame (G68, G51, G51.1) like any move.
@@ -656,39 +750,8 @@ Flow<Step> Interpreter::Impl::canned_cycle(const Words& words, CommandSink& out)
                 at);
   }
   cycles::Data& d = cycle_data;
-  if (words.has('R')) {
-    d.r = word_length(words.at('R'), false);
-    d.have_r = true;
-  }
-  if (words.has('Z')) {
-    d.z = word_length(words.at('Z'), false);
-    d.have_z = true;
-  }
-  if (words.has('Q')) d.q = std::fabs(word_length(words.at('Q'), false));
-  if (words.has('P')) {
-    const WordVal& p = words.at('P');
-    if (lang->rules.dwell_p_seconds) {
-      d.p_ms = p.value * 1000.0;  // LinuxCNC: the dwell P is in seconds
-    } else if (p.has_point) {
-      // As G04 P: milliseconds, written without a decimal point (PS0007).
-      return fail(AlarmId::kBadDecimalPoint,
-                  "the dwell P of a canned cycle is in milliseconds, without decimal point",
-                  loc(p.column));
-    } else {
-      d.p_ms = p.value;
-    }
-  }
-  int repeats = 1;
-  const char kw = words.has('K') ? 'K' : words.has('L') ? 'L' : 0;
-  if (kw != 0) {
-    const double k = words.at(kw).value;
-    if (k != std::trunc(k) || k < 0 || k > 9999) {
-      return fail(AlarmId::kBadValue,
-                  std::string(1, kw) + std::to_string(k) + ": repeats are 0-9999",
-                  loc(words.at(kw).column));
-    }
-    repeats = static_cast<int>(k);
-  }
+  auto repeats = read_hole_data(*this, words, d);
+  SKIPNC_TRY(repeats);
   if (cycles::pecks(modal.cycle) && !(d.q > 0.0)) {
     return fail(AlarmId::kCycleNoQ, "G73/G83 without a peck depth Q", at);
   }
@@ -701,89 +764,18 @@ Flow<Step> Interpreter::Impl::canned_cycle(const Words& words, CommandSink& out)
   Words position = words;
   position.slot('Z').reset();
   position.letters &= ~(1u << ('Z' - 'A'));
-  const int x = axis_of_letter['X' - 'A'], y = axis_of_letter['Y' - 'A'];
-  auto program_point = [&](const AxisVec& m) {
-    xform::Point w{x >= 0 ? work_of(x, m[x]) : 0.0, y >= 0 ? work_of(y, m[y]) : 0.0,
-                   work_of(z, m[z])};
-    return xform::to_program(frame, w);
-  };
-  const bool linear = params.bit(config::param::kLinearRapid);
-  const double feed = feed_mm_per_min();
-  for (int k = 0; k < repeats; ++k) {
+  for (int k = 0; k < *repeats; ++k) {
     AxisVec target;
     AxisMask moved;
     auto t = axis_targets(position, false, target, moved);
     SKIPNC_TRY(t);
-    cycles::Hole h;
-    h.kind = modal.cycle;
-    h.ret = modal.ret;
-    h.from = program_point(pos);
-    const xform::Point hole = program_point(target);
-    h.at = {hole[0], hole[1]};
+    auto h = make_hole(*this, words, target);
+    SKIPNC_TRY(h);
     // Other axes of the block (A, B, ...) are positioned with X and Y.
-    AxisVec base = target;
-    const cycles::Levels lv = cycles::resolve_levels(d, modal.distance == Distance::kIncremental);
-    if (cycles::pecks(modal.cycle) && std::fabs(lv.bottom - lv.r) / d.q > kMaxPecks) {
-      // A bound of skipnc's (the control has none): a Q far smaller than the
-      // depth would make millions of moves from one block.
-      return fail(AlarmId::kBadValue,
-                  "Q" + std::to_string(d.q) + " makes more than " +
-                      std::to_string(static_cast<int>(kMaxPecks)) + " pecks in one hole",
-                  words.has('Q') ? loc(words.at('Q').column) : at);
-    }
-    h.initial = d.initial;
-    h.r = lv.r;
-    h.bottom = lv.bottom;
-    h.q = d.q;
-    h.dwell_s = cycles::uses_p(modal.cycle) ? d.p_ms / 1000.0 : 0.0;
-    h.peck_clearance = params.get(modal.cycle == Cycle::kG73 ? 5114 : 5115) / unit_mm();
-    h.shift_dir =
-        cycles::shift_direction(static_cast<int>(params.get(config::param::kShiftDirection)) >> 4);
-    h.spindle_dir = modal.spindle_dir != 0 ? modal.spindle_dir : 1;
-    // LinuxCNC's levels (cycles.hpp): rise to the clearance level first,
-    // G98 to the higher of R and the start, taps feeding out to it.
-    h.linuxcnc_levels = lang->rules.cycle_levels_linuxcnc;
-    for (const cycles::Move& m : cycles::hole_moves(h)) {
-      const xform::Point w = xform::to_work(frame, m.to);
-      AxisVec mp = base;
-      if (x >= 0) mp[x] = machine_of(x, w[0]);
-      if (y >= 0) mp[y] = machine_of(y, w[1]);
-      mp[z] = machine_of(z, w[2]);
-      switch (m.kind) {
-        case cycles::MoveKind::kRapid:
-          emit(out, canon::Rapid{mp, linear});
-          pos = mp;
-          break;
-        case cycles::MoveKind::kFeed:
-          emit(out, canon::Feed{mp, feed, false});
-          pos = mp;
-          break;
-        case cycles::MoveKind::kDwell:
-          emit(out, canon::Dwell{m.seconds});
-          break;
-        case cycles::MoveKind::kSpindle:
-          emit(out, canon::Spindle{modal.spindle, m.spindle_dir});
-          break;
-        case cycles::MoveKind::kOrient:
-          emit(out, canon::MCode{19});
-          break;
-      }
-    }
-    motion_since_sync = true;
+    emit_hole(*this, *h, target, out);
   }
   last_cut_feed = modal.feed;
   return Step::kContinue;
-}
-
-}  // namespace skipnc::interp
-
-namespace skipnc::interp {
-
-bool g_code_without_effect(int code) noexcept {
-  for (const auto& c : kMillCodes) {
-    if (c.code == code) return c.kind == Kind::kNoEffect;
-  }
-  return false;
 }
 
 }  // namespace skipnc::interp

@@ -2,59 +2,73 @@
 
 namespace skipnc::interp {
 
-int g_code_of_group(const ModalState& m, int group) noexcept {
+namespace {
+
+// The lathe's groups that differ from the mill's (G-code system A).
+std::optional<GCode> lathe_code_of_group(const ModalState& m, int group, bool& differs) noexcept {
+  // G-code system A: G96/G97 are group 02, G98/G99 group 05, the plane
+  // group 16; there is no G90/G91 and no return-level group.
+  differs = true;
+  switch (group) {
+    case 2:
+      return GCode(m.spindle_mode == SpindleMode::kSurfaceSpeed ? 96 : 97);
+    case 3:
+    case 8:
+    case 10:
+      return std::nullopt;
+    case 5:
+      return GCode(m.feed_mode == FeedMode::kPerMinute ? 98 : 99);
+    case 16:
+      return GCode(17 + static_cast<int>(m.plane));
+    default:
+      differs = false;
+      return std::nullopt;
+  }
+}
+
+}  // namespace
+
+std::optional<GCode> g_code_of_group(const ModalState& m, int group) noexcept {
   if (m.lathe) {
-    // G-code system A: G96/G97 are group 02, G98/G99 group 05, the plane
-    // group 16; there is no G90/G91 and no return-level group.
-    switch (group) {
-      case 2:
-        return m.spindle_mode == SpindleMode::kSurfaceSpeed ? 960 : 970;
-      case 3:
-      case 8:
-      case 10:
-        return 0;
-      case 5:
-        return m.feed_mode == FeedMode::kPerMinute ? 980 : 990;
-      case 16:
-        return 170 + 10 * static_cast<int>(m.plane);
-      default:
-        break;
-    }
+    bool differs = false;
+    auto code = lathe_code_of_group(m, group, differs);
+    if (differs) return code;
   }
   switch (group) {
     case 1: {
       if (m.motion == Motion::kProbe) return m.probe;
-      static constexpr int k[] = {0, 10, 20, 30, 900};
-      return k[static_cast<int>(m.motion)];
+      static constexpr int k[] = {0, 1, 2, 3, 90};
+      return GCode(k[static_cast<int>(m.motion)]);
     }
     case 2:
-      return 170 + 10 * static_cast<int>(m.plane);
+      return GCode(17 + static_cast<int>(m.plane));
     case 3:
-      return m.distance == Distance::kAbsolute ? 900 : 910;
+      return GCode(m.distance == Distance::kAbsolute ? 90 : 91);
     case 5:
-      return m.feed_mode == FeedMode::kPerMinute ? 940 : 950;
+      return GCode(m.feed_mode == FeedMode::kPerMinute ? 94 : 95);
     case 6:
-      return m.units == Units::kInch ? 200 : 210;
+      return GCode(m.units == Units::kInch ? 20 : 21);
     case 7:
-      return 400 + 10 * static_cast<int>(m.cutter);
+      return GCode(40 + static_cast<int>(m.cutter));
     case 8: {
-      static constexpr int k[] = {490, 430, 440};
-      return k[static_cast<int>(m.length)];
+      static constexpr int k[] = {49, 43, 44};
+      return GCode(k[static_cast<int>(m.length)]);
     }
     case 9: {
-      static constexpr int k[] = {800, 730, 740, 760, 810, 820, 830, 840, 850, 860, 870, 880, 890};
-      return k[static_cast<int>(m.cycle)];
+      static constexpr int k[] = {80, 73, 74, 76, 81, 82, 83, 84, 85, 86, 87, 88, 89};
+      return GCode(k[static_cast<int>(m.cycle)]);
     }
     case 10:
-      return m.ret == ReturnLevel::kInitial ? 980 : 990;
+      return GCode(m.ret == ReturnLevel::kInitial ? 98 : 99);
     case 12:
-      return m.modal_macro ? 660 : 670;
+      return GCode(m.modal_macro ? 66 : 67);
     case 14:
-      return m.work > 6 && m.work <= 9 ? 584 + m.work : 530 + 10 * m.work;  // G59.1-G59.3
+      // G59.1-G59.3 after G54-G59.
+      return m.work > 6 && m.work <= 9 ? GCode(59, m.work - 6) : GCode(53 + m.work);
     case 15:
-      return m.path == PathMode::kExactStop ? 610 : 640;
+      return GCode(m.path == PathMode::kExactStop ? 61 : 64);
     default:
-      return 0;
+      return std::nullopt;
   }
 }
 

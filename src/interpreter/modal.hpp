@@ -3,9 +3,11 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 
 #include "canon/canon.hpp"
 #include "core/axes.hpp"
+#include "core/nc_code.hpp"
 
 namespace skipnc::interp {
 
@@ -62,12 +64,13 @@ struct ModalState {
   int h = 0;                       // active H number (length offset)
   int d = 0;                       // active D number (radius offset)
   int last_m = 0;
-  int probe = 0;                  // G38.n as 382..385 while motion is kProbe
+  GCode probe;                    // G38.2-G38.5 while motion is kProbe
   bool arc_ijk_absolute = false;  // G90.1 (RS274NGC): I J K are the centre, not an offset
   int seq = 0;                    // last N
 };
 
 // Fanuc's modal information codes (#4001-#4022) for the state.
-int g_code_of_group(const ModalState& m, int group) noexcept;
+// Nothing for a group the state does not model.
+std::optional<GCode> g_code_of_group(const ModalState& m, int group) noexcept;
 
 }  // namespace skipnc::interp

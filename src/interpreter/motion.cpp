@@ -107,7 +107,7 @@ Flow<Step> Interpreter::Impl::motion(const Words& words, CommandSink& out, bool 
   }
   if (skip) return skip_block(words, target, moved, out);
   if (modal.motion != Motion::kRapid) last_cut_feed = modal.feed;
-  const bool exact = modal.path == PathMode::kExactStop || words.has_g(90);
+  const bool exact = modal.path == PathMode::kExactStop || words.has_g(GCode(9));
   switch (modal.motion) {
     case Motion::kRapid:
       emit(out, canon::Rapid{target, params.bit(config::param::kLinearRapid)});
@@ -296,7 +296,7 @@ Flow<void> Interpreter::Impl::arc(const Words& words, const AxisVec& target, Com
   a.plane = pl;
   a.ccw = g.ccw;
   a.feed_mm_per_min = feed_mm_per_min();
-  a.exact_stop = modal.path == PathMode::kExactStop || words.has_g(90);
+  a.exact_stop = modal.path == PathMode::kExactStop || words.has_g(GCode(9));
   emit(out, a);
   return {};
 }

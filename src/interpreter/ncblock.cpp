@@ -76,11 +76,11 @@ Flow<void> Interpreter::Impl::collect_words(Words& words) {
       if (words.g_count == static_cast<int>(words.g.size())) {
         return fail(AlarmId::kGCodeConflict, "too many G codes in one block", loc(w.column));
       }
-      const double code10 = std::round(v.value * 10.0);
-      if (std::fabs(v.value * 10.0 - code10) > 1e-6 || code10 < 0 || code10 > 9999) {
+      const std::optional<GCode> code = GCode::of_value(v.value);
+      if (!code) {
         return fail(AlarmId::kUnknownGCode, "G" + fmt::format("{}", v.value), loc(w.column));
       }
-      words.g[static_cast<std::size_t>(words.g_count)] = static_cast<int>(code10);
+      words.g[static_cast<std::size_t>(words.g_count)] = *code;
       words.g_col[static_cast<std::size_t>(words.g_count++)] = w.column;
       continue;
     }

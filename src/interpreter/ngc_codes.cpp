@@ -20,56 +20,50 @@
 
 namespace skipnc::interp {
 
-Flow<void> Interpreter::Impl::ngc_action(const Words& words, int code, CommandSink& out) {
-  (void)out;
+Flow<void> Interpreter::Impl::ngc_action(const Words& words, GCode code) {
   auto axis_param = [&](int base, int i) {
     const char c = axis_letter[static_cast<std::size_t>(i)];
     const int j = ngc_axis_index(c);
     return j < 0 ? -1 : base + j;
   };
-  switch (code) {
-    case 281:
-    case 301: {
-      const int base = code == 281 ? 5161 : 5181;
-      for (int i = 0; i < axis_count; ++i) {
-        const int n = axis_param(base, i);
-        if (n > 0) vars.set_ngc_param(n, pos[i] / stored_mm());
-      }
-      return {};
+  if (code == GCode(28, 1) || code == GCode(30, 1)) {
+    const int base = code == GCode(28, 1) ? 5161 : 5181;
+    for (int i = 0; i < axis_count; ++i) {
+      const int n = axis_param(base, i);
+      if (n > 0) vars.set_ngc_param(n, pos[i] / stored_mm());
     }
-    case 431: {
-      if (!words.has('Z') || length_axis < 0) {
-        return fail(AlarmId::kBadValue, "G43.1 needs Z, the tool length", loc(cur_col));
-      }
-      const double z = word_length(words.at('Z'), false) * unit_mm();
-      if (auto ok = check_offset(z, "G43.1 Z", loc(words.at('Z').column)); !ok) return ok;
-      length_offset = z;
-      modal.length = LengthComp::kPlus;
-      modal.h = 0;
-      return {};
-    }
-    case 921:
-    case 922:
-      for (int i = 0; i < axis_count; ++i) {
-        g92_shift[i] = 0.0;
-        const int n = axis_param(5211, i);
-        if (code == 921 && n > 0) vars.set_ngc_param(n, 0.0);
-      }
-      if (code == 921) vars.set_ngc_param(5210, 0.0);
-      return {};
-    case 923:
-      for (int i = 0; i < axis_count; ++i) {
-        const int n = axis_param(5211, i);
-        g92_shift[i] = n > 0 ? vars.ngc_param(n) * stored_mm() : 0.0;
-      }
-      vars.set_ngc_param(5210, 1.0);
-      return {};
-    default:
-      break;
+    return {};
   }
-  return fail(AlarmId::kInternal,
-              "no action for G" + std::to_string(code / 10) + "." + std::to_string(code % 10),
-              loc(cur_col));
+  if (code == GCode(43, 1)) {
+    if (!words.has('Z') || length_axis < 0) {
+      return fail(AlarmId::kBadValue, "G43.1 needs Z, the tool length", loc(cur_col));
+    }
+    const double z = word_length(words.at('Z'), false) * unit_mm();
+    if (auto ok = check_offset(z, "G43.1 Z", loc(words.at('Z').column)); !ok) return ok;
+    length_offset = z;
+    modal.length = LengthComp::kPlus;
+    modal.h = 0;
+    return {};
+  }
+  if (code == GCode(92, 1) || code == GCode(92, 2)) {
+    const bool clear = code == GCode(92, 1);
+    for (int i = 0; i < axis_count; ++i) {
+      g92_shift[i] = 0.0;
+      const int n = axis_param(5211, i);
+      if (clear && n > 0) vars.set_ngc_param(n, 0.0);
+    }
+    if (clear) vars.set_ngc_param(5210, 0.0);
+    return {};
+  }
+  if (code == GCode(92, 3)) {
+    for (int i = 0; i < axis_count; ++i) {
+      const int n = axis_param(5211, i);
+      g92_shift[i] = n > 0 ? vars.ngc_param(n) * stored_mm() : 0.0;
+    }
+    vars.set_ngc_param(5210, 1.0);
+    return {};
+  }
+  return fail(AlarmId::kInternal, "no action for " + code_name(code), loc(cur_col));
 }
 
 // G92 in RS274NGC: the offset is also kept in #5211.. and #5210 = 1.

@@ -170,7 +170,7 @@ std::optional<Flow<Value>> Interpreter::Impl::predefined_named(const std::string
       case Motion::kCcwArc:
         return of(30.0);
       case Motion::kProbe:
-        return of(static_cast<double>(modal.probe));
+        return of(static_cast<double>(modal.probe.tenths()));  // 382: G38.2
       default:
         return of(0.0);
     }

@@ -25,9 +25,9 @@ Flow<Step> Interpreter::Impl::probe_block(const Words& words, const AxisVec& tar
   (void)words;
   const SourceLoc at = loc(cur_col);
   const config::Switches& sw = dialect.sw;
-  const int code = modal.probe;
-  const std::string name = "G38." + std::to_string(code - 380);
-  const bool toward = code == 382 || code == 383;
+  const GCode code = modal.probe;
+  const std::string name = code_name(code);
+  const bool toward = code == GCode(38, 2) || code == GCode(38, 3);
   // The block's checks, in LinuxCNC's order (convert_straight_probe).
   if (moved.empty()) return fail(AlarmId::kProbeNoAxis, name + " without an axis word", at);
   if (modal.cutter != CutterComp::kOff) {
@@ -41,7 +41,7 @@ Flow<Step> Interpreter::Impl::probe_block(const Words& words, const AxisVec& tar
   // G38.4 only, grbl for every G38 (error 33): probe_same_point_all.
   bool same = true;
   for (int i = 0; i < axis_count; ++i) same = same && target[i] == pos[i];
-  if (same && (sw.probe_same_point_all || code == 382 || code == 384)) {
+  if (same && (sw.probe_same_point_all || code == GCode(38, 2) || code == GCode(38, 4))) {
     return fail(AlarmId::kProbeTooShort, name + ": the end point is the start point", at);
   }
   pending_skip = PendingSkip{};
@@ -76,15 +76,15 @@ Flow<Step> Interpreter::Impl::probe_block(const Words& words, const AxisVec& tar
   spec.latch_delay_s = 0.0;
   spec.servo_delay_comp = sw.probe_latch_actual;
   spec.locked_stores_command = sw.skip_locked_stores_command;
-  spec.alarm_on_miss = code == 382 || code == 384;
+  spec.alarm_on_miss = code == GCode(38, 2) || code == GCode(38, 4);
   return queue_skip(sk, at, out);
 }
 
 Flow<void> Interpreter::Impl::finish_probe(const SyncState& s) {
   PendingSkip& ps = pending_skip;
-  const int code = ps.g38;
-  const std::string name = "G38." + std::to_string(code - 380);
-  const bool toward = code == 382 || code == 383;
+  const GCode code = *ps.g38;
+  const std::string name = code_name(code);
+  const bool toward = code == GCode(38, 2) || code == GCode(38, 3);
   pos = s.machine_position;
   if (s.active_at_start) {
     return fail(toward ? AlarmId::kProbeTrippedAtStart : AlarmId::kProbeClearAtStart,

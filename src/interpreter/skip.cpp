@@ -32,10 +32,10 @@ std::string upper(std::string s) {
 // G31 is a linear move on every control read (seeds 000-003: "linear
 // interpolation"): arc words in its block are refused, not run straight.
 Flow<void> Interpreter::Impl::refuse_skip_arc(const Words& words, SourceLoc at) const {
-  for (const int g : {20, 30}) {
+  for (const GCode g : {GCode(2), GCode(3)}) {
     if (words.has_g(g)) {
       return fail(AlarmId::kSkipSyntax,
-                  std::string(g == 20 ? "G02" : "G03") +
+                  code_name(g, CodeStyle::kManual) +
                       " cannot be commanded with G31: the skip is a linear move",
                   at);
     }
@@ -65,7 +65,7 @@ skip_rules::BlockWords Interpreter::Impl::skip_words(const Words& words, AxisMas
   b.q = word('Q');
   b.k = word('K');
   if (words.has('F')) b.f_mm_per_min = feed_to_mm_per_min(words.at('F').value);
-  b.g53 = words.has_g(530);
+  b.g53 = words.has_g(GCode(53));
   b.moved = moved;
   b.step = skip_step;
   b.at = at;
@@ -114,7 +114,7 @@ Flow<void> Interpreter::Impl::skip_inputs(const skip_rules::BlockWords& b,
 
 Flow<Step> Interpreter::Impl::skip_block(const Words& words, const AxisVec& target, AxisMask moved,
                                          CommandSink& out) {
-  if (modal.motion == Motion::kProbe && !words.has_g(310)) {
+  if (modal.motion == Motion::kProbe && !words.has_g(GCode(31))) {
     return probe_block(words, target, moved, out);  // probe_g38.cpp
   }
   const SourceLoc at = loc(cur_col);
@@ -157,7 +157,7 @@ Flow<Step> Interpreter::Impl::queue_skip(const canon::Skip& sk, SourceLoc at, Co
   }
   while (!text.empty() && (text.front() == ' ' || text.front() == '\t')) text.remove_prefix(1);
   rec.block = std::string(text);
-  rec.code = pending_skip.g38 != 0 ? "G38." + std::to_string(pending_skip.g38 - 380) : "G31";
+  rec.code = pending_skip.g38 ? code_name(*pending_skip.g38) : "G31";
   rec.kind = spec.kind;
   rec.p = spec.p;
   pending_skip.target = target;
@@ -224,7 +224,7 @@ AxisVec Interpreter::Impl::record_skip(const SyncState& s) {
 // (#5001..), which differs from the latch by the stopping distance.
 Flow<void> Interpreter::Impl::finish_skip(const SyncState& s) {
   PendingSkip& ps = pending_skip;
-  if (ps.g38 != 0) return finish_probe(s);  // probe_g38.cpp
+  if (ps.g38) return finish_probe(s);  // probe_g38.cpp
   const AxisVec latch = record_skip(s);
   const auto& sv = dialect.skip_vars;
   if (sv.success_flag > 0) vars.set(sv.success_flag, Value::of(s.triggered ? 1.0 : 0.0));

@@ -15,27 +15,28 @@ namespace skipnc::interp {
 namespace {
 
 // The G code reported for a modal group this interpreter does not model:
-// the group's power-on state of a Fanuc M-series control. 0: no such group.
-int default_g_of_group(int group) {
+// the group's power-on state of a Fanuc M-series control. Nothing: no such
+// group.
+std::optional<GCode> default_g_of_group(int group) {
   switch (group) {
     case 4:
-      return 220;  // G22 stored stroke check on
+      return GCode(22);  // G22 stored stroke check on
     case 11:
-      return 500;  // G50 scaling off
+      return GCode(50);  // G50 scaling off
     case 13:
-      return 970;  // G97 constant surface speed off
+      return GCode(97);  // G97 constant surface speed off
     case 16:
-      return 690;  // G69 rotation off
+      return GCode(69);  // G69 rotation off
     case 17:
-      return 150;  // G15 polar coordinates off
+      return GCode(15);  // G15 polar coordinates off
     case 18:
-      return 501;  // G50.1 programmable mirror image off
+      return GCode(50, 1);  // G50.1 programmable mirror image off
     case 19:
-      return 401;  // G40.1 normal direction control off
+      return GCode(40, 1);  // G40.1 normal direction control off
     case 21:
-      return 131;  // G13.1 polar coordinate interpolation off
+      return GCode(13, 1);  // G13.1 polar coordinate interpolation off
     default:
-      return 0;
+      return std::nullopt;
   }
 }
 
@@ -262,10 +263,10 @@ Value Interpreter::Impl::read_modal(const sysvar::Range& r, int i) const {
     case sysvar::Id::kModalG: {
       const int group = i + 1;
       if (group == 14 && modal.work > 6) return Value::of(54.1);
-      int code = g_code_of_group(modal, group);
-      if (code == 0 && group != 1) code = default_g_of_group(group);
-      if (code == 0 && group != 1) return Value::null();
-      return Value::of(code / 10.0);
+      std::optional<GCode> code = g_code_of_group(modal, group);
+      if (!code) code = default_g_of_group(group);
+      if (!code) return Value::null();
+      return Value::of(code->value());
     }
     case sysvar::Id::kModalB:
       return Value::of(0.0);

@@ -12,6 +12,7 @@
 
 namespace {
 
+using skipnc::GCode;
 using skipnc::interp::CodeStatus;
 using skipnc::interp::g_code_status;
 
@@ -32,14 +33,14 @@ TEST(CodesDoc, MatchesTheInterpreter) {
 
 // The classes of the page, on codes whose status the issue names.
 TEST(CodesDoc, StatusOfKnownCodes) {
-  EXPECT_EQ(*g_code_status(810, "mill3", "fanuc"), CodeStatus::kSimulated);
-  EXPECT_EQ(*g_code_status(680, "mill3", "fanuc"), CodeStatus::kSimulated);
-  EXPECT_EQ(*g_code_status(51, "mill3", "fanuc"), CodeStatus::kNoEffect);
-  EXPECT_EQ(*g_code_status(131, "mill3", "fanuc"), CodeStatus::kNoEffect);
-  EXPECT_EQ(*g_code_status(401, "mill3", "fanuc"), CodeStatus::kNoEffect);
-  EXPECT_EQ(*g_code_status(121, "mill3", "fanuc"), CodeStatus::kNotSimulated);
-  EXPECT_EQ(*g_code_status(810, "lathe2", "fanuc"), CodeStatus::kImproper);
-  EXPECT_EQ(*g_code_status(777, "mill3", "fanuc"), CodeStatus::kImproper);
+  EXPECT_EQ(*g_code_status(GCode(81), "mill3", "fanuc"), CodeStatus::kSimulated);
+  EXPECT_EQ(*g_code_status(GCode(68), "mill3", "fanuc"), CodeStatus::kSimulated);
+  EXPECT_EQ(*g_code_status(GCode(5, 1), "mill3", "fanuc"), CodeStatus::kNoEffect);
+  EXPECT_EQ(*g_code_status(GCode(13, 1), "mill3", "fanuc"), CodeStatus::kNoEffect);
+  EXPECT_EQ(*g_code_status(GCode(40, 1), "mill3", "fanuc"), CodeStatus::kNoEffect);
+  EXPECT_EQ(*g_code_status(GCode(12, 1), "mill3", "fanuc"), CodeStatus::kNotSimulated);
+  EXPECT_EQ(*g_code_status(GCode(81), "lathe2", "fanuc"), CodeStatus::kImproper);
+  EXPECT_EQ(*g_code_status(GCode(77, 7), "mill3", "fanuc"), CodeStatus::kImproper);
 }
 
 }  // namespace
