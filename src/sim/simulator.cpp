@@ -372,6 +372,8 @@ class RunLoop {
   [[gnu::always_inline]] inline void read_blocks();
   [[gnu::always_inline]] inline void apply_operator_actions();
   [[gnu::always_inline]] inline std::int64_t quiet_periods() const;
+  [[gnu::always_inline]] inline bool machine_alone() const;
+  [[gnu::always_inline]] inline std::int64_t before_next_event(std::int64_t n) const;
   std::int64_t cruise_periods();
   bool servo_settled() const;
   void pass_cruise(std::int64_t n);
@@ -552,21 +554,37 @@ void RunLoop::apply_operator_actions() {
 // operator, the trace's --trace-every or the time limit is due before
 // them. They are passed in one step: the run is the same, bit for bit,
 // as one period at a time (G04 X1e9 took minutes of processor time).
-std::int64_t RunLoop::quiet_periods() const {
-  if (!plant_.still()) return 0;  // most periods: the axes move
+// The machine runs a block with nothing to read meanwhile (the interpreter
+// waits for it, or the queue is full) and the safety checks have nothing to
+// do: the periods ahead depend on the machine alone (quiet_periods,
+// cruise_periods).
+bool RunLoop::machine_alone() const {
   const bool reading = !waiting_ && !ending_ && router_.drained() && k_.can_accept();
-  if (reading || tout_.line == 0 || !safety_.quiet(plant_)) return 0;
-  std::int64_t n = std::min(k_.quiet_ticks(), plant_.quiet_ticks(k_.now()));
-  if (n <= 0) return 0;
+  return !reading && tout_.line != 0 && safety_.quiet(plant_);
+}
+
+// n periods cut short before the time limit and the next operator action.
+std::int64_t RunLoop::before_next_event(std::int64_t n) const {
   const Tick now = k_.now();
   n = std::min<std::int64_t>(n, m_.limits.max_ticks - now - 2);
   if (next_action_ < scene_.operator_actions.size()) {
     const double at = scene_.operator_actions[next_action_].at_time_s;
     n = std::min<std::int64_t>(
         n, static_cast<std::int64_t>(std::floor(at / k_.clock().period_s())) - now - 2);
-  } else if (tout_.time_scale < 1e-12) {
+  }
+  return n;
+}
+
+std::int64_t RunLoop::quiet_periods() const {
+  if (!plant_.still()) return 0;  // most periods: the axes move
+  if (!machine_alone()) return 0;
+  std::int64_t n = std::min(k_.quiet_ticks(), plant_.quiet_ticks(k_.now()));
+  if (n <= 0) return 0;
+  if (next_action_ >= scene_.operator_actions.size() && tout_.time_scale < 1e-12) {
     return 0;  // held for ever: ends after a second (run_stops), period by period
   }
+  const Tick now = k_.now();
+  n = before_next_event(n);
   if (opts_.trace != nullptr) {
     const std::int64_t s = std::max<std::int64_t>(1, opts_.trace->stride());
     n = std::min<std::int64_t>(n, (now / s + 1) * s - now - 1);  // the next row is written
@@ -601,22 +619,14 @@ constexpr std::int64_t kCruiseSettleAgain = 128;
 std::int64_t RunLoop::cruise_periods() {
   const Tick now = k_.now();
   next_cruise_try_ = now + kCruiseLookAgain;
-  if (opts_.trace != nullptr || !plant_.can_cruise()) return 0;
-  const bool reading = !waiting_ && !ending_ && router_.drained() && k_.can_accept();
-  if (reading || tout_.line == 0 || !safety_.quiet(plant_)) return 0;
-  std::int64_t n = k_.cruise_ticks();
+  if (opts_.trace != nullptr || !plant_.can_cruise() || !machine_alone()) return 0;
+  const std::int64_t n = k_.cruise_ticks();
   if (n < kCruiseMinPeriods) return 0;
   if (!servo_settled()) {
     next_cruise_try_ = now + kCruiseSettleAgain;
     return 0;
   }
-  const double period = k_.clock().period_s();
-  n = std::min<std::int64_t>(n, m_.limits.max_ticks - now - 2);
-  if (next_action_ < scene_.operator_actions.size()) {
-    const double at = scene_.operator_actions[next_action_].at_time_s;
-    n = std::min<std::int64_t>(n, static_cast<std::int64_t>(std::floor(at / period)) - now - 2);
-  }
-  return n;
+  return before_next_event(n);
 }
 
 // Every axis's following error within kCruiseSettledMm of where the cruise
