@@ -4,7 +4,7 @@ O9750 (SKIPNC PROBING LIBRARY - ONE MEASURED TOUCH, INTERNAL)
 (coordinates of the programmed point: a fast touch at #552, a back-off of)
 (#558 along the same line, a slow touch at #553 and the same back-off,)
 (which releases the stylus. Axes left out stay.)
-(Results: #170 #171 #172, the slow touch's X Y Z, work coordinates of the)
+(Results: #176 #177 #178, the slow touch's X Y Z, work coordinates of the)
 (programmed point: #5061, #5062 and #5063 less the length offset #5083.)
 (No touch before the point: alarm 3087 PROBE FAIL. A touch where the move)
 (starts, the stylus already deflected: alarm 3092 PROBE OPEN.)
@@ -34,17 +34,17 @@ WHILE[#8LE2]DO1
 IF[#8EQ2]THEN#9=#13
 G90 G31 X#24 Y#25 Z#26 F#9
 IF[[ABS[#5061-#24]LT[0.001]]AND[ABS[#5062-#25]LT[0.001]]AND[ABS[#5063-#5083-#26]LT[0.001]]]THEN#3000=87(PROBE FAIL)
-#170=#5061
-#171=#5062
-#172=#5063-#5083
-#10=[#170-#1]*#4+[#171-#2]*#5+[#172-#3]*#6
+#176=#5061
+#177=#5062
+#178=#5063-#5083
+#10=[#176-#1]*#4+[#177-#2]*#5+[#178-#3]*#6
 IF[#10LT[0.0001*#7]]THEN#3000=92(PROBE OPEN)
 (back off along the line of the move, at most to where it started)
 #11=#14
 IF[#11GT[#10/#7]]THEN#11=#10/#7
-#1=#170-#4/#7*#11
-#2=#171-#5/#7*#11
-#3=#172-#6/#7*#11
+#1=#176-#4/#7*#11
+#2=#177-#5/#7*#11
+#3=#178-#6/#7*#11
 G90 G01 X#1 Y#2 Z#3 F#12
 #8=#8+1
 END1

@@ -5,7 +5,7 @@ O9755 (SKIPNC PROBING LIBRARY - ONE TOUCH ALONG A RADIUS, INTERNAL)
 (from +X: without Z from inside at this height; with Z and R >= 0 from)
 (outside at Z, R the clearance outside the wall, default 5; with Z and)
 (R < 0 from inside at Z, R the clearance inside. Returns to the start.)
-(Results: #170 #171, the ball's centre at the touch, work coordinates.)
+(Results: #176 #177, the ball's centre at the touch, work coordinates.)
 #2=#5001
 #3=#5002
 #4=#5003

@@ -20,8 +20,8 @@ IF[#17EQ#0]THEN#17=10./#175
 #10=1
 WHILE[#10LE3]DO1
 G65 P9755 A#[#10] D#7 Q#17 Z#26 R#18
-#[25+2*#10]=#170-#14 (#27 #29 #31: X of each ball centre, from the start)
-#[26+2*#10]=#171-#15 (#28 #30 #32: its Y)
+#[25+2*#10]=#176-#14 (#27 #29 #31: X of each ball centre, from the start)
+#[26+2*#10]=#177-#15 (#28 #30 #32: its Y)
 #10=#10+1
 END1
 (the circle through the three points)
