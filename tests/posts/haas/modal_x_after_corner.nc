@@ -17,7 +17,9 @@ O02025 (OUTER CORNER, THEN PROBING-Z WITH X LEFT OUT)
 (X-80 - 75.877 = -155.877, off the plate, G54 X-75.754. The Z touch)
 (to the CAD top Z0. with Q5. meets nothing by Z-5.: alarm 3087 PROBE)
 (FAIL, and G54 Z, which S1. would have set, stays -229.5. The kept)
-(#554 stays 1: the probe was on when the program stopped.)
+(#554 stays 1: the probe was on when the program stopped. The Haas)
+(post switches the probe off at each operation's end and on at the next)
+(one's start [onSectionEnd, onSection]: O9833, O9832 between the two.)
 N10 G90 G94 G17
 N15 G21
 N20 G53 G0 Z0.
@@ -30,12 +32,14 @@ N50 G65 P9832
 N55 G65 P9810 Z-5. F1000.
 N60 G65 P9816 X-69.877 Y-130.456 Q5. S1.
 N65 G65 P9810 Z50.
-N70 G0 Y-120.
-N75 G65 P9810 Z5.
-N80 G65 P9811 Z0. Q5. S1.
-N85 G65 P9810 Z50.
-N90 G65 P9833
-N95 G53 G0 Z0.
-N100 G53 G0 X0. Y0.
-N105 M30
+N70 G65 P9833
+N75 G0 Y-120.
+N80 G65 P9832
+N85 G65 P9810 Z5.
+N90 G65 P9811 Z0. Q5. S1.
+N95 G65 P9810 Z50.
+N100 G65 P9833
+N105 G53 G0 Z0.
+N110 G53 G0 X0. Y0.
+N115 M30
 %
