@@ -9,6 +9,8 @@ O2026 (PRINT RESULTS)
 ([0.123, 0.044, 0.37]. The bore, W2.: component 1, feature 1, size 40)
 (nominal, 40 read, 0 off; X 0 nominal, -0.123 read; Y 0, -0.044. The top)
 (face, W1., after S1. moved G54 X Y onto the bore: feature 2, Z 0, -0.37.)
+(CYCLEDEPTH is the post's z - cycle depth + the tool's radius: the bore)
+(measured at Z-10., the ball 2 across: -9.; the top face at Z0.: 1.)
 (The results file is print_results.dprnt, every line derived so.)
 N10 G90 G94 G17 G49 G40 G80
 N15 G21
@@ -22,12 +24,12 @@ POPEN
 DPRNT[START]
 DPRNT[RESULTSFILE*SETUP1-RESULTS]
 DPRNT[TOOLPATHID*101]
-DPRNT[CYCLEDEPTH*-10.]
+DPRNT[CYCLEDEPTH*-9.]
 N45 G65 P9810 Z-10. F1000.
 N50 G65 P9814 D40. Q5. W2. S1.
 N55 G65 P9810 Z50.
 DPRNT[TOOLPATHID*102]
-DPRNT[CYCLEDEPTH*0.]
+DPRNT[CYCLEDEPTH*1.]
 N60 G0 X20. Y-20.
 N65 G65 P9810 Z5. F1000.
 N70 G65 P9811 Z0. Q5. W1. S1.

@@ -15,7 +15,8 @@ O02026 (PRINT RESULTS)
 (printed 0 with a space for the sign. The cycles and their lines as in)
 (../print_results.nc: the bore, W2., component 1 feature 1, size 40 read)
 (40, X -0.123, Y -0.044; the top face, W1., after S1. moved G54 X Y onto)
-(the bore, feature 2, Z -0.37. The results file is print_results.dprnt.)
+(the bore, feature 2, Z -0.37. CYCLEDEPTH: z - cycle depth + the tool's)
+(radius, -10 + 1 and 0 + 1. The results file is print_results.dprnt.)
 N10 G90 G94 G17
 N15 G21
 N20 G53 G0 Z0.
@@ -30,7 +31,7 @@ N60 POPEN
 DPRNT[START]
 DPRNT[RESULTSFILE*SETUP1-RESULTS]
 DPRNT[TOOLPATHID*101]
-DPRNT[CYCLEDEPTH*-10.]
+DPRNT[CYCLEDEPTH*-9.]
 DPRNT[G331*N#172[60]*A0.*B0.*C0.*X0.*Y0.*Z0.]
 DPRNT[G330*N#172[60]*A0.*B0.*C0.*X0*Y0*Z0*I0*R0]
 N65 G65 P9810 Z-10. F1000.
@@ -40,7 +41,7 @@ N80 G65 P9833
 N85 G0 X20. Y-20.
 N90 G65 P9832
 DPRNT[TOOLPATHID*102]
-DPRNT[CYCLEDEPTH*0.]
+DPRNT[CYCLEDEPTH*1.]
 DPRNT[G331*N#172[60]*A0.*B0.*C0.*X0.*Y0.*Z0.]
 DPRNT[G330*N#172[60]*A0.*B0.*C0.*X0*Y0*Z0*I0*R0]
 N95 G65 P9810 Z5. F1000.
