@@ -1,19 +1,27 @@
 %
 O9815 (SKIPNC PROBING LIBRARY - INNER CORNER)
-(G65 P9815 X.. Y.. [Q..] [S..] [H..] [M..]: the probe stands inside the)
+(G65 P9815 X.. Y.. [I.. J..] [Q..] [S..] [H..] [M..] [B..]: the probe)
+(stands inside the)
 (corner; X and Y are the nominal positions of its two walls, the wall)
 (across X and the wall across Y, work coordinates. Touches the first along)
 (X from here, returns, touches the second along Y, returns. Q: overtravel,)
 (default 10. S: work offset to correct by both errors, see O9751. H: on)
 (the larger error, alarm 3088; M: on the true position, alarm 3089.)
 (Results: #135 #136 the walls found: the corner, #140 #141 their errors,)
-(#145 true position error, #148, #149 0. I J angle touches: not done.)
+(#145 true position error, #148, #149 0. I and J [both or neither]: a)
+(second touch on each wall, on the wall across X J further from the)
+(other wall along Y, on the wall across Y I further along X: each wall is)
+(then the line through its two touches, the corner where they meet,)
+(#139 the X wall's angle from +X [nominal 90], #144 its error, #142 the)
+(Y wall's angle [nominal 0] and #143 its error; B: a tolerance on #144,)
+(alarm 3094. Without I J, #139 #142-#144 are vacant.)
 (Written for skipnc from the call interface only: docs/probing-cycles.md.)
 #30=#4001
 #31=#4003
 IF[#550EQ#0]THEN#3000=95(PROBE STYLUS NOT CALIBRATED)
 IF[[#24EQ#0]OR[#25EQ#0]]THEN#3000=91(FORMAT ERROR)
 IF[[#24EQ#5001]OR[#25EQ#5002]]THEN#3000=91(FORMAT ERROR)
+IF[[#4EQ#0]XOR[#5EQ#0]]THEN#3000=91(FORMAT ERROR)
 #175=1. (mm per program unit: 25.4 after G20)
 IF[#4006EQ20]THEN#175=25.4
 IF[#17EQ#0]THEN#17=10./#175
@@ -25,11 +33,34 @@ IF[#24LT#14]THEN#10=-1
 IF[#25LT#15]THEN#12=-1
 G65 P9750 X[#24+#10*[#17-#550]]
 #27=#176+#10*#550
+#150=#176
+#151=#177
 G65 P9810 X#14
-G65 P9750 Y[#25+#12*[#17-#550]]
-#28=#177+#12*#550
+IF[#4EQ#0]GOTO10
+G65 P9810 Y[#15-#12*ABS[#5]] (the second touch, away from the Y wall)
+G65 P9750 X[#24+#10*[#17-#550]]
+#152=#176
+#153=#177
+G65 P9810 X#14
 G65 P9810 Y#15
-G65 P9754 X#27 Y#28 I#24 J#25 H#11 M#13 S#19
+N10G65 P9750 Y[#25+#12*[#17-#550]]
+#28=#177+#12*#550
+#154=#176
+#155=#177
+G65 P9810 Y#15
+IF[#4EQ#0]GOTO20
+G65 P9810 X[#14-#10*ABS[#4]]
+G65 P9750 Y[#25+#12*[#17-#550]]
+#156=#176
+#157=#177
+G65 P9810 Y#15
+G65 P9810 X#14
+G65 P9759 I#10 J#12
+#27=#158
+#28=#159
+#32=#160
+#33=#161
+N20G65 P9754 X#27 Y#28 I#24 J#25 A#32 C#33 B#2 H#11 M#13 S#19
 G65 P9757 W#23 X1. Y1.
 G#30 G#31
 M99

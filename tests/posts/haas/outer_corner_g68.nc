@@ -1,0 +1,41 @@
+%
+O02033 (PROBING-XY-OUTER-CORNER WITH PROBE SPACING, G68)
+(Written for skipnc in the output format of the Autodesk Fusion "HAAS -)
+(Next Generation Control" post [haas_vf2_inspect_surface_ENSTA.cps of)
+(ThomasLeMezo/enstabretagne-inventor-cam: its probing-xy-outer-corner)
+(case with a probe spacing, which writes I and J and sets the angle)
+(method, G68 X[#185] Y[#186] R[#194] at the next operation's start],)
+(run unmodified in the haas dialect with -I macros/probing on)
+(cycles.machine.toml [G54 X-80 Y30.5 Z-229.5]. The block of)
+(angle.scene.toml stands 2 degrees off square about its front-left)
+(corner, G54 X0 Y-50: the corner X0 - [5 + 1] and Y-50 - [5 + 1] from)
+(the start; the faces are touched twice, 10. apart: the corner is exact,)
+(#185 = #135 = 0, #186 = #136 = -50, the left face's angle error #194 =)
+(#144 = 2. S1. moves G54 by the corner's error, 0. The next operation,)
+(T1, turns its program 2 degrees about the corner: its X50. Y0. is G54)
+(50 COS2 - 50 SIN2 = 48.224566516, -50 + 50 SIN2 + 50 COS2 =)
+(1.714516186, machine X-31.775433484 Y32.214516186 [the report's final)
+(position, after G69 and G53 Z0.].)
+N10 G90 G94 G17
+N15 G21
+N20 G53 G0 Z0.
+N25 G53 G0 X0. Y0.
+N30 T20 M6
+N35 G54
+N40 G0 X-6. Y-56.
+N45 G43 Z50. H20
+N50 G65 P9832
+N55 G65 P9810 Z-5. F1000.
+N60 G65 P9816 X0. Y-50. I10. J10. Q5. S1.
+N65 G65 P9810 Z50.
+N70 G65 P9833
+N75 G53 G0 Z0.
+N80 T1 M6
+N85 G54
+N90 G68 G90 X[#185] Y[#186] R[#194]
+N95 G0 X50. Y0.
+N100 G43 Z50. H1
+N105 G69
+N110 G53 G0 Z0.
+N115 M30
+%
