@@ -131,8 +131,11 @@ json page_data(const std::string& page) {
 // Checks that every view has one marker per skip, at the projection of the
 // report's machine position (latch) and of the rest position.
 // `tip_length`: the views show the tool tip, this far below the gauge point.
+// `rests`: false where a length offset is active (the report's skip position
+// has it, as #5063 does, and its end position not: the rest cannot be placed
+// from the two), so only the latches are checked.
 void expect_markers_where_the_report_says(const json& svg, const json& report,
-                                          double tip_length = 0.0) {
+                                          double tip_length = 0.0, bool rests = true) {
   const auto& skips = report["skips"];
   ASSERT_EQ(svg["views"].size(), 4u);
   for (const auto& [id, view] : svg["views"].items()) {
@@ -155,6 +158,7 @@ void expect_markers_where_the_report_says(const json& svg, const json& report,
       EXPECT_NEAR(mk[2].get<double>(), y, 0.02) << "view " << id << " skip line " << sk["line"];
     }
     for (const auto& mk : view["rest"]) {
+      if (!rests) break;
       // Rest in machine coordinates: the work position plus the offsets in
       // force at the latch (machine_position - position).
       const auto& sk = skips[mk[0].get<std::size_t>()];
@@ -384,6 +388,49 @@ TEST(PlotSvg, EachToolIsDrawnAtItsOwnTipWhenTheNextM06IsReadEarly) {
   }
   EXPECT_GT(on_feed, 0);
   EXPECT_GT(on_rapid, 0);
+}
+
+// The worked example (examples/probe_cut_inspect, its README's plot command):
+// the picture shows every touch where the report has it, and the pocket T1 cut
+// where the probed G54 put it: the stock's staircase 5 mm deep from the block's
+// top (-200.153) between G54 X-99.588 +-20 and Y19.713 +-15, and the path's
+// lowest point T1's tip on the floor.
+TEST(PlotSvg, TheWorkedExampleShowsThePocketWhereTheProbedG54PutIt) {
+  TempDir dir;
+  const std::string ex = std::string(SKIPNC_SOURCE_DIR) + "/examples/probe_cut_inspect/";
+  const auto svg = (dir.path / "probe_cut_inspect.svg").string();
+  const auto html = (dir.path / "probe_cut_inspect.html").string();
+  const auto rep = (dir.path / "report.json").string();
+  const auto r =
+      run_cli({"plot", ex + "probe_cut_inspect.nc", "-I",
+               std::string(SKIPNC_SOURCE_DIR) + "/macros/probing", "-m", ex + "cell.machine.toml",
+               "-s", ex + "block.scene.toml", "--report", rep, "-o", svg, "-o", html, "-q"});
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  const json report = json::parse(read_file(rep));
+  ASSERT_EQ(report["skips"].size(), 59u);
+  expect_markers_where_the_report_says(read_svg(dir, svg), report, 150.0, false);
+  const json data = page_data(read_file(html));
+  ASSERT_FALSE(data.is_null());
+  double lowest = 0.0;
+  for (const auto& z : data["pz"]) lowest = std::min(lowest, z.get<double>());
+  EXPECT_NEAR(lowest, -205.153, 2e-3) << "T1's tip on the floor (was: 50 mm lower)";
+  std::vector<json> cuts;
+  for (const auto& s : data["shapes"]) {
+    if (s["ink"] == "stock" && s["kind"] == "polyline") cuts.push_back(s);
+  }
+  ASSERT_EQ(cuts.size(), 2u) << "the deepest cut along X and along Y";
+  for (int axis : {0, 1}) {
+    double lo = 1e9, hi = -1e9;
+    for (const auto& p : cuts[static_cast<std::size_t>(axis)]["pts"]) {
+      if (p[2].get<double>() > -200.2) continue;
+      EXPECT_NEAR(p[2].get<double>(), -205.153, 1e-6);
+      lo = std::min(lo, p[axis].get<double>());
+      hi = std::max(hi, p[axis].get<double>());
+    }
+    const double centre = axis == 0 ? -99.588 : 19.713, half = axis == 0 ? 20.0 : 15.0;
+    EXPECT_NEAR(lo, centre - half, 1e-6) << "axis " << axis;
+    EXPECT_NEAR(hi, centre + half, 1e-6) << "axis " << axis;
+  }
 }
 
 TEST(PlotSvg, UnknownPictureFormatIsAUsageError) {
