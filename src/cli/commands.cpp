@@ -37,11 +37,19 @@ bool is_stdout(const std::string& name) {
   return name == "-" || name == "/dev/stdout" || name == "/dev/fd/1" || name == "/proc/self/fd/1";
 }
 
+// A value to 0.1 um; one that rounds to zero is "0.0000" whatever its sign
+// (a centre computed as -1e-15 is not "-0.0000").
+std::string fixed4(double v) {
+  std::string s = fmt::format("{:.4f}", v);
+  if (s == "-0.0000") s.erase(0, 1);
+  return s;
+}
+
 std::string fmt_axes(const AxisVec& v, const config::MachineConfig& m) {
   std::string out;
   for (int i = 0; i < m.axis_count(); ++i) {
-    out += fmt::format("{}{}{:.4f}", out.empty() ? "" : " ",
-                       m.axes[static_cast<std::size_t>(i)].name, v[i] + 0.0);
+    out += fmt::format("{}{}{}", out.empty() ? "" : " ", m.axes[static_cast<std::size_t>(i)].name,
+                       fixed4(v[i]));
   }
   return out;
 }
@@ -106,7 +114,7 @@ void print_summary(std::FILE* f, const sim::RunResult& r, const run::Session& s,
   // The --var values, as the report has them (vacant: no value).
   for (const auto& [key, v] : r.variables) {
     if (v) {
-      fmt::print(f, "  #{} = {:.4f}\n", key, *v);
+      fmt::print(f, "  #{} = {}\n", key, fixed4(*v));
     } else {
       fmt::print(f, "  #{} = vacant\n", key);
     }

@@ -319,10 +319,29 @@ void Recorder::keep_block_start(Sample& cur, bool prev_kept) {
   reset_sleeve(cur);
 }
 
+// The tool in the spindle changes at the period the simulation changed it
+// (the plant's spindle tool: the one contacts and cuts use), which may be
+// long after the M06 was read: the interpreter reads on past it while the
+// motion before it runs, and the next M06 may be read before the first is
+// made. Rows without a plant place the M06 read last at the first period
+// after it in which the command stands.
+void Recorder::place_tool_change(const sim::TraceRow& r, const Sample& cur) {
+  if (r.plant != nullptr) {
+    const int tool = r.plant->probing().spindle_tool();
+    if (plant_tool_ >= 0 && tool != plant_tool_) add_tool_change(cur.t, tool);
+    plant_tool_ = tool;
+    pending_tool_ = -1;
+  } else if (pending_tool_ >= 0 && have_prev_ && cur.cmd == prev_.cmd) {
+    add_tool_change(cur.t, pending_tool_);
+    pending_tool_ = -1;
+  }
+}
+
 void Recorder::row(const sim::TraceRow& r) {
   ++rows_;
   Sample cur = sample_of(r);
   if (!have_prev_) {
+    place_tool_change(r, cur);
     have_prev_ = true;
     cur.pin = kPinHard;
     blocks_.push_back(BlockRun{cur.line, cur.source, take_kind(cur.line, cur.source), cur.t, cur.t,
@@ -332,10 +351,7 @@ void Recorder::row(const sim::TraceRow& r) {
     prev_ = cur;
     return;
   }
-  if (pending_tool_ >= 0 && cur.cmd == prev_.cmd) {
-    add_tool_change(cur.t, pending_tool_);
-    pending_tool_ = -1;
-  }
+  place_tool_change(r, cur);
   const bool new_block = cur.line != prev_.line || cur.source != prev_.source;
   const bool edge = cur.signals != prev_.signals;
   if (new_block) {

@@ -65,8 +65,8 @@ struct SkipMove {
   double feed_mm_min = 0.0;
 };
 
-// A tool change (T.. M06) as the plot places it: at the first period after
-// the M06 in which the command stands still.
+// A tool change (T.. M06) as the plot places it: at the period the
+// simulation put the tool in the spindle (Recorder::place_tool_change).
 struct ToolChange {
   double t = 0.0;
   int tool = 0;
@@ -137,6 +137,7 @@ class Recorder final : public sim::TraceSink, public canon::CommandSink {
   void thin_pins();
   void merge_blocks();
   void add_tool_change(double t, int tool);
+  void place_tool_change(const sim::TraceRow& r, const Sample& cur);
   MoveKind take_kind(std::uint32_t line, std::uint32_t source);
 
   int n_ = 0;
@@ -152,7 +153,8 @@ class Recorder final : public sim::TraceSink, public canon::CommandSink {
   std::uint64_t skip_moves_dropped_ = 0;
   std::uint64_t tool_changes_dropped_ = 0;
   int selected_tool_ = -1;        // the last T word
-  int pending_tool_ = -1;         // M06 seen, not yet placed in time
+  int pending_tool_ = -1;         // M06 seen, not yet placed in time (rows without a plant)
+  int plant_tool_ = -1;           // the plant's spindle tool at the last row (-1: none yet)
   AxisVec tail_;                  // target of the last motion command
   bool tail_from_trace_ = false;  // after a skip: the next move starts where the machine stopped
 

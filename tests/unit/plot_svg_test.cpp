@@ -119,11 +119,23 @@ json read_svg(const TempDir& dir, const std::string& svg) {
   return test::read_svg_with(dir, kSvgReader, svg);
 }
 
+// The model the HTML page carries (docs/plot.md, "The page"); null when the
+// page has none.
+json page_data(const std::string& page) {
+  const std::string open = "<script type=\"application/json\" id=\"plot-data\">";
+  const auto a = page.find(open);
+  if (a == std::string::npos) return json();
+  return json::parse(page.substr(a + open.size(), page.find("</script>", a) - a - open.size()));
+}
+
 // Checks that every view has one marker per skip, at the projection of the
 // report's machine position (latch) and of the rest position.
 // `tip_length`: the views show the tool tip, this far below the gauge point.
+// `rests`: false where a length offset is active (the report's skip position
+// has it, as #5063 does, and its end position not: the rest cannot be placed
+// from the two), so only the latches are checked.
 void expect_markers_where_the_report_says(const json& svg, const json& report,
-                                          double tip_length = 0.0) {
+                                          double tip_length = 0.0, bool rests = true) {
   const auto& skips = report["skips"];
   ASSERT_EQ(svg["views"].size(), 4u);
   for (const auto& [id, view] : svg["views"].items()) {
@@ -146,6 +158,7 @@ void expect_markers_where_the_report_says(const json& svg, const json& report,
       EXPECT_NEAR(mk[2].get<double>(), y, 0.02) << "view " << id << " skip line " << sk["line"];
     }
     for (const auto& mk : view["rest"]) {
+      if (!rests) break;
       // Rest in machine coordinates: the work position plus the offsets in
       // force at the latch (machine_position - position).
       const auto& sk = skips[mk[0].get<std::size_t>()];
@@ -189,11 +202,8 @@ TEST(PlotSvg, PageFetchesNothingAndCarriesEverySkip) {
   for (const char* remote : {"http://", "https://", "<link", "src=", "@import", "//cdn"}) {
     EXPECT_EQ(page.find(remote), std::string::npos) << remote;
   }
-  const std::string open = "<script type=\"application/json\" id=\"plot-data\">";
-  const auto a = page.find(open);
-  ASSERT_NE(a, std::string::npos);
-  const auto b = page.find("</script>", a);
-  const json data = json::parse(page.substr(a + open.size(), b - a - open.size()));
+  const json data = page_data(page);
+  ASSERT_FALSE(data.is_null());
   EXPECT_EQ(data["format"], "skipnc-plot/2");
   ASSERT_EQ(data["skips"].size(), 5u);
   EXPECT_EQ(data["skips"][0]["line"], 6);
@@ -229,12 +239,8 @@ TEST(PlotSvg, ASkipInAMacroIsNamedByTheMacrosFileAndLine) {
   const auto card = picture.find("1. O9200.nc:4 (O9200) called from ");
   ASSERT_NE(card, std::string::npos) << "the skip card names the macro's line";
   EXPECT_EQ(picture.find(">L4"), std::string::npos) << "no label names line 4 of the main program";
-  const std::string page = read_file(html);
-  const std::string open = "<script type=\"application/json\" id=\"plot-data\">";
-  const auto a = page.find(open);
-  ASSERT_NE(a, std::string::npos);
-  const json data =
-      json::parse(page.substr(a + open.size(), page.find("</script>", a) - a - open.size()));
+  const json data = page_data(read_file(html));
+  ASSERT_FALSE(data.is_null());
   ASSERT_EQ(data["files"].size(), 2u);
   EXPECT_EQ(data["files"][1]["name"], "O9200.nc");
   EXPECT_EQ(data["files"][1]["source"][3], "N10 G31 X#24 F300.");
@@ -345,6 +351,86 @@ TEST(PlotSvg, WithAProbeTheViewsShowTheBallCentreAndThePart) {
   const std::string text = read_file(svg);
   EXPECT_NE(text.find("class=\"shape part\""), std::string::npos);
   EXPECT_NE(text.find("path of the tool tip"), std::string::npos);
+}
+
+// The path is drawn at the tip of the tool the simulation has in the spindle.
+// The interpreter reads on past an M06 while the motion before it runs, so the
+// second M06 (T20, the probe) is read while T1 still cuts: T1's feed at
+// gauge Z-30 is drawn at its tip, Z-130 (was: at the probe's 150 mm, Z-180,
+// the second change placed at the first pause of T1's moves), and the probe's
+// rapid after its M06 at Z-150 (gauge Z0); within 0.05 mm, the servo's lag as
+// T1's feed begins.
+TEST(PlotSvg, EachToolIsDrawnAtItsOwnTipWhenTheNextM06IsReadEarly) {
+  TempDir dir;
+  const auto prog = dir.write("tools.nc",
+                              "G21 G90 G17 G54\nG53 G0 Z0.\nT1 M6\nS8000 M3\nG0 X10. Y10.\n"
+                              "G1 Z-30. F1000.\nG1 X30.\nM5\nG53 G0 Z0.\nT20 M6\nG0 X0 Y0\nM30\n");
+  const auto scene = dir.write("tools.toml",
+                               "spindle_tool = 20\n[probe]\nsignal = \"SKIP\"\ntool = 20\n"
+                               "ball_radius = 1.0\nlength = 150.0\nmax_overtravel = 2.0\n"
+                               "[[tool]]\nnumber = 1\nlength = 100.0\nradius = 5.0\n");
+  const auto html = (dir.path / "tools.html").string();
+  const auto r = run_cli({"run", prog.string(), "-s", scene.string(), "--plot", html, "-q"});
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  const json data = page_data(read_file(html));
+  ASSERT_FALSE(data.is_null());
+  int on_feed = 0, on_rapid = 0;
+  for (std::size_t i = 0; i < data["t"].size(); ++i) {
+    const int line = data["line"][i].get<int>();
+    const double z = data["pz"][i].get<double>();
+    if (line == 7) {
+      ++on_feed;
+      EXPECT_NEAR(z, -130.0, 0.05) << "T1's feed at t = " << data["t"][i];
+    } else if (line == 11) {
+      ++on_rapid;
+      EXPECT_NEAR(z, -150.0, 0.05) << "the probe's rapid at t = " << data["t"][i];
+    }
+  }
+  EXPECT_GT(on_feed, 0);
+  EXPECT_GT(on_rapid, 0);
+}
+
+// The worked example (examples/probe_cut_inspect, its README's plot command):
+// the picture shows every touch where the report has it, and the pocket T1 cut
+// where the probed G54 put it: the stock's staircase 5 mm deep from the block's
+// top (-200.153) between G54 X-99.588 +-20 and Y19.713 +-15, and the path's
+// lowest point T1's tip on the floor.
+TEST(PlotSvg, TheWorkedExampleShowsThePocketWhereTheProbedG54PutIt) {
+  TempDir dir;
+  const std::string ex = std::string(SKIPNC_SOURCE_DIR) + "/examples/probe_cut_inspect/";
+  const auto svg = (dir.path / "probe_cut_inspect.svg").string();
+  const auto html = (dir.path / "probe_cut_inspect.html").string();
+  const auto rep = (dir.path / "report.json").string();
+  const auto r =
+      run_cli({"plot", ex + "probe_cut_inspect.nc", "-I",
+               std::string(SKIPNC_SOURCE_DIR) + "/macros/probing", "-m", ex + "cell.machine.toml",
+               "-s", ex + "block.scene.toml", "--report", rep, "-o", svg, "-o", html, "-q"});
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  const json report = json::parse(read_file(rep));
+  ASSERT_EQ(report["skips"].size(), 59u);
+  expect_markers_where_the_report_says(read_svg(dir, svg), report, 150.0, false);
+  const json data = page_data(read_file(html));
+  ASSERT_FALSE(data.is_null());
+  double lowest = 0.0;
+  for (const auto& z : data["pz"]) lowest = std::min(lowest, z.get<double>());
+  EXPECT_NEAR(lowest, -205.153, 2e-3) << "T1's tip on the floor (was: 50 mm lower)";
+  std::vector<json> cuts;
+  for (const auto& s : data["shapes"]) {
+    if (s["ink"] == "stock" && s["kind"] == "polyline") cuts.push_back(s);
+  }
+  ASSERT_EQ(cuts.size(), 2u) << "the deepest cut along X and along Y";
+  for (int axis : {0, 1}) {
+    double lo = 1e9, hi = -1e9;
+    for (const auto& p : cuts[static_cast<std::size_t>(axis)]["pts"]) {
+      if (p[2].get<double>() > -200.2) continue;
+      EXPECT_NEAR(p[2].get<double>(), -205.153, 1e-6);
+      lo = std::min(lo, p[axis].get<double>());
+      hi = std::max(hi, p[axis].get<double>());
+    }
+    const double centre = axis == 0 ? -99.588 : 19.713, half = axis == 0 ? 20.0 : 15.0;
+    EXPECT_NEAR(lo, centre - half, 1e-6) << "axis " << axis;
+    EXPECT_NEAR(hi, centre + half, 1e-6) << "axis " << axis;
+  }
 }
 
 TEST(PlotSvg, UnknownPictureFormatIsAUsageError) {

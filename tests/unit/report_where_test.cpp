@@ -114,4 +114,17 @@ TEST(Where, SummaryPrintsTheVariablesAskedFor) {
       << r.out;
 }
 
+// A value that rounds to zero at 0.1 um is printed without a sign: a centre
+// computed as a few 1e-15 below zero (the worked probing example's #136) read
+// "-0.0000".
+TEST(Where, SummaryPrintsAValueThatRoundsToZeroWithoutASign) {
+  skipnc::test::TempDir dir;
+  const auto nc =
+      dir.write("zero.nc", "#100=[0.1+0.2-0.3]*-1\n#101=-0.00004\n#102=-0.00005\nM30\n");
+  const auto r = run_cli({"run", nc.string(), "--var", "100", "--var", "101", "--var", "102"});
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  EXPECT_NE(r.out.find("\n  #100 = 0.0000\n  #101 = 0.0000\n  #102 = -0.0001\n"), std::string::npos)
+      << r.out;
+}
+
 }  // namespace

@@ -1,0 +1,1 @@
+../probe_cut_inspect.nc

@@ -1,0 +1,1 @@
+../../../examples/probe_cut_inspect/probe_cut_inspect.nc
