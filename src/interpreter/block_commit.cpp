@@ -60,7 +60,7 @@ void Interpreter::Impl::commit_modal(const Words& words, const BlockPlan& plan, 
   // (the same one again: "continuing to use same coordinate system").
   if (lang->rules.offsets_in_params && plan.next.work != modal.work && plan.next.work >= 1 &&
       plan.next.work <= 9) {
-    ngc_load_work(plan.next.work);
+    lang->select_work(*this, plan.next.work);  // ngc_params.cpp
   }
   modal = plan.next;
   modal.seq = seq;
@@ -118,7 +118,7 @@ Flow<void> Interpreter::Impl::commit_shift(const Words& words, bool local) {
     if (!ok) return ok;
   }
   (local ? local_shift : g92_shift) = shift;
-  if (!local && lang->rules.offsets_in_params) ngc_store_g92();
+  if (!local && lang->rules.offsets_in_params) lang->store_g92(*this);  // ngc_codes.cpp
   return {};
 }
 
@@ -150,7 +150,7 @@ Flow<Step> Interpreter::Impl::commit_action(const Words& words, const BlockPlan&
   const SourceLoc at = loc(cur_col);
   switch (plan.action) {
     case Action::kNgc:
-      SKIPNC_TRY(ngc_action(words, plan.action_code));
+      SKIPNC_TRY(lang->own_action(*this, words, plan.action_code));  // ngc_codes.cpp
       return Step::kContinue;
     case Action::kDataSetting:
       SKIPNC_TRY(data_setting(words, at));
@@ -351,7 +351,7 @@ Flow<Step> Interpreter::Impl::commit_block(const Words& words, const BlockPlan& 
   SKIPNC_TRY(commit_tool(words, plan, before, out));
   commit_spindle(words, plan.spindle_changed, out);
   if (lang->rules.state_codes) {
-    SKIPNC_TRY(ngc_state_codes(words, before, loc(cur_col)));
+    SKIPNC_TRY(lang->state_codes(*this, words, before, loc(cur_col)));  // ngc_room.cpp
   }
   if (plan.mill.polar) polar = *plan.mill.polar;
   skip_step = plan.mill.skip_step;

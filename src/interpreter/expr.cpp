@@ -381,8 +381,10 @@ struct NgcRules {
       return fail(AlarmId::kMacroFormat, "EXISTS takes a named parameter: EXISTS[#<name>]",
                   im.loc(n.column));
     }
-    return Value::of(im.ngc_named_exists(im.blk.names[static_cast<std::size_t>(v.name)]) ? 1.0
-                                                                                         : 0.0);
+    // NgcRules are the LinuxCNC family's (language.cpp), whose names these are.
+    auto& family = static_cast<LinuxcncFamily&>(*im.lang);
+    const std::string& name = im.blk.names[static_cast<std::size_t>(v.name)];
+    return Value::of(family.named_exists(im, name) ? 1.0 : 0.0);
   }
 };
 

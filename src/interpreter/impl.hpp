@@ -45,7 +45,6 @@
 #include "interpreter/interpreter.hpp"
 #include "interpreter/journal.hpp"
 #include "interpreter/language.hpp"
-#include "interpreter/ngc_room.hpp"
 #include "interpreter/program_store.hpp"
 #include "interpreter/skip_rules.hpp"
 #include "interpreter/transform.hpp"
@@ -235,11 +234,6 @@ struct Interpreter::Impl : BlockState {
 
   // The dialect's language (language.hpp): its rules, its own state.
   std::unique_ptr<Language> lang = make_language(dialect.sw.language);
-  // The state of RS274NGC and of grbl's `$` lines: asked for only on their
-  // own paths (the language is then RS274NGC or grbl, resp. grbl).
-  NgcState& ngc_state() noexcept;  // language.cpp
-  GrblState& grbl_system() noexcept;
-  const GrblState& grbl_system() const noexcept;
 
   // How the program text is cut into blocks: ';' is a comment in RS274NGC and grbl.
   gcode::SourceLimits source_limits() const noexcept {
@@ -291,7 +285,7 @@ struct Interpreter::Impl : BlockState {
   Result<void> write_dprnt() const;
 
   // oword.cpp: RS274NGC O-word statements and parameter settings
-  Flow<Step> execute_oword(CommandSink& out);
+  Flow<Step> execute_oword();
   Flow<void> oword_call(const std::string& label, SourceLoc where);
   Flow<void> skip_to_oword(const std::string& label, std::uint32_t kinds, SourceLoc where);
   Flow<Step> oword_return(const gcode::Stmt& s, SourceLoc where);
@@ -302,47 +296,6 @@ struct Interpreter::Impl : BlockState {
   Flow<Step> oword_break(gcode::OKind kind, const std::string& label, SourceLoc where);
   Flow<Step> oword_seek(gcode::SourcePos p);
   Flow<Step> oword_leave(const OLoop& l, SourceLoc where);
-  Flow<void> ngc_assignments();
-  // ngc_params.cpp: LinuxCNC's numbered and named parameters
-  Flow<Value> read_ngc_param(int n, SourceLoc where);
-  Flow<void> write_ngc_param(int n, Value v, SourceLoc where);
-  Flow<Value> read_ngc_named(const std::string& name, SourceLoc where);
-  Flow<void> write_ngc_named(const std::string& name, Value v, SourceLoc where);
-  std::optional<Flow<Value>> predefined_named(const std::string& name, SourceLoc where);
-  bool ngc_named_exists(const std::string& name);
-  Flow<std::string> ngc_message_text(std::string_view text, SourceLoc where);
-  Flow<void> ngc_comments();
-  void ngc_store_probe(const AxisVec& latch_work, bool triggered);
-  void ngc_load_work(int set);
-  void ngc_start();
-  // grbl's '$' system lines (grbl_system.cpp, docs/languages.md).
-  void grbl_start();
-  double grbl_setting(int n) const noexcept;
-  bool probe_inverted() const noexcept;
-  std::string grbl_coords(const AxisVec& mm) const;
-  Flow<Step> execute_grbl_system(CommandSink& out);
-  Flow<Step> grbl_report(const std::string& text);
-  Flow<Step> grbl_store_setting(const std::string& text, CommandSink& out);
-  Flow<Step> grbl_home(CommandSink& out);
-  Flow<Step> grbl_jog(CommandSink& out);
-  void grbl_list_settings();
-  void grbl_list_offsets();
-  void grbl_modal_line();
-  Flow<void> load_ngc_var_file();
-  int ngc_axis_index(char letter) const noexcept;  // X0 Y1 Z2 A3 B4 C5 U6 V7 W8, -1 else
-  // ngc_room.cpp: M70-M73, log files, INI/HAL values (ngc_room.hpp)
-  Flow<void> ngc_state_codes(const Words& words, const ModalState& before, SourceLoc where);
-  void ngc_restore_state(const NgcSavedState& s);
-  void ngc_state_on_return();
-  Flow<void> ngc_log_comment(std::string_view text, SourceLoc where);
-  void ngc_probe_log();
-  Result<void> write_ngc_logs();
-  std::optional<Flow<Value>> ngc_ini_hal(const std::string& n, SourceLoc where);
-  // ngc_codes.cpp: LinuxCNC's and grbl's own codes
-  Flow<void> ngc_action(const Words& words, GCode code);
-  void ngc_store_g92();
-  Flow<void> ngc_reference_return(const Words& words, int g, CommandSink& out);
-  Flow<void> ngc_data_setting(const Words& words, SourceLoc where);
 
   // macro_call.cpp
   Flow<void> call(std::int64_t program, int repeats, bool macro, SourceLoc where,
@@ -386,15 +339,13 @@ struct Interpreter::Impl : BlockState {
   void begin_tables(bool calls);
   void commit_tables() noexcept;
   void roll_back_tables(bool calls);
-  // What the block started from, beside BlockState and the journals (reused
-  // from block to block): the call stack and the G66 macro when the block
-  // may call, and the modal states M70/M73 saved (RS274NGC).
+  // What the block started from, beside BlockState, the journals and the
+  // language's own (Language::begin_block; reused from block to block): the
+  // call stack and the G66 macro when the block may call.
   struct Before {
     std::vector<Frame> frames;
     std::int64_t modal_macro_program = 0;
     std::array<Value, kLocalCount + 1> modal_macro_args{};
-    std::vector<NgcSavedState> saved_states;
-    bool had_saved_states = false;
   } before_block;
   Flow<void> plan_block(const Words& words, BlockPlan& plan);
   Flow<void> plan_g_codes(const Words& words, BlockPlan& plan);
@@ -498,6 +449,7 @@ struct Interpreter::Impl : BlockState {
   Flow<Step> probe_block(const Words& words, const AxisVec& target, AxisMask moved,
                          CommandSink& out);
   Flow<void> finish_probe(const SyncState& s);
+  bool probe_inverted() const noexcept;  // the probe input's sense
   Flow<void> arc(const Words& words, const AxisVec& target, CommandSink& out);
   Flow<void> dwell(const Words& words, CommandSink& out);
   Flow<void> reference_return(const Words& words, int g, CommandSink& out);  // the language's

@@ -50,22 +50,42 @@ constexpr Language::Rules kGrblRules = [] {
   return r;
 }();
 
+// The parameter settings of an RS274NGC line: every value is read first,
+// then all are set (LinuxCNC: "parameter setting" happens after the whole
+// line is read, so "#1=2 #2=#1" gives #2 the old #1).
+Flow<void> assignments(Interpreter::Impl& im) {
+  if (im.blk.assigns.empty()) return {};
+  std::vector<Value> values;
+  values.reserve(im.blk.assigns.size());
+  for (const gcode::Assignment& a : im.blk.assigns) {
+    auto v = im.eval(a.rhs);
+    SKIPNC_TRY(v);
+    values.push_back(Value::of(v->num()));
+  }
+  for (std::size_t i = 0; i < im.blk.assigns.size(); ++i) {
+    auto r = im.assign(im.blk.assigns[i].lhs, values[i]);
+    if (!r) return r;
+  }
+  return {};
+}
+
 // An O-word line of RS274NGC: its comments speak first.
-Flow<Step> oword_line(Interpreter::Impl& im, CommandSink& out) {
-  auto c = im.ngc_comments();
+Flow<Step> oword_line(Interpreter::Impl& im, LinuxcncFamily& lang) {
+  auto c = lang.comments(im);
   SKIPNC_TRY(c);
-  return im.execute_oword(out);  // oword.cpp
+  return im.execute_oword();  // oword.cpp
 }
 
 // An RS274NGC line of words: read with the parameters as they were before
 // it, then its settings, its comments, its codes. (Inlined: once per block.)
-[[gnu::always_inline]] inline Flow<Step> words_line(Interpreter::Impl& im, CommandSink& out) {
+[[gnu::always_inline]] inline Flow<Step> words_line(Interpreter::Impl& im, LinuxcncFamily& lang,
+                                                    CommandSink& out) {
   im.cur_words.clear();
   auto w = im.collect_words(im.cur_words);
   SKIPNC_TRY(w);
-  auto a = im.ngc_assignments();
+  auto a = assignments(im);
   SKIPNC_TRY(a);
-  auto c = im.ngc_comments();
+  auto c = lang.comments(im);
   SKIPNC_TRY(c);
   if (im.blk.words.empty()) return Step::kContinue;
   return im.execute_nc(im.cur_words, out);
@@ -83,18 +103,6 @@ std::unique_ptr<Language> make_language(config::Language kind) {
       break;
   }
   return std::make_unique<MacroB>();
-}
-
-NgcState& Interpreter::Impl::ngc_state() noexcept {
-  return static_cast<LinuxcncFamily&>(*lang).state;
-}
-
-GrblState& Interpreter::Impl::grbl_system() noexcept {
-  return static_cast<Grbl&>(*lang).system;
-}
-
-const GrblState& Interpreter::Impl::grbl_system() const noexcept {
-  return static_cast<const Grbl&>(*lang).system;
 }
 
 // ---- What a language has unless it says otherwise: Macro B's
@@ -146,7 +154,7 @@ Flow<void> Language::data_setting(Impl& im, const Words& words, SourceLoc where)
 }
 
 // The dialect's success flag, when it has one.
-void Language::store_probe(Impl& im, bool triggered) {
+void Language::store_probe(Impl& im, const AxisVec&, bool triggered) {
   if (im.dialect.skip_vars.success_flag > 0) {
     im.vars.set(im.dialect.skip_vars.success_flag, Value::of(triggered ? 1.0 : 0.0));
   }
@@ -155,6 +163,24 @@ void Language::store_probe(Impl& im, bool triggered) {
 bool Language::probe_inverted(const Impl& im, int param) const {
   return im.params.bit(param, 0);
 }
+
+// Macro B keeps no work offsets, G92 or modal states in parameters and has
+// no code of Action::kNgc (the code table gives it none).
+void Language::select_work(Impl&, int) {}
+
+void Language::store_g92(Impl&) {}
+
+Flow<void> Language::own_action(Impl& im, const Words&, GCode code) {
+  return fail(AlarmId::kInternal, "no action for " + code_name(code), im.loc(im.cur_col));
+}
+
+Flow<void> Language::state_codes(Impl&, const Words&, const ModalState&, SourceLoc) {
+  return {};
+}
+
+void Language::begin_block() {}
+
+void Language::roll_back_block() {}
 
 // ---- Macro B
 
@@ -193,16 +219,8 @@ Flow<Step> MacroB::execute(Impl& im, CommandSink& out) {
 // The log files of (LOGOPEN,..) and (PROBEOPEN ..), then the persistent
 // parameters.
 Result<void> LinuxcncFamily::save_persistent(Impl& im) {
-  if (auto l = im.write_ngc_logs(); !l) return l;  // ngc_room.cpp
+  if (auto l = write_logs(im); !l) return l;  // ngc_room.cpp
   return Language::save_persistent(im);
-}
-
-Flow<void> LinuxcncFamily::reference_return(Impl& im, const Words& words, int g, CommandSink& out) {
-  return im.ngc_reference_return(words, g, out);  // ngc_codes.cpp
-}
-
-Flow<void> LinuxcncFamily::data_setting(Impl& im, const Words& words, SourceLoc where) {
-  return im.ngc_data_setting(words, where);  // ngc_codes.cpp
 }
 
 // ---- RS274NGC
@@ -210,7 +228,7 @@ Flow<void> LinuxcncFamily::data_setting(Impl& im, const Words& words, SourceLoc 
 Rs274ngc::Rs274ngc() : LinuxcncFamily(kRs274ngcRules, kNgcExpr) {}
 
 void Rs274ngc::start(Impl& im) {
-  im.ngc_start();  // ngc_params.cpp
+  start_params(im);  // ngc_params.cpp
 }
 
 // RS274NGC: the words and the settings' values are read with the
@@ -218,79 +236,70 @@ void Rs274ngc::start(Impl& im) {
 // then the comments speak, then the codes run.
 Flow<Step> Rs274ngc::execute(Impl& im, CommandSink& out) {
   if (im.blk.has_n) im.modal.seq = static_cast<int>(im.blk.n % 100000000);
-  if (im.blk.stmt.kind == gcode::StmtKind::kOword) return oword_line(im, out);
-  return words_line(im, out);
-}
-
-Flow<void> Rs274ngc::load_persistent(Impl& im) {
-  return im.load_ngc_var_file();  // ngc_params.cpp
+  if (im.blk.stmt.kind == gcode::StmtKind::kOword) return oword_line(im, *this);
+  return words_line(im, *this, out);
 }
 
 // The log files, then the parameter file.
 Result<void> Rs274ngc::save_persistent(Impl& im) {
-  if (auto l = im.write_ngc_logs(); !l) return l;
+  if (auto l = write_logs(im); !l) return l;
   if (im.mc.persistent_vars.empty()) return {};
   std::vector<double> values;
   for (const int n : state.var_file_numbers) {
-    auto v = im.read_ngc_param(n, SourceLoc{});
+    auto v = read_numbered(im, n, SourceLoc{});
     values.push_back(v ? v->num() : 0.0);
   }
   return save_var_file(im.mc.persistent_vars, state.var_file_numbers, values);
 }
 
 Flow<void> Rs274ngc::preset(Impl& im, int n, double v) {
-  if (im.write_ngc_param(n, Value::of(v), SourceLoc{})) return {};
+  if (write_numbered(im, n, Value::of(v), SourceLoc{})) return {};
   return fail(AlarmId::kUsage, "parameter #" + std::to_string(n) +
                                    " cannot be set before a run (#1-#5060, #5071-#5209, "
                                    "#5221-#5399)");
 }
 
 Flow<Value> Rs274ngc::read_param(Impl& im, int n, SourceLoc where) {
-  return im.read_ngc_param(n, where);  // ngc_params.cpp
+  return read_numbered(im, n, where);  // ngc_params.cpp
 }
 
 Flow<void> Rs274ngc::write_param(Impl& im, int n, Value v, SourceLoc where) {
-  return im.write_ngc_param(n, v, where);
+  return write_numbered(im, n, v, where);
 }
 
 Flow<Value> Rs274ngc::read_named(Impl& im, const std::string& name, SourceLoc where) {
-  return im.read_ngc_named(name, where);
+  return read_name(im, name, where);
 }
 
 Flow<void> Rs274ngc::write_named(Impl& im, const std::string& name, Value v, SourceLoc where) {
-  return im.write_ngc_named(name, v, where);
+  return write_name(im, name, v, where);
 }
 
-// #5061-#5070 and the probe log.
-void Rs274ngc::store_probe(Impl& im, bool triggered) {
-  im.ngc_store_probe(im.skip_work, triggered);
-  im.ngc_probe_log();
+// #5061-#5070 (the latch in the block's work coordinates) and the probe log.
+void Rs274ngc::store_probe(Impl& im, const AxisVec&, bool triggered) {
+  store_probe_params(im, im.skip_work, triggered);
+  probe_log(im);
 }
 
 // ---- grbl
 
 Grbl::Grbl() : LinuxcncFamily(kGrblRules, kNgcExpr) {}
 
-void Grbl::start(Impl& im) {
-  im.ngc_start();   // ngc_params.cpp: G28, G30, G92 and the offsets in #5161..
-  im.grbl_start();  // grbl_system.cpp
-}
-
 Flow<Step> Grbl::execute(Impl& im, CommandSink& out) {
   if (im.blk.has_n) im.modal.seq = static_cast<int>(im.blk.n % 100000000);
-  if (im.blk.stmt.kind == gcode::StmtKind::kOword) return oword_line(im, out);  // (no O in grbl)
-  if (im.blk.stmt.kind != gcode::StmtKind::kNone) return im.execute_grbl_system(out);
+  if (im.blk.stmt.kind == gcode::StmtKind::kOword) return oword_line(im, *this);  // (no O)
+  if (im.blk.stmt.kind != gcode::StmtKind::kNone) return system_line(im, out);    // grbl_system.cpp
   if (system.locked && !im.blk.words.empty()) {
     return fail(AlarmId::kGrblLocked,
                 "grbl is in alarm until $H or $X ($22 = 1: homing is required at start)",
                 im.loc(im.blk.words.front().column));
   }
-  return words_line(im, out);
+  return words_line(im, *this, out);
 }
 
 // $6 as the program set it (grbl_system.cpp).
-bool Grbl::probe_inverted(const Impl& im, int param) const {
-  return (static_cast<long long>(im.grbl_setting(param)) & 1) != 0;
+bool Grbl::probe_inverted(const Impl&, int param) const {
+  return (static_cast<long long>(setting(param)) & 1) != 0;
 }
 
 }  // namespace skipnc::interp

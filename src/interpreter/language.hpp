@@ -21,6 +21,7 @@
 #include <array>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -110,10 +111,26 @@ class Language {
   // G28 / G30 and G10.
   virtual Flow<void> reference_return(Impl& im, const Words& words, int g, CommandSink& out);
   virtual Flow<void> data_setting(Impl& im, const Words& words, SourceLoc where);
-  // After a G38 probe: where its result is kept; whether the probe input is
-  // inverted (a parameter bit, or grbl's $6).
-  virtual void store_probe(Impl& im, bool triggered);
+  // After a G38 probe (`latch`: where it stopped, machine mm): where its
+  // result is kept; whether the probe input is inverted (a parameter bit, or
+  // grbl's $6).
+  virtual void store_probe(Impl& im, const AxisVec& latch, bool triggered);
   virtual bool probe_inverted(const Impl& im, int param) const;
+  // The LinuxCNC family's own codes and stored values (ngc_codes.cpp,
+  // ngc_params.cpp, ngc_room.cpp); the interpreter asks for them only where
+  // its rules say the language has them (Rules::offsets_in_params,
+  // Rules::state_codes, Action::kNgc of the code table), and Macro B has none.
+  // A block selects work system `set` (1-9); G92 has set an offset.
+  virtual void select_work(Impl& im, int set);
+  virtual void store_g92(Impl& im);
+  // A code of Action::kNgc (G28.1 G30.1 G43.1 G92.1-G92.3).
+  virtual Flow<void> own_action(Impl& im, const Words& words, GCode code);
+  // M70-M73 of a block (`before`: the modes before its own), and what they
+  // saved as a block begins and when it is alarmed.
+  virtual Flow<void> state_codes(Impl& im, const Words& words, const ModalState& before,
+                                 SourceLoc where);
+  virtual void begin_block();
+  virtual void roll_back_block();
 };
 
 // Fanuc Custom Macro B (and the dialects of its family).
@@ -133,17 +150,56 @@ struct NgcState {
   NgcRoom room;                       // M70-M73, log files (ngc_room.hpp)
 };
 
+// LinuxCNC's axis slots X Y Z A B C U V W (the order of #5061.., #5161..,
+// #5221..): the slot of `letter`, -1 if it has none.
+int ngc_axis_index(char letter) noexcept;
+
 // What LinuxCNC and grbl share: their codes (G28/G30 through #5161..,
-// G10 L2/L20), the stored values in #5161-#5390, the comments' log files.
+// G10 L2/L20), the stored values in #5161-#5390, the comments that speak and
+// their log files, M70-M73's saved states.
 class LinuxcncFamily : public Language {
  public:
   NgcState state;
   Result<void> save_persistent(Impl& im) override;
+  // ngc_codes.cpp
   Flow<void> reference_return(Impl& im, const Words& words, int g, CommandSink& out) override;
   Flow<void> data_setting(Impl& im, const Words& words, SourceLoc where) override;
+  Flow<void> own_action(Impl& im, const Words& words, GCode code) override;
+  void store_g92(Impl& im) override;
+  // ngc_room.cpp
+  Flow<void> state_codes(Impl& im, const Words& words, const ModalState& before,
+                         SourceLoc where) override;
+  void begin_block() override;
+  void roll_back_block() override;
+  // A sub returns (endsub / return): the state its M73 saved comes back.
+  void state_on_return(Impl& im);
+  // ngc_params.cpp: the numbered parameters #0-#5601 and the named ones.
+  void select_work(Impl& im, int set) override;  // #5221.. into the work offsets
+  Flow<Value> read_numbered(Impl& im, int n, SourceLoc where);
+  Flow<void> write_numbered(Impl& im, int n, Value v, SourceLoc where);
+  Flow<Value> read_name(Impl& im, const std::string& name, SourceLoc where);
+  Flow<void> write_name(Impl& im, const std::string& name, Value v, SourceLoc where);
+  bool named_exists(Impl& im, const std::string& name);  // EXISTS[#<name>]
+  // The comments of the block that speak: (msg,..), (debug,..), (log,..) ...
+  Flow<void> comments(Impl& im);
 
  protected:
   LinuxcncFamily(const Rules& r, const ExprRules& e) noexcept : Language(r, e) {}
+  // #5221.. from the machine file's work offsets (ngc_params.cpp).
+  void start_params(Impl& im);
+  // #5061-#5070 after a G38, and the line of the probe log.
+  void store_probe_params(Impl& im, const AxisVec& latch_work, bool triggered);
+  void probe_log(Impl& im);
+  Result<void> write_logs(Impl& im);  // the files of (LOGOPEN,..) and (PROBEOPEN ..)
+
+ private:
+  std::optional<Flow<Value>> predefined(Impl& im, const std::string& name, SourceLoc where);
+  std::optional<Flow<Value>> ini_hal(Impl& im, const std::string& n, SourceLoc where);
+  Flow<std::string> message_text(Impl& im, std::string_view text, SourceLoc where);
+  Flow<void> log_comment(Impl& im, std::string_view text, SourceLoc where);
+  void restore_state(Impl& im, const NgcSavedState& s);
+  std::vector<NgcSavedState> saved_before_;  // M70-M73's states as the block began
+  bool had_saved_ = false;
 };
 
 // LinuxCNC's RS274NGC: its numbered and named parameters, O-words, the
@@ -153,14 +209,14 @@ class Rs274ngc final : public LinuxcncFamily {
   Rs274ngc();
   void start(Impl& im) override;
   Flow<Step> execute(Impl& im, CommandSink& out) override;
-  Flow<void> load_persistent(Impl& im) override;
+  Flow<void> load_persistent(Impl& im) override;  // ngc_params.cpp: the parameter file
   Result<void> save_persistent(Impl& im) override;
   Flow<void> preset(Impl& im, int n, double v) override;
   Flow<Value> read_param(Impl& im, int n, SourceLoc where) override;
   Flow<void> write_param(Impl& im, int n, Value v, SourceLoc where) override;
   Flow<Value> read_named(Impl& im, const std::string& name, SourceLoc where) override;
   Flow<void> write_named(Impl& im, const std::string& name, Value v, SourceLoc where) override;
-  void store_probe(Impl& im, bool triggered) override;
+  void store_probe(Impl& im, const AxisVec& latch, bool triggered) override;
 };
 
 // grbl's own state (grbl_system.cpp).
@@ -174,7 +230,8 @@ struct GrblState {
 };
 
 // grbl: LinuxCNC's codes without parameters, expressions or subprograms, and
-// its `$` system lines; the interpreter's own variables are Macro B's.
+// its `$` system lines (grbl_system.cpp); the interpreter's own variables are
+// Macro B's.
 class Grbl final : public LinuxcncFamily {
  public:
   Grbl();
@@ -182,6 +239,19 @@ class Grbl final : public LinuxcncFamily {
   void start(Impl& im) override;
   Flow<Step> execute(Impl& im, CommandSink& out) override;
   bool probe_inverted(const Impl& im, int param) const override;
+  void store_probe(Impl& im, const AxisVec& latch, bool triggered) override;
+
+ private:
+  double setting(int n) const noexcept;
+  std::string coords(const Impl& im, const AxisVec& mm) const;
+  Flow<Step> system_line(Impl& im, CommandSink& out);
+  Flow<Step> report(Impl& im, const std::string& text);
+  Flow<Step> store_setting(Impl& im, const std::string& text, CommandSink& out);
+  Flow<Step> home(Impl& im, CommandSink& out);
+  Flow<Step> jog(Impl& im, CommandSink& out);
+  void list_settings(Impl& im);
+  void list_offsets(Impl& im);
+  void modal_line(Impl& im);
 };
 
 std::unique_ptr<Language> make_language(config::Language kind);

@@ -129,9 +129,7 @@ void Interpreter::Impl::begin_tables(bool calls) {
   work_offsets.begin_block();
   tools.begin_block();
   vars.begin_block();
-  // M70-M73's saved states (RS274NGC), when there are any.
-  before_block.had_saved_states = lang->rules.state_codes && !ngc_state().room.saved.empty();
-  if (before_block.had_saved_states) before_block.saved_states = ngc_state().room.saved;
+  if (lang->rules.state_codes) lang->begin_block();  // M70-M73's saved states (ngc_room.cpp)
   if (!calls) return;
   before_block.frames = frames;
   before_block.modal_macro_program = modal_macro_program;
@@ -151,11 +149,7 @@ void Interpreter::Impl::roll_back_tables(bool calls) {
   work_offsets.roll_back();
   tools.roll_back();
   vars.roll_back();
-  if (before_block.had_saved_states) {
-    ngc_state().room.saved = before_block.saved_states;
-  } else if (lang->rules.state_codes) {
-    ngc_state().room.saved.clear();
-  }
+  if (lang->rules.state_codes) lang->roll_back_block();
   if (!calls) return;
   frames = before_block.frames;
   modal_macro_program = before_block.modal_macro_program;

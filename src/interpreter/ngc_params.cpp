@@ -35,46 +35,47 @@ std::string lower(std::string s) {
 
 }  // namespace
 
-int Interpreter::Impl::ngc_axis_index(char letter) const noexcept {
+int ngc_axis_index(char letter) noexcept {
   for (int i = 0; i < 9; ++i) {
     if (kNgcAxes[i] == letter) return i;
   }
   return -1;
 }
 
-Flow<Value> Interpreter::Impl::read_ngc_param(int n, SourceLoc where) {
+Flow<Value> LinuxcncFamily::read_numbered(Impl& im, int n, SourceLoc where) {
   if (n < 0 || n >= VariableStore::kNgcParams) {
     return fail(AlarmId::kIllegalVariable,
                 "#" + std::to_string(n) + ": parameters are #0 to #" +
                     std::to_string(VariableStore::kNgcParams - 1),
                 where);
   }
-  if (n >= 1 && n <= 30) return Value::of(vars.get(n).num());
+  if (n >= 1 && n <= 30) return Value::of(im.vars.get(n).num());
   // A machine axis of LinuxCNC's axis slot j (X Y Z A B C U V W), -1 if none.
-  auto axis = [&](int j) { return axis_of_letter[static_cast<std::size_t>(kNgcAxes[j] - 'A')]; };
-  if (n == 5220) return Value::of(modal.work >= 1 && modal.work <= 9 ? modal.work : 1.0);
-  if (n == 5400) return Value::of(modal.tool);
+  auto axis = [&](int j) { return im.axis_of_letter[static_cast<std::size_t>(kNgcAxes[j] - 'A')]; };
+  if (n == 5220) return Value::of(im.modal.work >= 1 && im.modal.work <= 9 ? im.modal.work : 1.0);
+  if (n == 5400) return Value::of(im.modal.tool);
   if (n >= 5401 && n <= 5409) {
     const int a = axis(n - 5401);
-    return Value::of(a >= 0 && a == length_axis ? length_offset / unit_mm() + 0.0 : 0.0);
+    return Value::of(a >= 0 && a == im.length_axis ? im.length_offset / im.unit_mm() + 0.0 : 0.0);
   }
   if (n >= 5410 && n <= 5413) {
-    if (n == 5410 && modal.tool > 0 && modal.tool < static_cast<int>(tools.size())) {
-      const auto& t = tools[static_cast<std::size_t>(modal.tool)];
-      return Value::of(2.0 * (t.radius_geometry + t.radius_wear) / unit_mm());
+    if (n == 5410 && im.modal.tool > 0 && im.modal.tool < static_cast<int>(im.tools.size())) {
+      const auto& t = im.tools[static_cast<std::size_t>(im.modal.tool)];
+      return Value::of(2.0 * (t.radius_geometry + t.radius_wear) / im.unit_mm());
     }
     return Value::of(0.0);
   }
   if (n >= 5420 && n <= 5428) {
-    if (motion_since_sync) return need_sync();
+    if (im.motion_since_sync) return need_sync();
     const int a = axis(n - 5420);
     if (a < 0) return Value::of(0.0);
-    return Value::of(position_var(a, pos[a] + comp.vector()[a], dialect.sw.current_tool_offsets));
+    return Value::of(
+        im.position_var(a, im.pos[a] + im.comp.vector()[a], im.dialect.sw.current_tool_offsets));
   }
-  return Value::of(vars.ngc_param(n));
+  return Value::of(im.vars.ngc_param(n));
 }
 
-Flow<void> Interpreter::Impl::write_ngc_param(int n, Value v, SourceLoc where) {
+Flow<void> LinuxcncFamily::write_numbered(Impl& im, int n, Value v, SourceLoc where) {
   if (n < 0 || n >= VariableStore::kNgcParams) {
     return fail(AlarmId::kIllegalVariable,
                 "#" + std::to_string(n) + ": parameters are #0 to #" +
@@ -82,7 +83,7 @@ Flow<void> Interpreter::Impl::write_ngc_param(int n, Value v, SourceLoc where) {
                 where);
   }
   if (n >= 1 && n <= 30) {
-    vars.set(n, Value::of(v.num()));
+    im.vars.set(n, Value::of(v.num()));
     return {};
   }
   if ((n >= 5061 && n <= 5070) || n == 5220 || (n >= 5400 && n <= 5428)) {
@@ -91,76 +92,79 @@ Flow<void> Interpreter::Impl::write_ngc_param(int n, Value v, SourceLoc where) {
   // #5161-#5390: the stored G28/G30 positions, the G92 offsets (#5211..)
   // and the work offsets (#5221..), each within kMaxOffsetMm.
   if (n >= 5161 && n <= 5390 && n != 5210 && (n - 5221) % 20 != 9 && n != 5220) {
-    auto ok = check_offset(v.num() * stored_mm(), "#" + std::to_string(n), where);
+    auto ok = im.check_offset(v.num() * im.stored_mm(), "#" + std::to_string(n), where);
     if (!ok) return ok;
   }
   // #5221-#5390 are the stored work offsets: the active system keeps what
   // it loaded until another one is selected (ngc_load_work), as LinuxCNC.
-  vars.set_ngc_param(n, v.num());
+  im.vars.set_ngc_param(n, v.num());
   return {};
 }
 
 // The work offsets of system `set` (1-9) from #5221.. (LinuxCNC loads them
 // when a block selects a system other than the active one, and at start).
-void Interpreter::Impl::ngc_load_work(int set) {
-  for (int i = 0; i < axis_count; ++i) {
-    const int j = ngc_axis_index(axis_letter[static_cast<std::size_t>(i)]);
+void LinuxcncFamily::select_work(Impl& im, int set) {
+  for (int i = 0; i < im.axis_count; ++i) {
+    const int j = ngc_axis_index(im.axis_letter[static_cast<std::size_t>(i)]);
     if (j < 0) continue;
-    work_offsets.write(static_cast<std::size_t>(set))[i] =
-        vars.ngc_param(5221 + 20 * (set - 1) + j) * stored_mm();
+    im.work_offsets.write(static_cast<std::size_t>(set))[i] =
+        im.vars.ngc_param(5221 + 20 * (set - 1) + j) * im.stored_mm();
   }
 }
 
 // The predefined named parameters (LinuxCNC "Predefined Named Parameters"):
 // nullopt when `name` is not one of them.
-std::optional<Flow<Value>> Interpreter::Impl::predefined_named(const std::string& name,
-                                                               SourceLoc where) {
+std::optional<Flow<Value>> LinuxcncFamily::predefined(Impl& im, const std::string& name,
+                                                      SourceLoc where) {
   const std::string n = lower(name);
   if (n.size() < 2 || n[0] != '_') return std::nullopt;
-  if (auto r = ngc_ini_hal(n, where)) return r;
+  if (auto r = ini_hal(im, n, where)) return r;
   auto of = [](double x) -> std::optional<Flow<Value>> { return Flow<Value>(Value::of(x + 0.0)); };
   // Positions: #<_x> .. #<_w> in work coordinates (as #5420..), #<_abs_x> ..
   // in machine coordinates.
   const bool abs = n.starts_with("_abs_") && n.size() == 6;
   if ((n.size() == 2 || abs) && ngc_axis_index(static_cast<char>(std::toupper(n.back()))) >= 0) {
     const int j = ngc_axis_index(static_cast<char>(std::toupper(n.back())));
-    const int a = axis_of_letter[static_cast<std::size_t>(kNgcAxes[j] - 'A')];
-    if (motion_since_sync) return Flow<Value>(need_sync());
+    const int a = im.axis_of_letter[static_cast<std::size_t>(kNgcAxes[j] - 'A')];
+    if (im.motion_since_sync) return Flow<Value>(need_sync());
     if (a < 0) return of(0.0);
-    const double tool = pos[a] + comp.vector()[a];
-    return of(abs ? tool / unit_mm() : position_var(a, tool, dialect.sw.current_tool_offsets));
+    const double tool = im.pos[a] + im.comp.vector()[a];
+    return of(abs ? tool / im.unit_mm()
+                  : im.position_var(a, tool, im.dialect.sw.current_tool_offsets));
   }
-  if (n == "_line") return of(cur_line);
-  if (n == "_value") return of(ngc_state().value.num());
-  if (n == "_value_returned") return of(ngc_state().value_returned ? 1.0 : 0.0);
-  if (n == "_call_level") return of(static_cast<double>(frames.size() - 1));
+  if (n == "_line") return of(im.cur_line);
+  if (n == "_value") return of(state.value.num());
+  if (n == "_value_returned") return of(state.value_returned ? 1.0 : 0.0);
+  if (n == "_call_level") return of(static_cast<double>(im.frames.size() - 1));
   if (n == "_task") return of(1.0);
-  if (n == "_metric") return of(modal.units == Units::kMetric ? 1.0 : 0.0);
-  if (n == "_imperial") return of(modal.units == Units::kInch ? 1.0 : 0.0);
-  if (n == "_absolute") return of(modal.distance == Distance::kAbsolute ? 1.0 : 0.0);
-  if (n == "_incremental") return of(modal.distance == Distance::kIncremental ? 1.0 : 0.0);
-  if (n == "_units_per_minute") return of(modal.feed_mode == FeedMode::kPerMinute ? 1.0 : 0.0);
-  if (n == "_units_per_rev") return of(modal.feed_mode == FeedMode::kPerRev ? 1.0 : 0.0);
+  if (n == "_metric") return of(im.modal.units == Units::kMetric ? 1.0 : 0.0);
+  if (n == "_imperial") return of(im.modal.units == Units::kInch ? 1.0 : 0.0);
+  if (n == "_absolute") return of(im.modal.distance == Distance::kAbsolute ? 1.0 : 0.0);
+  if (n == "_incremental") return of(im.modal.distance == Distance::kIncremental ? 1.0 : 0.0);
+  if (n == "_units_per_minute") return of(im.modal.feed_mode == FeedMode::kPerMinute ? 1.0 : 0.0);
+  if (n == "_units_per_rev") return of(im.modal.feed_mode == FeedMode::kPerRev ? 1.0 : 0.0);
   if (n == "_inverse_time") return of(0.0);
-  if (n == "_feed") return of(modal.feed);
-  if (n == "_rpm") return of(modal.spindle);
-  if (n == "_current_tool" || n == "_selected_tool") return of(modal.tool);
-  if (n == "_spindle_on") return of(modal.spindle_dir != 0 ? 1.0 : 0.0);
-  if (n == "_spindle_cw") return of(modal.spindle_dir == 1 ? 1.0 : 0.0);
-  if (n == "_tool_offset") return of(modal.length != LengthComp::kOff ? 1.0 : 0.0);
+  if (n == "_feed") return of(im.modal.feed);
+  if (n == "_rpm") return of(im.modal.spindle);
+  if (n == "_current_tool" || n == "_selected_tool") return of(im.modal.tool);
+  if (n == "_spindle_on") return of(im.modal.spindle_dir != 0 ? 1.0 : 0.0);
+  if (n == "_spindle_cw") return of(im.modal.spindle_dir == 1 ? 1.0 : 0.0);
+  if (n == "_tool_offset") return of(im.modal.length != LengthComp::kOff ? 1.0 : 0.0);
   if (n == "_coord_system") {
-    return of(modal.work > 6 ? 584.0 + modal.work : 530.0 + 10.0 * modal.work);
+    return of(im.modal.work > 6 ? 584.0 + im.modal.work : 530.0 + 10.0 * im.modal.work);
   }
   if (n == "_plane") {
-    return of(modal.plane == PlaneSel::kXY ? 170.0 : modal.plane == PlaneSel::kZX ? 180.0 : 190.0);
+    return of(im.modal.plane == PlaneSel::kXY   ? 170.0
+              : im.modal.plane == PlaneSel::kZX ? 180.0
+                                                : 190.0);
   }
   if (n == "_ccomp") {
-    return of(modal.cutter == CutterComp::kOff    ? 400.0
-              : modal.cutter == CutterComp::kLeft ? 410.0
-                                                  : 420.0);
+    return of(im.modal.cutter == CutterComp::kOff    ? 400.0
+              : im.modal.cutter == CutterComp::kLeft ? 410.0
+                                                     : 420.0);
   }
   if (n == "_motion_mode") {
-    switch (modal.motion) {
+    switch (im.modal.motion) {
       case Motion::kRapid:
         return of(0.0);
       case Motion::kLinear:
@@ -170,7 +174,7 @@ std::optional<Flow<Value>> Interpreter::Impl::predefined_named(const std::string
       case Motion::kCcwArc:
         return of(30.0);
       case Motion::kProbe:
-        return of(static_cast<double>(modal.probe.tenths()));  // 382: G38.2
+        return of(static_cast<double>(im.modal.probe.tenths()));  // 382: G38.2
       default:
         return of(0.0);
     }
@@ -178,48 +182,48 @@ std::optional<Flow<Value>> Interpreter::Impl::predefined_named(const std::string
   return std::nullopt;
 }
 
-bool Interpreter::Impl::ngc_named_exists(const std::string& name) {
+bool LinuxcncFamily::named_exists(Impl& im, const std::string& name) {
   if (!name.empty() && name.front() == '_') {
-    return vars.has_named(name) || predefined_named(name, loc(cur_col)).has_value();
+    return im.vars.has_named(name) || predefined(im, name, im.loc(im.cur_col)).has_value();
   }
-  return vars.local_named(name) != nullptr;
+  return im.vars.local_named(name) != nullptr;
 }
 
-Flow<Value> Interpreter::Impl::read_ngc_named(const std::string& name, SourceLoc where) {
+Flow<Value> LinuxcncFamily::read_name(Impl& im, const std::string& name, SourceLoc where) {
   if (!name.empty() && name.front() == '_') {
-    if (auto p = predefined_named(name, where)) return std::move(*p);
-    if (vars.has_named(name)) return vars.get_named(name);
-  } else if (const Value* v = vars.local_named(name)) {
+    if (auto p = predefined(im, name, where)) return std::move(*p);
+    if (im.vars.has_named(name)) return im.vars.get_named(name);
+  } else if (const Value* v = im.vars.local_named(name)) {
     return *v;
   }
   return fail(AlarmId::kNamedUndefined, "#<" + lower(name) + "> was never set", where);
 }
 
-Flow<void> Interpreter::Impl::write_ngc_named(const std::string& name, Value v, SourceLoc where) {
+Flow<void> LinuxcncFamily::write_name(Impl& im, const std::string& name, Value v, SourceLoc where) {
   const bool global = !name.empty() && name.front() == '_';
-  if (global && predefined_named(name, where).has_value()) {
+  if (global && predefined(im, name, where).has_value()) {
     return fail(AlarmId::kWriteProtected, "#<" + lower(name) + "> is a predefined parameter",
                 where);
   }
-  const bool have = global ? vars.has_named(name) : vars.local_named(name) != nullptr;
-  if (!have && static_cast<std::int64_t>(vars.named_count() + vars.local_named_count()) >=
-                   mc.limits.max_named_variables) {
+  const bool have = global ? im.vars.has_named(name) : im.vars.local_named(name) != nullptr;
+  if (!have && static_cast<std::int64_t>(im.vars.named_count() + im.vars.local_named_count()) >=
+                   im.mc.limits.max_named_variables) {
     return fail(AlarmId::kNamedVariableLimit,
                 "#<" + lower(name) + ">: more than limits.max_named_variables = " +
-                    std::to_string(mc.limits.max_named_variables) + " named parameters",
+                    std::to_string(im.mc.limits.max_named_variables) + " named parameters",
                 where);
   }
   if (global) {
-    vars.set_named(name, Value::of(v.num()));
+    im.vars.set_named(name, Value::of(v.num()));
   } else {
-    vars.set_local_named(name, Value::of(v.num()));
+    im.vars.set_local_named(name, Value::of(v.num()));
   }
   return {};
 }
 
 // A message's text with #n and #<name> replaced by their values ("%f", as
 // LinuxCNC prints them; a named parameter never set prints "######").
-Flow<std::string> Interpreter::Impl::ngc_message_text(std::string_view text, SourceLoc where) {
+Flow<std::string> LinuxcncFamily::message_text(Impl& im, std::string_view text, SourceLoc where) {
   std::string out;
   std::size_t i = 0;
   char buf[64];
@@ -241,12 +245,12 @@ Flow<std::string> Interpreter::Impl::ngc_message_text(std::string_view text, Sou
         }
       }
       i = close + 1;
-      const bool exists = ngc_named_exists(name);
+      const bool exists = named_exists(im, name);
       if (!exists) {
         out += "######";
         continue;
       }
-      auto v = read_ngc_named(name, where);
+      auto v = read_name(im, name, where);
       SKIPNC_TRY(v);
       std::snprintf(buf, sizeof buf, "%f", v->num());
       out += buf;
@@ -262,7 +266,7 @@ Flow<std::string> Interpreter::Impl::ngc_message_text(std::string_view text, Sou
       out += text[i++];
       continue;
     }
-    auto v = read_ngc_param(n, where);
+    auto v = read_numbered(im, n, where);
     SKIPNC_TRY(v);
     std::snprintf(buf, sizeof buf, "%f", v->num());
     out += buf;
@@ -274,27 +278,27 @@ Flow<std::string> Interpreter::Impl::ngc_message_text(std::string_view text, Sou
 // The comments of an RS274NGC line that speak: (msg,..) is shown as
 // written, (debug,..) with parameters replaced; (print,..) goes to the
 // messages the same way (LinuxCNC prints it on its standard output).
-Flow<void> Interpreter::Impl::ngc_comments() {
-  for (const auto& c : blk.comments) {
-    const std::string& t = blk.names[static_cast<std::size_t>(c.text)];
+Flow<void> LinuxcncFamily::comments(Impl& im) {
+  for (const auto& c : im.blk.comments) {
+    const std::string& t = im.blk.names[static_cast<std::size_t>(c.text)];
     std::size_t i = 0;
     while (i < t.size() && (t[i] == ' ' || t[i] == '\t')) ++i;
     const std::string head = lower(t.substr(i, 6));
     if (head.starts_with("msg,")) {
-      add_message(t.substr(i + 4));
+      im.add_message(t.substr(i + 4));
     } else if (head.starts_with("debug,") || head.starts_with("print,")) {
-      auto m = ngc_message_text(std::string_view(t).substr(i + 6), loc(c.column));
+      auto m = message_text(im, std::string_view(t).substr(i + 6), im.loc(c.column));
       SKIPNC_TRY(m);
-      add_message(*m);
+      im.add_message(*m);
     } else if (head.starts_with("abort,")) {
       // LinuxCNC "(ABORT, ...)": the run ends with the text (parameters
       // replaced as in DEBUG) as its error ("Comments" in the G-code overview).
-      auto m = ngc_message_text(std::string_view(t).substr(i + 6), loc(c.column));
+      auto m = message_text(im, std::string_view(t).substr(i + 6), im.loc(c.column));
       SKIPNC_TRY(m);
       const std::size_t text = std::min(m->find_first_not_of(" \t"), m->size());
-      return fail(AlarmId::kUserAlarm, "(abort) " + m->substr(text), loc(c.column));
+      return fail(AlarmId::kUserAlarm, "(abort) " + m->substr(text), im.loc(c.column));
     } else {
-      auto r = ngc_log_comment(std::string_view(t).substr(i), loc(c.column));
+      auto r = log_comment(im, std::string_view(t).substr(i), im.loc(c.column));
       if (!r) return r;
     }
   }
@@ -303,24 +307,24 @@ Flow<void> Interpreter::Impl::ngc_comments() {
 
 // After a G38: #5061-#5069 (the latch, or the end point without contact,
 // in the work coordinates of the block) and #5070.
-void Interpreter::Impl::ngc_store_probe(const AxisVec& latch_work, bool triggered) {
+void LinuxcncFamily::store_probe_params(Impl& im, const AxisVec& latch_work, bool triggered) {
   for (int j = 0; j < 9; ++j) {
-    const int a = axis_of_letter[static_cast<std::size_t>(kNgcAxes[j] - 'A')];
-    vars.set_ngc_param(5061 + j, a < 0 ? 0.0 : latch_work[a]);
+    const int a = im.axis_of_letter[static_cast<std::size_t>(kNgcAxes[j] - 'A')];
+    im.vars.set_ngc_param(5061 + j, a < 0 ? 0.0 : latch_work[a]);
   }
-  vars.set_ngc_param(5070, triggered ? 1.0 : 0.0);
+  im.vars.set_ngc_param(5070, triggered ? 1.0 : 0.0);
 }
 
 // At the start: the parameter store, and #5221.. holding the machine file's
 // work offsets (grbl keeps G28, G30, G92 and the offsets in the same numbers).
-void Interpreter::Impl::ngc_start() {
-  vars.enable_ngc_params();
+void LinuxcncFamily::start_params(Impl& im) {
+  im.vars.enable_ngc_params();
   for (int set = 1; set <= 9; ++set) {
-    for (int i = 0; i < axis_count; ++i) {
-      const int j = ngc_axis_index(axis_letter[static_cast<std::size_t>(i)]);
+    for (int i = 0; i < im.axis_count; ++i) {
+      const int j = ngc_axis_index(im.axis_letter[static_cast<std::size_t>(i)]);
       if (j >= 0) {
-        vars.set_ngc_param(5221 + 20 * (set - 1) + j,
-                           work_offsets[static_cast<std::size_t>(set)][i] / stored_mm());
+        im.vars.set_ngc_param(5221 + 20 * (set - 1) + j,
+                              im.work_offsets[static_cast<std::size_t>(set)][i] / im.stored_mm());
       }
     }
   }
@@ -330,32 +334,32 @@ void Interpreter::Impl::ngc_start() {
 // parameters it lists, and always #5161-#5390 (G28, G30, G92 and the work
 // offsets); the run starts in the system of #5220 with the G92 of
 // #5210-#5219, as LinuxCNC does.
-Flow<void> Interpreter::Impl::load_ngc_var_file() {
-  std::vector<int>& numbers = ngc_state().var_file_numbers;
+Flow<void> Rs274ngc::load_persistent(Impl& im) {
+  std::vector<int>& numbers = state.var_file_numbers;
   std::vector<double> values;
-  auto r = load_var_file(mc.persistent_vars, numbers, values);
+  auto r = load_var_file(im.mc.persistent_vars, numbers, values);
   SKIPNC_TRY(r);
   for (std::size_t i = 0; i < numbers.size(); ++i) {
     const int n = numbers[i];
     if (n == 5220) {  // the coordinate system LinuxCNC starts in
       const double w = std::round(values[i]);
-      if (w >= 1 && w <= 9) modal.work = static_cast<int>(w);
+      if (w >= 1 && w <= 9) im.modal.work = static_cast<int>(w);
       continue;
     }
     if (n >= 5210 && n <= 5219) {  // G92: on and its offsets
-      vars.set_ngc_param(n, values[i]);
+      im.vars.set_ngc_param(n, values[i]);
       continue;
     }
-    if (!write_ngc_param(n, Value::of(values[i]), SourceLoc{})) {
-      return fail(AlarmId::kConfig, "parameter file '" + mc.persistent_vars + "': #" +
+    if (!write_numbered(im, n, Value::of(values[i]), SourceLoc{})) {
+      return fail(AlarmId::kConfig, "parameter file '" + im.mc.persistent_vars + "': #" +
                                         std::to_string(n) + " cannot be set");
     }
   }
-  for (int set = 1; set <= 9; ++set) ngc_load_work(set);
-  if (vars.ngc_param(5210) != 0.0) {
-    for (int i = 0; i < axis_count; ++i) {
-      const int j = ngc_axis_index(axis_letter[static_cast<std::size_t>(i)]);
-      if (j >= 0) g92_shift[i] = vars.ngc_param(5211 + j) * stored_mm();
+  for (int set = 1; set <= 9; ++set) select_work(im, set);
+  if (im.vars.ngc_param(5210) != 0.0) {
+    for (int i = 0; i < im.axis_count; ++i) {
+      const int j = ngc_axis_index(im.axis_letter[static_cast<std::size_t>(i)]);
+      if (j >= 0) im.g92_shift[i] = im.vars.ngc_param(5211 + j) * im.stored_mm();
     }
   }
   for (int n = 5161; n <= 5390; ++n) numbers.push_back(n);

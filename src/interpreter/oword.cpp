@@ -27,6 +27,12 @@ constexpr std::uint32_t bit(OKind k) noexcept {
   return 1u << static_cast<unsigned>(k);
 }
 
+// O-words are RS274NGC's (the parser reads them in its syntax only): the
+// language is LinuxCNC's, #<_value> and M73's states are its own.
+LinuxcncFamily& family(Interpreter::Impl& im) noexcept {
+  return static_cast<LinuxcncFamily&>(*im.lang);
+}
+
 const char* keyword(OKind k) noexcept {
   switch (k) {
     case OKind::kSub:
@@ -147,7 +153,7 @@ Flow<void> Interpreter::Impl::oword_call(const std::string& label, SourceLoc whe
     vars.set(static_cast<int>(i) + 1, Value::of(args[i]));
   }
   for (int i = static_cast<int>(args.size()) + 1; i <= 30; ++i) vars.set(i, Value::of(0.0));
-  ngc_state().value_returned = false;
+  family(*this).state.value_returned = false;
   return {};
 }
 
@@ -170,19 +176,19 @@ Flow<Step> Interpreter::Impl::oword_return(const gcode::Stmt& s, SourceLoc where
     SKIPNC_TRY(v);
     value = v->num();
   }
-  ngc_state_on_return();
+  family(*this).state_on_return(*this);  // ngc_room.cpp
   frames.pop_back();
   vars.pop_level();
   Frame& caller = frames.back();
   auto sk = caller.file->src->seek(caller.resume);
   SKIPNC_TRY(sk);
-  ngc_state().value_returned = value.has_value();
-  if (value) ngc_state().value = Value::of(*value);
+  NgcState& ns = family(*this).state;
+  ns.value_returned = value.has_value();
+  if (value) ns.value = Value::of(*value);
   return Step::kContinue;
 }
 
-Flow<Step> Interpreter::Impl::execute_oword(CommandSink& out) {
-  (void)out;
+Flow<Step> Interpreter::Impl::execute_oword() {
   const gcode::Stmt s = blk.stmt;
   const SourceLoc where = loc(s.column);
   std::string label = blk.names[static_cast<std::size_t>(s.label)];
@@ -415,25 +421,6 @@ Flow<Step> Interpreter::Impl::oword_loop(gcode::OKind kind, const std::string& l
       break;
   }
   return fail(AlarmId::kInternal, "unknown O-word statement", where);
-}
-
-// The parameter settings of an RS274NGC line: every value is read first,
-// then all are set (LinuxCNC: "parameter setting" happens after the whole
-// line is read, so "#1=2 #2=#1" gives #2 the old #1).
-Flow<void> Interpreter::Impl::ngc_assignments() {
-  if (blk.assigns.empty()) return {};
-  std::vector<Value> values;
-  values.reserve(blk.assigns.size());
-  for (const gcode::Assignment& a : blk.assigns) {
-    auto v = eval(a.rhs);
-    SKIPNC_TRY(v);
-    values.push_back(Value::of(v->num()));
-  }
-  for (std::size_t i = 0; i < blk.assigns.size(); ++i) {
-    auto r = assign(blk.assigns[i].lhs, values[i]);
-    if (!r) return r;
-  }
-  return {};
 }
 
 }  // namespace skipnc::interp

@@ -20,6 +20,12 @@
 
 namespace skipnc::interp {
 
+bool Interpreter::Impl::probe_inverted() const noexcept {
+  const int n = dialect.sw.probe_invert_param;
+  if (n == 0) return false;
+  return lang->probe_inverted(*this, n);  // a parameter bit, or grbl's $6
+}
+
 Flow<Step> Interpreter::Impl::probe_block(const Words& words, const AxisVec& target, AxisMask moved,
                                           CommandSink& out) {
   (void)words;
@@ -60,7 +66,7 @@ Flow<Step> Interpreter::Impl::probe_block(const Words& words, const AxisVec& tar
   spec.input_count = 1;  // the probe input: the dialect's first
   spec.inputs[0] = in->addr[0];
   pending_skip.input_names[0] = config::signal_name(in->addr[0]);
-  const bool invert = probe_inverted();  // grbl_system.cpp: $6 as the program set it
+  const bool invert = probe_inverted();  // a parameter bit, or grbl's $6 as the program set it
   // Away from the part the move waits for the input to go inactive: the
   // input's active state is the other one.
   spec.active_low = toward == invert;
@@ -92,15 +98,9 @@ Flow<void> Interpreter::Impl::finish_probe(const SyncState& s) {
                        : name + ": the probe was not in contact when the move began",
                 ps.loc);
   }
-  const AxisVec latch = record_skip(s);   // skip.cpp
-  lang->store_probe(*this, s.triggered);  // #5061-#5070 (RS274NGC) or a success flag
-  if (dialect.sw.probe_report_line) {
-    // grbl: "[PRB:x,y,z:1]", machine coordinates in mm, 3 decimals (inches,
-    // 4 decimals, with $13 = 1); kept for `$#`.
-    grbl_system().prb = latch;
-    grbl_system().prb_ok = s.triggered;
-    add_message("[PRB:" + grbl_coords(latch) + (s.triggered ? ":1]" : ":0]"));
-  }
+  const AxisVec latch = record_skip(s);  // skip.cpp
+  // #5061-#5070 (RS274NGC), a success flag, grbl's [PRB:] (language.cpp)
+  lang->store_probe(*this, latch, s.triggered);
   if (!s.triggered && ps.alarm_on_miss) {
     return fail(toward ? AlarmId::kProbeNoContact : AlarmId::kProbeNoBreak,
                 toward ? name + " reached its end point without contact"
