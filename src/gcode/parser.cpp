@@ -326,14 +326,13 @@ ExprId Parser::ngc_word_function(char c) {
 }
 
 // p_ at '#': one parameter setting of an RS274NGC line.
-bool Parser::parse_ngc_assign(const char* at) {
+bool Parser::parse_ngc_assign() {
   const ExprId lhs = parse_var(false);
   if (lhs == kFail) return false;
   if (peek() != '=') return unexpected("'=' after the parameter", p_);
   ++p_;
   const ExprId rhs = parse_expr();
   if (rhs == kFail) return false;
-  (void)at;
   out_.assigns.push_back(Assignment{lhs, rhs});
   return true;
 }
@@ -466,7 +465,7 @@ inline Result<void> Parser::run() {
       } else if (is_upper(c)) {
         ok = parse_word();
       } else if (c == '#' && ngc_) {
-        ok = parse_ngc_assign(at);
+        ok = parse_ngc_assign();
       } else if (c == '#' || c == '[') {
         ok = error(AlarmId::kIllegalChar,
                    std::string("this control has no ") +

@@ -407,7 +407,7 @@ class Parser {
   [[gnu::always_inline]] bool parse_olabel(std::string& label, ExprId& computed,
                                            std::int64_t& number);
   [[gnu::always_inline]] bool parse_oword_args(OKind kind);
-  bool parse_ngc_assign(const char* at);
+  bool parse_ngc_assign();
   ExprId ngc_word_function(char c);
   [[gnu::noinline]] int ngc_precedence(Op op) const noexcept;
   [[gnu::always_inline]] bool try_keyword(int c, const char* at, bool& handled);

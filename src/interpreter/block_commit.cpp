@@ -66,9 +66,8 @@ void Interpreter::Impl::commit_modal(const Words& words, const BlockPlan& plan, 
   modal.seq = seq;
 }
 
-Flow<void> Interpreter::Impl::commit_tool(const Words& words, const BlockPlan& plan,
-                                          const ModalState& before, CommandSink& out) {
-  (void)plan;
+Flow<void> Interpreter::Impl::commit_tool(const Words& words, const ModalState& before,
+                                          CommandSink& out) {
   if (modal.length != before.length || (words.has('H') && modal.length != LengthComp::kOff)) {
     auto r = set_tool_length(words, modal.length);
     if (!r) return r;
@@ -103,7 +102,7 @@ Flow<void> Interpreter::Impl::commit_shift(const Words& words, bool local) {
   for (int i = 0; i < axis_count; ++i) {
     const char c = axis_letter[static_cast<std::size_t>(i)];
     if (!words.has(c)) continue;
-    const double v = word_length(words.at(c), false) * unit_mm();
+    const double v = word_length(words.at(c)) * unit_mm();
     if (local) {
       shift[i] = v;
     } else {
@@ -135,7 +134,7 @@ void Interpreter::Impl::commit_tool_pos_offset(const Words& words, int g) {
   for (int i = 0; i < axis_count; ++i) {
     const char c = axis_letter[static_cast<std::size_t>(i)];
     if (!words.has(c)) continue;
-    const double v = word_length(words.at(c), false);
+    const double v = word_length(words.at(c));
     const double dist = inc ? v : v - work_of(i, pos[i]);
     const double shift = (dist < 0.0 ? -1.0 : 1.0) * k;
     tool_pos_offset[i] += shift;
@@ -348,7 +347,7 @@ Flow<Step> Interpreter::Impl::commit_block(const Words& words, const BlockPlan& 
   if (plan.call) return commit_call(plan);
   const ModalState before = modal;
   commit_modal(words, plan, out);
-  SKIPNC_TRY(commit_tool(words, plan, before, out));
+  SKIPNC_TRY(commit_tool(words, before, out));
   commit_spindle(words, plan.spindle_changed, out);
   if (lang->rules.state_codes) {
     SKIPNC_TRY(lang->state_codes(*this, words, before, loc(cur_col)));  // ngc_room.cpp

@@ -58,8 +58,8 @@ Flow<xform::Transform> Interpreter::Impl::conversion_3d(const Words& words, cons
   if (!words.has('I') || !words.has('J') || !words.has('K')) {
     return format("I, J and K must all be given");
   }
-  const xform::Point axis{word_length(words.at('I'), false), word_length(words.at('J'), false),
-                          word_length(words.at('K'), false)};
+  const xform::Point axis{word_length(words.at('I')), word_length(words.at('J')),
+                          word_length(words.at('K'))};
   if (axis[0] == 0.0 && axis[1] == 0.0 && axis[2] == 0.0) return format("I, J and K are all 0");
   if (!words.has('R')) return format("no angular displacement R");
   if (frame.conversions() >= xform::kMaxConversions) {
@@ -74,8 +74,8 @@ Flow<xform::Transform> Interpreter::Impl::conversion_3d(const Words& words, cons
   for (int i = 0; i < 3; ++i) {
     const char c = "XYZ"[i];
     const auto u = static_cast<std::size_t>(i);
-    k.center[u] = axis_of_letter[c - 'A'] >= 0 && words.has(c) ? word_length(words.at(c), false)
-                                                               : fallback[u];
+    k.center[u] =
+        axis_of_letter[c - 'A'] >= 0 && words.has(c) ? word_length(words.at(c)) : fallback[u];
   }
   k.m = xform::axis_angle(axis, angle);
   if (modal.cutter != CutterComp::kOff && (!xform::keeps_z(k.m) || frame.tilted())) {

@@ -146,8 +146,9 @@ struct PendingSkip {
 };
 
 // The small state a block may change is the base BlockState (block_state.hpp);
-// the large tables are journaled (journal.hpp).
-struct Interpreter::Impl : BlockState {
+// the large tables are journaled (journal.hpp: the offset tables, the base
+// OffsetTables; the variables, variables.hpp).
+struct Interpreter::Impl : BlockState, OffsetTables {
   Setup setup;
   const config::MachineConfig& mc;
   const config::Dialect& dialect;
@@ -158,9 +159,8 @@ struct Interpreter::Impl : BlockState {
   std::uint32_t axis_letters = 0;        // bit c set: letter 'A' + c is an axis
 
   // Program files, their indexes, include folders, the call stack
-  // (program_store.hpp); `frames` is its call stack.
+  // (program_store.hpp; programs.frames is the call stack).
   ProgramStore programs;
-  std::vector<Frame>& frames = programs.frames;
   std::vector<CallContext> contexts;  // every call path met; [0] the main program
   gcode::Block blk;
   BlockBuffer block_buffer;  // the running block's commands (reused)
@@ -172,16 +172,11 @@ struct Interpreter::Impl : BlockState {
   std::uint32_t cur_line = 0;
   std::uint32_t cur_col = 1;
 
-  // EXT, G54..G59, then G54.1 P1..P300 (mm); modal.work indexes it.
-  JournaledTable<AxisVec> work_offsets;
-  // G54.4 workpiece setting error data, #26000-#26079 (conversion_3d.cpp).
-  std::array<Value, 80> setting_error_data{};
   int length_axis = 2;
   // Lathe (lathe.cpp). Program values of an axis are `axis_scale` times its
   // machine coordinate: 2 for an X axis programmed in diameter (1006#3), 1
   // otherwise. Offsets (work, G50/G92, G52, T) are kept in program values.
   std::array<double, kMaxAxes> axis_scale{};
-  JournaledTable<config::ToolOffset> tools;  // index = offset number
   VariableStore vars;
   AxisVec skip_work;  // #5061.. (program units)
   AxisVec skip_machine;
@@ -271,7 +266,7 @@ struct Interpreter::Impl : BlockState {
   Flow<void> count_statement(SourceLoc where);
 
   // macro_flow.cpp
-  Flow<Step> execute_statement(CommandSink& out);
+  Flow<Step> execute_statement();
   Flow<Step> goto_statement(const gcode::Stmt& s, SourceLoc where);
   Flow<Step> loop_statement(const gcode::Stmt& s, SourceLoc where);  // WHILE, DO
   Flow<Step> pass_false_while(int id, SourceLoc where);
@@ -361,8 +356,7 @@ struct Interpreter::Impl : BlockState {
   void commit_messages();
   Flow<Step> commit_call(const BlockPlan& plan);
   void commit_modal(const Words& words, const BlockPlan& plan, CommandSink& out);
-  Flow<void> commit_tool(const Words& words, const BlockPlan& plan, const ModalState& before,
-                         CommandSink& out);
+  Flow<void> commit_tool(const Words& words, const ModalState& before, CommandSink& out);
   void commit_spindle(const Words& words, bool changed, CommandSink& out);
   Flow<void> commit_shift(const Words& words, bool local);
   void commit_tool_pos_offset(const Words& words, int g);
@@ -384,9 +378,9 @@ struct Interpreter::Impl : BlockState {
   double stored_mm() const noexcept {
     return mc.inch_machine && lang->rules.params_in_machine_unit ? 25.4 : 1.0;
   }
-  double word_length(const WordVal& w, bool rotary) const noexcept;  // program units
-  double offset_total(int axis) const noexcept;                      // mm
-  double work_of(int axis, double machine_mm) const noexcept;        // program units
+  double word_length(const WordVal& w) const noexcept;         // program units (a rotary axis too)
+  double offset_total(int axis) const noexcept;                // mm
+  double work_of(int axis, double machine_mm) const noexcept;  // program units
   // The tool offsets on an axis (length, G45-G48, lathe tool offset), mm.
   double tool_offset_total(int axis) const noexcept;
   // A position variable's value: work_of, or with the tool offsets left in
@@ -446,8 +440,7 @@ struct Interpreter::Impl : BlockState {
   AxisVec record_skip(const SyncState& s);
   Flow<Step> queue_skip(const canon::Skip& sk, SourceLoc at, CommandSink& out);
   // probe_g38.cpp: G38.2-G38.5
-  Flow<Step> probe_block(const Words& words, const AxisVec& target, AxisMask moved,
-                         CommandSink& out);
+  Flow<Step> probe_block(const AxisVec& target, AxisMask moved, CommandSink& out);
   Flow<void> finish_probe(const SyncState& s);
   bool probe_inverted() const noexcept;  // the probe input's sense
   Flow<void> arc(const Words& words, const AxisVec& target, CommandSink& out);

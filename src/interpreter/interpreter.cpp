@@ -127,8 +127,8 @@ Flow<void> Interpreter::Impl::warn(const char* code, std::string text, SourceLoc
                                 std::string_view(code)) == setup.strict_allow.end()) {
     return fail(AlarmId::kStrictWarning, std::string(code) + ": " + text, where);
   }
-  add_warning(warnings, Warning{code, frames.empty() ? 0 : frames.back().context, where.line,
-                                std::move(text)});
+  add_warning(warnings, Warning{code, programs.frames.empty() ? 0 : programs.frames.back().context,
+                                where.line, std::move(text)});
   return {};
 }
 
@@ -145,7 +145,7 @@ Flow<void> Interpreter::Impl::count_statement(SourceLoc where) {
 // Reads the next block of the running frame into `blk`. False at the end of
 // the file.
 Flow<bool> Interpreter::Impl::read_block() {
-  Frame& f = frames.back();
+  Frame& f = programs.frames.back();
   gcode::Source& src = *f.file->src;
   block_pos = src.tell();
   auto more = src.next(raw);
@@ -181,7 +181,7 @@ Flow<Step> Interpreter::Impl::step(CommandSink& out) {
 
 // The end of the running file: a subprogram returns, the main program ends.
 Flow<Interpreter::Impl::Read> Interpreter::Impl::end_of_file() {
-  if (frames.size() > 1) {
+  if (programs.frames.size() > 1) {
     SKIPNC_TRY(return_from_sub(std::nullopt, loc(1)));
     return Read::kNext;
   }
@@ -193,8 +193,9 @@ Flow<Interpreter::Impl::Read> Interpreter::Impl::end_of_file() {
 
 // A '%' line: the tape's start, a subprogram's end, or the main program's end.
 Flow<Interpreter::Impl::Read> Interpreter::Impl::percent_block(const Frame& f) {
-  if (frames.size() == 1 && block_pos.offset == f.start.offset) return Read::kNext;  // tape start
-  if (frames.size() > 1) {
+  if (programs.frames.size() == 1 && block_pos.offset == f.start.offset)
+    return Read::kNext;  // tape start
+  if (programs.frames.size() > 1) {
     SKIPNC_TRY(return_from_sub(std::nullopt, loc(1)));
     return Read::kNext;
   }
@@ -209,11 +210,11 @@ Flow<Interpreter::Impl::Read> Interpreter::Impl::percent_block(const Frame& f) {
 // while running one means the running program ended without M99/M30:
 // Fanuc treats the O as the start of a new program.
 Flow<Interpreter::Impl::Read> Interpreter::Impl::program_number_block(Frame& f) {
-  if (block_pos.offset != f.start.offset && frames.size() > 1) {
+  if (block_pos.offset != f.start.offset && programs.frames.size() > 1) {
     SKIPNC_TRY(return_from_sub(std::nullopt, loc(1)));
     return Read::kNext;
   }
-  if (frames.size() == 1 && f.program == 0) {
+  if (programs.frames.size() == 1 && f.program == 0) {
     f.program = blk.o;  // #4115 of the main program
     contexts.front().program = blk.o;
   }
@@ -254,7 +255,7 @@ Flow<Step> Interpreter::Impl::step_block(CommandSink& out) {
   }
   while (!rerun) {
     // Reads blocks until one to execute is in `blk`, or the program ends.
-    Frame& f = frames.back();
+    Frame& f = programs.frames.back();
     auto got = read_block();
     SKIPNC_TRY(got);
     Read r = Read::kRun;
@@ -365,7 +366,7 @@ std::uint32_t Interpreter::line() const noexcept {
   return impl_->cur_line;
 }
 std::uint32_t Interpreter::context() const noexcept {
-  return impl_->frames.empty() ? 0 : impl_->frames.back().context;
+  return impl_->programs.frames.empty() ? 0 : impl_->programs.frames.back().context;
 }
 const std::vector<CallContext>& Interpreter::contexts() const noexcept {
   return impl_->contexts;

@@ -1,5 +1,5 @@
 // A table of the interpreter that an NC block may write (work offsets, tool
-// offsets), too large to copy for every block: each write made while a
+// offsets, G54.4's setting error data), too large to copy for every block: each write made while a
 // block runs records the entry's old value first. A block that succeeds
 // drops the records (commit); an alarmed block puts the old values back,
 // latest first (roll_back). Outside a block (a macro statement is one
@@ -9,6 +9,10 @@
 #include <cstddef>
 #include <utility>
 #include <vector>
+
+#include "config/machine_config.hpp"
+#include "core/axes.hpp"
+#include "interpreter/variables.hpp"
 
 namespace skipnc::interp {
 
@@ -47,6 +51,37 @@ class JournaledTable {
   std::vector<T> items_;
   std::vector<std::pair<std::size_t, T>> undo_;
   bool recording_ = false;
+};
+
+// The offset tables an NC block may write, begun, committed and rolled back
+// together so that none is left out of the block transaction.
+// `Interpreter::Impl` derives from it (the members keep their names).
+struct OffsetTables {
+  // G54.4's data sets 0-7, ten values each (#26000-#26079).
+  static constexpr std::size_t kSettingErrorValues = 80;
+
+  // EXT, G54..G59, then G54.1 P1..P300 (mm); modal.work indexes it.
+  JournaledTable<AxisVec> work_offsets;
+  JournaledTable<config::ToolOffset> tools;  // index = offset number
+  // G54.4 workpiece setting error data, #26000-#26079 (conversion_3d.cpp).
+  JournaledTable<Value> setting_error_data;
+
+  OffsetTables() { setting_error_data.assign(kSettingErrorValues, Value{}); }
+  void begin_offsets() noexcept {
+    work_offsets.begin_block();
+    tools.begin_block();
+    setting_error_data.begin_block();
+  }
+  void commit_offsets() noexcept {
+    work_offsets.commit();
+    tools.commit();
+    setting_error_data.commit();
+  }
+  void roll_back_offsets() noexcept {
+    work_offsets.roll_back();
+    tools.roll_back();
+    setting_error_data.roll_back();
+  }
 };
 
 }  // namespace skipnc::interp

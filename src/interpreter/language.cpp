@@ -198,7 +198,7 @@ Flow<Step> MacroB::execute(Impl& im, CommandSink& out) {
                   im.loc(w.column));
     }
     if (im.blk.has_n) im.modal.seq = static_cast<int>(im.blk.n % 100000000);  // #4114
-    return im.execute_statement(out);
+    return im.execute_statement();
   }
   if (im.blk.condition != gcode::kNoExpr) [[unlikely]] {
     // Haas's `[expr] M99 Pn`: every expression is a condition, 0 false and

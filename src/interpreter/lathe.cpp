@@ -64,7 +64,7 @@ Flow<void> Interpreter::Impl::axis_targets(const Words& words, bool g53, AxisVec
     if (!has_abs && !has_inc) continue;
     const double scale = axis_scale[static_cast<std::size_t>(i)];
     const bool incremental = has_inc || modal.distance == Distance::kIncremental;
-    const double v = word_length(words.at(has_inc ? inc : c), false);
+    const double v = word_length(words.at(has_inc ? inc : c));
     if (g53 && !incremental) {
       target[i] = v * unit_mm() / scale;
     } else if (!incremental) {
@@ -174,7 +174,7 @@ Flow<void> Interpreter::Impl::lathe_coordinate_setting(const Words& words) {
     }
     if (!has_abs && !has_inc) continue;
     const double now = work_of(i, pos[i]) * unit_mm();
-    const double v = word_length(words.at(has_inc ? inc : c), false) * unit_mm();
+    const double v = word_length(words.at(has_inc ? inc : c)) * unit_mm();
     const double want = has_inc ? now + v : v;
     auto ok = check_offset(g92_shift[i] + now - want, std::string("G50 ") + c,
                            loc(words.at(has_inc ? inc : c).column));
@@ -215,7 +215,7 @@ Flow<void> Interpreter::Impl::turning_cycle(const Words& words, AxisVec& target,
   }
   const double feed = feed_mm_per_min();
   if (feed <= 0.0) return fail(AlarmId::kNoFeed, "G90 without a feed (F)", at);
-  const double taper = words.has('R') ? word_length(words.at('R'), false) * unit_mm() : 0.0;
+  const double taper = words.has('R') ? word_length(words.at('R')) * unit_mm() : 0.0;
   const AxisVec start = pos;
   AxisVec p = start;
   p[x] = target[x] + taper;
@@ -264,8 +264,8 @@ Flow<void> Interpreter::Impl::lathe_offset_setting(const Words& words, SourceLoc
                   loc(words.at(f.add).column));
     }
     const double per = unit_mm() / offset_unit_mm(*this);  // stored numbers (offset_units.hpp)
-    if (words.has(f.set)) *f.value = word_length(words.at(f.set), false) * per;
-    if (f.add != 0 && words.has(f.add)) *f.value += word_length(words.at(f.add), false) * per;
+    if (words.has(f.set)) *f.value = word_length(words.at(f.set)) * per;
+    if (f.add != 0 && words.has(f.add)) *f.value += word_length(words.at(f.add)) * per;
   }
   if (words.has('Q')) {
     const WordVal& q = words.at('Q');

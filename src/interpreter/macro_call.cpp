@@ -25,7 +25,8 @@ std::uint32_t Interpreter::Impl::context_of(CallContext c) {
 Flow<void> Interpreter::Impl::call(std::int64_t program, int repeats, bool macro, SourceLoc where,
                                    bool modal_call) {
   int subs = 0, macros = 0;
-  for (std::size_t i = 1; i < frames.size(); ++i) (frames[i].macro ? macros : subs)++;
+  for (std::size_t i = 1; i < programs.frames.size(); ++i)
+    (programs.frames[i].macro ? macros : subs)++;
   if (macro && macros >= mc.limits.max_macro_levels) {
     return fail(
         AlarmId::kMacroNesting,
@@ -55,17 +56,17 @@ Flow<void> Interpreter::Impl::call(std::int64_t program, int repeats, bool macro
 // run l times; M99 returns to the block after the M97.
 Flow<void> Interpreter::Impl::local_call(std::int64_t label, int repeats, SourceLoc where) {
   int subs = 0;
-  for (std::size_t i = 1; i < frames.size(); ++i) subs += frames[i].macro ? 0 : 1;
+  for (std::size_t i = 1; i < programs.frames.size(); ++i) subs += programs.frames[i].macro ? 0 : 1;
   if (subs >= mc.limits.max_subprogram_levels) {
     return fail(AlarmId::kSubprogramNesting,
                 "subprogram nesting deeper than " +
                     std::to_string(mc.limits.max_subprogram_levels) + " levels",
                 where);
   }
-  const gcode::SourcePos resume = frames.back().file->src->tell();
-  auto at = programs.find_label(frames.back(), label, block_pos.offset, where);
+  const gcode::SourcePos resume = programs.frames.back().file->src->tell();
+  auto at = programs.find_label(programs.frames.back(), label, block_pos.offset, where);
   SKIPNC_TRY(at);
-  const Frame& caller = frames.back();
+  const Frame& caller = programs.frames.back();
   Frame f;
   f.file = caller.file;
   f.start = *at;
@@ -83,12 +84,12 @@ Flow<void> Interpreter::Impl::local_call(std::int64_t label, int repeats, Source
 // after the calling block, the call path gets its context, reading goes on
 // at the frame's start.
 Flow<void> Interpreter::Impl::push_frame(Frame f, std::string call, SourceLoc where) {
-  frames.back().resume = frames.back().file->src->tell();
+  programs.frames.back().resume = programs.frames.back().file->src->tell();
   f.resume = f.start;
-  f.context = context_of(CallContext{f.file->display, f.program, frames.back().context, where.line,
-                                     std::move(call), f.file->path});
-  frames.push_back(std::move(f));
-  const Frame& top = frames.back();
+  f.context = context_of(CallContext{f.file->display, f.program, programs.frames.back().context,
+                                     where.line, std::move(call), f.file->path});
+  programs.frames.push_back(std::move(f));
+  const Frame& top = programs.frames.back();
   return top.file->src->seek(top.start);
 }
 
@@ -96,8 +97,8 @@ Flow<void> Interpreter::Impl::push_frame(Frame f, std::string call, SourceLoc wh
 // repetitions are left, else returns to the block after the call, or with
 // M99 Pn to sequence number n of the calling program.
 Flow<Step> Interpreter::Impl::return_from_sub(std::optional<std::int64_t> label, SourceLoc where) {
-  Frame& f = frames.back();
-  if (frames.size() == 1) {
+  Frame& f = programs.frames.back();
+  if (programs.frames.size() == 1) {
     // M99 in the main program: back to its start (or to the label), as the
     // control does; the statement limit ends an endless repetition.
     if (label) {
@@ -125,9 +126,9 @@ Flow<Step> Interpreter::Impl::return_from_sub(std::optional<std::int64_t> label,
     return Step::kContinue;
   }
   const bool macro = f.macro;
-  frames.pop_back();
+  programs.frames.pop_back();
   if (macro) vars.pop_level();
-  Frame& caller = frames.back();
+  Frame& caller = programs.frames.back();
   auto s = caller.file->src->seek(caller.resume);
   SKIPNC_TRY(s);
   if (label) {
@@ -139,7 +140,7 @@ Flow<Step> Interpreter::Impl::return_from_sub(std::optional<std::int64_t> label,
 }
 
 bool Interpreter::Impl::in_modal_call() const noexcept {
-  for (const Frame& f : frames) {
+  for (const Frame& f : programs.frames) {
     if (f.modal_call) return true;
   }
   return false;
@@ -185,7 +186,7 @@ Flow<void> Interpreter::Impl::collect_argument(const gcode::Word& w, const WordV
   }
   const bool length = axis_of_letter[static_cast<std::size_t>(c - 'A')] >= 0 ||
                       std::strchr("IJKQRUVWXYZ", c) != nullptr;
-  const double x = length ? word_length(v, false) : v.value;
+  const double x = length ? word_length(v) : v.value;
   call_args[static_cast<std::size_t>(var)] = Value::of(x);
   return {};
 }
@@ -195,7 +196,7 @@ Flow<void> Interpreter::Impl::macro_call(std::int64_t program, int repeats, bool
   const std::array<Value, kLocalCount + 1> args = modal_call ? modal_macro_args : call_args;
   auto c = call(program, repeats, true, where, modal_call);
   if (!c) return c;
-  frames.back().modal_call = modal_call;
+  programs.frames.back().modal_call = modal_call;
   vars.push_level();
   vars.locals() = args;
   return {};

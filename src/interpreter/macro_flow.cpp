@@ -57,8 +57,7 @@ Flow<bool> Interpreter::Impl::condition(gcode::ExprId cond, SourceLoc where) {
   return c->num() != 0.0;
 }
 
-Flow<Step> Interpreter::Impl::execute_statement(CommandSink& out) {
-  (void)out;
+Flow<Step> Interpreter::Impl::execute_statement() {
   const gcode::Stmt& s = blk.stmt;
   const SourceLoc where = loc(s.column);
   using gcode::StmtKind;
@@ -147,7 +146,7 @@ Flow<Step> Interpreter::Impl::execute_statement(CommandSink& out) {
     SKIPNC_TRY(c);
     run = *c;
   }
-  Frame& f = frames.back();
+  Frame& f = programs.frames.back();
   const bool again = !f.loops.empty() && f.loops.back().pos.offset == block_pos.offset;
   if (run) {
     if (again) return Step::kContinue;
@@ -179,7 +178,7 @@ Flow<Step> Interpreter::Impl::execute_statement(CommandSink& out) {
 // remembered: a false WHILE inside a loop costs one seek per pass, not a
 // re-read).
 Flow<Step> Interpreter::Impl::pass_false_while(int id, SourceLoc where) {
-  Frame& f = frames.back();
+  Frame& f = programs.frames.back();
   if (auto known = f.file->while_exits.find(block_pos.offset); known != f.file->while_exits.end()) {
     auto sk = f.file->src->seek(known->second);
     SKIPNC_TRY(sk);
@@ -207,7 +206,7 @@ Flow<Step> Interpreter::Impl::pass_false_while(int id, SourceLoc where) {
     return fail(AlarmId::kIllegalLoopNumber,
                 "END " + std::to_string(id) + ": loop numbers are 1, 2 and 3", where);
   }
-  Frame& f = frames.back();
+  Frame& f = programs.frames.back();
   if (f.loops.empty() || f.loops.back().id != id) {
     return fail(AlarmId::kMissingEnd,
                 "END " + std::to_string(id) + " without a matching DO " + std::to_string(id),
@@ -228,7 +227,6 @@ Flow<Step> Interpreter::Impl::pass_false_while(int id, SourceLoc where) {
 // line goes to the report's messages, and to the --dprnt file when one was
 // named and POPEN is in effect.
 Flow<void> Interpreter::Impl::print_line(SourceLoc where) {
-  (void)where;
   std::string line;
   for (const auto& item : blk.print_items) {
     if (item.is_text) {
@@ -281,7 +279,7 @@ Result<void> Interpreter::Impl::write_dprnt() const {
 // within the running program. kNoEnd when there is none.
 Flow<void> Interpreter::Impl::find_loop_end(Loop& l) {
   if (l.end_known) return {};
-  Frame& f = frames.back();
+  Frame& f = programs.frames.back();
   gcode::Source& src = *f.file->src;
   const gcode::SourcePos back = src.tell();
   auto s = src.seek(l.pos);
@@ -314,7 +312,7 @@ Flow<void> Interpreter::Impl::find_loop_end(Loop& l) {
 
 // A jump to `target` leaves every loop whose WHILE..END range does not hold it.
 Flow<void> Interpreter::Impl::leave_loops_for(std::uint64_t target) {
-  Frame& f = frames.back();
+  Frame& f = programs.frames.back();
   while (!f.loops.empty()) {
     Loop& l = f.loops.back();
     auto e = find_loop_end(l);
@@ -328,9 +326,9 @@ Flow<void> Interpreter::Impl::leave_loops_for(std::uint64_t target) {
 // GOTO n / M99 Pn: the first N n after the block at `from`, else the first
 // in the program (ProgramStore::find_label); loops the jump leaves are left.
 Flow<void> Interpreter::Impl::jump_to_label(std::int64_t n, std::uint64_t from, SourceLoc where) {
-  auto found = programs.find_label(frames.back(), n, from, where);
+  auto found = programs.find_label(programs.frames.back(), n, from, where);
   SKIPNC_TRY(found);
-  Frame& f = frames.back();
+  Frame& f = programs.frames.back();
   gcode::Source& src = *f.file->src;
   const gcode::SourcePos target = *found;
   auto lv = leave_loops_for(target.offset);

@@ -153,7 +153,7 @@ struct FrameWords {
   double word(int i, double fallback) const {
     if (xyz[static_cast<std::size_t>(i)] < 0) return fallback;
     const char c = "XYZ"[i];
-    return words.has(c) ? in.word_length(words.at(c), false) : fallback;
+    return words.has(c) ? in.word_length(words.at(c)) : fallback;
   }
 };
 
@@ -303,8 +303,8 @@ Flow<void> Interpreter::Impl::frame_targets(const Words& words, AxisVec& target,
     const std::array<double, 2> centre =
         inc ? std::array<double, 2>{here[0], here[1]} : std::array<double, 2>{0.0, 0.0};
     const double r0 = inc ? 0.0 : std::hypot(here[0], here[1]);
-    const double radius = named[0] ? word_length(words.at('X'), false) : r0;
-    const double a = named[1] ? word_length(words.at('Y'), true) : (inc ? 0.0 : polar_angle);
+    const double radius = named[0] ? word_length(words.at('X')) : r0;
+    const double a = named[1] ? word_length(words.at('Y')) : (inc ? 0.0 : polar_angle);
     polar_angle = inc ? polar_angle + a : a;
     const auto xy = xform::polar_to_xy(centre, radius, polar_angle);
     p[0] = xy[0];
@@ -313,13 +313,13 @@ Flow<void> Interpreter::Impl::frame_targets(const Words& words, AxisVec& target,
   } else {
     for (std::size_t i = 0; i < 2; ++i) {
       if (named[i]) {
-        const double v = word_length(words.at("XYZ"[i]), false);
+        const double v = word_length(words.at("XYZ"[i]));
         p[i] = inc ? p[i] + v : v;
       }
     }
   }
   if (named[2]) {
-    const double v = word_length(words.at('Z'), false);
+    const double v = word_length(words.at('Z'));
     p[2] = inc ? p[2] + v : v;
   }
   if ((frame.rotating || frame.conversions() > 0) && (named[0] || named[1])) {
@@ -619,14 +619,14 @@ namespace {
 // repeats (K or L, else 1).
 Flow<int> read_hole_data(const Interpreter::Impl& in, const Words& words, cycles::Data& d) {
   if (words.has('R')) {
-    d.r = in.word_length(words.at('R'), false);
+    d.r = in.word_length(words.at('R'));
     d.have_r = true;
   }
   if (words.has('Z')) {
-    d.z = in.word_length(words.at('Z'), false);
+    d.z = in.word_length(words.at('Z'));
     d.have_z = true;
   }
-  if (words.has('Q')) d.q = std::fabs(in.word_length(words.at('Q'), false));
+  if (words.has('Q')) d.q = std::fabs(in.word_length(words.at('Q')));
   if (words.has('P')) {
     const WordVal& p = words.at('P');
     if (in.lang->rules.dwell_p_seconds) {

@@ -20,9 +20,9 @@ Flow<void> Interpreter::Impl::dwell(const Words& words, CommandSink& out) {
     }
     seconds = p.value / 1000.0;
   } else if (words.has('X')) {
-    seconds = word_length(words.at('X'), false);
+    seconds = word_length(words.at('X'));
   } else if (words.has('U')) {
-    seconds = word_length(words.at('U'), false);
+    seconds = word_length(words.at('U'));
   }
   if (seconds < 0) return fail(AlarmId::kBadValue, "negative dwell", loc(cur_col));
   if (modal.feed_mode == FeedMode::kPerRev && params.bit(config::param::kDwellRevolutions)) {
@@ -174,7 +174,7 @@ struct ArcGeometry {
                                                       const Words& words, const ArcGeometry& g,
                                                       SourceLoc at, double& cx, double& cy) {
   const SourceLoc r_at = im.loc(words.at('R').column);
-  const double r = im.word_length(words.at('R'), false) * im.unit_mm() *
+  const double r = im.word_length(words.at('R')) * im.unit_mm() *
                    (g.framed ? std::fabs(im.frame.scale[0]) : 1.0);
   const double dx = g.ex - g.sx, dy = g.ey - g.sy;
   const double d = std::hypot(dx, dy);
@@ -218,8 +218,8 @@ struct ArcGeometry {
                                                         const ArcGeometry& g, SourceLoc at,
                                                         double& cx, double& cy) {
   const char ci = ap.ci, cj = ap.cj;
-  double oi = words.has(ci) ? im.word_length(words.at(ci), false) * im.unit_mm() : 0.0;
-  double oj = words.has(cj) ? im.word_length(words.at(cj), false) * im.unit_mm() : 0.0;
+  double oi = words.has(ci) ? im.word_length(words.at(ci)) * im.unit_mm() : 0.0;
+  double oj = words.has(cj) ? im.word_length(words.at(cj)) * im.unit_mm() : 0.0;
   if (im.modal.arc_ijk_absolute) {
     // G90.1: I J K are the centre in work coordinates.
     oi = words.has(ci) ? im.machine_of(ap.pl.a0, oi / im.unit_mm()) - g.sx : 0.0;

@@ -126,19 +126,17 @@ bool Interpreter::Impl::block_calls(const Words& words, const BlockPlan& plan) c
 // The tables start recording the block's writes; the call stack and the
 // G66 macro, when the block may change them, are copied.
 void Interpreter::Impl::begin_tables(bool calls) {
-  work_offsets.begin_block();
-  tools.begin_block();
+  begin_offsets();
   vars.begin_block();
   if (lang->rules.state_codes) lang->begin_block();  // M70-M73's saved states (ngc_room.cpp)
   if (!calls) return;
-  before_block.frames = frames;
+  before_block.frames = programs.frames;
   before_block.modal_macro_program = modal_macro_program;
   before_block.modal_macro_args = modal_macro_args;
 }
 
 void Interpreter::Impl::commit_tables() noexcept {
-  work_offsets.commit();
-  tools.commit();
+  commit_offsets();
   vars.commit();
 }
 
@@ -146,15 +144,14 @@ void Interpreter::Impl::commit_tables() noexcept {
 // to the block after the alarmed one, where a call or return had moved it
 // (a seek to a block the source has already returned cannot fail).
 void Interpreter::Impl::roll_back_tables(bool calls) {
-  work_offsets.roll_back();
-  tools.roll_back();
+  roll_back_offsets();
   vars.roll_back();
   if (lang->rules.state_codes) lang->roll_back_block();
   if (!calls) return;
-  frames = before_block.frames;
+  programs.frames = before_block.frames;
   modal_macro_program = before_block.modal_macro_program;
   modal_macro_args = before_block.modal_macro_args;
-  const Frame& top = frames.back();
+  const Frame& top = programs.frames.back();
   static_cast<void>(top.file->src->seek(top.resume));
 }
 
@@ -192,7 +189,7 @@ Flow<Step> Interpreter::Impl::execute_nc(const Words& words, CommandSink& out) {
 }
 
 void Interpreter::Impl::emit(CommandSink& out, canon::Command cmd) {
-  out.emit(canon::Stamped{std::move(cmd), cur_line, frames.back().context,
+  out.emit(canon::Stamped{std::move(cmd), cur_line, programs.frames.back().context,
                           blk.has_n ? static_cast<std::int32_t>(blk.n % 100000000) : -1});
 }
 

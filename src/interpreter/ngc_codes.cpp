@@ -44,7 +44,7 @@ Flow<void> work_offset_setting(Impl& im, const Words& words, int l, double pv, S
   for (int i = 0; i < im.axis_count; ++i) {
     const char c = im.axis_letter[static_cast<std::size_t>(i)];
     if (!words.has(c)) continue;
-    const double mm = im.word_length(words.at(c), false) * im.unit_mm();
+    const double mm = im.word_length(words.at(c)) * im.unit_mm();
     if (l == 2) {
       o[i] = mm;  // absolute in G91 too
     } else {
@@ -76,16 +76,16 @@ Flow<void> tool_setting(Impl& im, const Words& words, double pv, SourceLoc p_at)
   auto& t = im.tools.write(static_cast<std::size_t>(pv));
   for (const char c : {'Z', 'R'}) {
     if (!words.has(c)) continue;
-    auto ok = im.check_offset(im.word_length(words.at(c), false) * im.unit_mm(),
+    auto ok = im.check_offset(im.word_length(words.at(c)) * im.unit_mm(),
                               std::string("G10 L1 ") + c, im.loc(words.at(c).column));
     if (!ok) return ok;
   }
   if (words.has('Z')) {
-    t.length_geometry = im.word_length(words.at('Z'), false) * im.unit_mm();
+    t.length_geometry = im.word_length(words.at('Z')) * im.unit_mm();
     t.length_wear = 0.0;
   }
   if (words.has('R')) {
-    t.radius_geometry = im.word_length(words.at('R'), false) * im.unit_mm();
+    t.radius_geometry = im.word_length(words.at('R')) * im.unit_mm();
     t.radius_wear = 0.0;
   }
   // The active tool's length follows the table (LinuxCNC reloads it).
@@ -115,7 +115,7 @@ Flow<void> LinuxcncFamily::own_action(Impl& im, const Words& words, GCode code) 
     if (!words.has('Z') || im.length_axis < 0) {
       return fail(AlarmId::kBadValue, "G43.1 needs Z, the tool length", im.loc(im.cur_col));
     }
-    const double z = im.word_length(words.at('Z'), false) * im.unit_mm();
+    const double z = im.word_length(words.at('Z')) * im.unit_mm();
     if (auto ok = im.check_offset(z, "G43.1 Z", im.loc(words.at('Z').column)); !ok) return ok;
     im.length_offset = z;
     im.modal.length = LengthComp::kPlus;

@@ -135,7 +135,7 @@ std::optional<Flow<Value>> LinuxcncFamily::predefined(Impl& im, const std::strin
   if (n == "_line") return of(im.cur_line);
   if (n == "_value") return of(state.value.num());
   if (n == "_value_returned") return of(state.value_returned ? 1.0 : 0.0);
-  if (n == "_call_level") return of(static_cast<double>(im.frames.size() - 1));
+  if (n == "_call_level") return of(static_cast<double>(im.programs.frames.size() - 1));
   if (n == "_task") return of(1.0);
   if (n == "_metric") return of(im.modal.units == Units::kMetric ? 1.0 : 0.0);
   if (n == "_imperial") return of(im.modal.units == Units::kInch ? 1.0 : 0.0);

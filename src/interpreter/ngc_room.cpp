@@ -43,7 +43,7 @@ Flow<void> LinuxcncFamily::state_codes(Impl& im, const Words& words, const Modal
   for (int i = 0; i < words.m_count; ++i) {
     const int m = words.m[static_cast<std::size_t>(i)];
     if (m < 70 || m > 73) continue;
-    const std::size_t level = im.frames.size();
+    const std::size_t level = im.programs.frames.size();
     auto& saved = state.room.saved;
     auto it = std::find_if(saved.begin(), saved.end(),
                            [&](const NgcSavedState& s) { return s.level == level; });
@@ -106,7 +106,7 @@ void LinuxcncFamily::restore_state(Impl& im, const NgcSavedState& s) {
 // A sub returns (endsub / return): the state its M73 saved comes back, and
 // what the level saved goes away with it.
 void LinuxcncFamily::state_on_return(Impl& im) {
-  const std::size_t level = im.frames.size();
+  const std::size_t level = im.programs.frames.size();
   auto& saved = state.room.saved;
   for (const NgcSavedState& s : saved) {
     if (s.level == level && s.autorestore) restore_state(im, s);

@@ -13,8 +13,7 @@
 
 namespace skipnc::interp {
 
-double Interpreter::Impl::word_length(const WordVal& w, bool rotary) const noexcept {
-  (void)rotary;
+double Interpreter::Impl::word_length(const WordVal& w) const noexcept {
   if (w.is_expr || w.has_point || params.bit(config::param::kCalculatorDecimal)) return w.value;
   // Without a decimal point a length is in least input increments.
   const double increment = modal.units == Units::kInch ? 0.0001 : 0.001;
@@ -115,7 +114,7 @@ Flow<void> Interpreter::Impl::data_setting_fanuc(const Words& words, SourceLoc w
     for (int i = 0; i < axis_count; ++i) {
       const char c = axis_letter[static_cast<std::size_t>(i)];
       if (!words.has(c)) continue;
-      const double v = word_length(words.at(c), false) * unit_mm() / offset_unit_mm(*this);
+      const double v = word_length(words.at(c)) * unit_mm() / offset_unit_mm(*this);
       o[i] = inc ? o[i] + v : v;
       auto ok = check_offset(o[i] * offset_unit_mm(*this), std::string("G10 ") + c,
                              loc(words.at(c).column));
@@ -136,7 +135,7 @@ Flow<void> Interpreter::Impl::data_setting_fanuc(const Words& words, SourceLoc w
                 : l == 11 || l == 1 ? &t.length_wear
                 : l == 12           ? &t.radius_geometry
                                     : &t.radius_wear;
-    const double v = word_length(words.at('R'), false) * unit_mm() / offset_unit_mm(*this);
+    const double v = word_length(words.at('R')) * unit_mm() / offset_unit_mm(*this);
     auto ok = check_offset((inc ? *f + v : v) * offset_unit_mm(*this), "G10 R",
                            loc(words.at('R').column));
     if (!ok) return ok;

@@ -78,7 +78,7 @@ const char* keyword(OKind k) noexcept {
 // source is after it. A skip from the same block to the same kinds is kept.
 Flow<void> Interpreter::Impl::skip_to_oword(const std::string& label, std::uint32_t kinds,
                                             SourceLoc where) {
-  Frame& f = frames.back();
+  Frame& f = programs.frames.back();
   gcode::Source& src = *f.file->src;
   // The block and what it looks for (kinds: bits of OKind, below 2^16).
   const std::uint64_t key = (block_pos.offset << 16) | (kinds & 0xffffu);
@@ -122,7 +122,8 @@ Flow<void> Interpreter::Impl::skip_to_oword(const std::string& label, std::uint3
 
 Flow<void> Interpreter::Impl::oword_call(const std::string& label, SourceLoc where) {
   int levels = 0;
-  for (std::size_t i = 1; i < frames.size(); ++i) levels += frames[i].macro ? 1 : 0;
+  for (std::size_t i = 1; i < programs.frames.size(); ++i)
+    levels += programs.frames[i].macro ? 1 : 0;
   const int max = dialect.sw.call_levels > 0 ? dialect.sw.call_levels : mc.limits.max_macro_levels;
   if (levels >= max) {
     return fail(AlarmId::kMacroNesting,
@@ -159,8 +160,8 @@ Flow<void> Interpreter::Impl::oword_call(const std::string& label, SourceLoc whe
 
 Flow<Step> Interpreter::Impl::oword_return(const gcode::Stmt& s, SourceLoc where) {
   const std::string& label = blk.names[static_cast<std::size_t>(s.label)];
-  Frame& f = frames.back();
-  if (frames.size() == 1 || f.sub_label.empty()) {
+  Frame& f = programs.frames.back();
+  if (programs.frames.size() == 1 || f.sub_label.empty()) {
     return fail(AlarmId::kOwordFlow,
                 shown_oword(label) + " " + keyword(s.okind) + " outside a subroutine", where);
   }
@@ -177,9 +178,9 @@ Flow<Step> Interpreter::Impl::oword_return(const gcode::Stmt& s, SourceLoc where
     value = v->num();
   }
   family(*this).state_on_return(*this);  // ngc_room.cpp
-  frames.pop_back();
+  programs.frames.pop_back();
   vars.pop_level();
-  Frame& caller = frames.back();
+  Frame& caller = programs.frames.back();
   auto sk = caller.file->src->seek(caller.resume);
   SKIPNC_TRY(sk);
   NgcState& ns = family(*this).state;
@@ -285,7 +286,7 @@ OLoop* find_oloop(Frame& f, const std::string& label, OKind of) noexcept {
 
 // Reading goes on at `p` of the running frame.
 inline Flow<Step> Interpreter::Impl::oword_seek(gcode::SourcePos p) {
-  Frame& f = frames.back();
+  Frame& f = programs.frames.back();
   auto sk = f.file->src->seek(p);
   SKIPNC_TRY(sk);
   f.resume = p;
@@ -296,7 +297,7 @@ inline Flow<Step> Interpreter::Impl::oword_seek(gcode::SourcePos p) {
 Flow<Step> Interpreter::Impl::oword_leave(const OLoop& l, SourceLoc where) {
   const OKind opened = l.kind;
   const std::string label = l.label;
-  auto sk = frames.back().file->src->seek(l.body);
+  auto sk = programs.frames.back().file->src->seek(l.body);
   SKIPNC_TRY(sk);
   block_pos = l.start;
   auto k = skip_to_oword(label,
@@ -310,7 +311,7 @@ Flow<Step> Interpreter::Impl::oword_leave(const OLoop& l, SourceLoc where) {
 
 // `while`: the end of a do loop, or the head of a while loop.
 inline Flow<Step> Interpreter::Impl::oword_while(const std::string& label, SourceLoc where) {
-  Frame& f = frames.back();
+  Frame& f = programs.frames.back();
   if (!f.oloops.empty() && f.oloops.back().label == label && f.oloops.back().kind == OKind::kDo) {
     // The end of a do loop.
     auto c = oword_condition();
@@ -338,7 +339,7 @@ inline Flow<Step> Interpreter::Impl::oword_while(const std::string& label, Sourc
 // `break` and `continue` of the loop labelled `label`.
 inline Flow<Step> Interpreter::Impl::oword_break(gcode::OKind kind, const std::string& label,
                                                  SourceLoc where) {
-  Frame& f = frames.back();
+  Frame& f = programs.frames.back();
   OLoop* l = find_oloop(f, label, OKind::kNone);
   if (l == nullptr) {
     return fail(
@@ -371,7 +372,7 @@ inline Flow<Step> Interpreter::Impl::oword_break(gcode::OKind kind, const std::s
 // frame's loop stack.
 Flow<Step> Interpreter::Impl::oword_loop(gcode::OKind kind, const std::string& label,
                                          SourceLoc where) {
-  Frame& f = frames.back();
+  Frame& f = programs.frames.back();
   switch (kind) {
     case OKind::kDo: {
       const gcode::SourcePos body = f.file->src->tell();

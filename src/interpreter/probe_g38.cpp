@@ -26,9 +26,7 @@ bool Interpreter::Impl::probe_inverted() const noexcept {
   return lang->probe_inverted(*this, n);  // a parameter bit, or grbl's $6
 }
 
-Flow<Step> Interpreter::Impl::probe_block(const Words& words, const AxisVec& target, AxisMask moved,
-                                          CommandSink& out) {
-  (void)words;
+Flow<Step> Interpreter::Impl::probe_block(const AxisVec& target, AxisMask moved, CommandSink& out) {
   const SourceLoc at = loc(cur_col);
   const config::Switches& sw = dialect.sw;
   const GCode code = modal.probe;

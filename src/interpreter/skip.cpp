@@ -115,7 +115,7 @@ Flow<void> Interpreter::Impl::skip_inputs(const skip_rules::BlockWords& b,
 Flow<Step> Interpreter::Impl::skip_block(const Words& words, const AxisVec& target, AxisMask moved,
                                          CommandSink& out) {
   if (modal.motion == Motion::kProbe && !words.has_g(GCode(31))) {
-    return probe_block(words, target, moved, out);  // probe_g38.cpp
+    return probe_block(target, moved, out);  // probe_g38.cpp
   }
   const SourceLoc at = loc(cur_col);
   const config::Switches& sw = dialect.sw;
@@ -149,7 +149,7 @@ Flow<Step> Interpreter::Impl::queue_skip(const canon::Skip& sk, SourceLoc at, Co
   // The record the report shows.
   SkipRecord& rec = pending_skip.record;
   rec.line = cur_line;
-  rec.context = frames.back().context;
+  rec.context = programs.frames.back().context;
   rec.n = blk.has_n ? static_cast<std::int32_t>(blk.n % 100000000) : -1;
   std::string_view text = raw.text;
   while (!text.empty() && (text.back() == ' ' || text.back() == '\t' || text.back() == '\r')) {

@@ -283,7 +283,8 @@ Value Interpreter::Impl::read_modal(const sysvar::Range& r, int i) const {
     case sysvar::Id::kModalN:
       return Value::of(modal.seq);
     case sysvar::Id::kModalO:
-      return Value::of(static_cast<double>(frames.empty() ? 0 : frames.back().program));
+      return Value::of(
+          static_cast<double>(programs.frames.empty() ? 0 : programs.frames.back().program));
     case sysvar::Id::kModalS:
       return Value::of(modal.spindle);
     case sysvar::Id::kModalT:
@@ -379,7 +380,7 @@ Flow<void> Interpreter::Impl::write_macro_var(int n, Value v, SourceLoc where) {
       return {};
     }
     if (r->id == sysvar::Id::kSettingError) {
-      setting_error_data[std::size_t(k - r->first)] = v;  // G54.4 (conversion_3d.cpp)
+      setting_error_data.write(std::size_t(k - r->first)) = v;  // G54.4 (conversion_3d.cpp)
       return {};
     }
     if (!is_tool(*r)) return write_control(*r, k, v, where);

@@ -183,8 +183,7 @@ bool Kernel::axes_in_position(const AxisVec& actual) const noexcept {
   return (inpos & all_axes_) == all_axes_;
 }
 
-bool Kernel::input_active(int index, bool level) const noexcept {
-  (void)index;
+bool Kernel::input_active(bool level) const noexcept {
   return level != skip_.spec.active_low;
 }
 
@@ -281,7 +280,7 @@ void Kernel::start_skip_block(const TickInput& in) noexcept {
   const bool fails = spec.active_at_start_fails;  // G38: an error, not a trigger
   if (spec.ignore_inputs || (!fails && (spec.edge || !spec.active_at_start_ends))) return;
   for (int i = 0; i < spec.input_count; ++i) {
-    if (!input_active(i, signals_.get(spec.inputs[i]))) continue;
+    if (!input_active(signals_.get(spec.inputs[i]))) continue;
     // A block already run to its end in this period started where the
     // command was before it.
     const AxisVec start = interpolator_.idle() ? cmd_prev_ : interpolator_.segment_start();
@@ -321,7 +320,7 @@ void Kernel::monitor_skip(const TickInput& in) noexcept {
       for (int e = 0; e < in.edge_count; ++e) {
         const SignalEdge& edge = in.edges[static_cast<std::size_t>(e)];
         for (int i = 0; i < spec.input_count; ++i) {
-          if (!(edge.addr == spec.inputs[i]) || !input_active(i, edge.level)) continue;
+          if (!(edge.addr == spec.inputs[i]) || !input_active(edge.level)) continue;
           // An edge into the active state: level and edge detection alike.
           const double frac = spec.latch == canon::SkipLatch::kExact ? edge.frac : 1.0;
           trigger(frac, in, i, false);

@@ -268,7 +268,7 @@ class Kernel {
   void preset_signal(const canon::SignalAddr& a, bool on) noexcept { signals_.set(a, on); }
 
  private:
-  bool input_active(int index, bool level) const noexcept;
+  bool input_active(bool level) const noexcept;
   // Every axis within the in-position width of the command, or locked.
   bool axes_in_position(const AxisVec& actual) const noexcept;
   void monitor_skip(const TickInput& in) noexcept;

@@ -79,7 +79,7 @@ void legend_item(Svg& o, Ink i, double x, double y, const std::string& text) {
   o.add("<text x=\"{}\" y=\"{}\" font-size=\"11\" fill=\"#333\">{}</text>\n", x + 36, y, esc(text));
 }
 
-double draw_legend(Svg& o, const PlotModel& m, double x, double y, double w) {
+double draw_legend(Svg& o, const PlotModel& m, double x, double y) {
   std::vector<Ink> used{Ink::kRapid, Ink::kFeed, Ink::kSkip};
   bool target = false, miss = false;
   for (const auto& s : m.skips) {
@@ -113,7 +113,6 @@ double draw_legend(Svg& o, const PlotModel& m, double x, double y, double w) {
           esc(alarm_marker_legend(m.alarm_key)));
     y += 17;
   }
-  (void)w;
   return y;
 }
 
@@ -242,7 +241,7 @@ void draw_zoom_ticks(Svg& o, const SkipMark& s, const ZoomFrame& f, double x, do
 void draw_zoom(Svg& o, const PlotModel& m, const SkipMark& s, double x, double y, double w,
                double h) {
   ZoomFrame f;
-  std::tie(f.ta, f.tb) = latch_window(m, s);
+  std::tie(f.ta, f.tb) = latch_window(s);
   const int axis = zoom_axis(s);
   const Channel* pos =
       channel(m, fmt::format("pos_{}", m.axis_names[static_cast<std::size_t>(axis)]));
@@ -289,8 +288,7 @@ void draw_zoom(Svg& o, const PlotModel& m, const SkipMark& s, double x, double y
 
 }  // namespace
 
-std::pair<double, double> latch_window(const PlotModel& m, const SkipMark& s) {
-  (void)m;
+std::pair<double, double> latch_window(const SkipMark& s) {
   // From a little before the signal to just after the axes came to rest.
   const double d = std::max(s.stop_t - s.latch_t, 0.004);
   return {s.latch_t - std::max(0.25 * d, 0.004), s.stop_t + 0.1 * d};
@@ -368,7 +366,7 @@ double draw_more_zooms(Svg& o, const PlotModel& m, double x, double y, double w)
 }
 
 double draw_panel(Svg& o, const PlotModel& m, double x, double y, double w) {
-  y = draw_legend(o, m, x, y, w) + 10;
+  y = draw_legend(o, m, x, y) + 10;
   o.add(
       "<text x=\"{}\" y=\"{}\" font-size=\"13\" font-weight=\"bold\" fill=\"#222\">Skips "
       "({})</text>\n",

@@ -52,6 +52,6 @@ double draw_timeline(Svg& o, const PlotModel& m, double x, double y, double w);
 double draw_more_zooms(Svg& o, const PlotModel& m, double x, double y, double w);
 
 // Time window [t0, t1] of the zoom on skip k's latch.
-std::pair<double, double> latch_window(const PlotModel& m, const SkipMark& s);
+std::pair<double, double> latch_window(const SkipMark& s);
 
 }  // namespace skipnc::plot

@@ -332,7 +332,7 @@ Result<void> read_counts(const toml::table& root, const std::string& path, const
   auto seed = spec_integer(root, "seed", 0, kMaxSeed, 1, path);
   auto workers = spec_integer(root, "workers", 0, kMaxWorkers, 0, path);
   for (auto* r : {&scenarios, &seed, &workers}) {
-    if (!*r) return std::unexpected(r->error());
+    SKIPNC_TRY(*r);
   }
   plan.scenarios = o.scenarios.value_or(*scenarios);
   plan.seed = o.seed.value_or(static_cast<std::uint64_t>(*seed));

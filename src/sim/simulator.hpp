@@ -47,7 +47,7 @@ class TraceSink {
   virtual void row(const TraceRow& r) = 0;
   // The run's last period, once, after the run: a sink that keeps only some
   // periods (--trace-every) writes it if it did not keep it.
-  virtual void last(const TraceRow& r) { (void)r; }
+  virtual void last(const TraceRow&) {}
   // The sink keeps only the periods whose tick is a multiple of this (the
   // run may pass over the others without making their rows), and last().
   virtual std::int64_t stride() const noexcept { return 1; }

@@ -157,6 +157,34 @@ TEST(BlockJournal, ATableRollsBackItsWritesLatestFirst) {
   EXPECT_EQ(t[0], 9);
 }
 
+// The offset tables are begun, committed and rolled back as one: a block's
+// writes to the work offsets, the tool offsets and G54.4's setting error
+// data (#26000-#26079) are all undone when it is alarmed. (No NC block
+// writes #26000.. today: a macro statement does, outside the transaction;
+// the table is journaled so that one that does cannot leave it changed.)
+TEST(BlockJournal, EveryOffsetTableRollsBackWithTheBlock) {
+  OffsetTables t;
+  t.work_offsets.assign(2, AxisVec{});
+  t.tools.assign(2, config::ToolOffset{});
+  ASSERT_EQ(t.setting_error_data.size(), 80u);
+  t.setting_error_data.write(10) = Value::of(0.5);  // outside a block: kept
+  t.begin_offsets();
+  t.work_offsets.write(1)[0] = 5.0;
+  t.tools.write(1).length_geometry = 7.0;
+  t.setting_error_data.write(10) = Value::of(0.25);
+  t.setting_error_data.write(79) = Value::of(3.0);
+  t.roll_back_offsets();
+  EXPECT_EQ(t.work_offsets[1][0], 0.0);
+  EXPECT_EQ(t.tools[1].length_geometry, 0.0);
+  EXPECT_EQ(t.setting_error_data[10], Value::of(0.5));
+  EXPECT_TRUE(t.setting_error_data[79].vacant);
+  t.begin_offsets();
+  t.setting_error_data.write(11) = Value::of(-1.0);
+  t.commit_offsets();
+  t.roll_back_offsets();  // nothing left to undo
+  EXPECT_EQ(t.setting_error_data[11], Value::of(-1.0));
+}
+
 TEST(BlockJournal, VariablesRollBackWritesAndCallLevels) {
   VariableStore v;
   v.enable_ngc_params();
