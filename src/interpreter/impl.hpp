@@ -1,6 +1,9 @@
 // Internal state of the interpreter, shared by its translation units:
 //   interpreter.cpp  reading and executing blocks, sync, the public interface
-//   language.cpp     the language objects (language.hpp): Macro B, RS274NGC, grbl
+//   language.cpp     the language objects (language.hpp): Macro B, RS274NGC, grbl;
+//                    their work in ngc_params.cpp, ngc_codes.cpp, ngc_room.cpp,
+//                    grbl_system.cpp (members of the objects, not of Impl)
+//   oword.cpp        RS274NGC's O-word flow
 //   macro_flow.cpp   macro statements: assignment, IF, GOTO, WHILE/DO/END, DPRNT
 //   macro_call.cpp   M98/G65/G66 calls, M99 returns, arguments (programs are
 //                    found by the program store, program_store.hpp)

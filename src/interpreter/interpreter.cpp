@@ -236,7 +236,7 @@ Flow<Interpreter::Impl::Read> Interpreter::Impl::classify_block(Frame& f) {
     return program_number_block(f);
   }
   if (blk.empty() && lang->rules.comment_line_runs && !blk.comments.empty()) {
-    return Read::kRun;  // (debug,..) reads parameters: it runs as a block (ngc_comments)
+    return Read::kRun;  // (debug,..) reads parameters: it runs as a block (its comments)
   }
   if (blk.empty()) {
     for (const auto& c : blk.comments) {

@@ -96,7 +96,7 @@ Flow<void> LinuxcncFamily::write_numbered(Impl& im, int n, Value v, SourceLoc wh
     if (!ok) return ok;
   }
   // #5221-#5390 are the stored work offsets: the active system keeps what
-  // it loaded until another one is selected (ngc_load_work), as LinuxCNC.
+  // it loaded until another one is selected (select_work), as LinuxCNC.
   im.vars.set_ngc_param(n, v.num());
   return {};
 }
