@@ -3,7 +3,7 @@
 //   language.cpp     the language objects (language.hpp): Macro B, RS274NGC, grbl;
 //                    their work in ngc_params.cpp, ngc_codes.cpp, ngc_room.cpp,
 //                    grbl_system.cpp (members of the objects, not of Impl)
-//   oword.cpp        RS274NGC's O-word flow
+//   oword.cpp        RS274NGC's O-word flow (members of Rs274ngc)
 //   macro_flow.cpp   macro statements: assignment, IF, GOTO, WHILE/DO/END, DPRNT
 //   macro_call.cpp   M98/G65/G66 calls, M99 returns, arguments (programs are
 //                    found by the program store, program_store.hpp)
@@ -281,19 +281,6 @@ struct Interpreter::Impl : BlockState, OffsetTables {
   Flow<void> leave_loops_for(std::uint64_t target);
   Flow<void> print_line(SourceLoc where);
   Result<void> write_dprnt() const;
-
-  // oword.cpp: RS274NGC O-word statements and parameter settings
-  Flow<Step> execute_oword();
-  Flow<void> oword_call(const std::string& label, SourceLoc where);
-  Flow<void> skip_to_oword(const std::string& label, std::uint32_t kinds, SourceLoc where);
-  Flow<Step> oword_return(const gcode::Stmt& s, SourceLoc where);
-  Flow<bool> oword_condition();
-  Flow<Step> oword_branch(gcode::OKind kind, const std::string& label, SourceLoc where);
-  Flow<Step> oword_loop(gcode::OKind kind, const std::string& label, SourceLoc where);
-  Flow<Step> oword_while(const std::string& label, SourceLoc where);
-  Flow<Step> oword_break(gcode::OKind kind, const std::string& label, SourceLoc where);
-  Flow<Step> oword_seek(gcode::SourcePos p);
-  Flow<Step> oword_leave(const OLoop& l, SourceLoc where);
 
   // macro_call.cpp
   Flow<void> call(std::int64_t program, int repeats, bool macro, SourceLoc where,

@@ -69,13 +69,6 @@ Flow<void> assignments(Interpreter::Impl& im) {
   return {};
 }
 
-// An O-word line of RS274NGC: its comments speak first.
-Flow<Step> oword_line(Interpreter::Impl& im, LinuxcncFamily& lang) {
-  auto c = lang.comments(im);
-  SKIPNC_TRY(c);
-  return im.execute_oword();  // oword.cpp
-}
-
 // An RS274NGC line of words: read with the parameters as they were before
 // it, then its settings, its comments, its codes. (Inlined: once per block.)
 [[gnu::always_inline]] inline Flow<Step> words_line(Interpreter::Impl& im, LinuxcncFamily& lang,
@@ -236,7 +229,11 @@ void Rs274ngc::start(Impl& im) {
 // then the comments speak, then the codes run.
 Flow<Step> Rs274ngc::execute(Impl& im, CommandSink& out) {
   if (im.blk.has_n) im.modal.seq = static_cast<int>(im.blk.n % 100000000);
-  if (im.blk.stmt.kind == gcode::StmtKind::kOword) return oword_line(im, *this);
+  if (im.blk.stmt.kind == gcode::StmtKind::kOword) {
+    auto c = comments(im);  // an O-word line's comments speak first
+    SKIPNC_TRY(c);
+    return execute_oword(im);  // oword.cpp
+  }
   return words_line(im, *this, out);
 }
 
@@ -287,8 +284,7 @@ Grbl::Grbl() : LinuxcncFamily(kGrblRules, kNgcExpr) {}
 
 Flow<Step> Grbl::execute(Impl& im, CommandSink& out) {
   if (im.blk.has_n) im.modal.seq = static_cast<int>(im.blk.n % 100000000);
-  if (im.blk.stmt.kind == gcode::StmtKind::kOword) return oword_line(im, *this);  // (no O)
-  if (im.blk.stmt.kind != gcode::StmtKind::kNone) return system_line(im, out);    // grbl_system.cpp
+  if (im.blk.stmt.kind != gcode::StmtKind::kNone) return system_line(im, out);  // grbl_system.cpp
   if (system.locked && !im.blk.words.empty()) {
     return fail(AlarmId::kGrblLocked,
                 "grbl is in alarm until $H or $X ($22 = 1: homing is required at start)",

@@ -29,6 +29,7 @@
 #include "config/dialect.hpp"
 #include "core/axes.hpp"
 #include "gcode/parser.hpp"
+#include "gcode/source.hpp"
 #include "interpreter/flow.hpp"
 #include "interpreter/interpreter.hpp"
 #include "interpreter/ngc_room.hpp"
@@ -37,6 +38,7 @@
 namespace skipnc::interp {
 
 struct Words;
+struct OLoop;                        // program_store.hpp
 struct ExprRules;                    // expr.cpp
 extern const ExprRules kMacroBExpr;  // Macro B's operators and functions
 extern const ExprRules kNgcExpr;     // RS274NGC's (grbl's too: it has only numbers)
@@ -217,6 +219,22 @@ class Rs274ngc final : public LinuxcncFamily {
   Flow<Value> read_named(Impl& im, const std::string& name, SourceLoc where) override;
   Flow<void> write_named(Impl& im, const std::string& name, Value v, SourceLoc where) override;
   void store_probe(Impl& im, const AxisVec& latch, bool triggered) override;
+
+ private:
+  // oword.cpp: the O-word flow (sub, call, return, if, while, do, repeat,
+  // break, continue).
+  Flow<Step> execute_oword(Impl& im);
+  Flow<void> oword_call(Impl& im, const std::string& label, SourceLoc where);
+  Flow<void> skip_to_oword(Impl& im, const std::string& label, std::uint32_t kinds,
+                           SourceLoc where);
+  Flow<Step> oword_return(Impl& im, const gcode::Stmt& s, SourceLoc where);
+  Flow<bool> oword_condition(Impl& im);
+  Flow<Step> oword_branch(Impl& im, gcode::OKind kind, const std::string& label, SourceLoc where);
+  Flow<Step> oword_loop(Impl& im, gcode::OKind kind, const std::string& label, SourceLoc where);
+  Flow<Step> oword_while(Impl& im, const std::string& label, SourceLoc where);
+  Flow<Step> oword_break(Impl& im, gcode::OKind kind, const std::string& label, SourceLoc where);
+  Flow<Step> oword_seek(Impl& im, gcode::SourcePos p);
+  Flow<Step> oword_leave(Impl& im, const OLoop& l, SourceLoc where);
 };
 
 // grbl's own state (grbl_system.cpp).

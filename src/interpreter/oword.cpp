@@ -27,12 +27,6 @@ constexpr std::uint32_t bit(OKind k) noexcept {
   return 1u << static_cast<unsigned>(k);
 }
 
-// O-words are RS274NGC's (the parser reads them in its syntax only): the
-// language is LinuxCNC's, #<_value> and M73's states are its own.
-LinuxcncFamily& family(Interpreter::Impl& im) noexcept {
-  return static_cast<LinuxcncFamily&>(*im.lang);
-}
-
 const char* keyword(OKind k) noexcept {
   switch (k) {
     case OKind::kSub:
@@ -76,24 +70,24 @@ const char* keyword(OKind k) noexcept {
 // Reads forward from the current position to the O-word with `label` whose
 // keyword is one of `kinds`; blk and block_pos are then that block and the
 // source is after it. A skip from the same block to the same kinds is kept.
-Flow<void> Interpreter::Impl::skip_to_oword(const std::string& label, std::uint32_t kinds,
-                                            SourceLoc where) {
-  Frame& f = programs.frames.back();
+Flow<void> Rs274ngc::skip_to_oword(Impl& im, const std::string& label, std::uint32_t kinds,
+                                   SourceLoc where) {
+  Frame& f = im.programs.frames.back();
   gcode::Source& src = *f.file->src;
   // The block and what it looks for (kinds: bits of OKind, below 2^16).
-  const std::uint64_t key = (block_pos.offset << 16) | (kinds & 0xffffu);
+  const std::uint64_t key = (im.block_pos.offset << 16) | (kinds & 0xffffu);
   if (auto it = f.file->ojumps.find(key); it != f.file->ojumps.end()) {
     const ProgramFile::OJump j = it->second;
     auto sk = src.seek(j.at);
     SKIPNC_TRY(sk);
-    auto got = read_block();
+    auto got = im.read_block();
     SKIPNC_TRY(got);
     f.resume = src.tell();
     return {};
   }
   for (;;) {
     const gcode::SourcePos here = src.tell();
-    auto more = src.next(raw);
+    auto more = src.next(im.raw);
     SKIPNC_TRY(more);
     if (!*more) {
       std::string want;
@@ -104,64 +98,66 @@ Flow<void> Interpreter::Impl::skip_to_oword(const std::string& label, std::uint3
       }
       return fail(AlarmId::kOwordFlow, "the file ends before " + want, where);
     }
-    if (!may_be_oword(raw.text)) continue;
-    block_pos = here;
-    cur_line = raw.line;
-    cur_col = raw.column;
-    auto parsed = gcode::parse_block(raw.text, SourceLoc{f.file->display, raw.line, raw.column},
-                                     raw.offset, blk, parse_limits);
+    if (!may_be_oword(im.raw.text)) continue;
+    im.block_pos = here;
+    im.cur_line = im.raw.line;
+    im.cur_col = im.raw.column;
+    auto parsed =
+        gcode::parse_block(im.raw.text, SourceLoc{f.file->display, im.raw.line, im.raw.column},
+                           im.raw.offset, im.blk, im.parse_limits);
     SKIPNC_TRY(parsed);
-    if (blk.stmt.kind != gcode::StmtKind::kOword) continue;
-    if ((kinds & bit(blk.stmt.okind)) == 0) continue;
-    if (blk.names[static_cast<std::size_t>(blk.stmt.label)] != label) continue;
+    if (im.blk.stmt.kind != gcode::StmtKind::kOword) continue;
+    if ((kinds & bit(im.blk.stmt.okind)) == 0) continue;
+    if (im.blk.names[static_cast<std::size_t>(im.blk.stmt.label)] != label) continue;
     f.resume = src.tell();
     f.file->ojumps.emplace(key, ProgramFile::OJump{here, f.resume});
     return {};
   }
 }
 
-Flow<void> Interpreter::Impl::oword_call(const std::string& label, SourceLoc where) {
+Flow<void> Rs274ngc::oword_call(Impl& im, const std::string& label, SourceLoc where) {
   int levels = 0;
-  for (std::size_t i = 1; i < programs.frames.size(); ++i)
-    levels += programs.frames[i].macro ? 1 : 0;
-  const int max = dialect.sw.call_levels > 0 ? dialect.sw.call_levels : mc.limits.max_macro_levels;
+  for (std::size_t i = 1; i < im.programs.frames.size(); ++i)
+    levels += im.programs.frames[i].macro ? 1 : 0;
+  const int max =
+      im.dialect.sw.call_levels > 0 ? im.dialect.sw.call_levels : im.mc.limits.max_macro_levels;
   if (levels >= max) {
     return fail(AlarmId::kMacroNesting,
                 "subroutine calls nested deeper than " + std::to_string(max) + " levels", where);
   }
   // The arguments, all read before the call level opens.
   std::vector<double> args;
-  for (const gcode::ExprId e : blk.args) {
-    auto v = eval(e);
+  for (const gcode::ExprId e : im.blk.args) {
+    auto v = im.eval(e);
     SKIPNC_TRY(v);
     args.push_back(v->num());
   }
   if (args.size() > 30) {
     return fail(AlarmId::kMacroFormat, "more than 30 arguments in a call", where);
   }
-  auto found = programs.find_sub(label, where);
+  auto found = im.programs.find_sub(label, where);
   SKIPNC_TRY(found);
-  if (!*found) return fail(AlarmId::kProgramNotFound, programs.sub_not_found(label), where);
+  if (!*found) return fail(AlarmId::kProgramNotFound, im.programs.sub_not_found(label), where);
   Frame f;
   f.file = (*found)->file;
   f.start = (*found)->at;
   f.macro = true;
   f.sub_label = label;
-  auto pushed = push_frame(f, shown_oword(label) + " call", where);
+  auto pushed = im.push_frame(f, shown_oword(label) + " call", where);
   if (!pushed) return pushed;
-  vars.push_level();
+  im.vars.push_level();
   for (std::size_t i = 0; i < args.size(); ++i) {
-    vars.set(static_cast<int>(i) + 1, Value::of(args[i]));
+    im.vars.set(static_cast<int>(i) + 1, Value::of(args[i]));
   }
-  for (int i = static_cast<int>(args.size()) + 1; i <= 30; ++i) vars.set(i, Value::of(0.0));
-  family(*this).state.value_returned = false;
+  for (int i = static_cast<int>(args.size()) + 1; i <= 30; ++i) im.vars.set(i, Value::of(0.0));
+  state.value_returned = false;
   return {};
 }
 
-Flow<Step> Interpreter::Impl::oword_return(const gcode::Stmt& s, SourceLoc where) {
-  const std::string& label = blk.names[static_cast<std::size_t>(s.label)];
-  Frame& f = programs.frames.back();
-  if (programs.frames.size() == 1 || f.sub_label.empty()) {
+Flow<Step> Rs274ngc::oword_return(Impl& im, const gcode::Stmt& s, SourceLoc where) {
+  const std::string& label = im.blk.names[static_cast<std::size_t>(s.label)];
+  Frame& f = im.programs.frames.back();
+  if (im.programs.frames.size() == 1 || f.sub_label.empty()) {
     return fail(AlarmId::kOwordFlow,
                 shown_oword(label) + " " + keyword(s.okind) + " outside a subroutine", where);
   }
@@ -172,30 +168,30 @@ Flow<Step> Interpreter::Impl::oword_return(const gcode::Stmt& s, SourceLoc where
         where);
   }
   std::optional<double> value;
-  if (!blk.args.empty()) {
-    auto v = eval(blk.args.front());
+  if (!im.blk.args.empty()) {
+    auto v = im.eval(im.blk.args.front());
     SKIPNC_TRY(v);
     value = v->num();
   }
-  family(*this).state_on_return(*this);  // ngc_room.cpp
-  programs.frames.pop_back();
-  vars.pop_level();
-  Frame& caller = programs.frames.back();
+  state_on_return(im);  // ngc_room.cpp
+  im.programs.frames.pop_back();
+  im.vars.pop_level();
+  Frame& caller = im.programs.frames.back();
   auto sk = caller.file->src->seek(caller.resume);
   SKIPNC_TRY(sk);
-  NgcState& ns = family(*this).state;
+  NgcState& ns = state;
   ns.value_returned = value.has_value();
   if (value) ns.value = Value::of(*value);
   return Step::kContinue;
 }
 
-Flow<Step> Interpreter::Impl::execute_oword() {
-  const gcode::Stmt s = blk.stmt;
-  const SourceLoc where = loc(s.column);
-  std::string label = blk.names[static_cast<std::size_t>(s.label)];
+Flow<Step> Rs274ngc::execute_oword(Impl& im) {
+  const gcode::Stmt s = im.blk.stmt;
+  const SourceLoc where = im.loc(s.column);
+  std::string label = im.blk.names[static_cast<std::size_t>(s.label)];
   if (s.target != gcode::kNoExpr) {
     // o[expr] call: the subroutine's number, rounded.
-    auto v = eval(s.target);
+    auto v = im.eval(s.target);
     SKIPNC_TRY(v);
     const double n = std::round(v->num());
     if (!(n >= 0 && n < 1e9)) {
@@ -207,15 +203,15 @@ Flow<Step> Interpreter::Impl::execute_oword() {
   switch (s.okind) {
     case OKind::kSub: {
       // A definition met in the flow of the program is passed over.
-      auto k = skip_to_oword(label, bit(OKind::kEndsub), where);
+      auto k = skip_to_oword(im, label, bit(OKind::kEndsub), where);
       SKIPNC_TRY(k);
       return Step::kContinue;
     }
     case OKind::kEndsub:
     case OKind::kReturn:
-      return oword_return(s, where);
+      return oword_return(im, s, where);
     case OKind::kCall: {
-      auto c = oword_call(label, where);
+      auto c = oword_call(im, label, where);
       SKIPNC_TRY(c);
       return Step::kContinue;
     }
@@ -223,35 +219,35 @@ Flow<Step> Interpreter::Impl::execute_oword() {
     case OKind::kElseif:
     case OKind::kElse:
     case OKind::kEndif:
-      return oword_branch(s.okind, label, where);
+      return oword_branch(im, s.okind, label, where);
     case OKind::kNone:
       return fail(AlarmId::kInternal, "unknown O-word statement", where);
     default:
-      return oword_loop(s.okind, label, where);
+      return oword_loop(im, s.okind, label, where);
   }
 }
 
 // The condition of the O-word block being run: true when not zero.
-Flow<bool> Interpreter::Impl::oword_condition() {
-  auto v = eval(blk.args.front());
+Flow<bool> Rs274ngc::oword_condition(Impl& im) {
+  auto v = im.eval(im.blk.args.front());
   SKIPNC_TRY(v);
   return v->num() != 0.0;
 }
 
 // if / elseif / else / endif.
-Flow<Step> Interpreter::Impl::oword_branch(gcode::OKind kind, const std::string& label,
-                                           SourceLoc where) {
+Flow<Step> Rs274ngc::oword_branch(Impl& im, gcode::OKind kind, const std::string& label,
+                                  SourceLoc where) {
   switch (kind) {
     case OKind::kIf: {
-      auto c = oword_condition();
+      auto c = oword_condition(im);
       SKIPNC_TRY(c);
       if (*c) return Step::kContinue;
       for (;;) {
-        auto k = skip_to_oword(label, bit(OKind::kElseif) | bit(OKind::kElse) | bit(OKind::kEndif),
-                               where);
+        auto k = skip_to_oword(im, label,
+                               bit(OKind::kElseif) | bit(OKind::kElse) | bit(OKind::kEndif), where);
         SKIPNC_TRY(k);
-        if (blk.stmt.okind != OKind::kElseif) return Step::kContinue;
-        auto e = oword_condition();
+        if (im.blk.stmt.okind != OKind::kElseif) return Step::kContinue;
+        auto e = oword_condition(im);
         SKIPNC_TRY(e);
         if (*e) return Step::kContinue;
       }
@@ -259,7 +255,7 @@ Flow<Step> Interpreter::Impl::oword_branch(gcode::OKind kind, const std::string&
     case OKind::kElseif:
     case OKind::kElse: {
       // The end of a branch that ran: on past the endif.
-      auto k = skip_to_oword(label, bit(OKind::kEndif), where);
+      auto k = skip_to_oword(im, label, bit(OKind::kEndif), where);
       SKIPNC_TRY(k);
       return Step::kContinue;
     }
@@ -285,8 +281,8 @@ OLoop* find_oloop(Frame& f, const std::string& label, OKind of) noexcept {
 }  // namespace
 
 // Reading goes on at `p` of the running frame.
-inline Flow<Step> Interpreter::Impl::oword_seek(gcode::SourcePos p) {
-  Frame& f = programs.frames.back();
+inline Flow<Step> Rs274ngc::oword_seek(Impl& im, gcode::SourcePos p) {
+  Frame& f = im.programs.frames.back();
   auto sk = f.file->src->seek(p);
   SKIPNC_TRY(sk);
   f.resume = p;
@@ -294,13 +290,13 @@ inline Flow<Step> Interpreter::Impl::oword_seek(gcode::SourcePos p) {
 }
 
 // Leaves a loop: past its closing statement, found from the opening block.
-Flow<Step> Interpreter::Impl::oword_leave(const OLoop& l, SourceLoc where) {
+Flow<Step> Rs274ngc::oword_leave(Impl& im, const OLoop& l, SourceLoc where) {
   const OKind opened = l.kind;
   const std::string label = l.label;
-  auto sk = programs.frames.back().file->src->seek(l.body);
+  auto sk = im.programs.frames.back().file->src->seek(l.body);
   SKIPNC_TRY(sk);
-  block_pos = l.start;
-  auto k = skip_to_oword(label,
+  im.block_pos = l.start;
+  auto k = skip_to_oword(im, label,
                          opened == OKind::kWhile    ? bit(OKind::kEndwhile)
                          : opened == OKind::kRepeat ? bit(OKind::kEndrepeat)
                                                     : bit(OKind::kWhile),
@@ -310,36 +306,36 @@ Flow<Step> Interpreter::Impl::oword_leave(const OLoop& l, SourceLoc where) {
 }
 
 // `while`: the end of a do loop, or the head of a while loop.
-inline Flow<Step> Interpreter::Impl::oword_while(const std::string& label, SourceLoc where) {
-  Frame& f = programs.frames.back();
+inline Flow<Step> Rs274ngc::oword_while(Impl& im, const std::string& label, SourceLoc where) {
+  Frame& f = im.programs.frames.back();
   if (!f.oloops.empty() && f.oloops.back().label == label && f.oloops.back().kind == OKind::kDo) {
     // The end of a do loop.
-    auto c = oword_condition();
+    auto c = oword_condition(im);
     SKIPNC_TRY(c);
-    if (*c) return oword_seek(f.oloops.back().body);
+    if (*c) return oword_seek(im, f.oloops.back().body);
     f.oloops.pop_back();
     return Step::kContinue;
   }
-  auto c = oword_condition();
+  auto c = oword_condition(im);
   SKIPNC_TRY(c);
   const bool again = !f.oloops.empty() && f.oloops.back().label == label &&
-                     f.oloops.back().kind == OKind::kWhile && f.oloops.back().start == block_pos;
+                     f.oloops.back().kind == OKind::kWhile && f.oloops.back().start == im.block_pos;
   if (*c) {
     if (!again) {
-      f.oloops.push_back(OLoop{label, OKind::kWhile, block_pos, f.file->src->tell(), 0.0});
+      f.oloops.push_back(OLoop{label, OKind::kWhile, im.block_pos, f.file->src->tell(), 0.0});
     }
     return Step::kContinue;
   }
   if (again) f.oloops.pop_back();
-  auto k = skip_to_oword(label, bit(OKind::kEndwhile), where);
+  auto k = skip_to_oword(im, label, bit(OKind::kEndwhile), where);
   SKIPNC_TRY(k);
   return Step::kContinue;
 }
 
 // `break` and `continue` of the loop labelled `label`.
-inline Flow<Step> Interpreter::Impl::oword_break(gcode::OKind kind, const std::string& label,
-                                                 SourceLoc where) {
-  Frame& f = programs.frames.back();
+inline Flow<Step> Rs274ngc::oword_break(Impl& im, gcode::OKind kind, const std::string& label,
+                                        SourceLoc where) {
+  Frame& f = im.programs.frames.back();
   OLoop* l = find_oloop(f, label, OKind::kNone);
   if (l == nullptr) {
     return fail(
@@ -351,56 +347,56 @@ inline Flow<Step> Interpreter::Impl::oword_break(gcode::OKind kind, const std::s
   OLoop loop = f.oloops.back();
   if (kind == OKind::kBreak) {
     f.oloops.pop_back();
-    return oword_leave(loop, where);
+    return oword_leave(im, loop, where);
   }
   switch (loop.kind) {
     case OKind::kWhile:
-      return oword_seek(loop.start);  // the condition again
+      return oword_seek(im, loop.start);  // the condition again
     case OKind::kDo:
-      return oword_seek(loop.body);
+      return oword_seek(im, loop.body);
     default: {
       OLoop& r = f.oloops.back();
       r.left -= 1.0;
-      if (r.left >= 1.0) return oword_seek(r.body);
+      if (r.left >= 1.0) return oword_seek(im, r.body);
       f.oloops.pop_back();
-      return oword_leave(loop, where);
+      return oword_leave(im, loop, where);
     }
   }
 }
 
 // do / while / endwhile / repeat / endrepeat / break / continue, on the
 // frame's loop stack.
-Flow<Step> Interpreter::Impl::oword_loop(gcode::OKind kind, const std::string& label,
-                                         SourceLoc where) {
-  Frame& f = programs.frames.back();
+Flow<Step> Rs274ngc::oword_loop(Impl& im, gcode::OKind kind, const std::string& label,
+                                SourceLoc where) {
+  Frame& f = im.programs.frames.back();
   switch (kind) {
     case OKind::kDo: {
       const gcode::SourcePos body = f.file->src->tell();
-      if (OLoop* l = find_oloop(f, label, OKind::kDo); l != nullptr && l->start == block_pos) {
+      if (OLoop* l = find_oloop(f, label, OKind::kDo); l != nullptr && l->start == im.block_pos) {
         return Step::kContinue;  // a continue came back here
       }
-      f.oloops.push_back(OLoop{label, OKind::kDo, block_pos, body, 0.0});
+      f.oloops.push_back(OLoop{label, OKind::kDo, im.block_pos, body, 0.0});
       return Step::kContinue;
     }
     case OKind::kWhile:
-      return oword_while(label, where);
+      return oword_while(im, label, where);
     case OKind::kEndwhile: {
       if (f.oloops.empty() || f.oloops.back().label != label ||
           f.oloops.back().kind != OKind::kWhile) {
         return fail(AlarmId::kOwordFlow, shown_oword(label) + " endwhile without its while", where);
       }
-      return oword_seek(f.oloops.back().start);
+      return oword_seek(im, f.oloops.back().start);
     }
     case OKind::kRepeat: {
-      auto v = eval(blk.args.front());
+      auto v = im.eval(im.blk.args.front());
       SKIPNC_TRY(v);
       const double n = std::round(v->num());
       if (n < 1) {
-        auto k = skip_to_oword(label, bit(OKind::kEndrepeat), where);
+        auto k = skip_to_oword(im, label, bit(OKind::kEndrepeat), where);
         SKIPNC_TRY(k);
         return Step::kContinue;
       }
-      f.oloops.push_back(OLoop{label, OKind::kRepeat, block_pos, f.file->src->tell(), n});
+      f.oloops.push_back(OLoop{label, OKind::kRepeat, im.block_pos, f.file->src->tell(), n});
       return Step::kContinue;
     }
     case OKind::kEndrepeat: {
@@ -411,13 +407,13 @@ Flow<Step> Interpreter::Impl::oword_loop(gcode::OKind kind, const std::string& l
       }
       OLoop& l = f.oloops.back();
       l.left -= 1.0;
-      if (l.left >= 1.0) return oword_seek(l.body);
+      if (l.left >= 1.0) return oword_seek(im, l.body);
       f.oloops.pop_back();
       return Step::kContinue;
     }
     case OKind::kBreak:
     case OKind::kContinue:
-      return oword_break(kind, label, where);
+      return oword_break(im, kind, label, where);
     default:
       break;
   }
