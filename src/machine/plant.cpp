@@ -88,8 +88,14 @@ void Plant::advance(Tick k, const AxisVec& from, const AxisVec& to,
   in.torque_pct = torque_;
   in.edge_count = 0;
   probing_.advance(before, actual_);
-  bool still = true;
-  for (int i = 0; still && i < n_; ++i) still = from[i] == to[i] && before[i] == actual_[i];
+  // The axis that moved in the last period is asked first: it nearly always
+  // moves in this one too (a probe's Z, the last axis, was reached last).
+  const int j = moving_axis_;
+  bool still = from[j] == to[j] && before[j] == actual_[j];
+  for (int i = 0; still && i < n_; ++i) {
+    still = from[i] == to[i] && before[i] == actual_[i];
+    if (!still) moving_axis_ = i;
+  }
   if (!sources_.empty()) source_edges(k, before, in);
   still_ = still && in.edge_count == 0 ? std::min(still_ + 1, 2) : 0;
 }
