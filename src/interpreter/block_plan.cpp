@@ -77,6 +77,7 @@ Flow<void> Interpreter::Impl::plan_g_codes(const Words& words, BlockPlan& plan) 
                   at);
     }
     plan.group[g] = def;
+    plan.named |= 1u << g;
     plan.column[g] = col;
   }
   return {};
@@ -212,8 +213,10 @@ void Interpreter::Impl::plan_cycle(BlockPlan& plan) const {
 // The block's modal state: the group codes, then F S T D.
 Flow<void> Interpreter::Impl::plan_modal(const Words& words, BlockPlan& plan) {
   ModalState& next = plan.next;
-  for (const CodeDef* def : plan.group) {
-    if (def != nullptr && def->set != nullptr) def->set(next);
+  // The groups the block names, in the order of their numbers.
+  for (std::uint32_t bits = plan.named; bits != 0; bits &= bits - 1) {
+    const CodeDef* def = plan.group[static_cast<std::size_t>(std::countr_zero(bits))];
+    if (def->set != nullptr) def->set(next);
   }
   if (const CodeDef* w = plan.group[static_cast<std::size_t>(Group::k14)];
       w != nullptr && w->code == GCode(54, 1)) {

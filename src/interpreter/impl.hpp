@@ -114,6 +114,7 @@ struct MillRequest {
 // the interpreter.
 struct BlockPlan {
   std::array<const CodeDef*, kGroupSlots> group{};  // the block's code of each modal group
+  std::uint32_t named = 0;  // bit g: group[g] is set (plan_modal visits only these)
   std::array<std::uint32_t, kGroupSlots> column{};
   Action action = Action::kNone;  // the group-00 command (G09 and G53 are flags)
   GCode action_code;

@@ -15,6 +15,7 @@
 #include <cmath>
 #include <cstdio>
 #include <string>
+#include <utility>
 #include <variant>
 
 #include "config/skip_inputs.hpp"
@@ -386,7 +387,7 @@ Flow<void> Interpreter::Impl::check_feeds(const AxisVec& start) {
   for (int i = 1; i < axis_count; ++i) {
     slowest = std::min(slowest, mc.axes[static_cast<std::size_t>(i)].max_feed_mm_min);
   }
-  AxisVec from = start;
+  const AxisVec* from = &start;
   for (const canon::Stamped& c : block_buffer.cmds) {
     const AxisVec* to = nullptr;
     double f = 0.0;
@@ -397,17 +398,17 @@ Flow<void> Interpreter::Impl::check_feeds(const AxisVec& start) {
       to = &sk->target;
       f = sk->feed_mm_per_min;
     } else if (const auto* r = std::get_if<canon::Rapid>(&c.cmd)) {
-      from = r->target;
+      from = &r->target;
       continue;
     } else if (const auto* a = std::get_if<canon::Arc>(&c.cmd)) {
-      from = a->target;
+      from = &a->target;
       continue;
     } else {
       continue;
     }
-    const AxisVec d = *to - from;
-    from = *to;
+    const AxisVec* prev = std::exchange(from, to);
     if (f <= slowest) continue;
+    const AxisVec d = *to - *prev;
     const double len = norm(d, axis_count);
     if (!(len > 0.0) || !(f > 0.0)) continue;
     double limit = f;

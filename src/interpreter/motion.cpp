@@ -267,9 +267,8 @@ Flow<void> Interpreter::Impl::arc(const Words& words, const AxisVec& target, Com
   }
   const bool flipped = framed && ((frame.mirror[0] != (frame.scale[0] < 0.0)) !=
                                   (frame.mirror[1] != (frame.scale[1] < 0.0)));
-  const double tol = params.get(config::param::kArcRadiusTolerance) > 0
-                         ? params.get(config::param::kArcRadiusTolerance)
-                         : 0.02;
+  const double tol_param = params.get(config::param::kArcRadiusTolerance);
+  const double tol = tol_param > 0 ? tol_param : 0.02;
   const ArcGeometry g{pos[pl.a0],
                       pos[pl.a1],
                       target[pl.a0],
