@@ -99,7 +99,7 @@ void Interpreter::Impl::commit_spindle(const Words& words, bool changed, Command
 
 // G52 / G92 axis words: every shift checked before any is set.
 Flow<void> Interpreter::Impl::commit_shift(const Words& words, bool local) {
-  AxisVec shift = local ? local_shift : g92_shift;
+  AxisVec shift = local ? shifts.get().local_shift : shifts.get().g92_shift;
   for (int i = 0; i < axis_count; ++i) {
     const char c = axis_letter[static_cast<std::size_t>(i)];
     if (!words.has(c)) continue;
@@ -108,16 +108,16 @@ Flow<void> Interpreter::Impl::commit_shift(const Words& words, bool local) {
       shift[i] = v;
     } else {
       // G92: the current position becomes v in the work system.
-      const double saved = g92_shift[i];
-      g92_shift[i] = 0.0;
+      const double saved = shifts.get().g92_shift[i];
+      shifts.write().g92_shift[i] = 0.0;
       shift[i] = pos[i] * axis_scale[static_cast<std::size_t>(i)] - v - offset_total(i);
-      g92_shift[i] = saved;
+      shifts.write().g92_shift[i] = saved;
     }
     auto ok =
         check_offset(shift[i], std::string(local ? "G52 " : "G92 ") + c, loc(words.at(c).column));
     if (!ok) return ok;
   }
-  (local ? local_shift : g92_shift) = shift;
+  (local ? shifts.write().local_shift : shifts.write().g92_shift) = shift;
   if (!local && lang->rules.offsets_in_params) ngc_store_g92();
   return {};
 }
@@ -138,8 +138,8 @@ void Interpreter::Impl::commit_tool_pos_offset(const Words& words, int g) {
     const double v = word_length(words.at(c), false);
     const double dist = inc ? v : v - work_of(i, pos[i]);
     const double shift = (dist < 0.0 ? -1.0 : 1.0) * k;
-    tool_pos_offset[i] += shift;
-    if (inc) g45_delta[i] = shift;
+    shifts.write().tool_pos_offset[i] += shift;
+    if (inc) shifts.write().g45_delta[i] = shift;
   }
 }
 

@@ -169,7 +169,7 @@ void Interpreter::Impl::grbl_list_offsets() {
     }
     add_message(fmt::format("[G{}:{}]", base == 5161 ? 28 : 30, grbl_coords(p)));
   }
-  add_message("[G92:" + grbl_coords(g92_shift) + "]");
+  add_message("[G92:" + grbl_coords(shifts.get().g92_shift) + "]");
   const bool inch = (static_cast<long long>(grbl_setting(13)) & 1) != 0;
   add_message(inch ? fmt::format("[TLO:{:.4f}]", length_offset / 25.4 + 0.0)
                    : fmt::format("[TLO:{:.3f}]", length_offset + 0.0));

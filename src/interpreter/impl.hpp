@@ -176,6 +176,8 @@ struct Interpreter::Impl : BlockState {
 
   // EXT, G54..G59, then G54.1 P1..P300 (mm); modal.work indexes it.
   JournaledTable<AxisVec> work_offsets;
+  // G52, G92, G45-G48 and a lathe's T code shifts (block_state.hpp).
+  BlockSaved<AxisShifts> shifts;
   // G54.4 workpiece setting error data, #26000-#26079 (conversion_3d.cpp).
   std::array<Value, 80> setting_error_data{};
   int length_axis = 2;

@@ -127,6 +127,7 @@ bool Interpreter::Impl::block_calls(const Words& words, const BlockPlan& plan) c
 // G66 macro, when the block may change them, are copied.
 void Interpreter::Impl::begin_tables(bool calls) {
   work_offsets.begin_block();
+  shifts.begin_block();
   tools.begin_block();
   vars.begin_block();
   // M70-M73's saved states (RS274NGC), when there are any.
@@ -140,6 +141,7 @@ void Interpreter::Impl::begin_tables(bool calls) {
 
 void Interpreter::Impl::commit_tables() noexcept {
   work_offsets.commit();
+  shifts.commit();
   tools.commit();
   vars.commit();
 }
@@ -149,6 +151,7 @@ void Interpreter::Impl::commit_tables() noexcept {
 // (a seek to a block the source has already returned cannot fail).
 void Interpreter::Impl::roll_back_tables(bool calls) {
   work_offsets.roll_back();
+  shifts.roll_back();
   tools.roll_back();
   vars.roll_back();
   if (before_block.had_saved_states) {

@@ -48,7 +48,7 @@ Flow<void> Interpreter::Impl::ngc_action(const Words& words, GCode code) {
   if (code == GCode(92, 1) || code == GCode(92, 2)) {
     const bool clear = code == GCode(92, 1);
     for (int i = 0; i < axis_count; ++i) {
-      g92_shift[i] = 0.0;
+      shifts.write().g92_shift[i] = 0.0;
       const int n = axis_param(5211, i);
       if (clear && n > 0) vars.set_ngc_param(n, 0.0);
     }
@@ -58,7 +58,7 @@ Flow<void> Interpreter::Impl::ngc_action(const Words& words, GCode code) {
   if (code == GCode(92, 3)) {
     for (int i = 0; i < axis_count; ++i) {
       const int n = axis_param(5211, i);
-      g92_shift[i] = n > 0 ? vars.ngc_param(n) * stored_mm() : 0.0;
+      shifts.write().g92_shift[i] = n > 0 ? vars.ngc_param(n) * stored_mm() : 0.0;
     }
     vars.set_ngc_param(5210, 1.0);
     return {};
@@ -70,7 +70,7 @@ Flow<void> Interpreter::Impl::ngc_action(const Words& words, GCode code) {
 void Interpreter::Impl::ngc_store_g92() {
   for (int i = 0; i < axis_count; ++i) {
     const int j = ngc_axis_index(axis_letter[static_cast<std::size_t>(i)]);
-    if (j >= 0) vars.set_ngc_param(5211 + j, g92_shift[i] / stored_mm());
+    if (j >= 0) vars.set_ngc_param(5211 + j, shifts.get().g92_shift[i] / stored_mm());
   }
   vars.set_ngc_param(5210, 1.0);
 }

@@ -355,7 +355,7 @@ Flow<void> Interpreter::Impl::load_ngc_var_file() {
   if (vars.ngc_param(5210) != 0.0) {
     for (int i = 0; i < axis_count; ++i) {
       const int j = ngc_axis_index(axis_letter[static_cast<std::size_t>(i)]);
-      if (j >= 0) g92_shift[i] = vars.ngc_param(5211 + j) * stored_mm();
+      if (j >= 0) shifts.write().g92_shift[i] = vars.ngc_param(5211 + j) * stored_mm();
     }
   }
   for (int n = 5161; n <= 5390; ++n) numbers.push_back(n);
