@@ -35,6 +35,7 @@ Plant::Plant(const config::MachineConfig& m, const Scene& scene, ServoClock cloc
     sources_.push_back(Source{SourceKind::kPulse, i, false});
     signal_for(scene_.pulses[i].signal).sources.push_back(sources_.size() - 1);
   }
+  timed_sources_ = sources_.size();
   for (std::size_t i = 0; i < probing_.source_count(); ++i) {
     sources_.push_back(Source{SourceKind::kProbing, i, false});
     probing_source_.push_back(sources_.size() - 1);
@@ -186,7 +187,7 @@ void Plant::source_edges(Tick k, const AxisVec& before, kernel::TickInput& in) n
   // Source events inside the period, in time order.
   events_.clear();
   const double t0 = clock_.seconds(k - 1);
-  for (std::size_t s = 0; s < sources_.size(); ++s) {
+  for (std::size_t s = 0; s < timed_sources_; ++s) {  // a probe's edges come below
     const Source& src = sources_[s];
     if (src.kind == SourceKind::kTrigger) {
       const Trigger& t = scene_.triggers[src.index];

@@ -132,6 +132,9 @@ class Plant {
   // servo update is the same arithmetic on every axis (advance's fast loop).
   bool plain_servo_ = false;
   std::vector<Source> sources_;
+  // The scene's triggers and pulses, first in sources_ (the probing
+  // sources follow): source_edges times only these.
+  std::size_t timed_sources_ = 0;
   std::vector<Signal> signals_;
   struct Event {
     double frac;
