@@ -306,8 +306,8 @@ void Interpreter::Impl::commit_cycle_start(const ModalState& before) {
   if (z < 0) return;
   const int x = axis_of_letter['X' - 'A'], y = axis_of_letter['Y' - 'A'];
   cycle_data.initial =
-      xform::to_program(frame, {x >= 0 ? work_of(x, pos[x]) : 0.0,
-                                y >= 0 ? work_of(y, pos[y]) : 0.0, work_of(z, pos[z])})[2];
+      xform::to_program(frame(), {x >= 0 ? work_of(x, pos[x]) : 0.0,
+                                  y >= 0 ? work_of(y, pos[y]) : 0.0, work_of(z, pos[z])})[2];
 }
 
 // The mill codes' action, in place of the group-00 action or motion: G68

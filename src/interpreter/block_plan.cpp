@@ -261,7 +261,7 @@ Flow<void> Interpreter::Impl::plan_modal(const Words& words, BlockPlan& plan) {
   if (next.plane != modal.plane && modal.cutter != CutterComp::kOff) {
     return fail(AlarmId::kPlaneChangeInComp, "plane change with G41/G42 active", loc(cur_col));
   }
-  if (next.cutter != CutterComp::kOff && frame.tilted()) {
+  if (next.cutter != CutterComp::kOff && frame().tilted()) {
     // The offset would lie in the tilted program plane (conversion_3d.cpp).
     return fail(AlarmId::kNotSimulated,
                 "G41/G42 under a tilted G68 I J K or G54.4 is not simulated by skipnc",

@@ -115,7 +115,9 @@ struct MillRequest {
 struct BlockPlan {
   std::array<const CodeDef*, kGroupSlots> group{};  // the block's code of each modal group
   std::uint32_t named = 0;  // bit g: group[g] is set (plan_modal visits only these)
-  std::array<std::uint32_t, kGroupSlots> column{};
+  // Each block's column of group[g], set with it and read only where group[g]
+  // is set: not cleared for every block.
+  std::array<std::uint32_t, kGroupSlots> column;
   Action action = Action::kNone;  // the group-00 command (G09 and G53 are flags)
   GCode action_code;
   bool exact_stop = false;     // G09
@@ -178,6 +180,11 @@ struct Interpreter::Impl : BlockState {
   JournaledTable<AxisVec> work_offsets;
   // G52, G92, G45-G48 and a lathe's T code shifts (block_state.hpp).
   BlockSaved<AxisShifts> shifts;
+  // The program -> work frame (G68 rotation, G51 scaling, G51.1 mirror,
+  // G68 I J K, G54.4; mill_codes.cpp apply_frame_code writes it), read
+  // through frame().
+  BlockSaved<xform::Transform> program_frame;
+  const xform::Transform& frame() const noexcept { return program_frame.get(); }
   // G54.4 workpiece setting error data, #26000-#26079 (conversion_3d.cpp).
   std::array<Value, 80> setting_error_data{};
   int length_axis = 2;
@@ -467,7 +474,7 @@ struct Interpreter::Impl : BlockState {
   Flow<xform::Transform> conversion_3d(const Words& words, const MillRequest& req,
                                        const xform::Point& here) const;
   Flow<xform::Transform> setting_error(const Words& words, const MillRequest& req) const;  // G54.4
-  bool frame_active() const noexcept { return polar || frame.active(); }
+  bool frame_active() const noexcept { return polar || frame().active(); }
   Flow<void> frame_targets(const Words& words, AxisVec& target, AxisMask& moved);
   // Cutter radius compensation (cutter_comp.hpp): the block's commands go
   // through the compensator when G41/G42 is active or a vector is left.

@@ -7,6 +7,7 @@
 #pragma once
 
 #include <cstddef>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -55,6 +56,8 @@ class JournaledTable {
 // (roll_back). Outside a block nothing is copied.
 template <class T>
 class BlockSaved {
+  static_assert(std::is_nothrow_copy_assignable_v<T>);
+
  public:
   const T& get() const noexcept { return value_; }
   T& write() noexcept {

@@ -128,6 +128,7 @@ bool Interpreter::Impl::block_calls(const Words& words, const BlockPlan& plan) c
 void Interpreter::Impl::begin_tables(bool calls) {
   work_offsets.begin_block();
   shifts.begin_block();
+  program_frame.begin_block();
   tools.begin_block();
   vars.begin_block();
   // M70-M73's saved states (RS274NGC), when there are any.
@@ -142,6 +143,7 @@ void Interpreter::Impl::begin_tables(bool calls) {
 void Interpreter::Impl::commit_tables() noexcept {
   work_offsets.commit();
   shifts.commit();
+  program_frame.commit();
   tools.commit();
   vars.commit();
 }
@@ -152,6 +154,7 @@ void Interpreter::Impl::commit_tables() noexcept {
 void Interpreter::Impl::roll_back_tables(bool calls) {
   work_offsets.roll_back();
   shifts.roll_back();
+  program_frame.roll_back();
   tools.roll_back();
   vars.roll_back();
   if (before_block.had_saved_states) {

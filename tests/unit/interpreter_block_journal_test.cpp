@@ -130,6 +130,23 @@ TEST(BlockJournal, AG92AndG52ShiftTheBlockSetAreBackWhenALaterStepAlarms) {
   EXPECT_DOUBLE_EQ(in->position()[0], -4.0);
 }
 
+// The program frame is copied by a block's first write to it as well: a
+// rotation the alarmed block set is undone, the moves after it unrotated.
+TEST(BlockJournal, AG68RotationTheBlockSetIsBackWhenALaterStepAlarms) {
+  const Mill m;
+  auto in = m.start(
+      "G21 G90 G17\nG0 X0 Y0\nG68 X0 Y0 R90. M98\nG1 X10. Y0 F100\n#100 = #5021\n"
+      "#101 = #5022\nG68 X0 Y0 R90.\nG1 X10. Y0\n#102 = #5021\n#103 = #5022\nM30\n");
+  ASSERT_TRUE(in);
+  const std::vector<Error> alarms = run_through(*in);
+  ASSERT_EQ(alarms.size(), 1u);
+  EXPECT_EQ(alarms[0].loc.line, 3u);
+  EXPECT_NEAR(var(*in, 100), 10.0, 1e-9);  // the G68 of the alarmed block is undone
+  EXPECT_NEAR(var(*in, 101), 0.0, 1e-9);
+  EXPECT_NEAR(var(*in, 102), 0.0, 1e-9);  // a G68 without an alarm turns X10. to Y10.
+  EXPECT_NEAR(var(*in, 103), 10.0, 1e-9);
+}
+
 // A G66 modal macro runs after the block's move: it opens a call level
 // (#1 = A) and a frame; the block then fails as it passes its moves on
 // (--strict: feed_clamped). The caller's #1 and its next block are back.
