@@ -147,13 +147,12 @@ void Interpreter::Impl::commit_tool_pos_offset(const Words& words, int g) {
 // (for G66).
 Flow<Step> Interpreter::Impl::commit_action(const Words& words, const BlockPlan& plan,
                                             CommandSink& out, bool& moved) {
-  const SourceLoc at = loc(cur_col);
   switch (plan.action) {
     case Action::kNgc:
       SKIPNC_TRY(ngc_action(words, plan.action_code));
       return Step::kContinue;
     case Action::kDataSetting:
-      SKIPNC_TRY(data_setting(words, at));
+      SKIPNC_TRY(data_setting(words, loc(cur_col)));
       return Step::kContinue;
     case Action::kLatheCoordSet:
       SKIPNC_TRY(lathe_coordinate_setting(words));
@@ -185,8 +184,8 @@ Flow<Step> Interpreter::Impl::commit_action(const Words& words, const BlockPlan&
     return Step::kContinue;
   }
   if (plan.tool_pos_offset != 0) commit_tool_pos_offset(words, plan.tool_pos_offset);
-  if (!skip) {
-    auto c = check_nose_radius_comp(at);
+  if (!skip && mc.lathe()) {  // the column's text is built only for a lathe's check
+    auto c = check_nose_radius_comp(loc(cur_col));
     SKIPNC_TRY(c);
   }
   auto m = motion(words, out, skip, plan.machine_coord);

@@ -284,7 +284,8 @@ struct Interpreter::Impl : BlockState {
                          : std::string_view(programs.frames.back().file->display),
                      cur_line, column};
   }
-  Flow<void> count_statement(SourceLoc where);
+  // The statement limit; `column` names the block in its alarm.
+  Flow<void> count_statement(std::uint32_t column);
 
   // macro_flow.cpp
   Flow<Step> execute_statement(CommandSink& out);
@@ -524,7 +525,7 @@ struct Interpreter::Impl : BlockState {
   bool has_axis_word(const Words& words) const noexcept;
   char incremental_letter(int axis) const noexcept;  // U W H on a lathe, 0 otherwise
   double spindle_rpm_at(const AxisVec& machine) const noexcept;
-  Flow<void> need_spindle_for_feed(SourceLoc where) const;
+  Flow<void> need_spindle_for_feed(std::uint32_t column) const;  // column: of the alarm
   Flow<void> lathe_tool(const Words& words, ModalState& next);
   Flow<void> lathe_coordinate_setting(const Words& words);
   Flow<void> lathe_offset_setting(const Words& words, SourceLoc where);

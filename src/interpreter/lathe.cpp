@@ -125,14 +125,14 @@ double Interpreter::Impl::feed_to_mm_per_min(double f) const noexcept {
   return per_unit * spindle_rpm_at(pos);
 }
 
-Flow<void> Interpreter::Impl::need_spindle_for_feed(SourceLoc where) const {
+Flow<void> Interpreter::Impl::need_spindle_for_feed(std::uint32_t column) const {
   if (modal.feed_mode == FeedMode::kPerRev && spindle_rpm_at(pos) <= 0.0) {
     // A Fanuc control waits for the spindle; a program that would hang is
     // stopped with an alarm instead.
     return fail(AlarmId::kFeedPerRevNoSpindle,
                 std::string("feed per revolution (") + (modal.lathe ? "G99" : "G95") +
                     ") with the spindle stopped (S0 or M05)",
-                where);
+                loc(column));
   }
   return {};
 }

@@ -60,7 +60,6 @@ Flow<bool> Interpreter::Impl::condition(gcode::ExprId cond, SourceLoc where) {
 Flow<Step> Interpreter::Impl::execute_statement(CommandSink& out) {
   (void)out;
   const gcode::Stmt& s = blk.stmt;
-  const SourceLoc where = loc(s.column);
   using gcode::StmtKind;
   switch (s.kind) {
     case StmtKind::kAssign: {
@@ -71,7 +70,7 @@ Flow<Step> Interpreter::Impl::execute_statement(CommandSink& out) {
       return Step::kContinue;
     }
     case StmtKind::kIfThen: {
-      auto c = condition(s.cond, where);
+      auto c = condition(s.cond, loc(s.column));
       SKIPNC_TRY(c);
       if (*c) {
         auto v = eval(s.rhs);
@@ -83,12 +82,12 @@ Flow<Step> Interpreter::Impl::execute_statement(CommandSink& out) {
     }
     case StmtKind::kGoto:
     case StmtKind::kIfGoto:
-      return goto_statement(s, where);
+      return goto_statement(s, loc(s.column));
     case StmtKind::kWhile:
     case StmtKind::kDo:
-      return loop_statement(s, where);
+      return loop_statement(s, loc(s.column));
     case StmtKind::kEnd:
-      return end_statement(s.loop, where);
+      return end_statement(s.loop, loc(s.column));
     case StmtKind::kPopen:
       dprnt_open = true;
       dprnt_used = true;
@@ -98,7 +97,7 @@ Flow<Step> Interpreter::Impl::execute_statement(CommandSink& out) {
       return Step::kContinue;
     case StmtKind::kDprnt:
     case StmtKind::kBprnt: {
-      auto p = print_line(where);
+      auto p = print_line(loc(s.column));
       SKIPNC_TRY(p);
       return Step::kContinue;
     }

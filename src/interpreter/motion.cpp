@@ -28,7 +28,7 @@ Flow<void> Interpreter::Impl::dwell(const Words& words, CommandSink& out) {
   if (modal.feed_mode == FeedMode::kPerRev && params.bit(config::param::kDwellRevolutions)) {
     // 3405#1 DWL: in feed per revolution the dwell counts spindle
     // revolutions (X1. = 1 revolution, P1000 = 1 revolution).
-    auto s = need_spindle_for_feed(loc(cur_col));
+    auto s = need_spindle_for_feed(cur_col);
     if (!s) return s;
     seconds = seconds * 60.0 / spindle_rpm_at(pos);
   }
@@ -102,7 +102,7 @@ Flow<Step> Interpreter::Impl::motion(const Words& words, CommandSink& out, bool 
     return Step::kContinue;
   }
   if (skip || modal.motion != Motion::kRapid) {
-    auto s = need_spindle_for_feed(loc(cur_col));
+    auto s = need_spindle_for_feed(cur_col);
     SKIPNC_TRY(s);
   }
   if (skip) return skip_block(words, target, moved, out);
