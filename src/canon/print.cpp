@@ -28,7 +28,7 @@ char* number_at(char* p, double v) noexcept {
       return p;
     }
   }
-  return std::to_chars(p, p + kNumberRoom, v + 0.0).ptr;
+  return decimal::write_shortest(p, v + 0.0);
 }
 
 // Writes the text of the common commands (lines, rapids, arcs; the axes of a

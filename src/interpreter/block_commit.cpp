@@ -98,7 +98,7 @@ void Interpreter::Impl::commit_spindle(const Words& words, bool changed, Command
 
 // G52 / G92 axis words: every shift checked before any is set.
 Flow<void> Interpreter::Impl::commit_shift(const Words& words, bool local) {
-  AxisVec shift = local ? local_shift : g92_shift;
+  AxisVec shift = local ? shifts.get().local_shift : shifts.get().g92_shift;
   for (int i = 0; i < axis_count; ++i) {
     const char c = axis_letter[static_cast<std::size_t>(i)];
     if (!words.has(c)) continue;
@@ -107,16 +107,16 @@ Flow<void> Interpreter::Impl::commit_shift(const Words& words, bool local) {
       shift[i] = v;
     } else {
       // G92: the current position becomes v in the work system.
-      const double saved = g92_shift[i];
-      g92_shift[i] = 0.0;
+      const double saved = shifts.get().g92_shift[i];
+      shifts.write().g92_shift[i] = 0.0;
       shift[i] = pos[i] * axis_scale[static_cast<std::size_t>(i)] - v - offset_total(i);
-      g92_shift[i] = saved;
+      shifts.write().g92_shift[i] = saved;
     }
     auto ok =
         check_offset(shift[i], std::string(local ? "G52 " : "G92 ") + c, loc(words.at(c).column));
     if (!ok) return ok;
   }
-  (local ? local_shift : g92_shift) = shift;
+  (local ? shifts.write().local_shift : shifts.write().g92_shift) = shift;
   if (!local && lang->rules.offsets_in_params) lang->store_g92(*this);  // ngc_codes.cpp
   return {};
 }
@@ -137,8 +137,8 @@ void Interpreter::Impl::commit_tool_pos_offset(const Words& words, int g) {
     const double v = word_length(words.at(c));
     const double dist = inc ? v : v - work_of(i, pos[i]);
     const double shift = (dist < 0.0 ? -1.0 : 1.0) * k;
-    tool_pos_offset[i] += shift;
-    if (inc) g45_delta[i] = shift;
+    shifts.write().tool_pos_offset[i] += shift;
+    if (inc) shifts.write().g45_delta[i] = shift;
   }
 }
 
@@ -146,13 +146,12 @@ void Interpreter::Impl::commit_tool_pos_offset(const Words& words, int g) {
 // (for G66).
 Flow<Step> Interpreter::Impl::commit_action(const Words& words, const BlockPlan& plan,
                                             CommandSink& out, bool& moved) {
-  const SourceLoc at = loc(cur_col);
   switch (plan.action) {
     case Action::kNgc:
       SKIPNC_TRY(lang->own_action(*this, words, plan.action_code));  // ngc_codes.cpp
       return Step::kContinue;
     case Action::kDataSetting:
-      SKIPNC_TRY(data_setting(words, at));
+      SKIPNC_TRY(data_setting(words, loc(cur_col)));
       return Step::kContinue;
     case Action::kLatheCoordSet:
       SKIPNC_TRY(lathe_coordinate_setting(words));
@@ -184,8 +183,8 @@ Flow<Step> Interpreter::Impl::commit_action(const Words& words, const BlockPlan&
     return Step::kContinue;
   }
   if (plan.tool_pos_offset != 0) commit_tool_pos_offset(words, plan.tool_pos_offset);
-  if (!skip) {
-    auto c = check_nose_radius_comp(at);
+  if (!skip && mc.lathe()) {  // the column's text is built only for a lathe's check
+    auto c = check_nose_radius_comp(loc(cur_col));
     SKIPNC_TRY(c);
   }
   auto m = motion(words, out, skip, plan.machine_coord);
@@ -305,8 +304,8 @@ void Interpreter::Impl::commit_cycle_start(const ModalState& before) {
   if (z < 0) return;
   const int x = axis_of_letter['X' - 'A'], y = axis_of_letter['Y' - 'A'];
   cycle_data.initial =
-      xform::to_program(frame, {x >= 0 ? work_of(x, pos[x]) : 0.0,
-                                y >= 0 ? work_of(y, pos[y]) : 0.0, work_of(z, pos[z])})[2];
+      xform::to_program(frame(), {x >= 0 ? work_of(x, pos[x]) : 0.0,
+                                  y >= 0 ? work_of(y, pos[y]) : 0.0, work_of(z, pos[z])})[2];
 }
 
 // The mill codes' action, in place of the group-00 action or motion: G68

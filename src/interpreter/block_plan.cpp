@@ -40,28 +40,29 @@ Flow<void> Interpreter::Impl::plan_g_codes(const Words& words, BlockPlan& plan) 
   for (int i = 0; i < words.g_count; ++i) {
     const GCode code = words.g[static_cast<std::size_t>(i)];
     const std::uint32_t col = words.g_col[static_cast<std::size_t>(i)];
-    const SourceLoc at = loc(col);
     if (std::find(dialect.absent_g.begin(), dialect.absent_g.end(), code) !=
         dialect.absent_g.end()) {
-      return fail(AlarmId::kUnknownGCode, code_name(code) + " is not a code of this control", at);
+      return fail(AlarmId::kUnknownGCode, code_name(code) + " is not a code of this control",
+                  loc(col));
     }
     if (std::find(dialect.not_simulated_g.begin(), dialect.not_simulated_g.end(), code) !=
         dialect.not_simulated_g.end()) {
       return fail(AlarmId::kNotSimulated,
-                  code_name(code) + " is a code of this control that skipnc does not simulate", at);
+                  code_name(code) + " is a code of this control that skipnc does not simulate",
+                  loc(col));
     }
     const CodeDef* def = find_g(code, lathe);  // codes.cpp
     if (def == nullptr || def->handler == Handler::kRefused) {
-      return fail(AlarmId::kUnknownGCode, improper_g(code, def, lathe), at);
+      return fail(AlarmId::kUnknownGCode, improper_g(code, def, lathe), loc(col));
     }
     if (auto why = not_in_dialect(*def, dialect.sw)) {
-      return fail(AlarmId::kUnknownGCode, std::move(*why), at);
+      return fail(AlarmId::kUnknownGCode, std::move(*why), loc(col));
     }
     if (!def->modal_state()) {
-      auto mill = mill_code(*def, at, plan.mill);  // mill_codes.cpp
+      auto mill = mill_code(*def, loc(col), plan.mill);  // mill_codes.cpp
       SKIPNC_TRY(mill);
       if (*mill) continue;
-      return fail(AlarmId::kUnknownGCode, improper_g(code, nullptr, lathe), at);
+      return fail(AlarmId::kUnknownGCode, improper_g(code, nullptr, lathe), loc(col));
     }
     if (def->group == Group::k00) {
       auto r = plan_one_shot(*def, col, plan);
@@ -74,9 +75,10 @@ Flow<void> Interpreter::Impl::plan_g_codes(const Words& words, BlockPlan& plan) 
       return fail(AlarmId::kGCodeConflict,
                   code_name(plan.group[g]->code) + " and " + code_name(code) +
                       " are both of group " + std::to_string(static_cast<int>(def->group)),
-                  at);
+                  loc(col));
     }
     plan.group[g] = def;
+    plan.named |= 1u << g;
     plan.column[g] = col;
   }
   return {};
@@ -212,8 +214,10 @@ void Interpreter::Impl::plan_cycle(BlockPlan& plan) const {
 // The block's modal state: the group codes, then F S T D.
 Flow<void> Interpreter::Impl::plan_modal(const Words& words, BlockPlan& plan) {
   ModalState& next = plan.next;
-  for (const CodeDef* def : plan.group) {
-    if (def != nullptr && def->set != nullptr) def->set(next);
+  // The groups the block names, in the order of their numbers.
+  for (std::uint32_t bits = plan.named; bits != 0; bits &= bits - 1) {
+    const CodeDef* def = plan.group[static_cast<std::size_t>(std::countr_zero(bits))];
+    if (def->set != nullptr) def->set(next);
   }
   if (const CodeDef* w = plan.group[static_cast<std::size_t>(Group::k14)];
       w != nullptr && w->code == GCode(54, 1)) {
@@ -258,7 +262,7 @@ Flow<void> Interpreter::Impl::plan_modal(const Words& words, BlockPlan& plan) {
   if (next.plane != modal.plane && modal.cutter != CutterComp::kOff) {
     return fail(AlarmId::kPlaneChangeInComp, "plane change with G41/G42 active", loc(cur_col));
   }
-  if (next.cutter != CutterComp::kOff && frame.tilted()) {
+  if (next.cutter != CutterComp::kOff && frame().tilted()) {
     // The offset would lie in the tilted program plane (conversion_3d.cpp).
     return fail(AlarmId::kNotSimulated,
                 "G41/G42 under a tilted G68 I J K or G54.4 is not simulated by skipnc",

@@ -5,7 +5,9 @@
 // block transaction"). No member owns memory: the copy is a plain memcpy
 // of a few hundred bytes. The large tables a block may write (work
 // offsets, tool offsets, variables, the call stack) are journaled instead
-// (journal.hpp).
+// (journal.hpp), and the axis shifts (AxisShifts, below) and the program
+// frame (Impl::program_frame) are copied by the first write of a block to
+// them.
 #pragma once
 
 #include <cstdint>
@@ -24,14 +26,8 @@ enum class Pending : std::uint8_t { kNone, kRerun, kSkip };
 struct BlockState {
   ModalState modal;
   AxisVec pos;                 // commanded machine position, mm
-  AxisVec local_shift;         // G52
-  AxisVec g92_shift;           // G92
-  AxisVec tool_pos_offset;     // G45-G48 accumulated (dialects that have them)
-  AxisVec g45_delta;           // this block's G45-G48 change (incremental targets), mm
   double length_offset = 0.0;  // active tool length offset (mm), on length_axis
   // Lathe (lathe.cpp): offsets are kept in program values.
-  AxisVec lathe_tool_offset;     // T code: geometry + wear, program values (mm)
-  AxisVec tool_offset_pending;   // its last change not yet moved, machine mm (U/W moves)
   int wear_offset = 0;           // lower digits of the T code
   double turning_cycle_z = 0.0;  // G90 cycle: Z end of the last pass, machine mm
   bool have_turning_cycle_z = false;
@@ -55,19 +51,30 @@ struct BlockState {
   std::int64_t message_bytes = 0;
   bool messages_dropped = false;
 
-  // mill_codes.cpp: canned cycle data (modal until G80 or group 01) and the
-  // program -> work frame (G68 rotation, G51 scaling, G51.1 mirror, G16).
+  // mill_codes.cpp: canned cycle data (modal until G80 or group 01) and G16
+  // (the program -> work frame is Impl::program_frame, saved on its first write).
   cycles::Data cycle_data;
-  xform::Transform frame;
   bool polar = false;           // G16
   double polar_angle = 0.0;     // last polar angle (G91 adds to it)
   double rotation_angle = 0.0;  // last G68 R (5400#0 RIN: G91 adds to it)
 };
 
-// The copy a block takes must not allocate: no member may own memory, but
-// for the frame's 3-D part, which is immutable and shared (a copy counts a
-// reference, null when no G68 I J K or G54.4 is on).
-static_assert(std::is_nothrow_copy_assignable_v<BlockState>);
+// The axis shifts few blocks change (G52, G92, G45-G48, a lathe's T code),
+// kept beside BlockState: a block copies them only when it first writes one
+// (Impl::shifts, BlockSaved in journal.hpp), not at its start.
+struct AxisShifts {
+  AxisVec local_shift;      // G52
+  AxisVec g92_shift;        // G92
+  AxisVec tool_pos_offset;  // G45-G48 accumulated (dialects that have them)
+  AxisVec g45_delta;        // this block's G45-G48 change (incremental targets), mm
+  // Lathe (lathe.cpp): offsets are kept in program values.
+  AxisVec lathe_tool_offset;    // T code: geometry + wear, program values (mm)
+  AxisVec tool_offset_pending;  // its last change not yet moved, machine mm (U/W moves)
+};
+
+// The copy a block takes must not allocate: no member may own memory.
+static_assert(std::is_trivially_copyable_v<BlockState>);
 static_assert(std::is_trivially_copyable_v<cycles::Data>);
+static_assert(std::is_trivially_copyable_v<AxisShifts>);
 
 }  // namespace skipnc::interp

@@ -43,14 +43,14 @@ Flow<xform::Transform> Interpreter::Impl::conversion_3d(const Words& words, cons
   auto format = [&](const std::string& why) {
     return fail(AlarmId::kG68Format, "G68 3-D coordinate conversion: " + why, at);
   };
-  if (frame.rotating) {
+  if (frame().rotating) {
     return fail(AlarmId::kNotSimulated,
                 "G68 I J K in the plane rotation mode (G68 without I J K) is not simulated by "
                 "skipnc",
                 at);
   }
-  if (frame.mirror[0] || frame.mirror[1] || frame.mirror[2] || frame.scale[0] != 1.0 ||
-      frame.scale[1] != 1.0 || frame.scale[2] != 1.0) {
+  if (frame().mirror[0] || frame().mirror[1] || frame().mirror[2] || frame().scale[0] != 1.0 ||
+      frame().scale[1] != 1.0 || frame().scale[2] != 1.0) {
     return fail(AlarmId::kNotSimulated,
                 "G68 I J K under scaling or mirror image (G51, G51.1) is not simulated by skipnc",
                 at);
@@ -62,13 +62,13 @@ Flow<xform::Transform> Interpreter::Impl::conversion_3d(const Words& words, cons
                           word_length(words.at('K'))};
   if (axis[0] == 0.0 && axis[1] == 0.0 && axis[2] == 0.0) return format("I, J and K are all 0");
   if (!words.has('R')) return format("no angular displacement R");
-  if (frame.conversions() >= xform::kMaxConversions) {
+  if (frame().conversions() >= xform::kMaxConversions) {
     return format("a third G68 in the mode (the coordinate system is rotated twice at most)");
   }
   const double angle = angle_of(words.at('R'), params.bit(config::param::kCalculatorDecimal));
   // The centre, absolute in the frame this conversion is made in; a missing
   // axis: the first conversion's centre, else the present position.
-  xform::Spatial s = frame.spatial ? *frame.spatial : xform::Spatial{};
+  xform::Spatial s = frame().spatial ? *frame().spatial : xform::Spatial{};
   const xform::Point fallback = s.conversions > 0 ? s.conversion[0].center : here;
   xform::Conversion k;
   for (int i = 0; i < 3; ++i) {
@@ -78,13 +78,13 @@ Flow<xform::Transform> Interpreter::Impl::conversion_3d(const Words& words, cons
         axis_of_letter[c - 'A'] >= 0 && words.has(c) ? word_length(words.at(c)) : fallback[u];
   }
   k.m = xform::axis_angle(axis, angle);
-  if (modal.cutter != CutterComp::kOff && (!xform::keeps_z(k.m) || frame.tilted())) {
+  if (modal.cutter != CutterComp::kOff && (!xform::keeps_z(k.m) || frame().tilted())) {
     return fail(AlarmId::kNotSimulated,
                 "a G68 I J K not about Z in G41/G42 is not simulated by skipnc", at);
   }
   s.conversion[static_cast<std::size_t>(s.conversions)] = k;
   ++s.conversions;
-  return xform::with_spatial(frame, s);
+  return xform::with_spatial(frame(), s);
 }
 
 // G54.4 Pn (Fanuc 30i/31i additional manual A-79634E "Workpiece Setting
@@ -111,11 +111,11 @@ Flow<xform::Transform> Interpreter::Impl::setting_error(const Words& words,
                 fmt::format("G54.4 P{}: the setting error data set is 0 to 7", p.value),
                 loc(p.column));
   }
-  if (frame.rotating) {
+  if (frame().rotating) {
     return fail(AlarmId::kNotSimulated,
                 "G54.4 in the plane rotation mode (G68) is not simulated by skipnc", req.frame_at);
   }
-  xform::Spatial s = frame.spatial ? *frame.spatial : xform::Spatial{};
+  xform::Spatial s = frame().spatial ? *frame().spatial : xform::Spatial{};
   const auto n = static_cast<std::size_t>(p.value);
   if (modal.cutter != CutterComp::kOff && n > 0) {
     return fail(AlarmId::kNotSimulated, "G54.4 in G41/G42 is not simulated by skipnc",
@@ -128,7 +128,7 @@ Flow<xform::Transform> Interpreter::Impl::setting_error(const Words& words,
   s.setting_shift = n > 0 ? xform::Point{error(0), error(1), error(2)} : xform::Point{};
   s.setting_turn =
       xform::turn_xyz(n > 0 ? error(3) : 0.0, n > 0 ? error(4) : 0.0, n > 0 ? error(5) : 0.0);
-  return xform::with_spatial(frame, s);
+  return xform::with_spatial(frame(), s);
 }
 
 }  // namespace skipnc::interp

@@ -175,7 +175,7 @@ void Grbl::list_offsets(Impl& im) {
     }
     im.add_message(fmt::format("[G{}:{}]", base == 5161 ? 28 : 30, coords(im, p)));
   }
-  im.add_message("[G92:" + coords(im, im.g92_shift) + "]");
+  im.add_message("[G92:" + coords(im, im.shifts.get().g92_shift) + "]");
   const bool inch = (static_cast<long long>(setting(13)) & 1) != 0;
   im.add_message(inch ? fmt::format("[TLO:{:.4f}]", im.length_offset / 25.4 + 0.0)
                       : fmt::format("[TLO:{:.3f}]", im.length_offset + 0.0));

@@ -116,7 +116,10 @@ struct MillRequest {
 // the interpreter.
 struct BlockPlan {
   std::array<const CodeDef*, kGroupSlots> group{};  // the block's code of each modal group
-  std::array<std::uint32_t, kGroupSlots> column{};
+  std::uint32_t named = 0;  // bit g: group[g] is set (plan_modal visits only these)
+  // Each block's column of group[g], set with it and read only where group[g]
+  // is set: not cleared for every block.
+  std::array<std::uint32_t, kGroupSlots> column;
   Action action = Action::kNone;  // the group-00 command (G09 and G53 are flags)
   GCode action_code;
   bool exact_stop = false;     // G09
@@ -175,6 +178,13 @@ struct Interpreter::Impl : BlockState, OffsetTables {
   std::uint32_t cur_line = 0;
   std::uint32_t cur_col = 1;
 
+  // G52, G92, G45-G48 and a lathe's T code shifts (block_state.hpp).
+  BlockSaved<AxisShifts> shifts;
+  // The program -> work frame (G68 rotation, G51 scaling, G51.1 mirror,
+  // G68 I J K, G54.4; mill_codes.cpp apply_frame_code writes it), read
+  // through frame().
+  BlockSaved<xform::Transform> program_frame;
+  const xform::Transform& frame() const noexcept { return program_frame.get(); }
   int length_axis = 2;
   // Lathe (lathe.cpp). Program values of an axis are `axis_scale` times its
   // machine coordinate: 2 for an X axis programmed in diameter (1006#3), 1
@@ -266,7 +276,8 @@ struct Interpreter::Impl : BlockState, OffsetTables {
                          : std::string_view(programs.frames.back().file->display),
                      cur_line, column};
   }
-  Flow<void> count_statement(SourceLoc where);
+  // The statement limit; `column` names the block in its alarm.
+  Flow<void> count_statement(std::uint32_t column);
 
   // macro_flow.cpp
   Flow<Step> execute_statement();
@@ -399,7 +410,7 @@ struct Interpreter::Impl : BlockState, OffsetTables {
   Flow<xform::Transform> conversion_3d(const Words& words, const MillRequest& req,
                                        const xform::Point& here) const;
   Flow<xform::Transform> setting_error(const Words& words, const MillRequest& req) const;  // G54.4
-  bool frame_active() const noexcept { return polar || frame.active(); }
+  bool frame_active() const noexcept { return polar || frame().active(); }
   Flow<void> frame_targets(const Words& words, AxisVec& target, AxisMask& moved);
   // Cutter radius compensation (cutter_comp.hpp): the block's commands go
   // through the compensator when G41/G42 is active or a vector is left.
@@ -449,7 +460,7 @@ struct Interpreter::Impl : BlockState, OffsetTables {
   bool has_axis_word(const Words& words) const noexcept;
   char incremental_letter(int axis) const noexcept;  // U W H on a lathe, 0 otherwise
   double spindle_rpm_at(const AxisVec& machine) const noexcept;
-  Flow<void> need_spindle_for_feed(SourceLoc where) const;
+  Flow<void> need_spindle_for_feed(std::uint32_t column) const;  // column: of the alarm
   Flow<void> lathe_tool(const Words& words, ModalState& next);
   Flow<void> lathe_coordinate_setting(const Words& words);
   Flow<void> lathe_offset_setting(const Words& words, SourceLoc where);

@@ -132,12 +132,12 @@ Flow<void> Interpreter::Impl::warn(const char* code, std::string text, SourceLoc
   return {};
 }
 
-Flow<void> Interpreter::Impl::count_statement(SourceLoc where) {
+Flow<void> Interpreter::Impl::count_statement(std::uint32_t column) {
   if (++statements > mc.limits.max_macro_statements) {
     return fail(AlarmId::kLoopLimit,
                 "more than " + std::to_string(mc.limits.max_macro_statements) +
                     " blocks executed (limits.max_macro_statements)",
-                where);
+                loc(column));
   }
   return {};
 }
@@ -273,7 +273,7 @@ Flow<Step> Interpreter::Impl::step_block(CommandSink& out) {
     }
     if (r == Read::kEnd) return Step::kEnd;
     if (r == Read::kRun) {
-      SKIPNC_TRY(count_statement(loc(cur_col)));
+      SKIPNC_TRY(count_statement(cur_col));
       break;
     }
   }

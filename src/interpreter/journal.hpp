@@ -7,6 +7,7 @@
 #pragma once
 
 #include <cstddef>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -82,6 +83,42 @@ struct OffsetTables {
     tools.roll_back();
     setting_error_data.roll_back();
   }
+};
+
+// A value an NC block seldom writes, too large to copy at the start of every
+// block: inside a block, the first write() copies it first; a block that
+// succeeds drops the copy (commit), an alarmed block puts it back
+// (roll_back). Outside a block nothing is copied.
+template <class T>
+class BlockSaved {
+  static_assert(std::is_nothrow_copy_assignable_v<T>);
+
+ public:
+  const T& get() const noexcept { return value_; }
+  T& write() noexcept {
+    if (recording_ && !saved_) {
+      before_ = value_;
+      saved_ = true;
+    }
+    return value_;
+  }
+
+  void begin_block() noexcept {
+    recording_ = true;
+    saved_ = false;
+  }
+  void commit() noexcept { recording_ = false; }
+  void roll_back() noexcept {
+    if (saved_) value_ = before_;
+    recording_ = false;
+    saved_ = false;
+  }
+
+ private:
+  T value_{};
+  T before_{};
+  bool recording_ = false;
+  bool saved_ = false;
 };
 
 }  // namespace skipnc::interp

@@ -5,7 +5,9 @@
 // clamp. The axis-word rules apply to mills too (without U/W/H).
 #include <fmt/format.h>
 
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <numbers>
 #include <string>
 
@@ -13,6 +15,14 @@
 #include "interpreter/offset_units.hpp"
 
 namespace skipnc::interp {
+namespace {
+
+// +0.0 to the bit (-0.0 is not: a write of +0.0 over it changes it).
+bool zero_bits(double v) noexcept {
+  return std::bit_cast<std::uint64_t>(v) == 0;
+}
+
+}  // namespace
 
 char Interpreter::Impl::incremental_letter(int axis) const noexcept {
   if (!mc.lathe()) return 0;
@@ -72,12 +82,19 @@ Flow<void> Interpreter::Impl::axis_targets(const Words& words, bool g53, AxisVec
     } else {
       // G45-G48 (ncblock.cpp) lengthen or shorten an incremental move; a T
       // offset changed since the axis last moved is moved with it.
-      target[i] = pos[i] + v * unit_mm() / scale + g45_delta[i] + tool_offset_pending[i];
+      target[i] = pos[i] + v * unit_mm() / scale + shifts.get().g45_delta[i] +
+                  shifts.get().tool_offset_pending[i];
     }
-    tool_offset_pending[i] = 0.0;
+    if (!zero_bits(shifts.get().tool_offset_pending[i])) {
+      shifts.write().tool_offset_pending[i] = 0.0;
+    }
     moved.set(i);
   }
-  g45_delta = AxisVec{};
+  // Written only when it is not already all +0.0: a write copies the shifts
+  // for the block's undo (BlockSaved), and nearly every block has none.
+  bool g45_zero = true;
+  for (int i = 0; i < kMaxAxes; ++i) g45_zero = g45_zero && zero_bits(shifts.get().g45_delta[i]);
+  if (!g45_zero) shifts.write().g45_delta = AxisVec{};
   return {};
 }
 
@@ -108,14 +125,14 @@ double Interpreter::Impl::feed_to_mm_per_min(double f) const noexcept {
   return per_unit * spindle_rpm_at(pos);
 }
 
-Flow<void> Interpreter::Impl::need_spindle_for_feed(SourceLoc where) const {
+Flow<void> Interpreter::Impl::need_spindle_for_feed(std::uint32_t column) const {
   if (modal.feed_mode == FeedMode::kPerRev && spindle_rpm_at(pos) <= 0.0) {
     // A Fanuc control waits for the spindle; a program that would hang is
     // stopped with an alarm instead.
     return fail(AlarmId::kFeedPerRevNoSpindle,
                 std::string("feed per revolution (") + (modal.lathe ? "G99" : "G95") +
                     ") with the spindle stopped (S0 or M05)",
-                where);
+                loc(column));
   }
   return {};
 }
@@ -151,11 +168,12 @@ Flow<void> Interpreter::Impl::lathe_tool(const Words& words, ModalState& next) {
   if (const int z = mc.axis_index('Z'); z >= 0) {
     off[z] = ((tool != 0 ? g.z_geometry : 0.0) + (wear != 0 ? w.z_wear : 0.0)) * per;
   }
+  AxisShifts& s = shifts.write();
   for (int i = 0; i < axis_count; ++i) {
-    tool_offset_pending[i] +=
-        (off[i] - lathe_tool_offset[i]) / axis_scale[static_cast<std::size_t>(i)];
+    s.tool_offset_pending[i] +=
+        (off[i] - s.lathe_tool_offset[i]) / axis_scale[static_cast<std::size_t>(i)];
   }
-  lathe_tool_offset = off;
+  s.lathe_tool_offset = off;
   return {};
 }
 
@@ -176,10 +194,10 @@ Flow<void> Interpreter::Impl::lathe_coordinate_setting(const Words& words) {
     const double now = work_of(i, pos[i]) * unit_mm();
     const double v = word_length(words.at(has_inc ? inc : c)) * unit_mm();
     const double want = has_inc ? now + v : v;
-    auto ok = check_offset(g92_shift[i] + now - want, std::string("G50 ") + c,
+    auto ok = check_offset(shifts.get().g92_shift[i] + now - want, std::string("G50 ") + c,
                            loc(words.at(has_inc ? inc : c).column));
     if (!ok) return ok;
-    g92_shift[i] += now - want;
+    shifts.write().g92_shift[i] += now - want;
   }
   return {};
 }

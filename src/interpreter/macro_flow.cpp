@@ -59,7 +59,6 @@ Flow<bool> Interpreter::Impl::condition(gcode::ExprId cond, SourceLoc where) {
 
 Flow<Step> Interpreter::Impl::execute_statement() {
   const gcode::Stmt& s = blk.stmt;
-  const SourceLoc where = loc(s.column);
   using gcode::StmtKind;
   switch (s.kind) {
     case StmtKind::kAssign: {
@@ -70,7 +69,7 @@ Flow<Step> Interpreter::Impl::execute_statement() {
       return Step::kContinue;
     }
     case StmtKind::kIfThen: {
-      auto c = condition(s.cond, where);
+      auto c = condition(s.cond, loc(s.column));
       SKIPNC_TRY(c);
       if (*c) {
         auto v = eval(s.rhs);
@@ -82,12 +81,12 @@ Flow<Step> Interpreter::Impl::execute_statement() {
     }
     case StmtKind::kGoto:
     case StmtKind::kIfGoto:
-      return goto_statement(s, where);
+      return goto_statement(s, loc(s.column));
     case StmtKind::kWhile:
     case StmtKind::kDo:
-      return loop_statement(s, where);
+      return loop_statement(s, loc(s.column));
     case StmtKind::kEnd:
-      return end_statement(s.loop, where);
+      return end_statement(s.loop, loc(s.column));
     case StmtKind::kPopen:
       dprnt_open = true;
       dprnt_used = true;
@@ -97,7 +96,7 @@ Flow<Step> Interpreter::Impl::execute_statement() {
       return Step::kContinue;
     case StmtKind::kDprnt:
     case StmtKind::kBprnt: {
-      auto p = print_line(where);
+      auto p = print_line(loc(s.column));
       SKIPNC_TRY(p);
       return Step::kContinue;
     }

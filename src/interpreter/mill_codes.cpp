@@ -15,6 +15,7 @@
 #include <cmath>
 #include <cstdio>
 #include <string>
+#include <utility>
 #include <variant>
 
 #include "config/skip_inputs.hpp"
@@ -147,7 +148,7 @@ struct FrameWords {
     for (std::size_t i = 0; i < 3; ++i) {
       here_work[i] = xyz[i] >= 0 ? impl.work_of(xyz[i], impl.pos[xyz[i]]) : 0.0;
     }
-    here = xform::to_program(impl.frame, here_work);
+    here = xform::to_program(impl.frame(), here_work);
   }
   // The word of X, Y or Z (i = 0..2), else `fallback`.
   double word(int i, double fallback) const {
@@ -161,7 +162,7 @@ struct FrameWords {
 Flow<void> frame_rotation(Interpreter::Impl& in, const FrameWords& fw, const MillRequest& req,
                           xform::Transform& next) {
   const Words& words = fw.words;
-  if (in.frame.setting_error()) {
+  if (in.frame().setting_error()) {
     return fail(AlarmId::kNotSimulated, "G68 without I J K under G54.4 is not simulated by skipnc",
                 req.frame_at);
   }
@@ -172,7 +173,7 @@ Flow<void> frame_rotation(Interpreter::Impl& in, const FrameWords& fw, const Mil
   // The centre: X Y (always absolute), else the present position; in
   // G51 mode it is scaled too (B-63944EN "Scaling and coordinate system
   // rotation").
-  xform::Transform before_rotation = in.frame;
+  xform::Transform before_rotation = in.frame();
   before_rotation.rotating = false;
   const xform::Point c =
       words.has('X') || words.has('Y')
@@ -183,7 +184,7 @@ Flow<void> frame_rotation(Interpreter::Impl& in, const FrameWords& fw, const Mil
     angle = scaled_word(words.at('R'), 0.001, in.params.bit(config::param::kCalculatorDecimal));
     if (in.params.bit(config::param::kRotationIncremental) &&
         in.modal.distance == Distance::kIncremental) {
-      angle += in.frame.rotating ? in.rotation_angle : 0.0;
+      angle += in.frame().rotating ? in.rotation_angle : 0.0;
     }
   }
   next.rotating = true;
@@ -197,7 +198,7 @@ Flow<void> frame_rotation(Interpreter::Impl& in, const FrameWords& fw, const Mil
 Flow<void> frame_scaling(const Interpreter::Impl& in, const FrameWords& fw, const MillRequest& req,
                          xform::Transform& next) {
   const Words& words = fw.words;
-  if (in.frame.conversions() > 0) {
+  if (in.frame().conversions() > 0) {
     return fail(AlarmId::kNotSimulated, "G51 under G68 I J K is not simulated by skipnc",
                 req.frame_at);
   }
@@ -226,28 +227,28 @@ Flow<void> frame_scaling(const Interpreter::Impl& in, const FrameWords& fw, cons
 // Returns true when the block's axis words were the mode's data (no move).
 Flow<bool> Interpreter::Impl::apply_frame_code(const Words& words, const MillRequest& req) {
   const FrameWords fw(*this, words);
-  xform::Transform next = frame;
+  xform::Transform next = frame();
   bool consumed = false;
   switch (req.frame != nullptr ? req.frame->frame : FrameCode::kNone) {
     case FrameCode::kSettingError: {
       auto s = setting_error(words, req);  // conversion_3d.cpp
       SKIPNC_TRY(s);
-      frame = *s;
+      program_frame.write() = *s;
       return true;
     }
     case FrameCode::kRotationCancel:
       next.rotating = false;
-      if (frame.spatial) {  // G69 ends both 3-D conversions too, not G54.4
-        xform::Spatial s = *frame.spatial;
+      if (frame().spatial) {  // G69 ends both 3-D conversions too, not G54.4
+        xform::Spatial s = *frame().spatial;
         s.conversions = 0;
         next = xform::with_spatial(next, s);
       }
       break;
     case FrameCode::kRotation:
-      if (words.has('I') || words.has('J') || words.has('K') || frame.conversions() > 0) {
+      if (words.has('I') || words.has('J') || words.has('K') || frame().conversions() > 0) {
         auto k = conversion_3d(words, req, fw.here);  // conversion_3d.cpp
         SKIPNC_TRY(k);
-        frame = *k;
+        program_frame.write() = *k;
         return true;
       }
       SKIPNC_TRY(frame_rotation(*this, fw, req, next));
@@ -262,7 +263,7 @@ Flow<bool> Interpreter::Impl::apply_frame_code(const Words& words, const MillReq
       break;
     case FrameCode::kMirror:
     case FrameCode::kMirrorCancel:
-      if (req.frame->frame == FrameCode::kMirror && frame.conversions() > 0) {
+      if (req.frame->frame == FrameCode::kMirror && frame().conversions() > 0) {
         return fail(AlarmId::kNotSimulated, "G51.1 under G68 I J K is not simulated by skipnc",
                     req.frame_at);
       }
@@ -276,7 +277,7 @@ Flow<bool> Interpreter::Impl::apply_frame_code(const Words& words, const MillReq
     default:
       return false;
   }
-  frame = next;
+  program_frame.write() = next;
   return consumed;
 }
 
@@ -289,7 +290,7 @@ Flow<void> Interpreter::Impl::frame_targets(const Words& words, AxisVec& target,
   for (std::size_t i = 0; i < 3; ++i) {
     if (xyz[i] >= 0) here_work[i] = work_of(xyz[i], pos[xyz[i]]);
   }
-  const xform::Point here = xform::to_program(frame, here_work);
+  const xform::Point here = xform::to_program(frame(), here_work);
   xform::Point p = here;
   const bool inc = modal.distance == Distance::kIncremental;
   std::array<bool, 3> named{};
@@ -322,11 +323,11 @@ Flow<void> Interpreter::Impl::frame_targets(const Words& words, AxisVec& target,
     const double v = word_length(words.at('Z'));
     p[2] = inc ? p[2] + v : v;
   }
-  if ((frame.rotating || frame.conversions() > 0) && (named[0] || named[1])) {
+  if ((frame().rotating || frame().conversions() > 0) && (named[0] || named[1])) {
     named[0] = named[1] = true;
   }
-  if (frame.tilted() && (named[0] || named[1] || named[2])) named = {true, true, true};
-  const xform::Point w = xform::to_work(frame, p);
+  if (frame().tilted() && (named[0] || named[1] || named[2])) named = {true, true, true};
+  const xform::Point w = xform::to_work(frame(), p);
   for (std::size_t i = 0; i < 3; ++i) {
     if (!named[i] || xyz[i] < 0) continue;
     target[xyz[i]] = machine_of(xyz[i], w[i]);
@@ -386,7 +387,7 @@ Flow<void> Interpreter::Impl::check_feeds(const AxisVec& start) {
   for (int i = 1; i < axis_count; ++i) {
     slowest = std::min(slowest, mc.axes[static_cast<std::size_t>(i)].max_feed_mm_min);
   }
-  AxisVec from = start;
+  const AxisVec* from = &start;
   for (const canon::Stamped& c : block_buffer.cmds) {
     const AxisVec* to = nullptr;
     double f = 0.0;
@@ -397,17 +398,17 @@ Flow<void> Interpreter::Impl::check_feeds(const AxisVec& start) {
       to = &sk->target;
       f = sk->feed_mm_per_min;
     } else if (const auto* r = std::get_if<canon::Rapid>(&c.cmd)) {
-      from = r->target;
+      from = &r->target;
       continue;
     } else if (const auto* a = std::get_if<canon::Arc>(&c.cmd)) {
-      from = a->target;
+      from = &a->target;
       continue;
     } else {
       continue;
     }
-    const AxisVec d = *to - from;
-    from = *to;
+    const AxisVec* prev = std::exchange(from, to);
     if (f <= slowest) continue;
+    const AxisVec d = *to - *prev;
     const double len = norm(d, axis_count);
     if (!(len > 0.0) || !(f > 0.0)) continue;
     double limit = f;
@@ -662,7 +663,7 @@ void emit_hole(Interpreter::Impl& in, const cycles::Hole& h, const AxisVec& base
   const bool linear = in.params.bit(config::param::kLinearRapid);
   const double feed = in.feed_mm_per_min();
   for (const cycles::Move& m : cycles::hole_moves(h)) {
-    const xform::Point w = xform::to_work(in.frame, m.to);
+    const xform::Point w = xform::to_work(in.frame(), m.to);
     AxisVec mp = base;
     if (x >= 0) mp[x] = in.machine_of(x, w[0]);
     if (y >= 0) mp[y] = in.machine_of(y, w[1]);
@@ -698,7 +699,7 @@ Flow<cycles::Hole> make_hole(const Interpreter::Impl& in, const Words& words,
   auto program_point = [&](const AxisVec& m) {
     xform::Point w{x >= 0 ? in.work_of(x, m[x]) : 0.0, y >= 0 ? in.work_of(y, m[y]) : 0.0,
                    in.work_of(z, m[z])};
-    return xform::to_program(in.frame, w);
+    return xform::to_program(in.frame(), w);
   };
   const cycles::Data& d = in.cycle_data;
   const ModalState& modal = in.modal;

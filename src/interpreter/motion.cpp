@@ -28,7 +28,7 @@ Flow<void> Interpreter::Impl::dwell(const Words& words, CommandSink& out) {
   if (modal.feed_mode == FeedMode::kPerRev && params.bit(config::param::kDwellRevolutions)) {
     // 3405#1 DWL: in feed per revolution the dwell counts spindle
     // revolutions (X1. = 1 revolution, P1000 = 1 revolution).
-    auto s = need_spindle_for_feed(loc(cur_col));
+    auto s = need_spindle_for_feed(cur_col);
     if (!s) return s;
     seconds = seconds * 60.0 / spindle_rpm_at(pos);
   }
@@ -102,7 +102,7 @@ Flow<Step> Interpreter::Impl::motion(const Words& words, CommandSink& out, bool 
     return Step::kContinue;
   }
   if (skip || modal.motion != Motion::kRapid) {
-    auto s = need_spindle_for_feed(loc(cur_col));
+    auto s = need_spindle_for_feed(cur_col);
     SKIPNC_TRY(s);
   }
   if (skip) return skip_block(words, target, moved, out);
@@ -175,7 +175,7 @@ struct ArcGeometry {
                                                       SourceLoc at, double& cx, double& cy) {
   const SourceLoc r_at = im.loc(words.at('R').column);
   const double r = im.word_length(words.at('R')) * im.unit_mm() *
-                   (g.framed ? std::fabs(im.frame.scale[0]) : 1.0);
+                   (g.framed ? std::fabs(im.frame().scale[0]) : 1.0);
   const double dx = g.ex - g.sx, dy = g.ey - g.sy;
   const double d = std::hypot(dx, dy);
   if (d < 1e-9) {
@@ -226,7 +226,7 @@ struct ArcGeometry {
     oj = words.has(cj) ? im.machine_of(ap.pl.a1, oj / im.unit_mm()) - g.sy : 0.0;
   }
   if (g.framed) {
-    const xform::Point v = xform::vector_to_work(im.frame, {oi, oj, 0.0});
+    const xform::Point v = xform::vector_to_work(im.frame(), {oi, oj, 0.0});
     oi = v[0];
     oj = v[1];
   }
@@ -257,19 +257,18 @@ Flow<void> Interpreter::Impl::arc(const Words& words, const AxisVec& target, Com
   if (feed_mm_per_min() <= 0.0) return fail(AlarmId::kNoFeed, "G02/G03 without a feed (F)", at);
   // Under G51 / G51.1 / G68 (XY plane) the centre offset turns and scales with
   // the frame, and an odd number of mirrored axes reverses the direction.
-  const bool framed = !mc.lathe() && frame.active() && modal.plane == PlaneSel::kXY;
-  if (!mc.lathe() && frame.spatial != nullptr && (frame.tilted() || !framed)) {
+  const bool framed = !mc.lathe() && frame().active() && modal.plane == PlaneSel::kXY;
+  if (!mc.lathe() && frame().spatial != nullptr && (frame().tilted() || !framed)) {
     // The program's arc plane is tilted out of the machine's planes.
     return fail(AlarmId::kNotSimulated,
                 "an arc under a G68 I J K or G54.4 that turns other than about Z (or outside "
                 "G17) is not simulated by skipnc",
                 at);
   }
-  const bool flipped = framed && ((frame.mirror[0] != (frame.scale[0] < 0.0)) !=
-                                  (frame.mirror[1] != (frame.scale[1] < 0.0)));
-  const double tol = params.get(config::param::kArcRadiusTolerance) > 0
-                         ? params.get(config::param::kArcRadiusTolerance)
-                         : 0.02;
+  const bool flipped = framed && ((frame().mirror[0] != (frame().scale[0] < 0.0)) !=
+                                  (frame().mirror[1] != (frame().scale[1] < 0.0)));
+  const double tol_param = params.get(config::param::kArcRadiusTolerance);
+  const double tol = tol_param > 0 ? tol_param : 0.02;
   const ArcGeometry g{pos[pl.a0],
                       pos[pl.a1],
                       target[pl.a0],

@@ -127,6 +127,8 @@ bool Interpreter::Impl::block_calls(const Words& words, const BlockPlan& plan) c
 // G66 macro, when the block may change them, are copied.
 void Interpreter::Impl::begin_tables(bool calls) {
   begin_offsets();
+  shifts.begin_block();
+  program_frame.begin_block();
   vars.begin_block();
   if (lang->rules.state_codes) lang->begin_block();  // M70-M73's saved states (ngc_room.cpp)
   if (!calls) return;
@@ -137,6 +139,8 @@ void Interpreter::Impl::begin_tables(bool calls) {
 
 void Interpreter::Impl::commit_tables() noexcept {
   commit_offsets();
+  shifts.commit();
+  program_frame.commit();
   vars.commit();
 }
 
@@ -145,6 +149,8 @@ void Interpreter::Impl::commit_tables() noexcept {
 // (a seek to a block the source has already returned cannot fail).
 void Interpreter::Impl::roll_back_tables(bool calls) {
   roll_back_offsets();
+  shifts.roll_back();
+  program_frame.roll_back();
   vars.roll_back();
   if (lang->rules.state_codes) lang->roll_back_block();
   if (!calls) return;

@@ -125,7 +125,7 @@ Flow<void> LinuxcncFamily::own_action(Impl& im, const Words& words, GCode code) 
   if (code == GCode(92, 1) || code == GCode(92, 2)) {
     const bool clear = code == GCode(92, 1);
     for (int i = 0; i < im.axis_count; ++i) {
-      im.g92_shift[i] = 0.0;
+      im.shifts.write().g92_shift[i] = 0.0;
       const int n = axis_param(5211, i);
       if (clear && n > 0) im.vars.set_ngc_param(n, 0.0);
     }
@@ -135,7 +135,7 @@ Flow<void> LinuxcncFamily::own_action(Impl& im, const Words& words, GCode code) 
   if (code == GCode(92, 3)) {
     for (int i = 0; i < im.axis_count; ++i) {
       const int n = axis_param(5211, i);
-      im.g92_shift[i] = n > 0 ? im.vars.ngc_param(n) * im.stored_mm() : 0.0;
+      im.shifts.write().g92_shift[i] = n > 0 ? im.vars.ngc_param(n) * im.stored_mm() : 0.0;
     }
     im.vars.set_ngc_param(5210, 1.0);
     return {};
@@ -147,7 +147,7 @@ Flow<void> LinuxcncFamily::own_action(Impl& im, const Words& words, GCode code) 
 void LinuxcncFamily::store_g92(Impl& im) {
   for (int i = 0; i < im.axis_count; ++i) {
     const int j = ngc_axis_index(im.axis_letter[static_cast<std::size_t>(i)]);
-    if (j >= 0) im.vars.set_ngc_param(5211 + j, im.g92_shift[i] / im.stored_mm());
+    if (j >= 0) im.vars.set_ngc_param(5211 + j, im.shifts.get().g92_shift[i] / im.stored_mm());
   }
   im.vars.set_ngc_param(5210, 1.0);
 }

@@ -359,7 +359,7 @@ Flow<void> Rs274ngc::load_persistent(Impl& im) {
   if (im.vars.ngc_param(5210) != 0.0) {
     for (int i = 0; i < im.axis_count; ++i) {
       const int j = ngc_axis_index(im.axis_letter[static_cast<std::size_t>(i)]);
-      if (j >= 0) im.g92_shift[i] = im.vars.ngc_param(5211 + j) * im.stored_mm();
+      if (j >= 0) im.shifts.write().g92_shift[i] = im.vars.ngc_param(5211 + j) * im.stored_mm();
     }
   }
   for (int n = 5161; n <= 5390; ++n) numbers.push_back(n);

@@ -23,7 +23,8 @@ double Interpreter::Impl::word_length(const WordVal& w) const noexcept {
 double Interpreter::Impl::offset_total(int axis) const noexcept {
   double o = (work_offsets[0][axis] + work_offsets[static_cast<std::size_t>(modal.work)][axis]) *
                  offset_unit_mm(*this) +
-             local_shift[axis] + g92_shift[axis] + tool_pos_offset[axis] + lathe_tool_offset[axis];
+             shifts.get().local_shift[axis] + shifts.get().g92_shift[axis] +
+             shifts.get().tool_pos_offset[axis] + shifts.get().lathe_tool_offset[axis];
   if (axis == length_axis) o += length_offset;
   return o;
 }
@@ -33,7 +34,7 @@ double Interpreter::Impl::work_of(int axis, double machine_mm) const noexcept {
 }
 
 double Interpreter::Impl::tool_offset_total(int axis) const noexcept {
-  double o = tool_pos_offset[axis] + lathe_tool_offset[axis];
+  double o = shifts.get().tool_pos_offset[axis] + shifts.get().lathe_tool_offset[axis];
   if (axis == length_axis) o += length_offset;
   return o;
 }

@@ -35,6 +35,7 @@ Plant::Plant(const config::MachineConfig& m, const Scene& scene, ServoClock cloc
     sources_.push_back(Source{SourceKind::kPulse, i, false});
     signal_for(scene_.pulses[i].signal).sources.push_back(sources_.size() - 1);
   }
+  timed_sources_ = sources_.size();
   for (std::size_t i = 0; i < probing_.source_count(); ++i) {
     sources_.push_back(Source{SourceKind::kProbing, i, false});
     probing_source_.push_back(sources_.size() - 1);
@@ -88,8 +89,14 @@ void Plant::advance(Tick k, const AxisVec& from, const AxisVec& to,
   in.torque_pct = torque_;
   in.edge_count = 0;
   probing_.advance(before, actual_);
-  bool still = true;
-  for (int i = 0; still && i < n_; ++i) still = from[i] == to[i] && before[i] == actual_[i];
+  // The axis that moved in the last period is asked first: it nearly always
+  // moves in this one too (a probe's Z, the last axis, was reached last).
+  const int j = moving_axis_;
+  bool still = from[j] == to[j] && before[j] == actual_[j];
+  for (int i = 0; still && i < n_; ++i) {
+    still = from[i] == to[i] && before[i] == actual_[i];
+    if (!still) moving_axis_ = i;
+  }
   if (!sources_.empty()) source_edges(k, before, in);
   still_ = still && in.edge_count == 0 ? std::min(still_ + 1, 2) : 0;
 }
@@ -180,7 +187,7 @@ void Plant::source_edges(Tick k, const AxisVec& before, kernel::TickInput& in) n
   // Source events inside the period, in time order.
   events_.clear();
   const double t0 = clock_.seconds(k - 1);
-  for (std::size_t s = 0; s < sources_.size(); ++s) {
+  for (std::size_t s = 0; s < timed_sources_; ++s) {  // a probe's edges come below
     const Source& src = sources_[s];
     if (src.kind == SourceKind::kTrigger) {
       const Trigger& t = scene_.triggers[src.index];

@@ -122,6 +122,7 @@ class Plant {
   AxisMask locked_;
   bool limited_ = false;  // a torque limit is applied on some axis
   int still_ = 0;         // advances in a row that changed nothing (up to 2)
+  int moving_axis_ = 0;   // the last axis found moving (advance's still test), < n_
   // Servo constants per axis.
   std::array<double, kMaxAxes> decay_{};          // exp(-kp * T)
   std::array<double, kMaxAxes> lag_gain_{};       // (1 - feedforward) / (kp * T)
@@ -131,6 +132,9 @@ class Plant {
   // servo update is the same arithmetic on every axis (advance's fast loop).
   bool plain_servo_ = false;
   std::vector<Source> sources_;
+  // The scene's triggers and pulses, first in sources_ (the probing
+  // sources follow): source_edges times only these.
+  std::size_t timed_sources_ = 0;
   std::vector<Signal> signals_;
   struct Event {
     double frac;

@@ -2,6 +2,9 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
+#include <bit>
+#include <charconv>
+#include <cmath>
 #include <cstdint>
 #include <limits>
 #include <random>
@@ -66,6 +69,72 @@ TEST(Decimal, ScaledValuesMatchFixedPointText) {
     if (i % 4 == 2) m = (m / 1000) * 1000;
     ASSERT_EQ(scaled<3>(m), reference<3>(m)) << m;
     ASSERT_EQ(scaled<6>(m), reference<6>(m)) << m;
+  }
+}
+
+std::string shortest(double v) {
+  char buf[40];
+  return std::string(buf, write_shortest(buf, v));
+}
+
+std::string standard(double v) {
+  char buf[40];
+  return std::string(buf, std::to_chars(buf, buf + sizeof buf, v).ptr);
+}
+
+TEST(Decimal, ShortestKnownTexts) {
+  EXPECT_EQ(shortest(13.074000000000002), "13.074000000000002");
+  EXPECT_EQ(shortest(-0.17200000000000001), "-0.17200000000000001");
+  EXPECT_EQ(shortest(647.0794312013581), "647.0794312013581");
+  EXPECT_EQ(shortest(0.0001), "1e-04");     // shorter than 0.0001
+  EXPECT_EQ(shortest(0.00012), "0.00012");  // as long as 1.2e-04: fixed
+  EXPECT_EQ(shortest(1e6), "1e+06");        // shorter than 1000000
+  EXPECT_EQ(shortest(123456.0), "123456");
+  EXPECT_EQ(shortest(5e-324), "5e-324");
+  EXPECT_EQ(shortest(1e300), "1e+300");
+  EXPECT_EQ(shortest(0.0), "0");
+  EXPECT_EQ(shortest(-0.0), "-0");
+  EXPECT_EQ(shortest(std::numeric_limits<double>::infinity()), "inf");
+}
+
+// The same characters as std::to_chars for values of every kind the canon
+// text meets: arithmetic near whole micrometres, feeds from expressions,
+// whole numbers, very small and very large values, any bit pattern.
+TEST(Decimal, ShortestMatchesToChars) {
+  std::mt19937_64 rng(32);
+  std::uniform_int_distribution<std::int64_t> um(-999999999, 999999999);
+  std::uniform_int_distribution<int> ulps(-4, 4);
+  std::uniform_int_distribution<int> e10(-330, 310);
+  std::uniform_real_distribution<double> unit(1.0, 10.0);
+  for (int i = 0; i < 400000; ++i) {
+    double v = 0.0;
+    switch (i % 5) {
+      case 0:  // a micrometre value a few units in the last place off
+        v = static_cast<double>(um(rng)) / 1000.0;
+        for (int k = ulps(rng); k != 0; k += k < 0 ? 1 : -1) {
+          v = std::nextafter(v, k < 0 ? -1e300 : 1e300);
+        }
+        break;
+      case 1:  // a computed value
+        v = std::sqrt(static_cast<double>(um(rng))) * 3.7;
+        break;
+      case 2:  // whole numbers and their tens
+        v = static_cast<double>(um(rng)) * std::pow(10.0, ulps(rng) + 4);
+        break;
+      case 3:  // any magnitude
+        v = unit(rng) * std::pow(10.0, e10(rng));
+        break;
+      default:  // any bit pattern
+        v = std::bit_cast<double>(rng());
+        break;
+    }
+    ASSERT_EQ(shortest(v), standard(v)) << std::bit_cast<std::uint64_t>(v);
+  }
+  for (int e = -325; e <= 310; ++e) {  // the powers of ten and their neighbours
+    const double p = std::pow(10.0, e);
+    for (const double v : {p, std::nextafter(p, 0.0), std::nextafter(p, 1e308), -p}) {
+      ASSERT_EQ(shortest(v), standard(v)) << e;
+    }
   }
 }
 

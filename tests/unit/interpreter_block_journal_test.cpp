@@ -108,6 +108,45 @@ TEST(BlockJournal, AToolOffsetTheBlockSetIsBackWhenALaterStepAlarms) {
   EXPECT_DOUBLE_EQ(var(*in, 101), 0.25);
 }
 
+// The axis shifts (G92, G52) are copied by a block's first write to them,
+// not at its start: a shift the alarmed block set is back, one an earlier
+// block set stays.
+TEST(BlockJournal, AG92AndG52ShiftTheBlockSetAreBackWhenALaterStepAlarms) {
+  const Mill m;
+  auto in = m.start(
+      "G21 G90\nG0 X0 Y0\nG92 X5.\nG52 Y2.\n#100 = #5041\n#101 = #5042\n"
+      "G92 X7. M98\n#102 = #5041\nG52 Y3. M98\n#103 = #5042\nG1 X1. F100\n"
+      "#104 = #5041\nM30\n");
+  ASSERT_TRUE(in);
+  const std::vector<Error> alarms = run_through(*in);
+  ASSERT_EQ(alarms.size(), 2u);
+  EXPECT_EQ(alarms[0].loc.line, 7u);
+  EXPECT_EQ(alarms[1].loc.line, 9u);
+  EXPECT_DOUBLE_EQ(var(*in, 100), 5.0);   // machine X0 is X5 after G92 X5.
+  EXPECT_DOUBLE_EQ(var(*in, 101), -2.0);  // G52 Y2.: machine Y0 is Y-2
+  EXPECT_DOUBLE_EQ(var(*in, 102), 5.0);   // G92 X7. undone
+  EXPECT_DOUBLE_EQ(var(*in, 103), -2.0);  // G52 Y3. undone
+  EXPECT_DOUBLE_EQ(var(*in, 104), 1.0);   // the next move in the same frame
+  EXPECT_DOUBLE_EQ(in->position()[0], -4.0);
+}
+
+// The program frame is copied by a block's first write to it as well: a
+// rotation the alarmed block set is undone, the moves after it unrotated.
+TEST(BlockJournal, AG68RotationTheBlockSetIsBackWhenALaterStepAlarms) {
+  const Mill m;
+  auto in = m.start(
+      "G21 G90 G17\nG0 X0 Y0\nG68 X0 Y0 R90. M98\nG1 X10. Y0 F100\n#100 = #5021\n"
+      "#101 = #5022\nG68 X0 Y0 R90.\nG1 X10. Y0\n#102 = #5021\n#103 = #5022\nM30\n");
+  ASSERT_TRUE(in);
+  const std::vector<Error> alarms = run_through(*in);
+  ASSERT_EQ(alarms.size(), 1u);
+  EXPECT_EQ(alarms[0].loc.line, 3u);
+  EXPECT_NEAR(var(*in, 100), 10.0, 1e-9);  // the G68 of the alarmed block is undone
+  EXPECT_NEAR(var(*in, 101), 0.0, 1e-9);
+  EXPECT_NEAR(var(*in, 102), 0.0, 1e-9);  // a G68 without an alarm turns X10. to Y10.
+  EXPECT_NEAR(var(*in, 103), 10.0, 1e-9);
+}
+
 // A G66 modal macro runs after the block's move: it opens a call level
 // (#1 = A) and a frame; the block then fails as it passes its moves on
 // (--strict: feed_clamped). The caller's #1 and its next block are back.
