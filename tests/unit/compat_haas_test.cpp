@@ -397,6 +397,7 @@ TEST(CompatHaas, DialectIsListedAndSelectable) {
   const auto r = run_cli({"dialects"});
   ASSERT_EQ(r.exit_code, 0) << r.out;
   EXPECT_NE(r.out.find("haas"), std::string::npos);
+  EXPECT_NE(r.out.find("work offsets #5201.. by axis letter"), std::string::npos) << r.out;
   TempDir dir;
   const auto p = dir.write("p.nc", "M97 P10\nM30\nN10 #100 = 5\nM99\n");
   const auto d = run_with_report(dir, p, {"-d", "haas", "--var", "100"});
