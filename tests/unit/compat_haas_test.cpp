@@ -329,6 +329,17 @@ TEST(CompatHaas, AnOffsetVariableOfALetterTheMachineLacksIsAnAlarm) {
   EXPECT_EQ(u.alarm()["code"], alarm_code(AlarmId::kIllegalVariable, "haas"));
 }
 
+// --repeat follows the offsets a program writes under their variable and
+// axis: #5226 is G54's C on X Y Z A C.
+TEST(CompatHaas, RepeatNamesAnOffsetVariableByItsLetter) {
+  TempDir dir;
+  const auto p = dir.write("p.nc", "#5226 = 1.5\nM30\n");
+  const auto r = run_cli(
+      {"run", "-m", rotary_mill(dir, "haas", {"A", "C"}).string(), "--repeat", "1", p.string()});
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  EXPECT_NE(r.out.find("#5226 G54 C "), std::string::npos) << r.out;
+}
+
 // Fanuc numbers the offsets by the controlled-axis order: on X Y Z A C,
 // #5225 is C and #5226 (a sixth axis) is an alarm.
 TEST(CompatHaas, FanucStillNumbersTheOffsetVariablesByPosition) {
