@@ -496,7 +496,9 @@ void print_skip_rest(const config::Dialect& d, const AlarmText& alarm) {
         std::pair{sw.local_sub_call_m97, "M97 local subprogram call"},
         std::pair{sw.block_lookahead_g103, "G103 P0-P15 look-ahead limit (accepted)"},
         std::pair{sw.m99_p_jumps_in_subprogram, "M99 Pn in a subprogram branches within it"},
-        std::pair{sw.haas_tool_offset_vars, "#2001-#2800 tool offsets as Haas numbers them"}}) {
+        std::pair{sw.haas_tool_offset_vars, "#2001-#2800 tool offsets as Haas numbers them"},
+        std::pair{sw.offset_variables_by == config::OffsetVariables::kLetter,
+                  "work offsets #5201.. by axis letter (X Y Z A B C)"}}) {
     if (on) other += (other.empty() ? "" : "; ") + std::string(text);
   }
   fmt::print("  other       {}\n", other.empty() ? "-" : other);

@@ -146,7 +146,11 @@ Result<void> choose_switch(const toml::node& node, std::string_view origin, std:
   static constexpr Choice<SkipAccel> kAccels[] = {{"skf_param", SkipAccel::kSkfParam},
                                                   {"never", SkipAccel::kNever},
                                                   {"always", SkipAccel::kAlways}};
+  static constexpr Choice<OffsetVariables> kOffsetVars[] = {
+      {"position", OffsetVariables::kPosition}, {"letter", OffsetVariables::kLetter}};
   known = true;
+  if (k == "offset_variables_by")
+    return choose(node, origin, k, kOffsetVars, sw.offset_variables_by);
   if (k == "skip_p_mode") return choose(node, origin, k, kPModes, sw.skip_p_mode);
   if (k == "skip_stop") return choose(node, origin, k, kStops, sw.skip_stop);
   if (k == "skip_feed") return choose(node, origin, k, kFeeds, sw.skip_feed);
@@ -183,7 +187,9 @@ Result<void> load_switches(const toml::table& t, std::string_view origin, Switch
     if (known) continue;
     if (auto r = choose_switch(node, origin, k, sw, known); !r) return r;
     if (!known) {
-      std::string list = "skip_p_mode, skip_stop, skip_feed, skip_override, skip_accel, language";
+      std::string list =
+          "skip_p_mode, skip_stop, skip_feed, skip_override, skip_accel, language, "
+          "offset_variables_by";
       for (const auto& e : ints) list += ", " + std::string(e.key);
       for (const auto& e : bools) list += ", " + std::string(e.key);
       return config_error(

@@ -65,6 +65,13 @@ enum class SkipAccel : std::uint8_t {
   kAlways,    // as a G01 block
 };
 
+// Which axis the n-th variable of a work offset (#5201.., #5221..,
+// #7001.., #14001..) is: the machine's n-th axis in its order (Fanuc: the
+// controlled-axis number), or the axis named by the n-th letter of X Y Z A B
+// C (Haas: #5221-#5225 "G54 X, Y, Z, A, B", and #5226 G54's C as Autodesk's
+// Haas post writes it; docs/skip-dialects.md#haas).
+enum class OffsetVariables : std::uint8_t { kPosition, kLetter };
+
 // How skip-variable results are exposed.
 struct SkipVariables {
   int work_base = 5061;       // #5061.. workpiece position at the latch (0: none)
@@ -189,6 +196,9 @@ struct Switches {
   // #2601-#2800 its wear (false: Fanuc's short forms, #2001.. wear,
   // #2201.. geometry, and #2500-#2806 the old work offsets).
   bool haas_tool_offset_vars = false;
+  // Work-offset variables numbered by the axis's position in the machine
+  // or by its letter (OffsetVariables).
+  OffsetVariables offset_variables_by = OffsetVariables::kPosition;
 };
 
 struct Dialect {

@@ -118,6 +118,24 @@ inline constexpr Range kRanges[] = {
 // The older work-offset numbering: #2500 + 100 (axis - 1) + set.
 inline constexpr int kWorkOffsetOldAxis1 = 2500;
 
+// The letters of a work offset's variables when a dialect numbers them by
+// letter (offset_variables_by = "letter", Haas): #5221 X .. #5225 B as
+// 96-8000 lists them, #5226 C as Autodesk's Haas post writes it. No source
+// read names a seventh (U V W): those slots name no axis.
+inline constexpr std::string_view kOffsetSlotLetters = "XYZABC";
+
+// The machine axis (an index into `axis_names`, the machine's axis letters
+// in order) that slot `slot` (0-based) of a work offset names: the slot-th
+// axis (by position) or the axis with the slot-th letter above (by letter);
+// -1 when the machine has no such axis.
+constexpr int offset_slot_axis(bool by_letter, std::string_view axis_names, int slot) noexcept {
+  if (slot < 0) return -1;
+  if (!by_letter) return slot < static_cast<int>(axis_names.size()) ? slot : -1;
+  if (slot >= static_cast<int>(kOffsetSlotLetters.size())) return -1;
+  const auto at = axis_names.find(kOffsetSlotLetters[static_cast<std::size_t>(slot)]);
+  return at == std::string_view::npos ? -1 : static_cast<int>(at);
+}
+
 // Blocks of numbers that are the control's own, written or not: a write to
 // a number in one that no range above allows is "write protected" (116),
 // not "no such variable" (115).

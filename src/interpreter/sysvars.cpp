@@ -59,6 +59,33 @@ void work_offset_var(const sysvar::Range& r, int n, int& set, int& axis) {
   }
 }
 
+// The machine axis a work offset's slot (0-based) names under the
+// dialect's numbering (offset_variables_by); -1: none.
+// (sysvar::offset_slot_axis, with the interpreter's letter table.)
+int offset_axis(const Interpreter::Impl& im, int slot) {
+  if (im.dialect.sw.offset_variables_by != config::OffsetVariables::kLetter) {
+    return slot < im.axis_count ? slot : -1;
+  }
+  if (slot >= static_cast<int>(sysvar::kOffsetSlotLetters.size())) return -1;
+  const char letter = sysvar::kOffsetSlotLetters[static_cast<std::size_t>(slot)];
+  return im.axis_of_letter[static_cast<std::size_t>(letter - 'A')];
+}
+
+// The alarm's text for a write to a work-offset variable naming no axis.
+std::string no_offset_axis(const Interpreter::Impl& im, int n, int slot) {
+  const std::string var = "#" + std::to_string(n);
+  if (im.dialect.sw.offset_variables_by != config::OffsetVariables::kLetter) {
+    return var + ": the machine has no axis " + std::to_string(slot + 1);
+  }
+  if (slot < static_cast<int>(sysvar::kOffsetSlotLetters.size())) {
+    return var + ": the machine has no " +
+           std::string(1, sysvar::kOffsetSlotLetters[static_cast<std::size_t>(slot)]) +
+           " axis (the offsets are numbered by letter: X Y Z A B C)";
+  }
+  return var + ": offset " + std::to_string(slot + 1) +
+         " names no axis (the offsets are numbered by letter: X Y Z A B C)";
+}
+
 bool is_tool(const sysvar::Range& r) {
   return r.id == sysvar::Id::kHWearShort || r.id == sysvar::Id::kHGeomShort ||
          r.id == sysvar::Id::kHWear || r.id == sysvar::Id::kHGeom || r.id == sysvar::Id::kDWear ||
@@ -156,7 +183,8 @@ Flow<Value> Interpreter::Impl::read_macro_var(int n, SourceLoc where) {
   if (is_work_offset(r->id)) {
     int set = 0, axis = 0;
     work_offset_var(*r, k, set, axis);
-    if (axis >= axis_count) return Value::null();
+    axis = offset_axis(*this, axis);
+    if (axis < 0) return Value::null();
     return Value::of(work_offsets[static_cast<std::size_t>(set)][axis] * offset_unit_mm(*this) /
                          unit_mm() +
                      0.0);
@@ -367,12 +395,9 @@ Flow<void> Interpreter::Impl::write_macro_var(int n, Value v, SourceLoc where) {
     if (is_work_offset(r->id)) {
       int set = 0, axis = 0;
       work_offset_var(*r, k, set, axis);
-      if (axis >= axis_count) {
-        return fail(
-            AlarmId::kIllegalVariable,
-            "#" + std::to_string(n) + ": the machine has no axis " + std::to_string(axis + 1),
-            where);
-      }
+      const int slot = axis;
+      axis = offset_axis(*this, slot);
+      if (axis < 0) return fail(AlarmId::kIllegalVariable, no_offset_axis(*this, n, slot), where);
       auto ok = check_offset(v.num() * unit_mm(), "#" + std::to_string(n), where);
       if (!ok) return ok;
       work_offsets.write(static_cast<std::size_t>(set))[axis] =

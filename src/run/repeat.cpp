@@ -8,6 +8,7 @@
 
 #include "core/utf8.hpp"
 #include "interpreter/interpreter.hpp"
+#include "interpreter/sysvar_table.hpp"
 #include "run/program_run.hpp"
 #include "sim/simulator.hpp"
 
@@ -33,14 +34,21 @@ std::string json_number(double v) {
   return std::isfinite(v) ? fmt::format("{}", v) : "null";
 }
 
-// The offsets a program can write, as (variable, label).
-std::vector<std::pair<int, std::string>> offset_variables(const config::MachineConfig& m) {
+// The offsets a program can write, as (variable, label): each work
+// offset's variables in the dialect's numbering (offset_variables_by).
+std::vector<std::pair<int, std::string>> offset_variables(const config::MachineConfig& m,
+                                                          const config::Dialect& d) {
   std::vector<std::pair<int, std::string>> out;
   static const char* kSets[] = {"EXT", "G54", "G55", "G56", "G57", "G58", "G59"};
+  std::string names;
+  for (const auto& a : m.axes) names += a.name;
+  const bool by_letter = d.sw.offset_variables_by == config::OffsetVariables::kLetter;
   for (int set = 0; set < 7; ++set) {
-    for (int i = 0; i < m.axis_count(); ++i) {
-      out.emplace_back(5201 + 20 * set + i,
-                       fmt::format("{} {}", kSets[set], m.axes[static_cast<std::size_t>(i)].name));
+    for (int slot = 0; slot < 20; ++slot) {
+      const int i = interp::sysvar::offset_slot_axis(by_letter, names, slot);
+      if (i < 0) continue;
+      out.emplace_back(5201 + 20 * set + slot,
+                       fmt::format("{} {}", kSets[set], names[static_cast<std::size_t>(i)]));
     }
   }
   const int count = std::min(m.tool_offset_count, 999);
@@ -103,7 +111,7 @@ class Collector {
 class OffsetWatch {
  public:
   Result<void> start(const interp::Setup& setup) {
-    offsets_ = offset_variables(*setup.machine);
+    offsets_ = offset_variables(*setup.machine, *setup.dialect);
     auto fresh = interp::Interpreter::create(setup, AxisVec{});
     SKIPNC_TRY(fresh);
     for (const auto& o : offsets_) initial_.push_back(read(**fresh, o.first));

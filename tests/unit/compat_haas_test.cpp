@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <string>
+#include <vector>
 
 #include "support/report_run.hpp"
 #include "support/run_cli.hpp"
@@ -263,6 +264,99 @@ TEST(CompatHaas, ToolOffsetVariablesUseHaasNumbers) {
   ASSERT_EQ(f.exit.code, 1) << f.err;  // #2401 is no variable of a Fanuc control
 }
 
+// A mill3 with rotary axes after X Y Z (e.g. "A", "C", or "B", "C"), under
+// `dialect`.
+std::filesystem::path rotary_mill(TempDir& dir, const std::string& dialect,
+                                  const std::vector<std::string>& axes) {
+  std::string text = "extends = \"mill3\"\nname = \"m5\"\ndialect = \"" + dialect + "\"\n";
+  for (const auto& a : axes) {
+    text += "[[axis]]\nname = \"" + a +
+            "\"\nmin = -9999.0\nmax = 9999.0\nrapid = 10000.0\nmax_feed = 5000.0\n"
+            "accel = 1000.0\n";
+  }
+  return dir.write("m5_" + dialect + ".toml", text);
+}
+
+ReportRun run_rotary(TempDir& dir, const std::string& text, const std::string& dialect,
+                     const std::vector<std::string>& axes, std::vector<std::string> extra) {
+  const auto p = dir.write("p.nc", text);
+  std::vector<std::string> args = {"-m", rotary_mill(dir, dialect, axes).string()};
+  args.insert(args.end(), extra.begin(), extra.end());
+  return run_with_report(dir, p, args);
+}
+
+// 96-8000, Macros, "Offsets": #5221-#5225 are G54's X, Y, Z, A, B; Autodesk's
+// Haas post writes #5226 for G54's C. On an X Y Z A C machine #5224 is A,
+// #5225 (B) no axis, #5226 C, read and written; G10 (by letter) agrees.
+TEST(CompatHaas, WorkOffsetVariablesAreNumberedByAxisLetter) {
+  TempDir dir;
+  const std::string prog =
+      "G10 L2 P1 A10. C2.5\n#100 = #5224\n#101 = #5226\n#102 = #5225\n"
+      "#5246 = 7.\n#5244 = -3.\n#7006 = 4.\n#103 = #7006\n#104 = #7005\n"
+      "G55 G0 X0 Y0 Z0 A0 C0\n#105 = #5025\n#106 = #5024\nM30\n";
+  std::vector<std::string> vars;
+  for (int v = 100; v <= 106; ++v) vars.insert(vars.end(), {"--var", std::to_string(v)});
+  const auto r = run_rotary(dir, prog, "haas", {"A", "C"}, vars);
+  ASSERT_EQ(r.exit.code, 0) << r.err;
+  EXPECT_EQ(var(r, 100), 10.0);  // G54 A
+  EXPECT_EQ(var(r, 101), 2.5);   // G54 C
+  EXPECT_TRUE(r.report["variables"]["102"].is_null()) << r.report["variables"].dump();
+  EXPECT_EQ(var(r, 103), 4.0);  // G54.1 P1 C
+  EXPECT_TRUE(r.report["variables"]["104"].is_null()) << r.report["variables"].dump();
+  // #5246 went to G55's C, #5244 to its A: the machine's C (its fifth axis,
+  // #5025: the position variables stay by position) stands at 7 at G55 C0.
+  EXPECT_EQ(var(r, 105), 7.0);
+  EXPECT_EQ(var(r, 106), -3.0);
+}
+
+TEST(CompatHaas, AnOffsetVariableOfALetterTheMachineLacksIsAnAlarm) {
+  TempDir dir;
+  const auto r = run_rotary(dir, "#5226 = 1.\n#5225 = 2.\nM30\n", "haas", {"B", "C"}, {});
+  ASSERT_TRUE(r.report_ok) << r.err;
+  EXPECT_EQ(r.exit.code, 0) << r.err;  // X Y Z B C: #5225 B, #5226 C
+  TempDir dir2;
+  const auto a = run_rotary(dir2, "#5226 = 1.\n#5224 = 2.\nM30\n", "haas", {"B", "C"}, {});
+  ASSERT_TRUE(a.report_ok) << a.err;
+  EXPECT_EQ(a.exit.code, 1);
+  EXPECT_EQ(a.alarm()["code"], alarm_code(AlarmId::kIllegalVariable, "haas"));
+  EXPECT_EQ(a.alarm()["line"], 2);
+  EXPECT_NE(a.alarm()["message"].get<std::string>().find("no A axis"), std::string::npos)
+      << a.alarm().dump();
+  TempDir dir3;  // no seventh letter: #5227 names no axis even on a 6-axis machine
+  const auto u = run_rotary(dir3, "#5227 = 1.\nM30\n", "haas", {"A", "B", "C"}, {});
+  ASSERT_TRUE(u.report_ok) << u.err;
+  EXPECT_EQ(u.exit.code, 1);
+  EXPECT_EQ(u.alarm()["code"], alarm_code(AlarmId::kIllegalVariable, "haas"));
+}
+
+// --repeat follows the offsets a program writes under their variable and
+// axis: #5226 is G54's C on X Y Z A C.
+TEST(CompatHaas, RepeatNamesAnOffsetVariableByItsLetter) {
+  TempDir dir;
+  const auto p = dir.write("p.nc", "#5226 = 1.5\nM30\n");
+  const auto r = run_cli(
+      {"run", "-m", rotary_mill(dir, "haas", {"A", "C"}).string(), "--repeat", "1", p.string()});
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  EXPECT_NE(r.out.find("#5226 G54 C "), std::string::npos) << r.out;
+}
+
+// Fanuc numbers the offsets by the controlled-axis order: on X Y Z A C,
+// #5225 is C and #5226 (a sixth axis) is an alarm.
+TEST(CompatHaas, FanucStillNumbersTheOffsetVariablesByPosition) {
+  TempDir dir;
+  const auto r = run_rotary(dir, "G10 L2 P1 A10. C2.5\n#100 = #5224\n#101 = #5225\nM30\n", "fanuc",
+                            {"A", "C"}, {"--var", "100", "--var", "101"});
+  ASSERT_EQ(r.exit.code, 0) << r.err;
+  EXPECT_EQ(var(r, 100), 10.0);
+  EXPECT_EQ(var(r, 101), 2.5);
+  TempDir dir2;
+  const auto a = run_rotary(dir2, "#5225 = 1.\n#5226 = 2.\nM30\n", "fanuc", {"A", "C"}, {});
+  ASSERT_TRUE(a.report_ok) << a.err;
+  EXPECT_EQ(a.exit.code, 1);
+  EXPECT_EQ(a.alarm()["code"], alarm_code(AlarmId::kIllegalVariable, "fanuc"));
+  EXPECT_EQ(a.alarm()["line"], 2);
+}
+
 TEST(CompatHaas, MacroAlarm3000CarriesTheNumberAndTheComment) {
   TempDir dir;
   const auto r = run(dir, "G0 X1.\n#3000 = 15 (PROBE OPEN)\nG0 X2.\nM30\n");
@@ -314,6 +408,7 @@ TEST(CompatHaas, DialectIsListedAndSelectable) {
   const auto r = run_cli({"dialects"});
   ASSERT_EQ(r.exit_code, 0) << r.out;
   EXPECT_NE(r.out.find("haas"), std::string::npos);
+  EXPECT_NE(r.out.find("work offsets #5201.. by axis letter"), std::string::npos) << r.out;
   TempDir dir;
   const auto p = dir.write("p.nc", "M97 P10\nM30\nN10 #100 = 5\nM99\n");
   const auto d = run_with_report(dir, p, {"-d", "haas", "--var", "100"});
