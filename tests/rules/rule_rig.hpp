@@ -20,6 +20,9 @@
 
 namespace skipnc::rules {
 
+// A micrometre: the tolerance of a latched or final position.
+inline constexpr double kUm = 1e-6;
+
 // One servo period of the trace.
 struct Sample {
   double t = 0.0;

@@ -9,8 +9,6 @@
 namespace skipnc::rules {
 namespace {
 
-constexpr double kUm = 1e-6;
-
 // The path feed (mm/min) the trace shows in the middle of a source line's motion.
 double cruise_feed_on(const Outcome& o, std::uint32_t line) {
   std::vector<double> f;

@@ -10,7 +10,6 @@
 namespace skipnc::rules {
 namespace {
 
-constexpr double kUm = 1e-6;
 // G31 Z-50. F600. from Z0 at t = 0: Z = -10 mm/s * t (no acceleration).
 const char* kProbeZ = "G21 G90 G54 G31 Z-50. F600.\nM30\n";
 

@@ -8,7 +8,6 @@
 namespace skipnc::rules {
 namespace {
 
-constexpr double kUm = 1e-6;
 constexpr double kPeriod = 0.001;
 constexpr double kAccel = 2000.0;  // mill3, every axis
 

@@ -8,8 +8,6 @@
 namespace skipnc::rules {
 namespace {
 
-constexpr double kUm = 1e-6;
-
 TEST(Rules, rule_33_k1_alarms_when_the_block_ends_without_a_skip) {
   const Outcome o = Rig().run("G21 G90 G54 G31 Z-5. F600. K1\nG1 X5.\nM30\n");
   EXPECT_EQ(o.r.status, sim::RunStatus::kAlarm);

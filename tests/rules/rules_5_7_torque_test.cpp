@@ -13,8 +13,6 @@
 namespace skipnc::rules {
 namespace {
 
-constexpr double kUm = 1e-6;
-
 Rig against_stop() {
   Rig r("fanuc");
   r.stop('Z', -3.0).traced();

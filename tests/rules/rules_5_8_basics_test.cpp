@@ -8,8 +8,6 @@
 namespace skipnc::rules {
 namespace {
 
-constexpr double kUm = 1e-6;
-
 TEST(Rules, rule_47_g04_x5_calculator_type_decimal_input_is_5_seconds) {
   const Outcome o = Rig().param("3401#0=1").run("G04 X5\nM30\n");
   ASSERT_TRUE(o.completed());

@@ -32,8 +32,6 @@ off_m = 82
 start_time = 1.0
 )";
 
-constexpr double kUm = 1e-6;
-
 int count(const Outcome& o, const std::string& code) {
   int n = 0;
   for (const auto& w : o.r.warnings) n += w.code == code ? 1 : 0;

@@ -42,6 +42,16 @@ inline ReportRun run_with_report(const TempDir& dir, const std::filesystem::path
   return r;
 }
 
+// Runs `skipnc run args... --report <t>/report.json -q` and returns the report.
+inline nlohmann::json run_report(const TempDir& t, std::vector<std::string> args) {
+  const auto report = t.path / "report.json";
+  std::filesystem::remove(report);
+  args.insert(args.begin(), "run");
+  args.insert(args.end(), {"--report", report.string(), "-q"});
+  run_cli(args);
+  return nlohmann::json::parse(read_file(report));
+}
+
 // The code a dialect gives an alarm ("PS0112"): tests name alarms by the
 // dialect's table, not by message text.
 inline std::string alarm_code(AlarmId id, const std::string& dialect = "fanuc") {

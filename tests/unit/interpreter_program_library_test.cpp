@@ -6,24 +6,17 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
+#include "support/report_run.hpp"
 #include "support/run_cli.hpp"
 
 namespace fs = std::filesystem;
 using nlohmann::json;
 using skipnc::test::read_file;
 using skipnc::test::run_cli;
+using skipnc::test::run_report;
 using skipnc::test::TempDir;
 
 namespace {
-
-json run_report(const TempDir& t, std::vector<std::string> args) {
-  const fs::path report = t.path / "report.json";
-  fs::remove(report);
-  args.insert(args.begin(), "run");
-  args.insert(args.end(), {"--report", report.string(), "-q"});
-  run_cli(args);
-  return json::parse(read_file(report));
-}
 
 // Two programs in one file, as punched from a control's memory.
 constexpr const char* kAllProg =

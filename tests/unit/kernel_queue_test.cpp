@@ -5,15 +5,12 @@
 #include "config/machine_config.hpp"
 #include "kernel/kernel.hpp"
 #include "kernel/kernel_config.hpp"
+#include "support/axes.hpp"
 
 namespace skipnc {
 namespace {
 
-AxisVec at_x(double x) {
-  AxisVec v;
-  v[0] = x;
-  return v;
-}
+using test::at_x;
 
 kernel::KernelConfig small_queue() {
   kernel::KernelConfig cfg = kernel::kernel_config(*config::builtin_machine("mill3"));

@@ -10,19 +10,7 @@
 #include <string>
 
 #include "support/report_run.hpp"
-
-// AddressSanitizer: GCC says __SANITIZE_ADDRESS__, clang (before 17) only
-// __has_feature(address_sanitizer).
-#if defined(__SANITIZE_ADDRESS__)
-#define SKIPNC_TEST_ASAN 1
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-#define SKIPNC_TEST_ASAN 1
-#endif
-#endif
-#ifndef SKIPNC_TEST_ASAN
-#define SKIPNC_TEST_ASAN 0
-#endif
+#include "support/sanitizer.hpp"
 
 namespace skipnc::test {
 namespace {

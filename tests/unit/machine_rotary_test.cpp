@@ -27,7 +27,7 @@ max = 9999.0
   return *m;
 }
 
-Result<Scene> load(const std::string& text) {
+Result<Scene> load_table(const std::string& text) {
   static const auto d = config::builtin_dialect("fanuc");
   static const config::Parameters p(&*d);
   return parse_scene(text, "table.scene.toml", mill4c(), *d, p);
@@ -57,7 +57,7 @@ max = [10, 5, 0]
 )";
 
 TEST(RotaryTable, APartTurnsWithTheAxisAboutTheTablesCentre) {
-  auto s = load(kTable);
+  auto s = load_table(kTable);
   ASSERT_TRUE(s) << s.error().detail;
   ASSERT_EQ(s->probing.parts.size(), 1u);
   EXPECT_EQ(s->probing.parts[0].rotary.axis, 3);
@@ -85,7 +85,7 @@ TEST(RotaryTable, APartTurnsWithTheAxisAboutTheTablesCentre) {
 }
 
 TEST(RotaryTable, TheTableTurningMeetsABallStandingStill) {
-  auto s = load(kTable);
+  auto s = load_table(kTable);
   ASSERT_TRUE(s) << s.error().detail;
   geo::Material mat(s->probing.parts);
   // A ball of radius 1 standing still at (110, -20), 22.36 mm from the
@@ -114,25 +114,25 @@ TEST(RotaryTable, TheTableTurningMeetsABallStandingStill) {
 }
 
 TEST(RotaryTable, BadRotaryFramesAreRefusedWithTheirPlace) {
-  auto missing = load("[[frame]]\nname = \"t\"\nrotary = \"A\"\n");
+  auto missing = load_table("[[frame]]\nname = \"t\"\nrotary = \"A\"\n");
   ASSERT_FALSE(missing);
   EXPECT_EQ(missing.error().loc.line, 3u);
   EXPECT_NE(missing.error().detail.find("not an axis of this machine"), std::string::npos);
-  auto letter = load("[[frame]]\nname = \"t\"\nrotary = \"X\"\n");
+  auto letter = load_table("[[frame]]\nname = \"t\"\nrotary = \"X\"\n");
   ASSERT_FALSE(letter);
   EXPECT_EQ(letter.error().loc.line, 3u);
-  auto sign = load("[[frame]]\nname = \"t\"\nrotary = \"C\"\nrotary_sign = 2\n");
+  auto sign = load_table("[[frame]]\nname = \"t\"\nrotary = \"C\"\nrotary_sign = 2\n");
   ASSERT_FALSE(sign);
   EXPECT_EQ(sign.error().loc.line, 4u);
-  auto lone = load("[[frame]]\nname = \"t\"\nrotary_sign = 1\n");
+  auto lone = load_table("[[frame]]\nname = \"t\"\nrotary_sign = 1\n");
   ASSERT_FALSE(lone);
   EXPECT_EQ(lone.error().loc.line, 3u);
-  auto twice = load(
+  auto twice = load_table(
       "[[frame]]\nname = \"t\"\nrotary = \"C\"\n[[frame]]\nname = \"u\"\nbase = \"t\"\n"
       "rotary = \"C\"\n");
   ASSERT_FALSE(twice);
   EXPECT_EQ(twice.error().loc.line, 7u);
-  auto setter = load(
+  auto setter = load_table(
       "[[frame]]\nname = \"t\"\nrotary = \"C\"\n[tool_setter]\nsignal = \"SKIP\"\n"
       "frame = \"t\"\ncenter = [0, 0]\ntop = 0\nradius = 5\n");
   ASSERT_FALSE(setter);

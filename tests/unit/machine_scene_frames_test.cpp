@@ -17,7 +17,7 @@ namespace skipnc::machine {
 namespace {
 
 // mill3 with EXT Z-1, G54 (100, 50, -200) and the probe's 150 mm in H20.
-const config::MachineConfig& shop() {
+const config::MachineConfig& frames_shop() {
   static const auto m = config::parse_machine(R"(extends = "mill3"
 [work_offsets]
 EXT = { Z = -1.0 }
@@ -29,16 +29,16 @@ G54 = { X = 100.0, Y = 50.0, Z = -200.0 }
   return *m;
 }
 
-Result<Scene> load(const std::string& text) {
+Result<Scene> load_frames(const std::string& text) {
   static const auto d = config::builtin_dialect("fanuc");
   static const config::Parameters p(&*d);
-  return parse_scene(text, "frames.scene.toml", shop(), *d, p);
+  return parse_scene(text, "frames.scene.toml", frames_shop(), *d, p);
 }
 
 constexpr double kPi = 3.14159265358979323846;
 
 TEST(SceneFrames, APartInG54StandsAtExtPlusG54) {
-  auto s = load(R"([[box]]
+  auto s = load_frames(R"([[box]]
 part = "block"
 frame = "G54"
 min = [-10, -10, -20]
@@ -61,7 +61,7 @@ max = [10, 10, 0]
 }
 
 TEST(SceneFrames, APartInATurnedFrameIsTouchedOnItsTurnedFace) {
-  auto s = load(R"([[frame]]
+  auto s = load_frames(R"([[frame]]
 name = "vise"
 base = "G54"
 origin = [5, 0, 0]
@@ -95,7 +95,7 @@ max = [40, 20, 0]
 }
 
 TEST(SceneFrames, ATurnedColumnCheckUsesThePartsFrame) {
-  auto s = load(R"([[frame]]
+  auto s = load_frames(R"([[frame]]
 name = "turned"
 origin = [0, 0, 0]
 rotation = 45.0
@@ -113,7 +113,7 @@ max = [100, 1, 0]
 }
 
 TEST(SceneFrames, AFrameTurnedAboutXStandsAPlateOnItsEdge) {
-  auto s = load(R"([[frame]]
+  auto s = load_frames(R"([[frame]]
 name = "on_edge"
 rotation = [90.0, 0.0, 0.0]
 [[box]]
@@ -137,7 +137,7 @@ max = [10, 5, 2]
 }
 
 TEST(SceneFrames, AToolAboveAPartTiltedAboutYHitsItWhereItsRimDips) {
-  auto s = load(R"([[frame]]
+  auto s = load_frames(R"([[frame]]
 name = "tilted"
 rotation = [0.0, 30.0, 0.0]
 [[box]]
@@ -157,7 +157,7 @@ max = [50, 5, 0]
 }
 
 TEST(SceneFrames, TheToolSetterIsPlacedInItsFrame) {
-  auto s = load(R"([tool_setter]
+  auto s = load_frames(R"([tool_setter]
 signal = "SKIP"
 frame = "G54"
 center = [-250, -150]
@@ -172,11 +172,11 @@ radius = 6
 }
 
 TEST(SceneFrames, BadFramesAreRefusedWithTheirPlace) {
-  auto unknown = load("[[box]]\nframe = \"G60\"\nmin = [0, 0, 0]\nmax = [1, 1, 1]\n");
+  auto unknown = load_frames("[[box]]\nframe = \"G60\"\nmin = [0, 0, 0]\nmax = [1, 1, 1]\n");
   ASSERT_FALSE(unknown);
   EXPECT_EQ(unknown.error().id, AlarmId::kConfig);
   EXPECT_EQ(unknown.error().loc.line, 2u);
-  auto twice = load(R"([[box]]
+  auto twice = load_frames(R"([[box]]
 part = "p"
 min = [0, 0, 0]
 max = [1, 1, 1]
@@ -188,37 +188,37 @@ radius = 0.2
 )");
   ASSERT_FALSE(twice);
   EXPECT_EQ(twice.error().loc.line, 7u);
-  auto builtin = load("[[frame]]\nname = \"G54\"\n");
+  auto builtin = load_frames("[[frame]]\nname = \"G54\"\n");
   ASSERT_FALSE(builtin);
   EXPECT_EQ(builtin.error().loc.line, 2u);
-  auto later = load("[[frame]]\nname = \"a\"\nbase = \"b\"\n[[frame]]\nname = \"b\"\n");
+  auto later = load_frames("[[frame]]\nname = \"a\"\nbase = \"b\"\n[[frame]]\nname = \"b\"\n");
   ASSERT_FALSE(later);
   EXPECT_EQ(later.error().loc.line, 3u);
-  auto turn = load("[[frame]]\nname = \"a\"\nrotation = 400.0\n");
+  auto turn = load_frames("[[frame]]\nname = \"a\"\nrotation = 400.0\n");
   ASSERT_FALSE(turn);
   EXPECT_EQ(turn.error().loc.line, 3u);
-  auto two = load("[[frame]]\nname = \"a\"\nrotation = [1.0, 2.0]\n");
+  auto two = load_frames("[[frame]]\nname = \"a\"\nrotation = [1.0, 2.0]\n");
   ASSERT_FALSE(two);
   EXPECT_EQ(two.error().loc.line, 3u);
   EXPECT_NE(two.error().detail.find("about X, about Y, about Z"), std::string::npos);
-  auto wide = load("[[frame]]\nname = \"a\"\nrotation = [0.0, -361.0, 0.0]\n");
+  auto wide = load_frames("[[frame]]\nname = \"a\"\nrotation = [0.0, -361.0, 0.0]\n");
   ASSERT_FALSE(wide);
   EXPECT_EQ(wide.error().loc.line, 3u);
 }
 
 TEST(ProbeLength, ComesFromTheMachineFilesToolOffsetWhenTheSceneLeavesItOut) {
-  auto s = load("[probe]\nsignal = \"SKIP\"\ntool = 20\nball_radius = 1\nmax_overtravel = 1\n");
+  auto s = load_frames("[probe]\nsignal = \"SKIP\"\ntool = 20\nball_radius = 1\nmax_overtravel = 1\n");
   ASSERT_TRUE(s) << s.error().detail;
   EXPECT_DOUBLE_EQ(s->probing.probe->length, 150.0);  // H20: 149.5 + wear 0.5
-  auto other = load(
+  auto other = load_frames(
       "[probe]\nsignal = \"SKIP\"\ntool = 7\noffset = 20\nball_radius = 1\n"
       "max_overtravel = 1\n");
   ASSERT_TRUE(other) << other.error().detail;
   EXPECT_DOUBLE_EQ(other->probing.probe->length, 150.0);
-  auto none = load("[probe]\nsignal = \"SKIP\"\ntool = 7\nball_radius = 1\nmax_overtravel = 1\n");
+  auto none = load_frames("[probe]\nsignal = \"SKIP\"\ntool = 7\nball_radius = 1\nmax_overtravel = 1\n");
   ASSERT_TRUE(none);
   EXPECT_DOUBLE_EQ(none->probing.probe->length, 0.0);
-  auto here = load(
+  auto here = load_frames(
       "[probe]\nsignal = \"SKIP\"\ntool = 7\nlength = 120\nball_radius = 1\n"
       "max_overtravel = 1\n");
   ASSERT_TRUE(here);
@@ -228,19 +228,19 @@ TEST(ProbeLength, ComesFromTheMachineFilesToolOffsetWhenTheSceneLeavesItOut) {
 // Issue 29: the scene is the stylus, H what the control believes; the two
 // may differ (an uncalibrated H): kept both, never refused.
 TEST(ProbeLength, ALengthDifferentFromHIsKeptBesideIt) {
-  auto s = load(
+  auto s = load_frames(
       "[probe]\nsignal = \"SKIP\"\ntool = 20\nball_radius = 1\nlength = 151\n"
       "max_overtravel = 1\n");
   ASSERT_TRUE(s) << s.error().detail;
   EXPECT_DOUBLE_EQ(s->probing.probe->length, 151.0);
   EXPECT_EQ(s->probing.probe->h_number, 20);
   EXPECT_DOUBLE_EQ(s->probing.probe->h_length, 150.0);
-  auto same = load(
+  auto same = load_frames(
       "[probe]\nsignal = \"SKIP\"\ntool = 20\nball_radius = 1\nlength = 150\n"
       "max_overtravel = 1\n");
   ASSERT_TRUE(same);
   EXPECT_EQ(same->probing.probe->h_number, 0);
-  auto missing = load(
+  auto missing = load_frames(
       "[probe]\nsignal = \"SKIP\"\ntool = 20\noffset = 21\nball_radius = 1\n"
       "max_overtravel = 1\n");
   ASSERT_FALSE(missing);

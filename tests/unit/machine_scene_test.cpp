@@ -11,7 +11,7 @@
 namespace skipnc::machine {
 namespace {
 
-Result<Scene> load(const std::string& text) {
+Result<Scene> load_scene(const std::string& text) {
   static const auto m = config::builtin_machine("mill3");
   static const auto d = config::builtin_dialect("fanuc");
   static const config::Parameters p(&*d);
@@ -19,7 +19,7 @@ Result<Scene> load(const std::string& text) {
 }
 
 TEST(SceneProbing, LoadsPartsProbeToolsSetterAndGauge) {
-  auto s = load(R"(spindle_tool = 1
+  auto s = load_scene(R"(spindle_tool = 1
 [[box]]
 part = "plate"
 min = [-10, -20, -30]
@@ -97,14 +97,14 @@ steps = [{ signal = "SKIP2", diameter = 50.2 }, { signal = "SKIP3", diameter = 5
 }
 
 TEST(SceneProbing, TheProbeIsInTheSpindleUnlessSaidOtherwise) {
-  auto s = load("[probe]\nsignal = \"SKIP\"\ntool = 7\nball_radius = 1\nmax_overtravel = 1\n");
+  auto s = load_scene("[probe]\nsignal = \"SKIP\"\ntool = 7\nball_radius = 1\nmax_overtravel = 1\n");
   ASSERT_TRUE(s) << s.error().detail;
   EXPECT_EQ(s->probing.spindle_tool, 7);
 }
 
 // The error names the place in the file.
 void expect_error(const std::string& text, std::uint32_t line) {
-  auto s = load(text);
+  auto s = load_scene(text);
   ASSERT_FALSE(s) << text;
   EXPECT_EQ(s.error().id, AlarmId::kConfig);
   if (line > 0) {

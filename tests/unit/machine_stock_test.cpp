@@ -192,7 +192,7 @@ TEST(Stock, ColumnsMeetTheCellsWhoseCentresTheyCover) {
 }
 
 // mill3 with G54 at (100, 50, -200).
-const config::MachineConfig& shop() {
+const config::MachineConfig& stock_shop() {
   static const auto m = config::parse_machine(R"(extends = "mill3"
 [work_offsets]
 G54 = { X = 100.0, Y = 50.0, Z = -200.0 }
@@ -201,21 +201,21 @@ G54 = { X = 100.0, Y = 50.0, Z = -200.0 }
   return *m;
 }
 
-Result<Scene> load(const std::string& text) {
+Result<Scene> load_stock(const std::string& text) {
   static const auto d = config::builtin_dialect("fanuc");
   static const config::Parameters p(&*d);
-  return parse_scene(text, "stock.scene.toml", shop(), *d, p);
+  return parse_scene(text, "stock.scene.toml", stock_shop(), *d, p);
 }
 
 TEST(SceneStock, LoadsInAWorkFrame) {
-  auto s = load("[stock]\nframe = \"G54\"\nmin = [0, 0, -20]\nmax = [60, 40, 0]\n");
+  auto s = load_stock("[stock]\nframe = \"G54\"\nmin = [0, 0, -20]\nmax = [60, 40, 0]\n");
   ASSERT_TRUE(s) << s.error().detail;
   ASSERT_TRUE(s->probing.stock);
   EXPECT_EQ(s->probing.stock->lo, (Vec3{100, 50, -220}));
   EXPECT_EQ(s->probing.stock->hi, (Vec3{160, 90, -200}));
   EXPECT_EQ(s->probing.stock->resolution, 0.5);
   // A frame that only moves it is accepted as well.
-  auto moved = load(
+  auto moved = load_stock(
       "[[frame]]\nname = \"vise\"\nbase = \"G54\"\norigin = [5, 0, 0]\n"
       "[stock]\nframe = \"vise\"\nmin = [0, 0, -20]\nmax = [60, 40, 0]\nresolution = 0.25\n");
   ASSERT_TRUE(moved) << moved.error().detail;
@@ -224,8 +224,8 @@ TEST(SceneStock, LoadsInAWorkFrame) {
 }
 
 // Each bad [stock] is refused at its line.
-void expect_error(const std::string& text, std::uint32_t line, std::uint32_t column = 0) {
-  auto s = load(text);
+void expect_stock_error(const std::string& text, std::uint32_t line, std::uint32_t column = 0) {
+  auto s = load_stock(text);
   ASSERT_FALSE(s) << text;
   EXPECT_EQ(s.error().id, AlarmId::kConfig);
   EXPECT_EQ(s.error().loc.line, line) << s.error().detail;
@@ -236,19 +236,19 @@ void expect_error(const std::string& text, std::uint32_t line, std::uint32_t col
 
 TEST(SceneStock, RefusesWhatCannotBe) {
   // A turned frame: the cells are axis-aligned (at the frame key).
-  expect_error(
+  expect_stock_error(
       "[[frame]]\nname = \"vise\"\nrotation = 2\n"
       "[stock]\nframe = \"vise\"\nmin = [0, 0, -20]\nmax = [60, 40, 0]\n",
       5, 9);
   // More than 4 million cells: at the resolution.
-  expect_error("[stock]\nmin = [0, 0, -20]\nmax = [1000, 1000, 0]\nresolution = 0.1\n", 4, 14);
-  expect_error("[stock]\nmin = [-1e6, -1e6, -1]\nmax = [1e6, 1e6, 0]\nresolution = 0.001\n", 4);
-  expect_error("[stock]\nmin = [0, 0, 0]\nmax = [10, 10, 0]\n", 3);                // no height
-  expect_error("[stock]\nmin = [0, 0]\nmax = [10, 10, 5]\n", 2);                   // 2 numbers
-  expect_error("[stock]\nmin = [0, 0, 0]\nmax = [1, 1, 1]\nresolution = 0\n", 4);  // too fine
-  expect_error("[stock]\nmin = [0, 0, 0]\nmax = [1, 1, 1]\nmaterial = \"steel\"\n", 4);
-  expect_error("[stock]\nmax = [1, 1, 1]\n", 1);                     // no min
-  expect_error("[[stock]]\nmin = [0, 0, 0]\nmax = [1, 1, 1]\n", 1);  // one table, not an array
+  expect_stock_error("[stock]\nmin = [0, 0, -20]\nmax = [1000, 1000, 0]\nresolution = 0.1\n", 4, 14);
+  expect_stock_error("[stock]\nmin = [-1e6, -1e6, -1]\nmax = [1e6, 1e6, 0]\nresolution = 0.001\n", 4);
+  expect_stock_error("[stock]\nmin = [0, 0, 0]\nmax = [10, 10, 0]\n", 3);                // no height
+  expect_stock_error("[stock]\nmin = [0, 0]\nmax = [10, 10, 5]\n", 2);                   // 2 numbers
+  expect_stock_error("[stock]\nmin = [0, 0, 0]\nmax = [1, 1, 1]\nresolution = 0\n", 4);  // too fine
+  expect_stock_error("[stock]\nmin = [0, 0, 0]\nmax = [1, 1, 1]\nmaterial = \"steel\"\n", 4);
+  expect_stock_error("[stock]\nmax = [1, 1, 1]\n", 1);                     // no min
+  expect_stock_error("[[stock]]\nmin = [0, 0, 0]\nmax = [1, 1, 1]\n", 1);  // one table, not an array
 }
 
 }  // namespace

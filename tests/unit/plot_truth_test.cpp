@@ -59,7 +59,7 @@ for g in root.iter(NS + 'g'):
 print(json.dumps(out))
 )";
 
-json read_svg(const TempDir& dir, const std::string& svg) {
+json read_truth_svg(const TempDir& dir, const std::string& svg) {
   return test::read_svg_with(dir, kReader, svg);
 }
 
@@ -96,7 +96,7 @@ TEST(PlotTruth, TheAlarmLineStaysInsideThePicture) {
   const auto r = run_cli({"run", prog.string(), "-s", g + ".scene.toml", "-m", g + ".machine.toml",
                           "--plot", svg, "-q"});
   ASSERT_EQ(r.exit_code, 1);
-  const json s = read_svg(dir, svg);
+  const json s = read_truth_svg(dir, svg);
   std::string alarm;
   int lines = 0;
   for (const auto& t : s["texts"]) {
@@ -129,12 +129,12 @@ TEST(PlotTruth, ARunWithoutAProbeIsNotHeadedBallCentre) {
   const std::string prog = "G21 G90 G54\nT3 M06\nG43 H3 G0 X0 Y0 Z0\nG1 Z-5. F300.\nM30\n";
   TempDir dir;
   const json no_probe =
-      read_svg(dir, plot(dir, prog, "[[tool]]\nnumber = 3\nlength = 80.0\nradius = 5.0\n", {}, 0));
+      read_truth_svg(dir, plot(dir, prog, "[[tool]]\nnumber = 3\nlength = 80.0\nradius = 5.0\n", {}, 0));
   const std::string text = all_text(no_probe);
   EXPECT_NE(text.find("path of the tool tip"), std::string::npos) << text;
   EXPECT_EQ(text.find("ball centre"), std::string::npos) << text;
   TempDir dir2;
-  const json probe = read_svg(
+  const json probe = read_truth_svg(
       dir2, plot(dir2, "G21 G90 G54\nG0 X0 Y0 Z0\nG31 Z-40. F100.\nM30\n",
                  "[[box]]\npart = \"block\"\nmin = [-20.0, -20.0, -200.0]\nmax = [20.0, 20.0, "
                  "-180.0]\n[probe]\nsignal = \"SKIP\"\ntool = 20\nball_radius = 1.0\nlength = "
@@ -149,7 +149,7 @@ TEST(PlotTruth, G38MovesAreLabelledG38) {
   const std::string scene =
       "[[trigger]]\nsignal = \"SKIP\"\naxis = \"Z\"\nat = -3.0\ndirection = \"decreasing\"\n";
   TempDir dir;
-  const json lcnc = read_svg(dir, plot(dir,
+  const json lcnc = read_truth_svg(dir, plot(dir,
                                        "G21 G90 G54\nG0 X0 Y0 Z0\nG38.2 Z-10. F100.\nG0 Z0\n"
                                        "G38.3 Z-2. F100.\nM2\n",
                                        scene, {"-d", "linuxcnc"}, 0));
@@ -158,7 +158,7 @@ TEST(PlotTruth, G38MovesAreLabelledG38) {
   EXPECT_EQ(text.find("G31"), std::string::npos) << text;
   TempDir dir2;
   const json fanuc =
-      read_svg(dir2, plot(dir2, "G21 G90 G54\nG0 X0 Y0 Z0\nG31 Z-10. F100.\nM30\n", scene, {}, 0));
+      read_truth_svg(dir2, plot(dir2, "G21 G90 G54\nG0 X0 Y0 Z0\nG31 Z-10. F100.\nM30\n", scene, {}, 0));
   EXPECT_NE(all_text(fanuc).find("skip move (G31)"), std::string::npos);
 }
 
@@ -174,7 +174,7 @@ TEST(PlotTruth, CollisionsHaveAMarker) {
                           "--plot", svg, "--report", rep, "-q"});
   ASSERT_EQ(r.exit_code, 1);
   const json report = json::parse(read_file(rep));
-  const json s = read_svg(dir, svg);
+  const json s = read_truth_svg(dir, svg);
   EXPECT_EQ(s["markers"].get<int>(), 5) << "one per view and the legend's";
   EXPECT_NE(all_text(s).find("probe crash: where the alarm came"), std::string::npos);
   for (const auto& [id, v] : s["views"].items()) {
@@ -208,7 +208,7 @@ TEST(PlotTruth, LabelsInTheSideViewsDoNotStack) {
   prog += "G0 Z0\nM30\n";
   TempDir dir;
   const json s =
-      read_svg(dir, plot(dir, prog,
+      read_truth_svg(dir, plot(dir, prog,
                          "[[trigger]]\nsignal = \"SKIP\"\naxis = \"Z\"\nat = -3.0\ndirection = "
                          "\"decreasing\"\n",
                          {}, 0));
