@@ -11,6 +11,8 @@
 #            and the fuzz harnesses (scripts/fuzz.sh) from one compile
 #   tsan     build-tsan/: ThreadSanitizer (clang 16, -O1), only the thread
 #            tests (tests/threads/)
+# The tests are compiled a few files to a translation unit (SKIPNC_UNITY_TESTS,
+# tests/CMakeLists.txt) in the release and check flavours.
 # Usage: scripts/build.sh [release|demo|check|tsan]
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -26,10 +28,11 @@ release=(-DCMAKE_BUILD_TYPE=Release -DSKIPNC_PYTHON="$python")
 clang=(-DCMAKE_CXX_COMPILER=clang++-16 -DCMAKE_BUILD_TYPE=Debug
        -DCMAKE_CXX_FLAGS_DEBUG="-O1 -gline-tables-only")
 case $flavour in
-  release) dir=build; flags=("${release[@]}" -DSKIPNC_TESTS=ON -DSKIPNC_BENCH=ON) ;;
+  release) dir=build; flags=("${release[@]}" -DSKIPNC_TESTS=ON -DSKIPNC_BENCH=ON -DSKIPNC_UNITY_TESTS=ON) ;;
   demo) dir=build; flags=("${release[@]}"); targets=(--target skipnc) ;;
   check) dir=build-check
-    flags=("${clang[@]}" -DSKIPNC_SANITIZE=ON -DSKIPNC_FUZZ=ON -DSKIPNC_TESTS=ON -DSKIPNC_PYTHON="$python") ;;
+    flags=("${clang[@]}" -DSKIPNC_SANITIZE=ON -DSKIPNC_FUZZ=ON -DSKIPNC_TESTS=ON -DSKIPNC_PYTHON="$python"
+           -DSKIPNC_UNITY_TESTS=ON) ;;
   tsan) dir=build-tsan
     flags=("${clang[@]}" -DSKIPNC_TSAN=ON -DSKIPNC_TESTS=ON -DSKIPNC_PYTHON=OFF)
     targets=(--target skipnc_thread_tests) ;;

@@ -13,7 +13,7 @@
 # SKIPNC_SKIP_TSAN=1 the ThreadSanitizer run (faster local runs).
 # The fuzz stage (scripts/fuzz.sh: each harness for a bounded time) runs in
 # CI (CI=true) or when SKIPNC_FUZZ=1; SKIPNC_FUZZ_SECONDS sets the time of
-# each harness (default 25).
+# each harness (default 20).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 jobs=$(nproc)
@@ -55,7 +55,7 @@ if [ "${SKIPNC_SKIP_CHECK:-0}" != 1 ]; then
   end
   if [ "${SKIPNC_FUZZ:-}" = 1 ] || { [ "${CI:-}" = true ] && [ "${SKIPNC_FUZZ:-}" != 0 ]; }; then
     begin "fuzz"
-    SKIPNC_FUZZ_DIR=build-check scripts/fuzz.sh "${SKIPNC_FUZZ_SECONDS:-25}"
+    SKIPNC_FUZZ_DIR=build-check scripts/fuzz.sh "${SKIPNC_FUZZ_SECONDS:-20}"
     end
   fi
 fi
