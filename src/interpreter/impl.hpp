@@ -48,6 +48,7 @@
 #include "interpreter/interpreter.hpp"
 #include "interpreter/journal.hpp"
 #include "interpreter/language.hpp"
+#include "interpreter/print_channel.hpp"
 #include "interpreter/program_store.hpp"
 #include "interpreter/skip_rules.hpp"
 #include "interpreter/transform.hpp"
@@ -232,10 +233,9 @@ struct Interpreter::Impl : BlockState, OffsetTables {
   // G66
   std::int64_t modal_macro_program = 0;
   std::array<Value, kLocalCount + 1> modal_macro_args{};
-  // DPRNT: lines between POPEN and PCLOS, written whole at the end of the run.
-  std::string dprnt_text;
-  bool dprnt_open = false;
-  bool dprnt_used = false;
+  // DPRNT: lines between POPEN and PCLOS, written whole at the end of the
+  // run (print_channel.hpp).
+  PrintChannel print{setup.dprnt_path, mc.limits.max_dprnt_bytes};
 
   // Held from the read of #500-#999 to their write (variables.hpp).
   PersistentLock persistent_lock;
@@ -291,7 +291,6 @@ struct Interpreter::Impl : BlockState, OffsetTables {
   Flow<void> find_loop_end(Loop& l);
   Flow<void> leave_loops_for(std::uint64_t target);
   Flow<void> print_line(SourceLoc where);
-  Result<void> write_dprnt() const;
 
   // macro_call.cpp
   Flow<void> call(std::int64_t program, int repeats, bool macro, SourceLoc where,

@@ -379,7 +379,7 @@ AxisVec Interpreter::position() const noexcept {
 }
 Result<void> Interpreter::save_persistent() {
   // The DPRNT file (--dprnt) is written here too, whole, once per run.
-  auto d = impl_->write_dprnt();
+  auto d = impl_->print.write();
   if (!d) return d;
   // The language's log files and persistent parameters (language.cpp).
   Result<void> r = impl_->lang->save_persistent(*impl_);

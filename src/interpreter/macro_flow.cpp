@@ -88,11 +88,10 @@ Flow<Step> Interpreter::Impl::execute_statement() {
     case StmtKind::kEnd:
       return end_statement(s.loop, loc(s.column));
     case StmtKind::kPopen:
-      dprnt_open = true;
-      dprnt_used = true;
+      print.open();
       return Step::kContinue;
     case StmtKind::kPclos:
-      dprnt_open = false;
+      print.close();
       return Step::kContinue;
     case StmtKind::kDprnt:
     case StmtKind::kBprnt: {
@@ -246,26 +245,30 @@ Flow<void> Interpreter::Impl::print_line(SourceLoc where) {
       line += buf;
     }
   }
-  if (dprnt_open && !setup.dprnt_path.empty()) {
-    if (static_cast<std::int64_t>(dprnt_text.size() + line.size() + 1) >
-        mc.limits.max_dprnt_bytes) {
-      return fail(AlarmId::kDprntLimit,
-                  "the DPRNT file would pass limits.max_dprnt_bytes = " +
-                      std::to_string(mc.limits.max_dprnt_bytes) + " bytes",
-                  where);
-    }
-    dprnt_text += line;
-    dprnt_text += '\n';
-  }
+  auto kept = print.keep(line, where);
+  SKIPNC_TRY(kept);
   add_message(std::move(line));
+  return {};
+}
+
+Flow<void> PrintChannel::keep(const std::string& line, SourceLoc where) {
+  if (!open_ || path_.empty()) return {};
+  if (static_cast<std::int64_t>(text_.size() + line.size() + 1) > limit_) {
+    return fail(
+        AlarmId::kDprntLimit,
+        "the DPRNT file would pass limits.max_dprnt_bytes = " + std::to_string(limit_) + " bytes",
+        where);
+  }
+  text_ += line;
+  text_ += '\n';
   return {};
 }
 
 // The DPRNT file is written once, whole, at the end of the run: a temporary
 // file beside it, then a rename. Nothing is written anywhere else.
-Result<void> Interpreter::Impl::write_dprnt() const {
-  if (!dprnt_used || setup.dprnt_path.empty()) return {};
-  auto r = write_file_atomic(setup.dprnt_path, dprnt_text);
+Result<void> PrintChannel::write() const {
+  if (!used_ || path_.empty()) return {};
+  auto r = write_file_atomic(path_, text_);
   if (!r) {
     Error e = r.error();
     e.detail = "DPRNT: " + e.detail;
