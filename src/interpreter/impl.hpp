@@ -51,6 +51,7 @@
 #include "interpreter/print_channel.hpp"
 #include "interpreter/program_store.hpp"
 #include "interpreter/skip_rules.hpp"
+#include "interpreter/tool_measure.hpp"
 #include "interpreter/transform.hpp"
 
 namespace skipnc::interp {
@@ -146,10 +147,7 @@ struct PendingSkip {
   bool alarm_on_miss = false;
   SourceLoc loc;
   std::array<std::string, canon::SkipSpec::kMaxInputs> input_names;
-  int g37_axis = -1;         // G37: the measured axis (-1: a G31)
   std::optional<GCode> g38;  // G38.2-G38.5 (none: not a G38 probe)
-  double g37_target = 0.0;   // G37: the measuring position, machine mm
-  double g37_epsilon = 0.0;  // G37: the allowed range, mm
 };
 
 // The small state a block may change is the base BlockState (block_state.hpp);
@@ -398,10 +396,6 @@ struct Interpreter::Impl : BlockState, OffsetTables {
   // mill_codes.cpp
   // Parameters of G31.n: the skip condition; the feed is the next number.
   static constexpr int kSkipStepParam = skip_rules::kStepParam;
-  // G37: a dialect has it when it defines epsilon (mill_codes.cpp).
-  static constexpr int kG37EpsilonParam = 6254;
-  // G37.1: a dialect has it (not simulated) when it defines this (Mitsubishi).
-  static constexpr int kG37_1SpeedParam = 8004;
   static constexpr int kSettingErrorParam = 11200;  // G54.4 (fanuc.toml)
   Flow<bool> mill_code(const CodeDef& def, SourceLoc at, MillRequest& req) const;
   Flow<bool> apply_frame_code(const Words& words, const MillRequest& req);
@@ -426,6 +420,7 @@ struct Interpreter::Impl : BlockState, OffsetTables {
   Flow<void> check_nose_radius_comp(SourceLoc where) const;
   Flow<Step> g37_block(const Words& words, CommandSink& out);
   Flow<void> finish_g37(const SyncState& s);
+  ToolMeasurement g37;  // the G37 under way (tool_measure.hpp)
 
   // motion.cpp
   Flow<Step> motion(const Words& words, CommandSink& out, bool skip, bool g53);

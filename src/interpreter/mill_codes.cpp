@@ -72,10 +72,10 @@ Flow<bool> Interpreter::Impl::mill_code(const CodeDef& def, SourceLoc at, MillRe
     case Handler::kG37_1:
       // Mitsubishi's G37.1 (M700V/M70V manual 15.1): only where the dialect
       // defines its TLM parameter 8004 (mitsubishi.toml); elsewhere no code.
-      if (dialect.param(kG37_1SpeedParam) == nullptr) return false;
+      if (dialect.param(ToolMeasurement::kG37_1SpeedParam) == nullptr) return false;
       break;
     case Handler::kG37:
-      if (dialect.param(kG37EpsilonParam) == nullptr) break;
+      if (dialect.param(ToolMeasurement::kEpsilonParam) == nullptr) break;
       req.g37 = true;  // the dialect has G37's parameters (fanuc.toml)
       return true;
     case Handler::kCycle:
@@ -540,7 +540,7 @@ Flow<Step> Interpreter::Impl::g37_block(const Words& words, CommandSink& out) {
     return fail(AlarmId::kG37Axis, "G37 from the measuring position itself", at);
   }
   const double gamma = params.get(kG37GammaParam);
-  const double epsilon = params.get(kG37EpsilonParam);
+  const double epsilon = params.get(ToolMeasurement::kEpsilonParam);
   const double feed = params.get(kG37FeedParam);
   if (!(feed > 0.0)) return fail(AlarmId::kNoFeed, "G37 feed (parameter 6241) is 0", at);
   AxisVec approach = pos;
@@ -577,9 +577,7 @@ Flow<Step> Interpreter::Impl::g37_block(const Words& words, CommandSink& out) {
   rec.kind = spec.kind;
   pending_skip.target = sk.target;
   pending_skip.loc = at;
-  pending_skip.g37_axis = axis;
-  pending_skip.g37_target = target[axis];
-  pending_skip.g37_epsilon = epsilon;
+  g37.arm(axis, target[axis], epsilon, at);
   emit(out, sk);
   pos = sk.target;
   motion_since_sync = true;
@@ -587,26 +585,33 @@ Flow<Step> Interpreter::Impl::g37_block(const Words& words, CommandSink& out) {
   return Step::kSync;
 }
 
-// The signal must have come within epsilon of the measuring position; the
-// difference between where it came and the measuring position is added to
-// the active H (its wear: the geometry stays as set), and the offset is
-// applied again.
-Flow<void> Interpreter::Impl::finish_g37(const SyncState& s) {
-  const PendingSkip& ps = pending_skip;
-  if (!s.triggered) {
+// The signal must have come within epsilon of the measuring position.
+Flow<double> ToolMeasurement::deviation(bool triggered, double latch_mm) const {
+  if (!triggered) {
     return fail(AlarmId::kG37Signal,
                 "the measuring position reached signal did not come within " +
-                    std::to_string(ps.g37_epsilon) + " mm of the measuring position",
-                ps.loc);
+                    std::to_string(epsilon_mm_) + " mm of the measuring position",
+                at_);
   }
-  const double diff_mm = s.latch_machine[ps.g37_axis] - ps.g37_target;
-  if (std::fabs(diff_mm) > ps.g37_epsilon + 1e-9) {
+  const double diff_mm = latch_mm - target_mm_;
+  if (std::fabs(diff_mm) > epsilon_mm_ + 1e-9) {
     return fail(AlarmId::kG37Signal,
                 "the measuring position reached signal came " + std::to_string(std::fabs(diff_mm)) +
-                    " mm before the measuring position (allowed: " +
-                    std::to_string(ps.g37_epsilon) + " mm)",
-                ps.loc);
+                    " mm before the measuring position (allowed: " + std::to_string(epsilon_mm_) +
+                    " mm)",
+                at_);
   }
+  return diff_mm;
+}
+
+// The difference between where the signal came and the measuring position
+// is added to the active H (its wear: the geometry stays as set), and the
+// offset is applied again.
+Flow<void> Interpreter::Impl::finish_g37(const SyncState& s) {
+  const ToolMeasurement m = std::exchange(g37, ToolMeasurement{});
+  auto dev = m.deviation(s.triggered, s.latch_machine[m.axis()]);
+  SKIPNC_TRY(dev);
+  const double diff_mm = *dev;
   auto& t = tools.write(static_cast<std::size_t>(modal.h));
   const double diff = diff_mm / offset_unit_mm(*this);  // stored numbers (offset_units.hpp)
   t.length_wear += modal.length == LengthComp::kMinus ? -diff : diff;

@@ -211,7 +211,7 @@ AxisVec Interpreter::Impl::record_skip(const SyncState& s) {
   }
   skips.push_back(rec);
   // A miss stores the end point: reading it as a touch is worth a warning.
-  skip_missed_unread = !s.triggered && ps.g37_axis < 0 && !s.no_machine;
+  skip_missed_unread = !s.triggered && !g37.active() && !s.no_machine;
   skip_missed_line = rec.line;
   return latch;
 }
@@ -250,7 +250,7 @@ Flow<void> Interpreter::Impl::finish_skip(const SyncState& s) {
     return fail(AlarmId::kSkipMiss, "the block reached its end point without a skip signal",
                 ps.loc);
   }
-  if (ps.g37_axis >= 0) return finish_g37(s);  // mill_codes.cpp
+  if (g37.active()) return finish_g37(s);  // mill_codes.cpp
   return {};
 }
 
