@@ -15,6 +15,7 @@
 
 #include "core/axes.hpp"
 #include "interpreter/cycles.hpp"
+#include "interpreter/lathe.hpp"
 #include "interpreter/modal.hpp"
 #include "interpreter/transform.hpp"
 
@@ -27,10 +28,7 @@ struct BlockState {
   ModalState modal;
   AxisVec pos;                 // commanded machine position, mm
   double length_offset = 0.0;  // active tool length offset (mm), on length_axis
-  // Lathe (lathe.cpp): offsets are kept in program values.
-  int wear_offset = 0;           // lower digits of the T code
-  double turning_cycle_z = 0.0;  // G90 cycle: Z end of the last pass, machine mm
-  bool have_turning_cycle_z = false;
+  LatheState lathe_state;      // the T code's wear offset, G90's Z (lathe.hpp)
   double last_cut_feed = 0.0;  // F of the last non-rapid move (program units), CompassNC G31
   double last_e = 0.0;         // #4108
 
@@ -75,6 +73,7 @@ struct AxisShifts {
 // The copy a block takes must not allocate: no member may own memory.
 static_assert(std::is_trivially_copyable_v<BlockState>);
 static_assert(std::is_trivially_copyable_v<cycles::Data>);
+static_assert(std::is_trivially_copyable_v<LatheState>);
 static_assert(std::is_trivially_copyable_v<AxisShifts>);
 
 }  // namespace skipnc::interp

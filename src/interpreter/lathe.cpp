@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdint>
 #include <numbers>
+#include <optional>
 #include <string>
 
 #include "interpreter/impl.hpp"
@@ -157,7 +158,7 @@ Flow<void> Interpreter::Impl::lathe_tool(const Words& words, ModalState& next) {
                 loc(t.column));
   }
   next.tool = code;
-  wear_offset = wear;
+  lathe_state.set_wear_offset(wear);
   const auto& g = tools[static_cast<std::size_t>(tool)];
   const auto& w = tools[static_cast<std::size_t>(wear)];
   AxisVec off;
@@ -225,11 +226,12 @@ Flow<void> Interpreter::Impl::turning_cycle(const Words& words, AxisVec& target,
   const int z = axis_of_letter['Z' - 'A'];
   const SourceLoc at = loc(cur_col);
   if (!moved.has(z)) {
-    if (!have_turning_cycle_z) {
+    const std::optional<double> cycle_z = lathe_state.cycle_z();
+    if (!cycle_z) {
       return fail(AlarmId::kBadValue, "G90 needs Z or W (the end of the cut) in its first block",
                   at);
     }
-    target[z] = turning_cycle_z;
+    target[z] = *cycle_z;
   }
   const double feed = feed_mm_per_min();
   if (feed <= 0.0) return fail(AlarmId::kNoFeed, "G90 without a feed (F)", at);
@@ -243,8 +245,7 @@ Flow<void> Interpreter::Impl::turning_cycle(const Words& words, AxisVec& target,
   p[x] = start[x];
   emit(out, canon::Feed{p, feed, false});
   emit(out, canon::Rapid{start, params.bit(config::param::kLinearRapid)});
-  turning_cycle_z = target[z];
-  have_turning_cycle_z = true;
+  lathe_state.set_cycle_z(target[z]);
   target = start;
   return {};
 }

@@ -493,13 +493,14 @@ Flow<void> Interpreter::Impl::refuse_under_comp(const char* what, SourceLoc wher
 // refused in words instead of running on the programmed path.
 Flow<void> Interpreter::Impl::check_nose_radius_comp(SourceLoc where) const {
   if (!mc.lathe() || modal.cutter == CutterComp::kOff) return {};
-  const auto& t = tools[static_cast<std::size_t>(wear_offset)];
+  const auto& t = tools[static_cast<std::size_t>(lathe_state.wear_offset())];
   const double r = t.radius_geometry + t.radius_wear;
   if (r == 0.0) return {};
   return fail(AlarmId::kNotSimulated,
               std::string(modal.cutter == CutterComp::kLeft ? "G41" : "G42") +
                   " tool nose radius compensation with a nose radius of " + std::to_string(r) +
-                  " mm (offset " + std::to_string(wear_offset) + ") is not simulated by skipnc",
+                  " mm (offset " + std::to_string(lathe_state.wear_offset()) +
+                  ") is not simulated by skipnc",
               where);
 }
 
