@@ -40,8 +40,7 @@ Flow<Step> Interpreter::Impl::commit_call(const BlockPlan& plan) {
     SKIPNC_TRY(c);
     return Step::kContinue;
   }
-  modal_macro_program = plan.call_program;
-  modal_macro_args = call_args;
+  g66.set(plan.call_program, call_args);
   modal.modal_macro = true;
   return Step::kContinue;
 }
@@ -365,8 +364,8 @@ Flow<Step> Interpreter::Impl::commit_block(const Words& words, const BlockPlan& 
   if (*m) return **m;
   // G66: the modal macro runs after each block that moved, but not for the
   // moves of the macro it calls (nor of what that macro calls).
-  if (moved && modal.modal_macro && modal_macro_program != 0 && !in_modal_call()) {
-    auto c = macro_call(modal_macro_program, 1, true, loc(cur_col));
+  if (moved && modal.modal_macro && g66.armed() && !in_modal_call()) {
+    auto c = macro_call(g66.program, 1, true, loc(cur_col));
     SKIPNC_TRY(c);
   }
   return Step::kContinue;

@@ -48,6 +48,7 @@
 #include "interpreter/interpreter.hpp"
 #include "interpreter/journal.hpp"
 #include "interpreter/language.hpp"
+#include "interpreter/modal_macro.hpp"
 #include "interpreter/print_channel.hpp"
 #include "interpreter/program_store.hpp"
 #include "interpreter/skip_rules.hpp"
@@ -228,9 +229,7 @@ struct Interpreter::Impl : BlockState, OffsetTables {
   // Arguments of the G65/G66 block being executed (#1-#33), in block order.
   std::array<Value, kLocalCount + 1> call_args{};
   bool call_block = false;
-  // G66
-  std::int64_t modal_macro_program = 0;
-  std::array<Value, kLocalCount + 1> modal_macro_args{};
+  ModalMacro g66;  // the G66 macro the moving blocks call (modal_macro.hpp)
   // DPRNT: lines between POPEN and PCLOS, written whole at the end of the
   // run (print_channel.hpp).
   PrintChannel print{setup.dprnt_path, mc.limits.max_dprnt_bytes};
@@ -337,8 +336,7 @@ struct Interpreter::Impl : BlockState, OffsetTables {
   // call stack and the G66 macro when the block may call.
   struct Before {
     std::vector<Frame> frames;
-    std::int64_t modal_macro_program = 0;
-    std::array<Value, kLocalCount + 1> modal_macro_args{};
+    ModalMacro g66;
   } before_block;
   Flow<void> plan_block(const Words& words, BlockPlan& plan);
   Flow<void> plan_g_codes(const Words& words, BlockPlan& plan);

@@ -193,7 +193,7 @@ Flow<void> Interpreter::Impl::collect_argument(const gcode::Word& w, const WordV
 
 Flow<void> Interpreter::Impl::macro_call(std::int64_t program, int repeats, bool modal_call,
                                          SourceLoc where) {
-  const std::array<Value, kLocalCount + 1> args = modal_call ? modal_macro_args : call_args;
+  const std::array<Value, kLocalCount + 1> args = modal_call ? g66.args : call_args;
   auto c = call(program, repeats, true, where, modal_call);
   if (!c) return c;
   programs.frames.back().modal_call = modal_call;

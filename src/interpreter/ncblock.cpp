@@ -133,8 +133,7 @@ void Interpreter::Impl::begin_tables(bool calls) {
   if (lang->rules.state_codes) lang->begin_block();  // M70-M73's saved states (ngc_room.cpp)
   if (!calls) return;
   before_block.frames = programs.frames;
-  before_block.modal_macro_program = modal_macro_program;
-  before_block.modal_macro_args = modal_macro_args;
+  before_block.g66 = g66;
 }
 
 void Interpreter::Impl::commit_tables() noexcept {
@@ -155,8 +154,7 @@ void Interpreter::Impl::roll_back_tables(bool calls) {
   if (lang->rules.state_codes) lang->roll_back_block();
   if (!calls) return;
   programs.frames = before_block.frames;
-  modal_macro_program = before_block.modal_macro_program;
-  modal_macro_args = before_block.modal_macro_args;
+  g66 = before_block.g66;
   const Frame& top = programs.frames.back();
   static_cast<void>(top.file->src->seek(top.resume));
 }
