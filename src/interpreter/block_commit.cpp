@@ -350,7 +350,7 @@ Flow<Step> Interpreter::Impl::commit_block(const Words& words, const BlockPlan& 
   if (lang->rules.state_codes) {
     SKIPNC_TRY(lang->state_codes(*this, words, before, loc(cur_col)));  // ngc_room.cpp
   }
-  if (plan.mill.polar) polar = *plan.mill.polar;
+  if (plan.mill.polar) frame_codes.polar = *plan.mill.polar;
   skip_step = plan.mill.skip_step;
   commit_cycle_start(before);
   bool moved = false;

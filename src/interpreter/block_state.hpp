@@ -15,6 +15,7 @@
 
 #include "core/axes.hpp"
 #include "interpreter/cycles.hpp"
+#include "interpreter/frame_codes.hpp"
 #include "interpreter/lathe.hpp"
 #include "interpreter/modal.hpp"
 #include "interpreter/transform.hpp"
@@ -52,9 +53,7 @@ struct BlockState {
   // mill_codes.cpp: canned cycle data (modal until G80 or group 01) and G16
   // (the program -> work frame is Impl::program_frame, saved on its first write).
   cycles::Data cycle_data;
-  bool polar = false;           // G16
-  double polar_angle = 0.0;     // last polar angle (G91 adds to it)
-  double rotation_angle = 0.0;  // last G68 R (5400#0 RIN: G91 adds to it)
+  FrameCodeState frame_codes;  // G16, the last polar and G68 angles (frame_codes.hpp)
 };
 
 // The axis shifts few blocks change (G52, G92, G45-G48, a lathe's T code),
@@ -74,6 +73,7 @@ struct AxisShifts {
 static_assert(std::is_trivially_copyable_v<BlockState>);
 static_assert(std::is_trivially_copyable_v<cycles::Data>);
 static_assert(std::is_trivially_copyable_v<LatheState>);
+static_assert(std::is_trivially_copyable_v<FrameCodeState>);
 static_assert(std::is_trivially_copyable_v<AxisShifts>);
 
 }  // namespace skipnc::interp

@@ -401,7 +401,7 @@ struct Interpreter::Impl : BlockState, OffsetTables {
   Flow<xform::Transform> conversion_3d(const Words& words, const MillRequest& req,
                                        const xform::Point& here) const;
   Flow<xform::Transform> setting_error(const Words& words, const MillRequest& req) const;  // G54.4
-  bool frame_active() const noexcept { return polar || frame().active(); }
+  bool frame_active() const noexcept { return frame_codes.polar || frame().active(); }
   Flow<void> frame_targets(const Words& words, AxisVec& target, AxisMask& moved);
   // Cutter radius compensation (cutter_comp.hpp): the block's commands go
   // through the compensator when G41/G42 is active or a vector is left.

@@ -184,13 +184,13 @@ Flow<void> frame_rotation(Interpreter::Impl& in, const FrameWords& fw, const Mil
     angle = scaled_word(words.at('R'), 0.001, in.params.bit(config::param::kCalculatorDecimal));
     if (in.params.bit(config::param::kRotationIncremental) &&
         in.modal.distance == Distance::kIncremental) {
-      angle += in.frame().rotating ? in.rotation_angle : 0.0;
+      angle += in.frame().rotating ? in.frame_codes.rotation_angle : 0.0;
     }
   }
   next.rotating = true;
   next.angle_deg = angle;
   next.rotation_center = {c[0], c[1]};
-  in.rotation_angle = angle;
+  in.frame_codes.rotation_angle = angle;
   return {};
 }
 
@@ -297,7 +297,7 @@ Flow<void> Interpreter::Impl::frame_targets(const Words& words, AxisVec& target,
   for (std::size_t i = 0; i < 3; ++i) {
     named[i] = xyz[i] >= 0 && words.has("XYZ"[i]);
   }
-  if (polar && modal.plane == PlaneSel::kXY && (named[0] || named[1])) {
+  if (frame_codes.polar && modal.plane == PlaneSel::kXY && (named[0] || named[1])) {
     // G16 (B-63944EN "Polar coordinate command"): X is the radius, Y the
     // angle. In G90 the centre is the work origin; in G91 the present
     // position, with the angle added to the last one.
@@ -305,9 +305,8 @@ Flow<void> Interpreter::Impl::frame_targets(const Words& words, AxisVec& target,
         inc ? std::array<double, 2>{here[0], here[1]} : std::array<double, 2>{0.0, 0.0};
     const double r0 = inc ? 0.0 : std::hypot(here[0], here[1]);
     const double radius = named[0] ? word_length(words.at('X')) : r0;
-    const double a = named[1] ? word_length(words.at('Y')) : (inc ? 0.0 : polar_angle);
-    polar_angle = inc ? polar_angle + a : a;
-    const auto xy = xform::polar_to_xy(centre, radius, polar_angle);
+    const double a = named[1] ? word_length(words.at('Y')) : (inc ? 0.0 : frame_codes.polar_angle);
+    const auto xy = xform::polar_to_xy(centre, radius, frame_codes.next_polar_angle(a, inc));
     p[0] = xy[0];
     p[1] = xy[1];
     named[0] = named[1] = true;
