@@ -21,6 +21,10 @@
 //                    not simulated (pure parts in cycles.cpp, transform.cpp),
 //                    the block's commands through cutter compensation
 //   cutter_comp.cpp  cutter radius compensation C: the tool centre path
+// What one feature alone keeps is an object of its own, one member here or
+// in BlockState (docs/architecture.md, "Inside the interpreter"):
+// PrintChannel (DPRNT), ToolMeasurement (G37), ModalMacro (G66), LatheState,
+// FrameCodeState (G16, G68's angle).
 #pragma once
 
 #include <array>
