@@ -207,7 +207,8 @@ radius = 0.2
 }
 
 TEST(ProbeLength, ComesFromTheMachineFilesToolOffsetWhenTheSceneLeavesItOut) {
-  auto s = load_frames("[probe]\nsignal = \"SKIP\"\ntool = 20\nball_radius = 1\nmax_overtravel = 1\n");
+  auto s =
+      load_frames("[probe]\nsignal = \"SKIP\"\ntool = 20\nball_radius = 1\nmax_overtravel = 1\n");
   ASSERT_TRUE(s) << s.error().detail;
   EXPECT_DOUBLE_EQ(s->probing.probe->length, 150.0);  // H20: 149.5 + wear 0.5
   auto other = load_frames(
@@ -215,7 +216,8 @@ TEST(ProbeLength, ComesFromTheMachineFilesToolOffsetWhenTheSceneLeavesItOut) {
       "max_overtravel = 1\n");
   ASSERT_TRUE(other) << other.error().detail;
   EXPECT_DOUBLE_EQ(other->probing.probe->length, 150.0);
-  auto none = load_frames("[probe]\nsignal = \"SKIP\"\ntool = 7\nball_radius = 1\nmax_overtravel = 1\n");
+  auto none =
+      load_frames("[probe]\nsignal = \"SKIP\"\ntool = 7\nball_radius = 1\nmax_overtravel = 1\n");
   ASSERT_TRUE(none);
   EXPECT_DOUBLE_EQ(none->probing.probe->length, 0.0);
   auto here = load_frames(

@@ -97,7 +97,8 @@ steps = [{ signal = "SKIP2", diameter = 50.2 }, { signal = "SKIP3", diameter = 5
 }
 
 TEST(SceneProbing, TheProbeIsInTheSpindleUnlessSaidOtherwise) {
-  auto s = load_scene("[probe]\nsignal = \"SKIP\"\ntool = 7\nball_radius = 1\nmax_overtravel = 1\n");
+  auto s =
+      load_scene("[probe]\nsignal = \"SKIP\"\ntool = 7\nball_radius = 1\nmax_overtravel = 1\n");
   ASSERT_TRUE(s) << s.error().detail;
   EXPECT_EQ(s->probing.spindle_tool, 7);
 }

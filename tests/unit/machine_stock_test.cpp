@@ -241,14 +241,17 @@ TEST(SceneStock, RefusesWhatCannotBe) {
       "[stock]\nframe = \"vise\"\nmin = [0, 0, -20]\nmax = [60, 40, 0]\n",
       5, 9);
   // More than 4 million cells: at the resolution.
-  expect_stock_error("[stock]\nmin = [0, 0, -20]\nmax = [1000, 1000, 0]\nresolution = 0.1\n", 4, 14);
-  expect_stock_error("[stock]\nmin = [-1e6, -1e6, -1]\nmax = [1e6, 1e6, 0]\nresolution = 0.001\n", 4);
-  expect_stock_error("[stock]\nmin = [0, 0, 0]\nmax = [10, 10, 0]\n", 3);                // no height
-  expect_stock_error("[stock]\nmin = [0, 0]\nmax = [10, 10, 5]\n", 2);                   // 2 numbers
+  expect_stock_error("[stock]\nmin = [0, 0, -20]\nmax = [1000, 1000, 0]\nresolution = 0.1\n", 4,
+                     14);
+  expect_stock_error("[stock]\nmin = [-1e6, -1e6, -1]\nmax = [1e6, 1e6, 0]\nresolution = 0.001\n",
+                     4);
+  expect_stock_error("[stock]\nmin = [0, 0, 0]\nmax = [10, 10, 0]\n", 3);  // no height
+  expect_stock_error("[stock]\nmin = [0, 0]\nmax = [10, 10, 5]\n", 2);     // 2 numbers
   expect_stock_error("[stock]\nmin = [0, 0, 0]\nmax = [1, 1, 1]\nresolution = 0\n", 4);  // too fine
   expect_stock_error("[stock]\nmin = [0, 0, 0]\nmax = [1, 1, 1]\nmaterial = \"steel\"\n", 4);
-  expect_stock_error("[stock]\nmax = [1, 1, 1]\n", 1);                     // no min
-  expect_stock_error("[[stock]]\nmin = [0, 0, 0]\nmax = [1, 1, 1]\n", 1);  // one table, not an array
+  expect_stock_error("[stock]\nmax = [1, 1, 1]\n", 1);  // no min
+  expect_stock_error("[[stock]]\nmin = [0, 0, 0]\nmax = [1, 1, 1]\n",
+                     1);  // one table, not an array
 }
 
 }  // namespace

@@ -128,8 +128,8 @@ TEST(PlotTruth, TheAlarmLineStaysInsideThePicture) {
 TEST(PlotTruth, ARunWithoutAProbeIsNotHeadedBallCentre) {
   const std::string prog = "G21 G90 G54\nT3 M06\nG43 H3 G0 X0 Y0 Z0\nG1 Z-5. F300.\nM30\n";
   TempDir dir;
-  const json no_probe =
-      read_truth_svg(dir, plot(dir, prog, "[[tool]]\nnumber = 3\nlength = 80.0\nradius = 5.0\n", {}, 0));
+  const json no_probe = read_truth_svg(
+      dir, plot(dir, prog, "[[tool]]\nnumber = 3\nlength = 80.0\nradius = 5.0\n", {}, 0));
   const std::string text = all_text(no_probe);
   EXPECT_NE(text.find("path of the tool tip"), std::string::npos) << text;
   EXPECT_EQ(text.find("ball centre"), std::string::npos) << text;
@@ -150,15 +150,15 @@ TEST(PlotTruth, G38MovesAreLabelledG38) {
       "[[trigger]]\nsignal = \"SKIP\"\naxis = \"Z\"\nat = -3.0\ndirection = \"decreasing\"\n";
   TempDir dir;
   const json lcnc = read_truth_svg(dir, plot(dir,
-                                       "G21 G90 G54\nG0 X0 Y0 Z0\nG38.2 Z-10. F100.\nG0 Z0\n"
-                                       "G38.3 Z-2. F100.\nM2\n",
-                                       scene, {"-d", "linuxcnc"}, 0));
+                                             "G21 G90 G54\nG0 X0 Y0 Z0\nG38.2 Z-10. F100.\nG0 Z0\n"
+                                             "G38.3 Z-2. F100.\nM2\n",
+                                             scene, {"-d", "linuxcnc"}, 0));
   const std::string text = all_text(lcnc);
   EXPECT_NE(text.find("probe move (G38.2, G38.3)"), std::string::npos) << text;
   EXPECT_EQ(text.find("G31"), std::string::npos) << text;
   TempDir dir2;
-  const json fanuc =
-      read_truth_svg(dir2, plot(dir2, "G21 G90 G54\nG0 X0 Y0 Z0\nG31 Z-10. F100.\nM30\n", scene, {}, 0));
+  const json fanuc = read_truth_svg(
+      dir2, plot(dir2, "G21 G90 G54\nG0 X0 Y0 Z0\nG31 Z-10. F100.\nM30\n", scene, {}, 0));
   EXPECT_NE(all_text(fanuc).find("skip move (G31)"), std::string::npos);
 }
 
@@ -207,11 +207,11 @@ TEST(PlotTruth, LabelsInTheSideViewsDoNotStack) {
   }
   prog += "G0 Z0\nM30\n";
   TempDir dir;
-  const json s =
-      read_truth_svg(dir, plot(dir, prog,
-                         "[[trigger]]\nsignal = \"SKIP\"\naxis = \"Z\"\nat = -3.0\ndirection = "
-                         "\"decreasing\"\n",
-                         {}, 0));
+  const json s = read_truth_svg(
+      dir, plot(dir, prog,
+                "[[trigger]]\nsignal = \"SKIP\"\naxis = \"Z\"\nat = -3.0\ndirection = "
+                "\"decreasing\"\n",
+                {}, 0));
   for (const auto& [id, v] : s["views"].items()) {
     const auto f = v["frame"].get<std::vector<double>>();
     const auto& labels = v["labels"];
