@@ -46,6 +46,7 @@
 #include "gcode/source.hpp"
 #include "interpreter/block_state.hpp"
 #include "interpreter/codes.hpp"
+#include "interpreter/control_vars.hpp"
 #include "interpreter/cutter_comp.hpp"
 #include "interpreter/cycles.hpp"
 #include "interpreter/flow.hpp"
@@ -222,10 +223,8 @@ struct Interpreter::Impl : BlockState, OffsetTables {
   std::uint32_t skip_missed_line = 0;
   std::int64_t statements = 0;
   std::int64_t parts_required = 0;
-  double timer_ms_base = 0.0;           // #3001 = time - base
-  double timer_h_base = 0.0;            // #3002
-  std::array<Value, 3> control_vars{};  // #3003 #3004 #3005
-  bool nat = false;                     // 6004#0 NAT: signed ranges of ATAN / ASIN
+  ControlVariables control_vars;  // #3001-#3005 (control_vars.hpp)
+  bool nat = false;               // 6004#0 NAT: signed ranges of ATAN / ASIN
   gcode::ParseLimits parse_limits;
   // ROUND inside an address word rounds to this increment (0: to a whole
   // number, as in a macro statement). Set while a word is evaluated.

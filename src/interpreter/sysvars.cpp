@@ -326,11 +326,11 @@ Value Interpreter::Impl::read_modal(const sysvar::Range& r, int i) const {
 Value Interpreter::Impl::read_control(const sysvar::Range& r, int n) const {
   switch (r.id) {
     case sysvar::Id::kClockMs:
-      return Value::of(std::floor(last_sync.time_s * 1000.0 - timer_ms_base) + 0.0);
+      return control_vars.timer_ms(last_sync.time_s);
     case sysvar::Id::kClockHours:
-      return Value::of(last_sync.time_s / 3600.0 - timer_h_base + 0.0);
+      return control_vars.timer_h(last_sync.time_s);
     case sysvar::Id::kControl:
-      return control_vars[static_cast<std::size_t>(n - r.first)];
+      return control_vars.at(n - r.first);
     case sysvar::Id::kMirror:
       return Value::of(0.0);
     case sysvar::Id::kDate:
@@ -449,16 +449,16 @@ Flow<void> Interpreter::Impl::write_control(const sysvar::Range& r, int n, Value
       return {};
     }
     case sysvar::Id::kClockMs:
-      timer_ms_base = last_sync.time_s * 1000.0 - v.num();
+      control_vars.set_timer_ms(last_sync.time_s, v.num());
       return {};
     case sysvar::Id::kClockHours:
-      timer_h_base = last_sync.time_s / 3600.0 - v.num();
+      control_vars.set_timer_h(last_sync.time_s, v.num());
       return {};
     case sysvar::Id::kControl:
       // Single block / FIN wait (#3003), feed hold / override / exact stop
       // (#3004), settings (#3005): kept for reading back; the simulation
       // has no operator panel for them to act on.
-      control_vars[static_cast<std::size_t>(n - r.first)] = v;
+      control_vars.at(n - r.first) = v;
       return {};
     case sysvar::Id::kPartsDone:
       parts_count = std::llround(v.num());
