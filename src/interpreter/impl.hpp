@@ -56,6 +56,7 @@
 #include "interpreter/modal_macro.hpp"
 #include "interpreter/print_channel.hpp"
 #include "interpreter/program_store.hpp"
+#include "interpreter/skip_results.hpp"
 #include "interpreter/skip_rules.hpp"
 #include "interpreter/tool_measure.hpp"
 #include "interpreter/transform.hpp"
@@ -196,9 +197,7 @@ struct Interpreter::Impl : BlockState, OffsetTables {
   // otherwise. Offsets (work, G50/G92, G52, T) are kept in program values.
   std::array<double, kMaxAxes> axis_scale{};
   VariableStore vars;
-  AxisVec skip_work;  // #5061.. (program units)
-  AxisVec skip_machine;
-  bool have_skip = false;
+  SkipResults skip_result;  // the last skip's latch, #5061.. (skip_results.hpp)
   SyncState last_sync;
   std::vector<std::string> messages;
   // Keeps an operator message for the report; past limits.max_message_bytes

@@ -274,7 +274,7 @@ Flow<void> Rs274ngc::write_named(Impl& im, const std::string& name, Value v, Sou
 
 // #5061-#5070 (the latch in the block's work coordinates) and the probe log.
 void Rs274ngc::store_probe(Impl& im, const AxisVec&, bool triggered) {
-  store_probe_params(im, im.skip_work, triggered);
+  store_probe_params(im, im.skip_result.work, triggered);
   probe_log(im);
 }
 

@@ -177,20 +177,20 @@ Flow<Step> Interpreter::Impl::queue_skip(const canon::Skip& sk, SourceLoc at, Co
 AxisVec Interpreter::Impl::record_skip(const SyncState& s) {
   const PendingSkip& ps = pending_skip;
   const AxisVec latch = s.triggered ? s.latch_machine : ps.target;
-  skip_machine = latch;
+  skip_result.machine = latch;
   // Controls that count in whole increments store the increment nearest
   // the latch (skip_position_increment); the report shows the same number.
   const double inc = modal.units == Units::kInch ? 0.0001 : 0.001;
   for (int i = 0; i < axis_count; ++i) {
     const double v = position_var(i, latch[i], dialect.sw.skip_tool_offsets);
-    skip_work[i] = dialect.sw.skip_position_increment ? std::round(v / inc) * inc + 0.0 : v;
+    skip_result.work[i] = dialect.sw.skip_position_increment ? std::round(v / inc) * inc + 0.0 : v;
   }
-  have_skip = true;
+  skip_result.have = true;
   pos = s.machine_position;
   SkipRecord rec = ps.record;
   rec.triggered = s.triggered;
   rec.time_s = s.time_s;
-  rec.position = skip_work;
+  rec.position = skip_result.work;
   rec.position_has_tool_offsets = dialect.sw.skip_tool_offsets;
   rec.machine_position = latch;
   // Machine lock / Z-axis cancel: #5061.. store the command at the signal
@@ -242,7 +242,7 @@ Flow<void> Interpreter::Impl::finish_skip(const SyncState& s) {
                        Value::of(latch[i] * axis_scale[static_cast<std::size_t>(i)] / unit_mm()));
       }
       if (!sv.named_local.empty()) {
-        vars.set_named(upper(sv.named_local + axis), Value::of(skip_work[i]));
+        vars.set_named(upper(sv.named_local + axis), Value::of(skip_result.work[i]));
       }
     }
   }

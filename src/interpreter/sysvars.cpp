@@ -269,7 +269,7 @@ Flow<Value> Interpreter::Impl::read_position(const sysvar::Range& r, int i, Sour
                       where);
         SKIPNC_TRY(w);
       }
-      v = have_skip ? skip_work[i] : 0.0;
+      v = skip_result.work_or_zero(i);
       break;
     }
     case sysvar::Id::kLengthOffset:
