@@ -40,7 +40,7 @@ Flow<Step> Interpreter::Impl::commit_call(const BlockPlan& plan) {
     SKIPNC_TRY(c);
     return Step::kContinue;
   }
-  g66.set(plan.call_program, call_args);
+  g66.set(plan.call_program, call_args.values);
   modal.modal_macro = true;
   return Step::kContinue;
 }

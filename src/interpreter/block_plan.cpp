@@ -111,7 +111,7 @@ Flow<void> Interpreter::Impl::plan_one_shot(const CodeDef& def, std::uint32_t co
 // G65/G66 block: G, P and L are its own words, every other one an argument.
 Flow<void> Interpreter::Impl::plan_call(const Words& words, BlockPlan& plan) {
   const SourceLoc at = loc(cur_col);
-  if (!call_block) {
+  if (!call_args.in_block) {
     return fail(AlarmId::kMacroFormat, "G65/G66 must be written as a number (G65, not G#i)", at);
   }
   for (int i = 0; i < words.g_count; ++i) {

@@ -45,6 +45,7 @@
 #include "gcode/parser.hpp"
 #include "gcode/source.hpp"
 #include "interpreter/block_state.hpp"
+#include "interpreter/call_args.hpp"
 #include "interpreter/codes.hpp"
 #include "interpreter/control_vars.hpp"
 #include "interpreter/cutter_comp.hpp"
@@ -228,10 +229,8 @@ struct Interpreter::Impl : BlockState, OffsetTables {
   // ROUND inside an address word rounds to this increment (0: to a whole
   // number, as in a macro statement). Set while a word is evaluated.
   double word_round_increment = 0.0;
-  // Arguments of the G65/G66 block being executed (#1-#33), in block order.
-  std::array<Value, kLocalCount + 1> call_args{};
-  bool call_block = false;
-  ModalMacro g66;  // the G66 macro the moving blocks call (modal_macro.hpp)
+  CallArguments call_args;  // the G65/G66 block being executed (call_args.hpp)
+  ModalMacro g66;           // the G66 macro the moving blocks call (modal_macro.hpp)
   // DPRNT: lines between POPEN and PCLOS, written whole at the end of the
   // run (print_channel.hpp).
   PrintChannel print{setup.dprnt_path, mc.limits.max_dprnt_bytes};

@@ -187,13 +187,13 @@ Flow<void> Interpreter::Impl::collect_argument(const gcode::Word& w, const WordV
   const bool length = axis_of_letter[static_cast<std::size_t>(c - 'A')] >= 0 ||
                       std::strchr("IJKQRUVWXYZ", c) != nullptr;
   const double x = length ? word_length(v) : v.value;
-  call_args[static_cast<std::size_t>(var)] = Value::of(x);
+  call_args.set(var, x);
   return {};
 }
 
 Flow<void> Interpreter::Impl::macro_call(std::int64_t program, int repeats, bool modal_call,
                                          SourceLoc where) {
-  const std::array<Value, kLocalCount + 1> args = modal_call ? g66.args : call_args;
+  const std::array<Value, kLocalCount + 1> args = modal_call ? g66.args : call_args.values;
   auto c = call(program, repeats, true, where, modal_call);
   if (!c) return c;
   programs.frames.back().modal_call = modal_call;

@@ -27,11 +27,10 @@ namespace skipnc::interp {
 // G, P and L is a macro argument (see collect_argument); elsewhere an
 // address may appear once.
 Flow<void> Interpreter::Impl::collect_words(Words& words) {
-  call_block = false;
+  call_args.in_block = false;
   for (const gcode::Word& w : blk.words) {
     if (w.letter == 'G' && !w.is_expr && (w.value == 65.0 || w.value == 66.0)) {
-      call_block = true;
-      call_args.fill(Value::null());
+      call_args.begin();
       break;
     }
   }
@@ -61,13 +60,13 @@ Flow<void> Interpreter::Impl::collect_words(Words& words) {
       // A computed length is rounded to the address's least input increment,
       // as the control does (#1 = 12.3456, X#1 -> X12.346); macro arguments
       // keep their value.
-      if (length && !call_block && lang->rules.round_computed_words) {
+      if (length && !call_args.in_block && lang->rules.round_computed_words) {
         v.value = std::round(v.value / word_inc) * word_inc + 0.0;
       }
     } else {
       v.value = w.value;
     }
-    if (call_block && w.letter != 'G' && w.letter != 'P' && w.letter != 'L') {
+    if (call_args.in_block && w.letter != 'G' && w.letter != 'P' && w.letter != 'L') {
       auto a = collect_argument(w, v, ijk_set, ijk_last);
       if (!a) return a;
       continue;
