@@ -47,6 +47,7 @@
 #include "interpreter/block_state.hpp"
 #include "interpreter/call_args.hpp"
 #include "interpreter/codes.hpp"
+#include "interpreter/comp_stage.hpp"
 #include "interpreter/control_vars.hpp"
 #include "interpreter/cutter_comp.hpp"
 #include "interpreter/cycles.hpp"
@@ -406,8 +407,7 @@ struct Interpreter::Impl : BlockState, OffsetTables {
   Flow<void> frame_targets(const Words& words, AxisVec& target, AxisMask& moved);
   // Cutter radius compensation (cutter_comp.hpp): the block's commands go
   // through the compensator when G41/G42 is active or a vector is left.
-  crc::Compensator comp;
-  std::vector<canon::Stamped> comp_out;  // reused
+  CompStage comp;  // the compensator and its output buffer (comp_stage.hpp)
   Flow<crc::BlockMode> comp_mode(const BlockPlan& plan) const;
   Flow<void> check_feeds(const AxisVec& start);  // warning feed_clamped
   Flow<void> pass_block(const BlockPlan& plan, const AxisVec& start, CommandSink& out);

@@ -442,12 +442,12 @@ Flow<void> Interpreter::Impl::pass_block(const BlockPlan& plan, const AxisVec& s
   }
   auto mode = comp_mode(plan);
   SKIPNC_TRY(mode);
-  if (comp.idle()) comp.begin(start);
+  if (comp.idle()) comp.state.begin(start);
   // The block is a transaction: the compensator is changed only when the
   // whole block has gone through it.
-  crc::Compensator next = comp;
-  comp_out.clear();
-  auto r = next.block(block_buffer.cmds, *mode, comp_out);
+  crc::Compensator next = comp.state;
+  comp.out.clear();
+  auto r = next.block(block_buffer.cmds, *mode, comp.out);
   if (!r) {
     Error e = r.error();
     if (e.loc.line == 0) e.loc = loc(cur_col);
@@ -463,8 +463,8 @@ Flow<void> Interpreter::Impl::pass_block(const BlockPlan& plan, const AxisVec& s
                   loc(cur_col));
     if (!w) return w;
   }
-  comp = std::move(next);
-  for (const canon::Stamped& c : comp_out) out.emit(c);
+  comp.state = std::move(next);
+  for (const canon::Stamped& c : comp.out) out.emit(c);
   return {};
 }
 
@@ -472,10 +472,7 @@ Flow<void> Interpreter::Impl::pass_block(const BlockPlan& plan, const AxisVec& s
 // what the compensator holds goes out, the held move ending perpendicular.
 std::uint32_t Interpreter::Impl::flush_comp(CommandSink& out) {
   if (comp.idle()) return 0;
-  comp_out.clear();
-  const std::uint32_t held = comp.flush(comp_out);
-  for (const canon::Stamped& c : comp_out) out.emit(c);
-  return held;
+  return comp.flush(out);
 }
 
 Flow<void> Interpreter::Impl::refuse_under_comp(const char* what, SourceLoc where) const {
