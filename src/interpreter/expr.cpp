@@ -311,7 +311,8 @@ struct MacroBRules {
   static double fup(double x) noexcept { return x >= 0 ? std::ceil(x) : std::floor(x); }
   // 6004#0 and the increments of address words.
   static FuncContext context(const Interpreter::Impl& im) noexcept {
-    return FuncContext{im.nat, im.word_round_increment, im.modal.units == Units::kInch};
+    return FuncContext{im.functions.nat, im.functions.word_round_increment,
+                       im.modal.units == Units::kInch};
   }
   [[gnu::always_inline]] static std::optional<Fault> binary(gcode::Op op, Value a, Value b,
                                                             double& r) noexcept {

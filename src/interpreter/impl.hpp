@@ -52,6 +52,7 @@
 #include "interpreter/cutter_comp.hpp"
 #include "interpreter/cycles.hpp"
 #include "interpreter/flow.hpp"
+#include "interpreter/func_settings.hpp"
 #include "interpreter/interpreter.hpp"
 #include "interpreter/journal.hpp"
 #include "interpreter/language.hpp"
@@ -225,13 +226,10 @@ struct Interpreter::Impl : BlockState, OffsetTables {
   std::int64_t statements = 0;
   std::int64_t parts_required = 0;
   ControlVariables control_vars;  // #3001-#3005 (control_vars.hpp)
-  bool nat = false;               // 6004#0 NAT: signed ranges of ATAN / ASIN
   gcode::ParseLimits parse_limits;
-  // ROUND inside an address word rounds to this increment (0: to a whole
-  // number, as in a macro statement). Set while a word is evaluated.
-  double word_round_increment = 0.0;
-  CallArguments call_args;  // the G65/G66 block being executed (call_args.hpp)
-  ModalMacro g66;           // the G66 macro the moving blocks call (modal_macro.hpp)
+  FunctionSettings functions;  // 6004#0 NAT, ROUND in a word (func_settings.hpp)
+  CallArguments call_args;     // the G65/G66 block being executed (call_args.hpp)
+  ModalMacro g66;              // the G66 macro the moving blocks call (modal_macro.hpp)
   // DPRNT: lines between POPEN and PCLOS, written whole at the end of the
   // run (print_channel.hpp).
   PrintChannel print{setup.dprnt_path, mc.limits.max_dprnt_bytes};

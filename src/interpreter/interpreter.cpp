@@ -69,7 +69,7 @@ void Interpreter::Impl::init_tables() {
   parse_limits.syntax = lang->rules.syntax;
   parse_limits.slash_comments = dialect.sw.slash_comments;
   parse_limits.conditional_m99 = dialect.sw.conditional_m99;
-  nat = params.bit(config::param::kSignedArcFunctions);
+  functions.nat = params.bit(config::param::kSignedArcFunctions);
   tools.assign(static_cast<std::size_t>(mc.tool_offset_count) + 1, config::ToolOffset{});
   for (const auto& [n, t] : mc.tool_offsets) tools.setup()[static_cast<std::size_t>(n)] = t;
   modal.units = mc.inch_machine ? Units::kInch : Units::kMetric;

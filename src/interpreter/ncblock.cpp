@@ -47,9 +47,9 @@ Flow<void> Interpreter::Impl::collect_words(Words& words) {
                           (mc.lathe() && (w.letter == 'U' || w.letter == 'W')) || w.letter == 'I' ||
                           w.letter == 'J' || w.letter == 'K' || w.letter == 'R' || w.letter == 'Q';
       const double word_inc = modal.units == Units::kInch ? 0.0001 : 0.001;
-      word_round_increment = length ? word_inc : 0.0;
+      functions.word_round_increment = length ? word_inc : 0.0;
       auto e = eval(w.expr);
-      word_round_increment = 0.0;
+      functions.word_round_increment = 0.0;
       SKIPNC_TRY(e);
       if (e->vacant) continue;  // a vacant variable in a word: the word is omitted
       if (!std::isfinite(e->v)) {
