@@ -351,7 +351,7 @@ Flow<Step> Interpreter::Impl::commit_block(const Words& words, const BlockPlan& 
     SKIPNC_TRY(lang->state_codes(*this, words, before, loc(cur_col)));  // ngc_room.cpp
   }
   if (plan.mill.polar) frame_codes.polar = *plan.mill.polar;
-  skip_step = plan.mill.skip_step;
+  skip_state.step = plan.mill.skip_step;
   commit_cycle_start(before);
   bool moved = false;
   auto mill = commit_mill(words, plan, out, moved);

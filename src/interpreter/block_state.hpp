@@ -18,6 +18,7 @@
 #include "interpreter/frame_codes.hpp"
 #include "interpreter/lathe.hpp"
 #include "interpreter/modal.hpp"
+#include "interpreter/skip_state.hpp"
 #include "interpreter/transform.hpp"
 
 namespace skipnc::interp {
@@ -30,21 +31,16 @@ struct BlockState {
   AxisVec pos;                 // commanded machine position, mm
   double length_offset = 0.0;  // active tool length offset (mm), on length_axis
   LatheState lathe_state;      // the T code's wear offset, G90's Z (lathe.hpp)
-  double last_cut_feed = 0.0;  // F of the last non-rapid move (program units), CompassNC G31
+  SkipBlockState skip_state;   // G31.n, the last cutting feed (skip_state.hpp)
   double last_e = 0.0;         // #4108
 
   Pending pending = Pending::kNone;
   bool motion_since_sync = false;
   bool ended = false;
-  // The last skip ran to its end point without a signal and #5061.. has not
-  // been read since (warning skip_missed_read).
-  bool skip_missed_unread = false;
-  // The G31.n of the block being executed (0: G31 or no skip), for skip_block.
-  int skip_step = 0;
-  std::int64_t parts_count = 0;
   // G103 Pn (Haas): the look-ahead limit the program set, 0: none. Not
   // applied to the planner (docs/skip-dialects.md#haas).
   int lookahead_limit = 0;
+  std::int64_t parts_count = 0;
   // The operator messages' text kept (limits.max_message_bytes), and
   // whether the later ones were dropped (Impl::add_message).
   std::int64_t message_bytes = 0;
@@ -74,6 +70,7 @@ static_assert(std::is_trivially_copyable_v<BlockState>);
 static_assert(std::is_trivially_copyable_v<cycles::Data>);
 static_assert(std::is_trivially_copyable_v<LatheState>);
 static_assert(std::is_trivially_copyable_v<FrameCodeState>);
+static_assert(std::is_trivially_copyable_v<SkipBlockState>);
 static_assert(std::is_trivially_copyable_v<AxisShifts>);
 
 }  // namespace skipnc::interp

@@ -324,10 +324,10 @@ Flow<Step> Grbl::jog(Impl& im, CommandSink& out) {
   im.cur_words.g[static_cast<std::size_t>(im.cur_words.g_count)] = GCode(1);  // the jog is a G1
   im.cur_words.g_col[static_cast<std::size_t>(im.cur_words.g_count++)] = im.blk.stmt.column;
   const ModalState kept = im.modal;
-  const double kept_cut_feed = im.last_cut_feed;
+  const double kept_cut_feed = im.skip_state.last_cut_feed;
   auto r = im.execute_nc(im.cur_words, out);
   im.modal = kept;
-  im.last_cut_feed = kept_cut_feed;
+  im.skip_state.last_cut_feed = kept_cut_feed;
   return r;
 }
 

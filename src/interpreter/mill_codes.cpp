@@ -777,7 +777,7 @@ Flow<Step> Interpreter::Impl::canned_cycle(const Words& words, CommandSink& out)
     // Other axes of the block (A, B, ...) are positioned with X and Y.
     emit_hole(*this, *h, target, out);
   }
-  last_cut_feed = modal.feed;
+  skip_state.last_cut_feed = modal.feed;
   return Step::kContinue;
 }
 

@@ -106,7 +106,7 @@ Flow<Step> Interpreter::Impl::motion(const Words& words, CommandSink& out, bool 
     SKIPNC_TRY(s);
   }
   if (skip) return skip_block(words, target, moved, out);
-  if (modal.motion != Motion::kRapid) last_cut_feed = modal.feed;
+  if (modal.motion != Motion::kRapid) skip_state.last_cut_feed = modal.feed;
   const bool exact = modal.path == PathMode::kExactStop || words.has_g(GCode(9));
   switch (modal.motion) {
     case Motion::kRapid:

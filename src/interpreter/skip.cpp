@@ -67,7 +67,7 @@ skip_rules::BlockWords Interpreter::Impl::skip_words(const Words& words, AxisMas
   if (words.has('F')) b.f_mm_per_min = feed_to_mm_per_min(words.at('F').value);
   b.g53 = words.has_g(GCode(53));
   b.moved = moved;
-  b.step = skip_step;
+  b.step = skip_state.step;
   b.at = at;
   return b;
 }
@@ -128,12 +128,12 @@ Flow<Step> Interpreter::Impl::skip_block(const Words& words, const AxisVec& targ
   sk.target = target;
   SKIPNC_TRY(skip_inputs(b, *form, sk.spec));
 
-  const skip_rules::FeedState fs{feed_mm_per_min(), feed_to_mm_per_min(last_cut_feed),
+  const skip_rules::FeedState fs{feed_mm_per_min(), feed_to_mm_per_min(skip_state.last_cut_feed),
                                  mc.inch_machine};
   auto feed = skip_rules::feed(b, fs, sw, params);
   SKIPNC_TRY(feed);
   sk.feed_mm_per_min = *feed;
-  if (words.has('F') && skip_rules::block_f_is_modal(sw)) last_cut_feed = modal.feed;
+  if (words.has('F') && skip_rules::block_f_is_modal(sw)) skip_state.last_cut_feed = modal.feed;
 
   auto k = skip_rules::alarm_on_miss(b, sw, params);
   SKIPNC_TRY(k);
@@ -211,7 +211,7 @@ AxisVec Interpreter::Impl::record_skip(const SyncState& s) {
   }
   skips.push_back(rec);
   // A miss stores the end point: reading it as a touch is worth a warning.
-  skip_missed_unread = !s.triggered && !g37.active() && !s.no_machine;
+  skip_state.missed_unread = !s.triggered && !g37.active() && !s.no_machine;
   skip_missed_line = rec.line;
   return latch;
 }

@@ -256,11 +256,11 @@ Flow<Value> Interpreter::Impl::read_position(const sysvar::Range& r, int i, Sour
       // against the end point #5001..) is the program checking for a miss,
       // the protected-move idiom: no warning, and later reads are after
       // the check.
-      if (skip_missed_unread && where.line != 0 && block_checks_skip(raw.text)) {
-        skip_missed_unread = false;
+      if (skip_state.missed_unread && where.line != 0 && block_checks_skip(raw.text)) {
+        skip_state.missed_unread = false;
       }
-      if (skip_missed_unread && where.line != 0) {
-        skip_missed_unread = false;
+      if (skip_state.missed_unread && where.line != 0) {
+        skip_state.missed_unread = false;
         auto w = warn("skip_missed_read",
                       "#" + std::to_string(r.first + i) + " read after the skip of line " +
                           std::to_string(skip_missed_line) +
