@@ -314,9 +314,9 @@ void Interpreter::Impl::commit_cycle_start(const ModalState& before) {
 Flow<std::optional<Step>> Interpreter::Impl::commit_mill(const Words& words, const BlockPlan& plan,
                                                          CommandSink& out, bool& moved) {
   if (plan.mill.lookahead) {
-    auto r = set_lookahead(words);
-    SKIPNC_TRY(r);
-    emit(out, canon::LookAhead{lookahead_limit});
+    auto limit = lookahead_limit(words);
+    SKIPNC_TRY(limit);
+    emit(out, canon::LookAhead{*limit});
   }
   if (!plan.mill.no_effect.empty()) {
     auto w = warn("no_effect",

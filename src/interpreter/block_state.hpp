@@ -37,9 +37,6 @@ struct BlockState {
   Pending pending = Pending::kNone;
   bool motion_since_sync = false;
   bool ended = false;
-  // G103 Pn (Haas): the look-ahead limit the program set, 0: none. Not
-  // applied to the planner (docs/skip-dialects.md#haas).
-  int lookahead_limit = 0;
   std::int64_t parts_count = 0;
   // The operator messages' text kept (limits.max_message_bytes), and
   // whether the later ones were dropped (Impl::add_message).

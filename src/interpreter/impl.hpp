@@ -357,7 +357,7 @@ struct Interpreter::Impl : BlockState, OffsetTables {
   Flow<void> commit_shift(const Words& words, bool local);
   void commit_tool_pos_offset(const Words& words, int g);
   void commit_cycle_start(const ModalState& before);
-  Flow<void> set_lookahead(const Words& words);  // G103
+  Flow<int> lookahead_limit(const Words& words) const;  // G103
   Flow<std::optional<Step>> commit_mill(const Words& words, const BlockPlan& plan, CommandSink& out,
                                         bool& moved);
   Flow<Step> commit_action(const Words& words, const BlockPlan& plan, CommandSink& out,

@@ -112,23 +112,20 @@ Flow<bool> Interpreter::Impl::mill_code(const CodeDef& def, SourceLoc at, MillRe
 }
 
 // G103 Pn (Haas "G103 Limit Block Buffering"): look-ahead limited to n
-// blocks, 0-15; G103 alone or P0: no limit. Kept (#4xxx have no place for
-// it) and sent to the planner (canon::LookAhead: the motion may know n
-// moves beyond the one running). What it changes for a probing macro (the
-// expressions evaluated in step with the motion), skipnc does at every block.
-Flow<void> Interpreter::Impl::set_lookahead(const Words& words) {
-  if (!words.has('P')) {
-    lookahead_limit = 0;
-    return {};
-  }
+// blocks, 0-15; G103 alone or P0: no limit. Sent to the planner
+// (canon::LookAhead: the motion may know n moves beyond the one running);
+// nothing else reads it (#4xxx have no place for it), so it is not kept.
+// What it changes for a probing macro (the expressions evaluated in step
+// with the motion), skipnc does at every block.
+Flow<int> Interpreter::Impl::lookahead_limit(const Words& words) const {
+  if (!words.has('P')) return 0;
   const WordVal& p = words.at('P');
   if (p.value != std::trunc(p.value) || p.value < 0 || p.value > 15) {
     return fail(AlarmId::kBadValue,
                 "G103 P" + fmt::format("{}", p.value) + ": the look-ahead limit is 0 to 15 blocks",
                 loc(p.column));
   }
-  lookahead_limit = static_cast<int>(p.value);
-  return {};
+  return static_cast<int>(p.value);
 }
 
 namespace {
