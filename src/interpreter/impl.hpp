@@ -23,8 +23,12 @@
 //   cutter_comp.cpp  cutter radius compensation C: the tool centre path
 // What one feature alone keeps is an object of its own, one member here or
 // in BlockState (docs/architecture.md, "Inside the interpreter"):
-// PrintChannel (DPRNT), ToolMeasurement (G37), ModalMacro (G66), LatheState,
-// FrameCodeState (G16, G68's angle).
+// PrintChannel (DPRNT), ToolMeasurement (G37), ModalMacro (G66),
+// CallArguments (G65/G66 arguments), SkipResults (the last latch, #5061..),
+// ControlVariables (#3001-#3005), FunctionSettings (NAT, ROUND in a word),
+// CompStage (cutter compensation); in BlockState LatheState, FrameCodeState
+// (G16, G68's angle), SkipBlockState (G31.n, the last cutting feed) and
+// cycles::Data (canned cycles).
 #pragma once
 
 #include <array>
