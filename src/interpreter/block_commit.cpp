@@ -48,7 +48,6 @@ Flow<Step> Interpreter::Impl::commit_call(const BlockPlan& plan) {
 // F S T D and the modal groups. From here on the block's words are read in
 // its own modes (G20/G21, G90/G91, G54...).
 void Interpreter::Impl::commit_modal(const Words& words, const BlockPlan& plan, CommandSink& out) {
-  if (words.has('E')) last_e = words.at('E').value;
   // A new speed keeps the direction: M03/M04/M05 of the block follow it.
   if (words.has('S') && !mc.lathe()) {
     emit(out, canon::Spindle{plan.next.spindle, modal.spindle_dir});
@@ -63,6 +62,7 @@ void Interpreter::Impl::commit_modal(const Words& words, const BlockPlan& plan, 
   }
   modal = plan.next;
   modal.seq = seq;
+  if (words.has('E')) modal.e = words.at('E').value;
 }
 
 Flow<void> Interpreter::Impl::commit_tool(const Words& words, const ModalState& before,

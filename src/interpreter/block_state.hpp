@@ -32,7 +32,6 @@ struct BlockState {
   double length_offset = 0.0;  // active tool length offset (mm), on length_axis
   LatheState lathe_state;      // the T code's wear offset, G90's Z (lathe.hpp)
   SkipBlockState skip_state;   // G31.n, the last cutting feed (skip_state.hpp)
-  double last_e = 0.0;         // #4108
 
   Pending pending = Pending::kNone;
   bool motion_since_sync = false;

@@ -57,6 +57,7 @@ struct ModalState {
   bool modal_macro = false;  // G66 active
   double feed = 0.0;         // F, program units per minute (mm/min or inch/min)
   double spindle = 0.0;      // S: rpm (G97) or surface speed (G96)
+  double e = 0.0;            // the last E word, #4108 (modal information)
   SpindleMode spindle_mode = SpindleMode::kRpm;
   int spindle_dir = 0;             // 1 = M03, -1 = M04, 0 = stopped (M05)
   double spindle_clamp_rpm = 0.0;  // G50 S: the G96 speed limit (0: none)

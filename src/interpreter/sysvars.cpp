@@ -301,7 +301,7 @@ Value Interpreter::Impl::read_modal(const sysvar::Range& r, int i) const {
     case sysvar::Id::kModalD:
       return Value::of(modal.d);
     case sysvar::Id::kModalE:
-      return Value::of(last_e);
+      return Value::of(modal.e);
     case sysvar::Id::kModalF:
       return Value::of(modal.feed);
     case sysvar::Id::kModalH:
