@@ -11,11 +11,11 @@
 #include <sstream>
 
 #include "core/file.hpp"
+#include "machine/geometry_math.hpp"
 
 namespace skipnc::machine::geo {
 namespace {
 
-constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr std::uint32_t kLeafSize = 4;  // triangles per leaf of the hierarchy
 constexpr int kStackDepth = 64;         // deeper than any tree of 2^32 triangles
 // A triangle with less area than this (mm^2) has no normal: dropped.
@@ -25,23 +25,6 @@ constexpr std::uint64_t kMaxTriangles = 50'000'000;
 
 Vec3 cross(Vec3 a, Vec3 b) noexcept {
   return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
-}
-
-// Roots of a t^2 + b t + c = 0, smaller first (as geometry.cpp solves them).
-bool quadratic(double a, double b, double c, double& t1, double& t2) noexcept {
-  if (a == 0.0) return false;
-  const double disc = b * b - 4.0 * a * c;
-  if (disc < 0.0) return false;
-  const double s = std::sqrt(disc);
-  const double q = -0.5 * (b + (b >= 0.0 ? s : -s));
-  if (q == 0.0) {
-    t1 = t2 = 0.0;
-    return true;
-  }
-  t1 = q / a;
-  t2 = c / q;
-  if (t1 > t2) std::swap(t1, t2);
-  return true;
 }
 
 // The point of triangle t closest to p (Ericson, Real-Time Collision
@@ -81,12 +64,9 @@ bool boxes_overlap(const Aabb& a, const Aabb& b) noexcept {
 // from farther away: face, then edges, then corners; the earliest wins.
 bool triangle_contact(const Triangle& tr, Vec3 a, Vec3 b, double r, double& t_out,
                       Vec3& point) noexcept {
-  const Vec3 w = b - a;
   double best = kInf;
   // Face: from its outer side only.
-  const double s0 = dot(a - tr.a, tr.n), s1 = dot(b - tr.a, tr.n);
-  if (s0 >= r && s1 <= r && s1 < s0) {
-    const double t = (s0 - r) / (s0 - s1);
+  if (double t = 0.0; plane_root(tr.a, tr.n, a, b, r, t)) {
     const Vec3 q = lerp(a, b, t) - tr.n * r;
     // Inside the triangle: on the inner side of each edge.
     const Vec3 e[3] = {tr.b - tr.a, tr.c - tr.b, tr.a - tr.c};
@@ -105,22 +85,14 @@ bool triangle_contact(const Triangle& tr, Vec3 a, Vec3 b, double r, double& t_ou
     const double len = length(e0);
     if (len == 0.0) continue;
     const Vec3 e = e0 * (1.0 / len);
-    const Vec3 m = a - p;
-    const Vec3 mp = m - e * dot(m, e), wp = w - e * dot(w, e);
-    double t1 = 0.0, t2 = 0.0;
-    if (quadratic(dot(wp, wp), 2.0 * dot(mp, wp), dot(mp, mp) - r * r, t1, t2) && t1 >= 0.0 &&
-        t1 <= 1.0 && t1 < best) {
-      const double s = dot(lerp(a, b, t1) - p, e);
-      if (s >= 0.0 && s <= len) {
-        best = t1;
-        point = p + e * s;
-      }
+    double t = 0.0, s = 0.0;
+    if (line_root(p, e, len, a, b, r, t, s) && t < best) {
+      best = t;
+      point = p + e * s;
     }
     // Its first corner (each corner is the first of one edge).
-    const double qa = dot(w, w);
-    if (quadratic(qa, 2.0 * dot(m, w), dot(m, m) - r * r, t1, t2) && t1 >= 0.0 && t1 <= 1.0 &&
-        t1 < best) {
-      best = t1;
+    if (point_root(p, a, b, r, t) && t < best) {
+      best = t;
       point = p;
     }
   }

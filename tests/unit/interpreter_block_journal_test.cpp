@@ -14,40 +14,13 @@
 #include "interpreter/interpreter.hpp"
 #include "interpreter/journal.hpp"
 #include "interpreter/variables.hpp"
+#include "support/interp_mill.hpp"
 
 namespace skipnc::interp {
 namespace {
 
-class Collect final : public CommandSink {
- public:
-  void emit(const canon::Stamped& c) override { cmds.push_back(c); }
-  std::vector<canon::Stamped> cmds;
-};
-
-struct Mill {
-  config::MachineConfig machine;
-  config::Dialect dialect;
-  std::unique_ptr<config::Parameters> params;
-  bool strict = false;
-  explicit Mill(const std::string& name = "fanuc") {
-    machine = *config::builtin_machine("mill3");
-    dialect = *config::builtin_dialect(name);
-    machine.dialect = name;
-    params = std::make_unique<config::Parameters>(&dialect);
-  }
-  std::unique_ptr<Interpreter> start(const std::string& program) const {
-    Setup s;
-    s.machine = &machine;
-    s.dialect = &dialect;
-    s.params = params.get();
-    s.program_text = program;
-    s.program_name = "journal.nc";
-    s.strict = strict;
-    auto in = Interpreter::create(s, AxisVec{});
-    EXPECT_TRUE(in.has_value());
-    return in ? std::move(*in) : nullptr;
-  }
-};
+using test::Collect;
+using test::Mill;
 
 // Runs the program to its end, going on with the next block after an
 // alarm (as a caller of the interpreter may); the alarms in order.

@@ -14,38 +14,13 @@
 #include "config/dialect.hpp"
 #include "config/machine_config.hpp"
 #include "interpreter/interpreter.hpp"
+#include "support/interp_mill.hpp"
 
 namespace skipnc::interp {
 namespace {
 
-class Collect final : public CommandSink {
- public:
-  void emit(const canon::Stamped& c) override { cmds.push_back(c); }
-  std::vector<canon::Stamped> cmds;
-};
-
-struct Mill {
-  config::MachineConfig machine;
-  config::Dialect dialect;
-  std::unique_ptr<config::Parameters> params;
-  Mill() {
-    machine = *config::builtin_machine("mill3");
-    dialect = *config::builtin_dialect("fanuc");
-    machine.dialect = "fanuc";
-    params = std::make_unique<config::Parameters>(&dialect);
-  }
-  std::unique_ptr<Interpreter> start(const std::string& program) const {
-    Setup s;
-    s.machine = &machine;
-    s.dialect = &dialect;
-    s.params = params.get();
-    s.program_text = program;
-    s.program_name = "sync.nc";
-    auto in = Interpreter::create(s, AxisVec{});
-    EXPECT_TRUE(in.has_value());
-    return in ? std::move(*in) : nullptr;
-  }
-};
+using test::Collect;
+using test::Mill;
 
 // Where a Feed command goes, machine coordinates (NaN when `c` is not one).
 double feed_target(const canon::Stamped& c, int axis) {
