@@ -124,16 +124,16 @@ inline constexpr int kWorkOffsetOldAxis1 = 2500;
 // read names a seventh (U V W): those slots name no axis.
 inline constexpr std::string_view kOffsetSlotLetters = "XYZABC";
 
-// The machine axis (an index into `axis_names`, the machine's axis letters
-// in order) that slot `slot` (0-based) of a work offset names: the slot-th
-// axis (by position) or the axis with the slot-th letter above (by letter);
-// -1 when the machine has no such axis.
-constexpr int offset_slot_axis(bool by_letter, std::string_view axis_names, int slot) noexcept {
+// The machine axis (0-based, in the machine's order) that slot `slot`
+// (0-based) of a work offset names: the slot-th axis of `axis_count` (by
+// position) or the axis with the slot-th letter above (by letter), which
+// `axis_of(letter)` finds (-1: none); -1 when the machine has no such axis.
+template <class AxisOf>
+constexpr int offset_slot_axis(bool by_letter, int axis_count, int slot, AxisOf axis_of) noexcept {
   if (slot < 0) return -1;
-  if (!by_letter) return slot < static_cast<int>(axis_names.size()) ? slot : -1;
+  if (!by_letter) return slot < axis_count ? slot : -1;
   if (slot >= static_cast<int>(kOffsetSlotLetters.size())) return -1;
-  const auto at = axis_names.find(kOffsetSlotLetters[static_cast<std::size_t>(slot)]);
-  return at == std::string_view::npos ? -1 : static_cast<int>(at);
+  return axis_of(kOffsetSlotLetters[static_cast<std::size_t>(slot)]);
 }
 
 // Blocks of numbers that are the control's own, written or not: a write to

@@ -61,14 +61,10 @@ void work_offset_var(const sysvar::Range& r, int n, int& set, int& axis) {
 
 // The machine axis a work offset's slot (0-based) names under the
 // dialect's numbering (offset_variables_by); -1: none.
-// (sysvar::offset_slot_axis, with the interpreter's letter table.)
 int offset_axis(const Interpreter::Impl& im, int slot) {
-  if (im.dialect.sw.offset_variables_by != config::OffsetVariables::kLetter) {
-    return slot < im.axis_count ? slot : -1;
-  }
-  if (slot >= static_cast<int>(sysvar::kOffsetSlotLetters.size())) return -1;
-  const char letter = sysvar::kOffsetSlotLetters[static_cast<std::size_t>(slot)];
-  return im.axis_of_letter[static_cast<std::size_t>(letter - 'A')];
+  return sysvar::offset_slot_axis(
+      im.dialect.sw.offset_variables_by == config::OffsetVariables::kLetter, im.axis_count, slot,
+      [&im](char letter) { return im.axis_of_letter[static_cast<std::size_t>(letter - 'A')]; });
 }
 
 // The alarm's text for a write to a work-offset variable naming no axis.

@@ -45,7 +45,11 @@ std::vector<std::pair<int, std::string>> offset_variables(const config::MachineC
   const bool by_letter = d.sw.offset_variables_by == config::OffsetVariables::kLetter;
   for (int set = 0; set < 7; ++set) {
     for (int slot = 0; slot < 20; ++slot) {
-      const int i = interp::sysvar::offset_slot_axis(by_letter, names, slot);
+      const int i = interp::sysvar::offset_slot_axis(
+          by_letter, static_cast<int>(names.size()), slot, [&names](char letter) {
+            const auto at = names.find(letter);
+            return at == std::string::npos ? -1 : static_cast<int>(at);
+          });
       if (i < 0) continue;
       out.emplace_back(5201 + 20 * set + slot,
                        fmt::format("{} {}", kSets[set], names[static_cast<std::size_t>(i)]));
