@@ -253,11 +253,16 @@ int execute(const RunArgs& a, run::Session& s, bool explain) {
   return conclude(a, s, c->report, rq->expect.size(), c->exit_code, explain);
 }
 
+canon::AxisNames axis_names(const config::MachineConfig& m) {
+  canon::AxisNames a;
+  a.count = m.axis_count();
+  for (int i = 0; i < a.count; ++i) a.names[i] = m.axes[static_cast<std::size_t>(i)].name;
+  return a;
+}
+
 class PrintSink final : public canon::CommandSink {
  public:
-  explicit PrintSink(const config::MachineConfig& m) {
-    axes_.count = m.axis_count();
-    for (int i = 0; i < axes_.count; ++i) axes_.names[i] = m.axes[static_cast<std::size_t>(i)].name;
+  explicit PrintSink(const config::MachineConfig& m) : text_(axis_names(m)) {
     buf_.reserve(1 << 17);
   }
   ~PrintSink() override { flush(); }
@@ -283,7 +288,7 @@ class PrintSink final : public canon::CommandSink {
         buf_.push_back('\n');
       }
     }
-    canon::format_to(buf_, c, axes_);
+    text_.append(buf_, c);
     if (buf_.size() > (1 << 16)) flush();
   }
   void flush() {
@@ -294,7 +299,7 @@ class PrintSink final : public canon::CommandSink {
   bool failed() const noexcept { return failed_; }
 
  private:
-  canon::AxisNames axes_;
+  canon::TextWriter text_;
   fmt::memory_buffer buf_;
   bool failed_ = false;
   const interp::Interpreter* in_ = nullptr;

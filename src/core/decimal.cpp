@@ -15,13 +15,6 @@ namespace {
 // Room std::to_chars may need for a double (24 characters at most).
 constexpr std::size_t kShortestRoom = 32;
 
-constexpr auto kPowers = [] {
-  std::array<std::uint64_t, 20> p{};
-  p[0] = 1;
-  for (std::size_t i = 1; i < p.size(); ++i) p[i] = p[i - 1] * 10;
-  return p;
-}();
-
 // sig x 10^exp in fixed notation (sig has n digits): the digits and the
 // zeros of a whole number, the point inside the digits, or "0.000ddd".
 char* write_fixed(char* p, std::uint64_t sig, int n, int exp) noexcept {
@@ -32,14 +25,13 @@ char* write_fixed(char* p, std::uint64_t sig, int n, int exp) noexcept {
     return p + exp;
   }
   if (e10 >= 0) {
-    // The whole part, the point, the -exp digits of the fraction.
-    const std::uint64_t scale = kPowers[-exp];
+    // The whole part, the point, the -exp digits of the fraction: all the
+    // digits one place to the right, then the e10 + 1 whole ones moved back
+    // over the first place (no division by a power chosen at run time).
     char* const end = p + n + 1;
-    const std::uint64_t frac = sig % scale;
-    char* q = digits_back(end, frac);
-    while (q > end + exp) *--q = '0';
-    *--q = '.';
-    digits_back(q, sig / scale);
+    digits_back(end, sig);
+    for (int k = 0; k <= e10; ++k) p[k] = p[k + 1];
+    p[e10 + 1] = '.';
     return end;
   }
   *p++ = '0';

@@ -94,6 +94,79 @@ inline char* write_scaled(char* p, std::int64_t m) noexcept {
   return e;
 }
 
+// The text of a number below 1000: up to four characters and their count.
+struct ShortText {
+  char text[4];
+  std::uint8_t size;
+};
+
+// "0" to "999" (index: the number), and ".001" to ".999" with the trailing
+// zeros dropped ("" for 0, ".5" for 500): a table for each, so that a value
+// in thousandths is written by two copies.
+inline constexpr auto kWholeBelow1000 = [] {
+  struct Table {
+    ShortText at[1000];
+  } t{};
+  for (int i = 0; i < 1000; ++i) {
+    ShortText& s = t.at[i];
+    const int n = i >= 100 ? 3 : (i >= 10 ? 2 : 1);
+    for (int k = n - 1, v = i; k >= 0; --k, v /= 10) s.text[k] = static_cast<char>('0' + v % 10);
+    s.size = static_cast<std::uint8_t>(n);
+  }
+  return t;
+}();
+inline constexpr auto kThousandths = [] {
+  struct Table {
+    ShortText at[1000];
+  } t{};
+  for (int i = 0; i < 1000; ++i) {  // 0: ".000", of size 0
+    ShortText& s = t.at[i];
+    s.text[0] = '.';
+    s.text[1] = static_cast<char>('0' + i / 100);
+    s.text[2] = static_cast<char>('0' + i / 10 % 10);
+    s.text[3] = static_cast<char>('0' + i % 10);
+    s.size = static_cast<std::uint8_t>(i == 0 ? 0 : i % 10 != 0 ? 4 : (i % 100 != 0 ? 3 : 2));
+  }
+  return t;
+}();
+
+// Writes s (all four characters; the room after p must allow it), returns
+// the end of its text.
+inline char* put_short(char* p, const ShortText& s) noexcept {
+  for (int k = 0; k < 4; ++k) p[k] = s.text[k];
+  return p + s.size;
+}
+
+// write_uint(p, v), the same characters: below 10^6 copied from the tables
+// (a line number). Needs 4 characters of room past the end it returns.
+inline char* write_uint32(char* p, std::uint32_t v) noexcept {
+  if (v < 1000) return put_short(p, kWholeBelow1000.at[v]);
+  if (v >= 1000000) return write_uint(p, v);
+  const std::uint32_t high = v / 1000;
+  p = put_short(p, kWholeBelow1000.at[high]);
+  const ShortText& low = kThousandths.at[v - high * 1000];  // ".ddd", all three digits
+  p[0] = low.text[1];
+  p[1] = low.text[2];
+  p[2] = low.text[3];
+  return p + 3;
+}
+
+// write_scaled<3>(p, m), the same characters: the whole part below 1000 and
+// the fraction each copied from a table. Needs 4 characters of room past the
+// end it returns (at most 25 characters in all).
+inline char* write_milli(char* p, std::int64_t m) noexcept {
+  const std::uint64_t a = m < 0 ? 0 - static_cast<std::uint64_t>(m) : static_cast<std::uint64_t>(m);
+  if (m < 0) *p++ = '-';
+  const std::uint64_t whole = a / 1000;
+  const auto frac = static_cast<std::size_t>(a - whole * 1000);
+  if (whole < 1000) {
+    p = put_short(p, kWholeBelow1000.at[whole]);
+  } else {
+    p = write_uint(p, whole);
+  }
+  return put_short(p, kThousandths.at[frac]);
+}
+
 // Writes the shortest text that reads back to v, the same characters as
 // std::to_chars(p, p + 32, v) (fixed or scientific, whichever is shorter;
 // "1e-05", "13.074000000000002"), from fmt's Dragonbox digits: about two

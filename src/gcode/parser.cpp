@@ -463,7 +463,7 @@ inline Result<void> Parser::run() {
       } else if (out_.stmt.kind == StmtKind::kOword) {
         ok = error(AlarmId::kMacroFormat, "only a comment may follow an O-word statement", at);
       } else if (is_upper(c)) {
-        ok = parse_word();
+        ok = word_fast(c, at) || parse_word();
       } else if (c == '#' && ngc_) {
         ok = parse_ngc_assign();
       } else if (c == '#' || c == '[') {
@@ -478,6 +478,8 @@ inline Result<void> Parser::run() {
       continue;
     }
     if (is_upper(c)) {
+      // A letter followed by a sign, digit or point is no keyword's start.
+      if (word_fast(c, at)) continue;
       bool handled = false;
       ok = try_keyword(c, at, handled);
       if (ok && !handled) ok = parse_word();

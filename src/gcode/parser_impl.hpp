@@ -341,6 +341,48 @@ class Parser {
     value = frac == 0 ? static_cast<double>(mant) : static_cast<double>(mant) / kPow10[frac];
     return true;
   }
+  // The common word, written together: the letter `c` (upper case) at `at`,
+  // an optional sign right after it, then a number number_fast takes with
+  // no space before its end ("X-12.345", "G1", "F500."). Read in one loop,
+  // with the same value and Word as parse_word's; p_ past it and the spaces
+  // that follow. False, nothing consumed, for anything else (a keyword, an
+  // expression, a space inside, too many digits): parse_word reads it.
+  [[gnu::always_inline]] bool word_fast(int c, const char* at) {
+    const char* q = at + 1;
+    if (end_ - q < 1) return false;
+    const bool negative = *q == '-';
+    q += negative || *q == '+' ? 1 : 0;
+    const char* const start = q;
+    std::uint64_t mant = 0;
+    for (unsigned d = 0; q < end_ && (d = digit_value(*q)) < 10; ++q) mant = mant * 10 + d;
+    std::size_t frac = 0;
+    const bool point = q < end_ && *q == '.';
+    if (point) {
+      const char* f = ++q;
+      for (unsigned d = 0; q < end_ && (d = digit_value(*q)) < 10; ++q) mant = mant * 10 + d;
+      frac = static_cast<std::size_t>(q - f);
+    } else if (q == start) {
+      return false;  // no number: X#1, X[...], a keyword
+    }
+    const auto ndigits = (q - start) - (point ? 1 : 0);
+    const char* const after = skip(q);
+    if (ndigits == 0 || ndigits > fast_digits_ || mant > (std::uint64_t{1} << 53) ||
+        (after < end_ && (*after == '.' || is_digit(*after)))) [[unlikely]] {
+      return false;
+    }
+    p_ = after;
+    // As number_fast: a power of ten held exactly.
+    const double v =
+        frac == 0 ? static_cast<double>(mant) : static_cast<double>(mant) / kPow10[frac];
+    Word& w = out_.words.emplace_back();
+    w.letter = static_cast<char>(c);
+    w.is_expr = false;
+    w.has_point = point;
+    w.value = negative ? -v : v;
+    w.expr = kNoExpr;
+    w.column = col(at);
+    return true;
+  }
   // "#n" at p_ written together, few enough digits to be no error, no digit
   // or point after the spaces that follow: its nodes, p_ past it and those
   // spaces. False, nothing consumed, for anything else.

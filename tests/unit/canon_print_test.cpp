@@ -2,6 +2,8 @@
 #include <gtest/gtest.h>
 
 #include <charconv>
+#include <iterator>
+#include <limits>
 #include <random>
 #include <string>
 
@@ -46,6 +48,54 @@ TEST(CanonPrint, LinesOfEachCommand) {
   a.feed_mm_per_min = 100.0;
   EXPECT_EQ(to_string(Stamped{a, 5}, AxisNames{}), "5 ARC_CCW X10.5 Y-0.001 Z0 CX=5.25 CY=-1 F100");
   EXPECT_EQ(to_string(Stamped{Dwell{1.5}, 6}, AxisNames{}), "6 DWELL 1.5");
+}
+
+// A writer that remembers each field's last text writes the same lines as
+// format_to, which starts afresh each time, whatever the order of values:
+// a field's value again, another field's, -0 after 0, values that are not
+// whole micrometres, huge and tiny ones.
+TEST(CanonPrint, RememberedFieldsWriteTheSameLines) {
+  const double pool[] = {0.0,
+                         -0.0,
+                         5.0,
+                         500.0,
+                         1e-7,
+                         999.9995,
+                         -16.241,
+                         30.14,
+                         1e20,
+                         -1e20,
+                         1e300,
+                         647.0794312013581,
+                         13.074000000000002,
+                         0.1 + 0.2,
+                         -999999.999,
+                         1234567.891,
+                         std::numeric_limits<double>::quiet_NaN()};
+  std::mt19937_64 rng(35);
+  std::uniform_int_distribution<std::size_t> pick(0, std::size(pool) - 1);
+  AxisNames names;
+  names.count = 4;
+  TextWriter writer(names);
+  fmt::memory_buffer remembered;
+  fmt::memory_buffer fresh;
+  for (std::uint32_t line = 1; line < 20000; ++line) {
+    AxisVec t;
+    for (int i = 0; i < names.count; ++i) t[i] = pool[pick(rng)];
+    Stamped s{Rapid{t, true}, line};
+    if (line % 3 == 1) s.cmd = Feed{t, pool[pick(rng)], false};
+    if (line % 3 == 2) {
+      Arc a;
+      a.target = t;
+      a.center0 = pool[pick(rng)];
+      a.center1 = pool[pick(rng)];
+      a.feed_mm_per_min = pool[pick(rng)];
+      s.cmd = a;
+    }
+    writer.append(remembered, s);
+    format_to(fresh, s, names);
+  }
+  ASSERT_EQ(fmt::to_string(remembered), fmt::to_string(fresh));
 }
 
 }  // namespace

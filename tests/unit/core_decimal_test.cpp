@@ -72,6 +72,50 @@ TEST(Decimal, ScaledValuesMatchFixedPointText) {
   }
 }
 
+std::string milli(std::int64_t m) {
+  char buf[40];
+  return std::string(buf, write_milli(buf, m));
+}
+
+std::string line_number(std::uint32_t v) {
+  char buf[40];
+  return std::string(buf, write_uint32(buf, v));
+}
+
+TEST(Decimal, MilliKnownTexts) {
+  EXPECT_EQ(milli(0), "0");
+  EXPECT_EQ(milli(-1), "-0.001");
+  EXPECT_EQ(milli(5000), "5");
+  EXPECT_EQ(milli(-16241), "-16.241");
+  EXPECT_EQ(milli(30140), "30.14");
+  EXPECT_EQ(milli(500), "0.5");
+  EXPECT_EQ(milli(999999), "999.999");
+  EXPECT_EQ(milli(1000000), "1000");
+  EXPECT_EQ(milli(-1234567890), "-1234567.89");
+  EXPECT_EQ(milli(std::numeric_limits<std::int64_t>::min()), "-9223372036854775.808");
+}
+
+// The same characters as write_scaled<3> for every magnitude, around each
+// boundary of the tables (999, 1000) and at random.
+TEST(Decimal, MilliMatchesScaled) {
+  for (std::int64_t m = -2000000; m <= 2000000; m += 7) ASSERT_EQ(milli(m), scaled<3>(m)) << m;
+  for (std::int64_t m = -1001; m <= 1001; ++m) ASSERT_EQ(milli(m), scaled<3>(m)) << m;
+  std::mt19937_64 rng(33);
+  for (int i = 0; i < 200000; ++i) {
+    const auto m = static_cast<std::int64_t>(rng()) >> (i % 60);
+    ASSERT_EQ(milli(m), scaled<3>(m)) << m;
+  }
+}
+
+TEST(Decimal, LineNumbersMatchWholeNumbers) {
+  for (std::uint32_t v = 0; v < 1200000; v += (v < 2000 ? 1 : 13)) {
+    ASSERT_EQ(line_number(v), whole(v)) << v;
+  }
+  for (const std::uint32_t v : {999u, 1000u, 1001u, 999999u, 1000000u, 4294967295u}) {
+    ASSERT_EQ(line_number(v), whole(v)) << v;
+  }
+}
+
 std::string shortest(double v) {
   char buf[40];
   return std::string(buf, write_shortest(buf, v));

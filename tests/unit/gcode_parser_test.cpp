@@ -1,9 +1,12 @@
 #include <gtest/gtest.h>
 
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <string>
 #include <string_view>
+#include <utility>
 
 #include "gcode/ast.hpp"
 #include "gcode/parser.hpp"
@@ -186,6 +189,38 @@ TEST(GcodeParser, SpacesAreIgnoredInsideWords) {
   ASSERT_EQ(c.words.size(), 4u);
   EXPECT_EQ(c.words[3].letter, 'Z');
   EXPECT_EQ(c.words[3].column, 7u);
+}
+
+// A word written together (read by the parser's quick path) and the same
+// word with spaces inside (the general path) are the same word, to the bit.
+TEST(GcodeParser, WordsTogetherOrSpreadAreTheSame) {
+  const std::pair<std::string_view, std::string_view> pairs[] = {
+      {"X-12.345", "X - 12 .345"},
+      {"F500.", "F 500 ."},
+      {"G1", "G 1"},
+      {"y+.5", "Y + .5"},
+      {"Z-0", "Z - 0"},
+      {"A0.000001", "A 0.000 001"},
+      {"B123456789012345", "B 123456789012345 "},
+      {"C1234567.891", "C1234567 .891"},
+  };
+  for (const auto& [together, spread] : pairs) {
+    const Block a = parse_ok(together);
+    const Block b = parse_ok(spread);
+    ASSERT_EQ(a.words.size(), 1u) << together;
+    ASSERT_EQ(b.words.size(), 1u) << spread;
+    EXPECT_EQ(a.words[0].letter, b.words[0].letter) << together;
+    EXPECT_EQ(std::bit_cast<std::uint64_t>(a.words[0].value),
+              std::bit_cast<std::uint64_t>(b.words[0].value))
+        << together;
+    EXPECT_EQ(a.words[0].has_point, b.words[0].has_point) << together;
+    EXPECT_FALSE(a.words[0].is_expr);
+  }
+  EXPECT_TRUE(std::signbit(parse_ok("Z-0").words.at(0).value));
+  // A letter, then a sign or digit, is a word; a keyword is still one.
+  EXPECT_EQ(parse_ok("GOTO 5").stmt.kind, StmtKind::kGoto);
+  EXPECT_EQ(parse_ok("X1 2.5").words.at(0).value, 12.5);
+  EXPECT_EQ(parse_err("X1.2.5").id, AlarmId::kBadDecimalPoint);
 }
 
 TEST(GcodeParser, LowerCaseIsUpperCased) {
