@@ -26,13 +26,21 @@ char* write_fixed(char* p, std::uint64_t sig, int n, int exp) noexcept {
   }
   if (e10 >= 0) {
     // The whole part, the point, the -exp digits of the fraction: all the
-    // digits one place to the right, then the e10 + 1 whole ones moved back
-    // over the first place (no division by a power chosen at run time).
-    char* const end = p + n + 1;
-    digits_back(end, sig);
-    for (int k = 0; k <= e10; ++k) p[k] = p[k + 1];
-    p[e10 + 1] = '.';
-    return end;
+    // digits written once aside, then copied on each side of the point in
+    // two moves of fixed size (no division by a power chosen at run time).
+    const int whole = e10 + 1;
+    char digits[40];
+    digits_back(digits + n, sig);
+    if (whole <= 8) {
+      std::memcpy(p, digits, 8);
+      p[whole] = '.';
+      std::memcpy(p + whole + 1, digits + whole, 16);  // n - whole <= 16 digits
+    } else {
+      std::memcpy(p, digits, static_cast<std::size_t>(whole));
+      p[whole] = '.';
+      std::memcpy(p + whole + 1, digits + whole, static_cast<std::size_t>(n - whole));
+    }
+    return p + n + 1;
   }
   *p++ = '0';
   *p++ = '.';

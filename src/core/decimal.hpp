@@ -4,6 +4,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 
 namespace skipnc::decimal {
 
@@ -170,7 +171,8 @@ inline char* write_milli(char* p, std::int64_t m) noexcept {
 // Writes the shortest text that reads back to v, the same characters as
 // std::to_chars(p, p + 32, v) (fixed or scientific, whichever is shorter;
 // "1e-05", "13.074000000000002"), from fmt's Dragonbox digits: about two
-// thirds of std::to_chars's instructions. At most 24 characters; returns the end.
+// thirds of std::to_chars's instructions. At most 24 characters, but it may
+// write anywhere in the 32 characters from p; returns the end.
 char* write_shortest(char* p, double v) noexcept;
 
 }  // namespace skipnc::decimal
