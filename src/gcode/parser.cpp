@@ -450,13 +450,14 @@ inline Result<void> Parser::run() {
     if (at != end_ && *at == '$' && !parse_grbl_system(at))
       return std::unexpected(std::move(*err_));
   }
+  const bool macro_b = !ngc_ && !grbl_;  // read once, not at each word
   for (;;) {
     const char* const at = skip(p_);
     p_ = at;
     if (at == end_) break;
     const int c = static_cast<unsigned char>(to_upper(*at));
     bool ok = true;
-    if (ngc_ || grbl_) [[unlikely]] {
+    if (!macro_b) [[unlikely]] {
       if (c == ';') break;  // a comment to the end of the line
       if (c == '(') {
         ok = parse_comment();

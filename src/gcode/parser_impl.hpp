@@ -40,8 +40,13 @@ constexpr bool is_digit(int c) noexcept {
 constexpr bool is_upper(int c) noexcept {
   return static_cast<unsigned>(c - 'A') < 26u;
 }
+// ' ', '\t' or '\r': one comparison for the characters above ' ' (nearly
+// all), then their bit in a mask.
 constexpr bool is_space(char c) noexcept {
-  return c == ' ' || c == '\t' || c == '\r';
+  const auto u = static_cast<unsigned char>(c);
+  constexpr std::uint64_t kSpaces =
+      (std::uint64_t{1} << ' ') | (std::uint64_t{1} << '\t') | (std::uint64_t{1} << '\r');
+  return u <= ' ' && ((kSpaces >> u) & 1u) != 0;
 }
 constexpr char to_upper(char c) noexcept {
   return (c >= 'a' && c <= 'z') ? static_cast<char>(c - ('a' - 'A')) : c;
