@@ -10,10 +10,15 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cerrno>
 #include <cstring>
 #include <string>
 #include <utility>
+
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 namespace skipnc::gcode {
 namespace {
@@ -56,6 +61,29 @@ std::size_t scan(const char* data, std::size_t i, std::size_t stop, bool& in_par
     }
   }
   return i;
+}
+
+// Index of the first '\n' in data[begin, stop), or of the first ';' when
+// `semicolon` and it comes first; `stop` when there is neither. Only the
+// `held` bytes of data are read (held >= stop). Sixteen bytes at a compare
+// where the instruction set has it: one pass where two memchr calls were.
+std::size_t first_end(const char* data, std::size_t begin, std::size_t stop, std::size_t held,
+                      bool semicolon) noexcept {
+  std::size_t i = begin;
+#if defined(__SSE2__)
+  const __m128i nl = _mm_set1_epi8('\n');
+  const __m128i sc = _mm_set1_epi8(semicolon ? ';' : '\n');
+  for (; i < stop && held - i >= 16; i += 16) {
+    const __m128i v = _mm_loadu_si128(reinterpret_cast<const __m128i*>(data + i));
+    const auto m = static_cast<unsigned>(
+        _mm_movemask_epi8(_mm_or_si128(_mm_cmpeq_epi8(v, nl), _mm_cmpeq_epi8(v, sc))));
+    if (m != 0) return std::min(stop, i + static_cast<std::size_t>(std::countr_zero(m)));
+  }
+#endif
+  for (; i < stop; ++i) {
+    if (data[i] == '\n' || (semicolon && data[i] == ';')) return i;
+  }
+  return stop;
 }
 
 constexpr std::string_view kBom = "\xEF\xBB\xBF";
@@ -152,12 +180,11 @@ Result<bool> TextSource::next(RawBlock& out) {
     const auto begin = static_cast<std::size_t>(pos_.offset - buf_off_);
     const std::size_t stop = std::min(len_, begin + limits_.max_block_bytes + 2);
     const char* data = buf_.data();
-    if (const void* nl = std::memchr(data + begin, '\n', stop - begin)) {
-      const auto i = static_cast<std::size_t>(static_cast<const char*>(nl) - data);
+    const std::size_t i = first_end(data, begin, stop, len_, limits_.semicolon_ends_block);
+    if (i < stop && data[i] == '\n') {
       std::size_t text_end = i;
       if (text_end > begin && data[text_end - 1] == '\r') --text_end;
-      if (text_end - begin <= limits_.max_block_bytes &&
-          (!limits_.semicolon_ends_block || std::memchr(data + begin, ';', i - begin) == nullptr)) {
+      if (text_end - begin <= limits_.max_block_bytes) {
         out.text = std::string_view(data + begin, text_end - begin);
         out.offset = pos_.offset;
         out.line = pos_.line;

@@ -129,6 +129,34 @@ TEST(GcodeSource, SemicolonBeforeLineEndIsOneEndOfBlock) {
   EXPECT_EQ(two[1], (Got{"", 4, 2, 1}));
 }
 
+// Lines of every length around the width the scanner reads at a time (16
+// bytes), one end of block anywhere in them, and a last line without an end.
+TEST(GcodeSource, LinesOfEveryLengthAndEndOfBlockPlace) {
+  std::string text;
+  std::vector<Got> want;
+  std::vector<Got> want_ngc;  // ';' is no end of block
+  std::uint32_t line = 1;
+  for (std::size_t len = 0; len <= 40; ++len) {
+    std::string body(len, 'X');
+    for (std::size_t k = 0; k < len; ++k) body[k] = static_cast<char>('A' + k % 26);
+    const auto at = static_cast<std::uint64_t>(text.size());
+    want_ngc.push_back({body, at, line, 1});
+    if (len >= 2 && len % 3 == 0) {
+      body[len / 2] = ';';
+      want_ngc.back().text = body;
+      want.push_back({body.substr(0, len / 2), at, line, 1});
+      want.push_back({body.substr(len / 2 + 1), at + len / 2 + 1, line,
+                      static_cast<std::uint32_t>(len / 2 + 2)});
+    } else {
+      want.push_back({body, at, line, 1});
+    }
+    text += body + (len == 40 ? "" : "\n");
+    ++line;
+  }
+  EXPECT_EQ(read_string(text), want);
+  EXPECT_EQ(read_string(text, SourceLimits{.semicolon_ends_block = false}), want_ngc);
+}
+
 TEST(GcodeSource, SemicolonInCommentDoesNotEndBlock) {
   const auto got = read_string("G0 (A;B) X1;(C;D)\nM30");
   ASSERT_EQ(got.size(), 3u);
