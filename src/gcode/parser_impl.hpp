@@ -354,9 +354,16 @@ class Parser {
   // expression, a space inside, too many digits): parse_word reads it.
   [[gnu::always_inline]] bool word_fast(int c, const char* at) {
     const char* q = at + 1;
-    if (end_ - q < 1) return false;
-    const bool negative = *q == '-';
-    q += negative || *q == '+' ? 1 : 0;
+    if (q == end_) return false;
+    bool negative = false;
+    if (digit_value(*q) >= 10) {
+      if (*q == '-' || *q == '+') {
+        negative = *q == '-';
+        ++q;
+      } else if (*q != '.') {
+        return false;  // X#1, X[...], a keyword, a space
+      }
+    }
     const char* const start = q;
     std::uint64_t mant = 0;
     for (unsigned d = 0; q < end_ && (d = digit_value(*q)) < 10; ++q) mant = mant * 10 + d;
