@@ -318,12 +318,13 @@ class Parser {
 
   // ---- fast paths of the common cases, inlined where they are used
 
-  // A number at p_ written together ("123", "1.5", ".25"), not too many
-  // digits, no digit or point after the spaces that follow, exact as a
-  // double: its value, p_ past it and those spaces. False, nothing consumed,
-  // for anything else, errors included: the general path reads it again.
-  [[gnu::always_inline]] bool number_fast(double& value, bool& has_point) {
-    const char* const start = p_;
+  // The number written together from `start` ("123", "1.5", ".25"), not
+  // too many digits, no digit or point after the spaces that follow, exact
+  // as a double: its value, whether it has a point, and `after` past those
+  // spaces. False for anything else, errors included: the general path
+  // reads it again.
+  [[gnu::always_inline]] bool read_fast(const char* start, double& value, bool& has_point,
+                                        const char*& after) const noexcept {
     const char* q = start;
     std::uint64_t mant = 0;
     for (unsigned d = 0; q < end_ && (d = digit_value(*q)) < 10; ++q) mant = mant * 10 + d;
@@ -335,23 +336,31 @@ class Parser {
       frac = static_cast<std::size_t>(q - f);
     }
     const auto ndigits = (q - start) - (point ? 1 : 0);
-    const char* after = skip(q);
-    if (ndigits == 0 || ndigits > fast_digits_ || mant > (std::uint64_t{1} << 53) ||
+    if (ndigits == 0) return false;  // X#1, X[...], a point alone
+    after = skip(q);
+    if (ndigits > fast_digits_ || mant > (std::uint64_t{1} << 53) ||
         (after < end_ && (*after == '.' || is_digit(*after)))) [[unlikely]] {
       return false;
     }
-    p_ = after;
     has_point = point;
     // As number_value: at most 19 decimals, a power of ten held exactly.
     value = frac == 0 ? static_cast<double>(mant) : static_cast<double>(mant) / kPow10[frac];
     return true;
   }
+  // A number at p_ as read_fast takes it: its value, p_ past it and the
+  // spaces that follow. False, nothing consumed, for anything else.
+  [[gnu::always_inline]] bool number_fast(double& value, bool& has_point) {
+    const char* after = nullptr;
+    if (!read_fast(p_, value, has_point, after)) return false;
+    p_ = after;
+    return true;
+  }
   // The common word, written together: the letter `c` (upper case) at `at`,
-  // an optional sign right after it, then a number number_fast takes with
-  // no space before its end ("X-12.345", "G1", "F500."). Read in one loop,
-  // with the same value and Word as parse_word's; p_ past it and the spaces
-  // that follow. False, nothing consumed, for anything else (a keyword, an
-  // expression, a space inside, too many digits): parse_word reads it.
+  // an optional sign right after it, then a number read_fast takes ("X-12.345",
+  // "G1", "F500."). The same value and Word as parse_word's; p_ past it and
+  // the spaces that follow. False, nothing consumed, for anything else (a
+  // keyword, an expression, a space inside, too many digits): parse_word
+  // reads it.
   [[gnu::always_inline]] bool word_fast(int c, const char* at) {
     const char* q = at + 1;
     if (q == end_) return false;
@@ -364,28 +373,11 @@ class Parser {
         return false;  // X#1, X[...], a keyword, a space
       }
     }
-    const char* const start = q;
-    std::uint64_t mant = 0;
-    for (unsigned d = 0; q < end_ && (d = digit_value(*q)) < 10; ++q) mant = mant * 10 + d;
-    std::size_t frac = 0;
-    const bool point = q < end_ && *q == '.';
-    if (point) {
-      const char* f = ++q;
-      for (unsigned d = 0; q < end_ && (d = digit_value(*q)) < 10; ++q) mant = mant * 10 + d;
-      frac = static_cast<std::size_t>(q - f);
-    } else if (q == start) {
-      return false;  // no number: X#1, X[...], a keyword
-    }
-    const auto ndigits = (q - start) - (point ? 1 : 0);
-    const char* const after = skip(q);
-    if (ndigits == 0 || ndigits > fast_digits_ || mant > (std::uint64_t{1} << 53) ||
-        (after < end_ && (*after == '.' || is_digit(*after)))) [[unlikely]] {
-      return false;
-    }
+    double v = 0.0;
+    bool point = false;
+    const char* after = nullptr;
+    if (!read_fast(q, v, point, after)) return false;
     p_ = after;
-    // As number_fast: a power of ten held exactly.
-    const double v =
-        frac == 0 ? static_cast<double>(mant) : static_cast<double>(mant) / kPow10[frac];
     Word& w = out_.words.emplace_back();
     w.letter = static_cast<char>(c);
     w.is_expr = false;
