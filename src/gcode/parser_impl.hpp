@@ -120,14 +120,16 @@ class NodeSlots {
 
   ExprNode& operator[](std::size_t i) noexcept { return data_[i]; }
   const ExprNode& operator[](std::size_t i) const noexcept { return data_[i]; }
-  // Index of the node added. References to nodes do not survive it.
-  std::size_t add(const ExprNode& x) {
+  // A new node, its fields to be written by the caller (each of them: the
+  // storage holds an earlier block's nodes). References to nodes do not
+  // survive it.
+  ExprNode& add() {
     if (n_ == cap_) [[unlikely]] {
       grow();
     }
-    data_[n_] = x;
-    return n_++;
+    return data_[n_++];
   }
+  std::size_t size() const noexcept { return n_; }
   // The block's node count becomes the number of nodes built.
   void finish() noexcept { v_.set_size(n_); }
 
@@ -267,12 +269,17 @@ class Parser {
   const ExprNode& node(ExprId id) const noexcept { return nodes_[static_cast<std::size_t>(id)]; }
   // A node whose depth is known to be within kMaxExprDepth.
   ExprId push_node(Op op, std::uint32_t column, ExprId a, ExprId b, int depth, double value = 0.0) {
-    return static_cast<ExprId>(nodes_.add(ExprNode{.value = value,
-                                                   .a = a,
-                                                   .b = b,
-                                                   .column = column,
-                                                   .depth = static_cast<std::uint16_t>(depth),
-                                                   .op = op}));
+    // Written field by field in place: no node put together aside and copied.
+    ExprNode& x = nodes_.add();
+    x.value = value;
+    x.a = a;
+    x.b = b;
+    x.name = -1;
+    x.column = column;
+    x.depth = static_cast<std::uint16_t>(depth);
+    x.op = op;
+    x.fn = Func::kNone;
+    return static_cast<ExprId>(nodes_.size() - 1);
   }
   // kFail when the tree would be deeper than kMaxExprDepth.
   ExprId add_node(Op op, std::uint32_t column, ExprId a = kNoExpr, ExprId b = kNoExpr) {
