@@ -40,24 +40,9 @@ Flow<void> Interpreter::Impl::plan_g_codes(const Words& words, BlockPlan& plan) 
   for (int i = 0; i < words.g_count; ++i) {
     const GCode code = words.g[static_cast<std::size_t>(i)];
     const std::uint32_t col = words.g_col[static_cast<std::size_t>(i)];
-    if (std::find(dialect.absent_g.begin(), dialect.absent_g.end(), code) !=
-        dialect.absent_g.end()) {
-      return fail(AlarmId::kUnknownGCode, code_name(code) + " is not a code of this control",
-                  loc(col));
-    }
-    if (std::find(dialect.not_simulated_g.begin(), dialect.not_simulated_g.end(), code) !=
-        dialect.not_simulated_g.end()) {
-      return fail(AlarmId::kNotSimulated,
-                  code_name(code) + " is a code of this control that skipnc does not simulate",
-                  loc(col));
-    }
-    const CodeDef* def = find_g(code, lathe);  // codes.cpp
-    if (def == nullptr || def->handler == Handler::kRefused) {
-      return fail(AlarmId::kUnknownGCode, improper_g(code, def, lathe), loc(col));
-    }
-    if (auto why = not_in_dialect(*def, dialect.sw)) {
-      return fail(AlarmId::kUnknownGCode, std::move(*why), loc(col));
-    }
+    auto found = g_code_def(code, col);
+    SKIPNC_TRY(found);
+    const CodeDef* def = *found;
     if (!def->modal_state()) {
       auto mill = mill_code(*def, loc(col), plan.mill);  // mill_codes.cpp
       SKIPNC_TRY(mill);
@@ -82,6 +67,30 @@ Flow<void> Interpreter::Impl::plan_g_codes(const Words& words, BlockPlan& plan) 
     plan.column[g] = col;
   }
   return {};
+}
+
+// A G code's entry in the code table (codes.cpp), or the alarm of a code
+// this control does not have or skipnc does not simulate.
+Flow<const CodeDef*> Interpreter::Impl::g_code_def(GCode code, std::uint32_t col) const {
+  const bool lathe = mc.lathe();
+  if (std::find(dialect.absent_g.begin(), dialect.absent_g.end(), code) != dialect.absent_g.end()) {
+    return fail(AlarmId::kUnknownGCode, code_name(code) + " is not a code of this control",
+                loc(col));
+  }
+  if (std::find(dialect.not_simulated_g.begin(), dialect.not_simulated_g.end(), code) !=
+      dialect.not_simulated_g.end()) {
+    return fail(AlarmId::kNotSimulated,
+                code_name(code) + " is a code of this control that skipnc does not simulate",
+                loc(col));
+  }
+  const CodeDef* def = find_g(code, lathe);
+  if (def == nullptr || def->handler == Handler::kRefused) {
+    return fail(AlarmId::kUnknownGCode, improper_g(code, def, lathe), loc(col));
+  }
+  if (auto why = not_in_dialect(*def, dialect.sw)) {
+    return fail(AlarmId::kUnknownGCode, std::move(*why), loc(col));
+  }
+  return def;
 }
 
 Flow<void> Interpreter::Impl::plan_one_shot(const CodeDef& def, std::uint32_t col,

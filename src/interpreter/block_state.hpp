@@ -10,6 +10,7 @@
 // them.
 #pragma once
 
+#include <bit>
 #include <cstdint>
 #include <type_traits>
 
@@ -59,6 +60,17 @@ struct AxisShifts {
   // Lathe (lathe.cpp): offsets are kept in program values.
   AxisVec lathe_tool_offset;    // T code: geometry + wear, program values (mm)
   AxisVec tool_offset_pending;  // its last change not yet moved, machine mm (U/W moves)
+  // A G45-G48 change or a T offset the next move carries (Impl::axis_targets):
+  // any of them not +0.0 to the bit.
+  bool moves_pending() const noexcept {
+    for (int i = 0; i < kMaxAxes; ++i) {
+      if ((std::bit_cast<std::uint64_t>(g45_delta[i]) |
+           std::bit_cast<std::uint64_t>(tool_offset_pending[i])) != 0) {
+        return true;
+      }
+    }
+    return false;
+  }
 };
 
 // The copy a block takes must not allocate: no member may own memory.

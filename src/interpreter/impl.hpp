@@ -61,6 +61,7 @@
 #include "interpreter/journal.hpp"
 #include "interpreter/language.hpp"
 #include "interpreter/modal_macro.hpp"
+#include "interpreter/offset_units.hpp"
 #include "interpreter/print_channel.hpp"
 #include "interpreter/program_store.hpp"
 #include "interpreter/skip_results.hpp"
@@ -147,6 +148,24 @@ struct BlockPlan {
   bool spindle_changed = false;
   MillRequest mill;  // cycles, frames, G16, G31.n, G37 (mill_codes.cpp)
   ModalState next;
+};
+
+// The plain motion block (ncblock.cpp plain_block): G00-G03 or no G code,
+// axis words, F, I J K R and nothing else. What it needs of the machine,
+// the dialect and the language, found once at the start of the run.
+struct PlainBlock {
+  bool on = false;                    // a mill: a lathe's blocks all take the transaction
+  std::uint32_t letters = 0;          // bit c: address 'A' + c may be in a plain block
+  std::array<bool, 4> motion_code{};  // G00-G03 are this control's motion codes
+  double slowest_feed = 0.0;          // the lowest max_feed of the axes, mm/min (check_feeds)
+};
+
+// The parameters every motion block reads, read once at the start of the
+// run (a run's parameters do not change while it runs).
+struct BlockParams {
+  bool linear_rapid = false;        // 1401#1 LRP (config::param::kLinearRapid)
+  bool calculator_decimal = false;  // 3401#0 DPI (config::param::kCalculatorDecimal)
+  double arc_tolerance = 0.02;      // 3410 (kArcRadiusTolerance), 0: 0.02 mm
 };
 
 // The commands of the block being executed, passed on when it succeeds.
@@ -331,6 +350,13 @@ struct Interpreter::Impl : BlockState, OffsetTables {
   // (commit_*), offsets.cpp (the offsets, G43, G10)
   Flow<void> collect_words(Words& words);
   Flow<Step> execute_nc(const Words& words, CommandSink& out);
+  PlainBlock plain;
+  BlockParams block_params;
+  void init_plain();
+  bool plain_code(GCode code) const;
+  bool plain_block(const Words& words, CommandSink& out);
+  int plain_move(const Words& words, AxisVec& target, canon::Command& cmd);
+  canon::Stamped plain_out;  // the plain block's command (reused)
   bool block_calls(const Words& words, const BlockPlan& plan) const noexcept;
   void begin_tables(bool calls);
   void commit_tables() noexcept;
@@ -344,6 +370,7 @@ struct Interpreter::Impl : BlockState, OffsetTables {
   } before_block;
   Flow<void> plan_block(const Words& words, BlockPlan& plan);
   Flow<void> plan_g_codes(const Words& words, BlockPlan& plan);
+  Flow<const CodeDef*> g_code_def(GCode code, std::uint32_t col) const;
   Flow<void> plan_one_shot(const CodeDef& def, std::uint32_t col, BlockPlan& plan);
   Flow<void> plan_call(const Words& words, BlockPlan& plan);
   Flow<void> plan_addresses(const Words& words) const;
@@ -378,7 +405,12 @@ struct Interpreter::Impl : BlockState, OffsetTables {
   double stored_mm() const noexcept {
     return mc.inch_machine && lang->rules.params_in_machine_unit ? 25.4 : 1.0;
   }
-  double word_length(const WordVal& w) const noexcept;         // program units (a rotary axis too)
+  // A length word in program units (a rotary axis too): without a decimal
+  // point it is in least input increments.
+  double word_length(const WordVal& w) const noexcept {
+    if (w.is_expr || w.has_point || block_params.calculator_decimal) return w.value;
+    return w.value * (modal.units == Units::kInch ? 0.0001 : 0.001);
+  }
   double offset_total(int axis) const noexcept;                // mm
   double work_of(int axis, double machine_mm) const noexcept;  // program units
   // The tool offsets on an axis (length, G45-G48, lathe tool offset), mm.
@@ -440,6 +472,7 @@ struct Interpreter::Impl : BlockState, OffsetTables {
   Flow<void> finish_probe(const SyncState& s);
   bool probe_inverted() const noexcept;  // the probe input's sense
   Flow<void> arc(const Words& words, const AxisVec& target, CommandSink& out);
+  Flow<void> arc_move(const Words& words, const AxisVec& target, canon::Arc& a) const;
   Flow<void> dwell(const Words& words, CommandSink& out);
   Flow<void> reference_return(const Words& words, int g, CommandSink& out);  // the language's
   Flow<void> reference_return_fanuc(const Words& words, int g, CommandSink& out);
@@ -452,6 +485,8 @@ struct Interpreter::Impl : BlockState, OffsetTables {
   // Target of the axis words of a block (X/U, Z/W, C/H on a lathe) in
   // machine coordinates; `moved` gets the axes that have a word.
   Flow<void> axis_targets(const Words& words, bool g53, AxisVec& target, AxisMask& moved);
+  Flow<void> lathe_axis_words(const Words& words) const;  // X and U (Z and W) in one block
+  void axis_target(int axis, const WordVal& w, bool incremental, bool g53, AxisVec& target);
   bool has_axis_word(const Words& words) const noexcept;
   char incremental_letter(int axis) const noexcept;  // U W H on a lathe, 0 otherwise
   double spindle_rpm_at(const AxisVec& machine) const noexcept;
@@ -462,6 +497,21 @@ struct Interpreter::Impl : BlockState, OffsetTables {
   void emit_spindle(CommandSink& out);
   Flow<void> turning_cycle(const Words& words, AxisVec& target, AxisMask moved, CommandSink& out);
   void emit(CommandSink& out, canon::Command cmd);
+  void stamp(canon::Stamped& st) const noexcept;  // the block's line, context and N
 };
+
+// Read for every axis word (inline: a few times per block).
+inline double Interpreter::Impl::offset_total(int axis) const noexcept {
+  double o = (work_offsets[0][axis] + work_offsets[static_cast<std::size_t>(modal.work)][axis]) *
+                 offset_unit_mm(*this) +
+             shifts.get().local_shift[axis] + shifts.get().g92_shift[axis] +
+             shifts.get().tool_pos_offset[axis] + shifts.get().lathe_tool_offset[axis];
+  if (axis == length_axis) o += length_offset;
+  return o;
+}
+
+inline double Interpreter::Impl::machine_of(int axis, double work_units) const noexcept {
+  return (work_units * unit_mm() + offset_total(axis)) / axis_scale[static_cast<std::size_t>(axis)];
+}
 
 }  // namespace skipnc::interp

@@ -117,6 +117,7 @@ Flow<void> Interpreter::Impl::init(const AxisVec& start) {
   pos = start;
   init_tables();
   lang->start(*this);  // language.cpp
+  init_plain();        // ncblock.cpp
   SKIPNC_TRY(init_variables());
   return open_main();
 }

@@ -48,6 +48,43 @@ bool Interpreter::Impl::has_axis_word(const Words& words) const noexcept {
   return false;
 }
 
+// X and U (Z and W) in one block: refused rather than guessed, for the
+// first axis (in the machine's order) that has both.
+Flow<void> Interpreter::Impl::lathe_axis_words(const Words& words) const {
+  for (int i = 0; i < axis_count; ++i) {
+    const char c = axis_letter[static_cast<std::size_t>(i)];
+    const char inc = incremental_letter(i);
+    if (inc == 0 || !words.has(c) || !words.has(inc)) continue;
+    const WordVal& later = words.at(c).column > words.at(inc).column ? words.at(c) : words.at(inc);
+    return fail(
+        AlarmId::kWordRepeated,
+        std::string(1, c) + " and " + inc + " in one block: the same axis absolute and incremental",
+        loc(later.column));
+  }
+  return {};
+}
+
+// One axis word's target, machine coordinates; `incremental`: U W H.
+void Interpreter::Impl::axis_target(int i, const WordVal& w, bool inc_word, bool g53,
+                                    AxisVec& target) {
+  const double scale = axis_scale[static_cast<std::size_t>(i)];
+  const bool incremental = inc_word || modal.distance == Distance::kIncremental;
+  const double v = word_length(w);
+  if (g53 && !incremental) {
+    target[i] = v * unit_mm() / scale;
+  } else if (!incremental) {
+    target[i] = machine_of(i, v);
+  } else {
+    // G45-G48 (ncblock.cpp) lengthen or shorten an incremental move; a T
+    // offset changed since the axis last moved is moved with it.
+    target[i] = pos[i] + v * unit_mm() / scale + shifts.get().g45_delta[i] +
+                shifts.get().tool_offset_pending[i];
+  }
+  if (!zero_bits(shifts.get().tool_offset_pending[i])) {
+    shifts.write().tool_offset_pending[i] = 0.0;
+  }
+}
+
 Flow<void> Interpreter::Impl::axis_targets(const Words& words, bool g53, AxisVec& target,
                                            AxisMask& moved) {
   target = pos;
@@ -57,39 +94,26 @@ Flow<void> Interpreter::Impl::axis_targets(const Words& words, bool g53, AxisVec
     auto f = frame_targets(words, target, moved);
     if (!f) return f;
   }
-  for (int i = 0; i < axis_count; ++i) {
-    const char c = axis_letter[static_cast<std::size_t>(i)];
-    if (framed && (c == 'X' || c == 'Y' || c == 'Z')) continue;
-    const char inc = incremental_letter(i);
-    const bool has_abs = words.has(c);
-    const bool has_inc = inc != 0 && words.has(inc);
-    if (has_abs && has_inc) {
-      // X and U (Z and W) in one block: refused rather than guessed.
-      const WordVal& later =
-          words.at(c).column > words.at(inc).column ? words.at(c) : words.at(inc);
-      return fail(AlarmId::kWordRepeated,
-                  std::string(1, c) + " and " + inc +
-                      " in one block: the same axis absolute and incremental",
-                  loc(later.column));
+  if (mc.lathe()) {
+    SKIPNC_TRY(lathe_axis_words(words));
+    for (int i = 0; i < axis_count; ++i) {
+      const char c = axis_letter[static_cast<std::size_t>(i)];
+      const char inc = incremental_letter(i);
+      const bool has_inc = inc != 0 && words.has(inc);
+      if (!has_inc && !words.has(c)) continue;
+      axis_target(i, words.at(has_inc ? inc : c), has_inc, g53, target);
+      moved.set(i);
     }
-    if (!has_abs && !has_inc) continue;
-    const double scale = axis_scale[static_cast<std::size_t>(i)];
-    const bool incremental = has_inc || modal.distance == Distance::kIncremental;
-    const double v = word_length(words.at(has_inc ? inc : c));
-    if (g53 && !incremental) {
-      target[i] = v * unit_mm() / scale;
-    } else if (!incremental) {
-      target[i] = machine_of(i, v);
-    } else {
-      // G45-G48 (ncblock.cpp) lengthen or shorten an incremental move; a T
-      // offset changed since the axis last moved is moved with it.
-      target[i] = pos[i] + v * unit_mm() / scale + shifts.get().g45_delta[i] +
-                  shifts.get().tool_offset_pending[i];
+  } else {
+    // A mill's axis words, one by one (an axis word is its own letter).
+    for (std::uint32_t rest = words.letters & axis_letters; rest != 0; rest &= rest - 1) {
+      const int letter = std::countr_zero(rest);
+      const char c = static_cast<char>('A' + letter);
+      if (framed && (c == 'X' || c == 'Y' || c == 'Z')) continue;
+      const int i = axis_of_letter[static_cast<std::size_t>(letter)];
+      axis_target(i, words.at(c), false, g53, target);
+      moved.set(i);
     }
-    if (!zero_bits(shifts.get().tool_offset_pending[i])) {
-      shifts.write().tool_offset_pending[i] = 0.0;
-    }
-    moved.set(i);
   }
   // Written only when it is not already all +0.0: a write copies the shifts
   // for the block's undo (BlockSaved), and nearly every block has none.
@@ -239,12 +263,12 @@ Flow<void> Interpreter::Impl::turning_cycle(const Words& words, AxisVec& target,
   const AxisVec start = pos;
   AxisVec p = start;
   p[x] = target[x] + taper;
-  emit(out, canon::Rapid{p, params.bit(config::param::kLinearRapid)});
+  emit(out, canon::Rapid{p, block_params.linear_rapid});
   p = target;
   emit(out, canon::Feed{p, feed, false});
   p[x] = start[x];
   emit(out, canon::Feed{p, feed, false});
-  emit(out, canon::Rapid{start, params.bit(config::param::kLinearRapid)});
+  emit(out, canon::Rapid{start, block_params.linear_rapid});
   lathe_state.set_cycle_z(target[z]);
   target = start;
   return {};

@@ -379,10 +379,7 @@ Flow<crc::BlockMode> Interpreter::Impl::comp_mode(const BlockPlan& plan) const {
 Flow<void> Interpreter::Impl::check_feeds(const AxisVec& start) {
   // A feed no axis's max_feed is below cannot be clamped: most blocks stop
   // here (this runs for every block).
-  double slowest = mc.axes[0].max_feed_mm_min;
-  for (int i = 1; i < axis_count; ++i) {
-    slowest = std::min(slowest, mc.axes[static_cast<std::size_t>(i)].max_feed_mm_min);
-  }
+  const double slowest = plain.slowest_feed;
   const AxisVec* from = &start;
   for (const canon::Stamped& c : block_buffer.cmds) {
     const AxisVec* to = nullptr;
@@ -540,7 +537,7 @@ Flow<Step> Interpreter::Impl::g37_block(const Words& words, CommandSink& out) {
   AxisVec approach = pos;
   approach[axis] = target[axis] - dir * gamma;
   if (dir * (approach[axis] - pos[axis]) > 0.0) {
-    emit(out, canon::Rapid{approach, params.bit(config::param::kLinearRapid)});
+    emit(out, canon::Rapid{approach, block_params.linear_rapid});
     pos = approach;
   }
   canon::Skip sk;
@@ -659,7 +656,7 @@ void emit_hole(Interpreter::Impl& in, const cycles::Hole& h, const AxisVec& base
                CommandSink& out) {
   const int x = in.axis_of_letter['X' - 'A'], y = in.axis_of_letter['Y' - 'A'],
             z = in.axis_of_letter['Z' - 'A'];
-  const bool linear = in.params.bit(config::param::kLinearRapid);
+  const bool linear = in.block_params.linear_rapid;
   const double feed = in.feed_mm_per_min();
   for (const cycles::Move& m : cycles::hole_moves(h)) {
     const xform::Point w = xform::to_work(in.frame(), m.to);

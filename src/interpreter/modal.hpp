@@ -68,6 +68,7 @@ struct ModalState {
   GCode probe;                    // G38.2-G38.5 while motion is kProbe
   bool arc_ijk_absolute = false;  // G90.1 (RS274NGC): I J K are the centre, not an offset
   int seq = 0;                    // last N
+  bool operator==(const ModalState&) const = default;
 };
 
 // Fanuc's modal information codes (#4001-#4022) for the state.

@@ -69,7 +69,7 @@ Flow<void> Interpreter::Impl::reference_return_fanuc(const Words& words, int g, 
   for (int i = 0; i < axis_count; ++i) {
     if (moved.has(i)) ref[i] = point != nullptr ? (*point)[i] : 0.0;
   }
-  const bool linear = params.bit(config::param::kLinearRapid);
+  const bool linear = block_params.linear_rapid;
   emit(out, canon::Rapid{mid, linear});
   emit(out, canon::Rapid{ref, linear});
   pos = ref;
@@ -96,7 +96,7 @@ Flow<Step> Interpreter::Impl::motion(const Words& words, CommandSink& out, bool 
   if (g53 && !skip && !(lang->rules.g53_g0_g1_only && modal.motion == Motion::kLinear)) {
     // G53 positions at rapid traverse whatever the modal motion (B-63944EN
     // "Machine coordinate system"); in G91 it is an incremental rapid.
-    emit(out, canon::Rapid{target, params.bit(config::param::kLinearRapid)});
+    emit(out, canon::Rapid{target, block_params.linear_rapid});
     pos = target;
     motion_since_sync = true;
     return Step::kContinue;
@@ -110,7 +110,7 @@ Flow<Step> Interpreter::Impl::motion(const Words& words, CommandSink& out, bool 
   const bool exact = modal.path == PathMode::kExactStop || words.has_g(GCode(9));
   switch (modal.motion) {
     case Motion::kRapid:
-      emit(out, canon::Rapid{target, params.bit(config::param::kLinearRapid)});
+      emit(out, canon::Rapid{target, block_params.linear_rapid});
       break;
     case Motion::kLinear:
       if (feed_mm_per_min() <= 0.0) {
@@ -247,6 +247,15 @@ struct ArcGeometry {
 }  // namespace
 
 Flow<void> Interpreter::Impl::arc(const Words& words, const AxisVec& target, CommandSink& out) {
+  canon::Arc a;
+  SKIPNC_TRY(arc_move(words, target, a));
+  emit(out, a);
+  return {};
+}
+
+// The arc command of a block into `a`, or its alarm; nothing changes.
+Flow<void> Interpreter::Impl::arc_move(const Words& words, const AxisVec& target,
+                                       canon::Arc& a) const {
   const ArcPlane ap = arc_plane(*this);
   const canon::Plane& pl = ap.pl;
   const SourceLoc at = loc(cur_col);
@@ -267,8 +276,7 @@ Flow<void> Interpreter::Impl::arc(const Words& words, const AxisVec& target, Com
   }
   const bool flipped = framed && ((frame().mirror[0] != (frame().scale[0] < 0.0)) !=
                                   (frame().mirror[1] != (frame().scale[1] < 0.0)));
-  const double tol_param = params.get(config::param::kArcRadiusTolerance);
-  const double tol = tol_param > 0 ? tol_param : 0.02;
+  const double tol = block_params.arc_tolerance;
   const ArcGeometry g{pos[pl.a0],
                       pos[pl.a1],
                       target[pl.a0],
@@ -288,7 +296,6 @@ Flow<void> Interpreter::Impl::arc(const Words& words, const AxisVec& target, Com
   } else {
     return fail(AlarmId::kArcBadCenter, "G02/G03 needs R or the centre (I, J, K)", at);
   }
-  canon::Arc a;
   a.target = target;
   a.center0 = cx;
   a.center1 = cy;
@@ -296,7 +303,6 @@ Flow<void> Interpreter::Impl::arc(const Words& words, const AxisVec& target, Com
   a.ccw = g.ccw;
   a.feed_mm_per_min = feed_mm_per_min();
   a.exact_stop = modal.path == PathMode::kExactStop || words.has_g(GCode(9));
-  emit(out, a);
   return {};
 }
 

@@ -163,6 +163,7 @@ void Interpreter::Impl::roll_back_tables(bool calls) {
 // the small state it started from by one assignment, truncates the logs it
 // appended to and rolls the tables' journals back.
 Flow<Step> Interpreter::Impl::execute_nc(const Words& words, CommandSink& out) {
+  if (plain_block(words, out)) return Step::kContinue;
   BlockPlan plan;
   SKIPNC_TRY(plan_block(words, plan));
   const BlockState before = *this;
@@ -191,9 +192,129 @@ Flow<Step> Interpreter::Impl::execute_nc(const Words& words, CommandSink& out) {
   return r;
 }
 
+// ---------------------------------------------------------------------------
+// The plain motion block: G00-G03 or no G code, axis words, F, I J K R and
+// nothing else, in the plain modes (a mill without cutter compensation,
+// canned cycle, G16/G68/G51 frame, G66, G45-G48 shift, in feed per minute).
+// Of the transaction's steps only these do something for it: the modal
+// motion and F (plan_modal), the N number and messages (commit_messages),
+// the skip state's step, the move (commit_action) and the sink (pass_block).
+// plain_block makes the move first and changes nothing until it is known to
+// succeed without a warning; a block it does not take, or whose move would
+// alarm or warn, runs through the transaction, which finds the same alarm.
+
+// What the plain block needs, once at the start of the run.
+void Interpreter::Impl::init_plain() {
+  block_params.linear_rapid = params.bit(config::param::kLinearRapid);
+  block_params.calculator_decimal = params.bit(config::param::kCalculatorDecimal);
+  const double tol = params.get(config::param::kArcRadiusTolerance);
+  block_params.arc_tolerance = tol > 0 ? tol : 0.02;
+  plain.slowest_feed = mc.axes[0].max_feed_mm_min;
+  for (int i = 1; i < axis_count; ++i) {
+    plain.slowest_feed =
+        std::min(plain.slowest_feed, mc.axes[static_cast<std::size_t>(i)].max_feed_mm_min);
+  }
+  if (mc.lathe()) return;
+  plain.letters = axis_letters;
+  for (const char c : std::string_view("FIJKR")) {
+    if (lang->rules.addresses.find(c) != std::string_view::npos) plain.letters |= 1u << (c - 'A');
+  }
+  for (int g = 0; g < 4; ++g) plain.motion_code[static_cast<std::size_t>(g)] = plain_code(GCode(g));
+  plain.on = true;
+}
+
+// G00-G03: the control has the code (plan_g_codes finds it) and it sets
+// the modal motion and nothing else.
+bool Interpreter::Impl::plain_code(GCode code) const {
+  auto def = g_code_def(code, 0);
+  if (!def || !(*def)->modal_state() || (*def)->group != Group::k01 || (*def)->set == nullptr) {
+    return false;
+  }
+  ModalState set, want;
+  (*def)->set(set);
+  want.motion = static_cast<Motion>(code.number());
+  return set == want;
+}
+
+// The plain block's move, changing nothing: 1 with its target and command,
+// 0 when the block does not move, -1 when the move would alarm or warn.
+int Interpreter::Impl::plain_move(const Words& words, AxisVec& target, canon::Command& cmd) {
+  const bool arc = modal.motion == Motion::kCwArc || modal.motion == Motion::kCcwArc;
+  const bool arc_words =
+      arc && (words.has('I') || words.has('J') || words.has('K') || words.has('R'));
+  if ((words.letters & axis_letters) == 0 && !arc_words) return 0;
+  AxisMask moved;
+  if (!axis_targets(words, false, target, moved)) return -1;
+  if (arc) return arc_move(words, target, cmd.emplace<canon::Arc>()) ? 1 : -1;
+  if (modal.motion == Motion::kRapid) {
+    cmd.emplace<canon::Rapid>(canon::Rapid{target, block_params.linear_rapid});
+    return 1;
+  }
+  // G01: without a feed, or faster than an axis may go (check_feeds' warning).
+  const double f = feed_mm_per_min();
+  if (f <= 0.0 || f > plain.slowest_feed) return -1;
+  cmd.emplace<canon::Feed>(canon::Feed{target, f, modal.path == PathMode::kExactStop});
+  return 1;
+}
+
+// True when the block was a plain block and has run, its command sent to
+// `out`; false when nothing was done.
+bool Interpreter::Impl::plain_block(const Words& words, CommandSink& out) {
+  if (!plain.on || words.m_count != 0 || words.g_count > 1 ||
+      (words.letters & ~plain.letters) != 0) {
+    return false;
+  }
+  Motion motion = modal.motion;
+  if (words.g_count == 1) {
+    const int tenths = words.g[0].tenths();
+    if (tenths < 0 || tenths % 10 != 0 || tenths > 30 ||
+        !plain.motion_code[static_cast<std::size_t>(tenths / 10)]) {
+      return false;
+    }
+    motion = static_cast<Motion>(tenths / 10);
+  }
+  if (motion > Motion::kCcwArc || modal.cycle != Cycle::kNone || modal.cutter != CutterComp::kOff ||
+      !comp.idle() || modal.modal_macro || modal.feed_mode != FeedMode::kPerMinute ||
+      frame_active() || shifts.get().moves_pending()) {
+    return false;
+  }
+  double feed = modal.feed;
+  if (words.has('F')) {
+    feed = words.at('F').value;
+    if (feed < 0) return false;
+  }
+  const Motion was_motion = modal.motion;
+  const double was_feed = modal.feed;
+  modal.motion = motion;
+  modal.feed = feed;
+  AxisVec target;
+  const int moves = plain_move(words, target, plain_out.cmd);
+  if (moves < 0) {
+    modal.motion = was_motion;
+    modal.feed = was_feed;
+    return false;
+  }
+  commit_messages();
+  skip_state.step = 0;
+  if (moves == 0) return true;
+  if (motion != Motion::kRapid) skip_state.last_cut_feed = feed;
+  pos = target;
+  motion_since_sync = true;
+  stamp(plain_out);
+  out.emit(plain_out);
+  return true;
+}
+
+void Interpreter::Impl::stamp(canon::Stamped& st) const noexcept {
+  st.line = cur_line;
+  st.source = programs.frames.back().context;
+  st.n = blk.has_n ? static_cast<std::int32_t>(blk.n % 100000000) : -1;
+}
+
 void Interpreter::Impl::emit(CommandSink& out, canon::Command cmd) {
-  out.emit(canon::Stamped{std::move(cmd), cur_line, programs.frames.back().context,
-                          blk.has_n ? static_cast<std::int32_t>(blk.n % 100000000) : -1});
+  canon::Stamped st{std::move(cmd)};
+  stamp(st);
+  out.emit(st);
 }
 
 }  // namespace skipnc::interp

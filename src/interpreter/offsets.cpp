@@ -13,22 +13,6 @@
 
 namespace skipnc::interp {
 
-double Interpreter::Impl::word_length(const WordVal& w) const noexcept {
-  if (w.is_expr || w.has_point || params.bit(config::param::kCalculatorDecimal)) return w.value;
-  // Without a decimal point a length is in least input increments.
-  const double increment = modal.units == Units::kInch ? 0.0001 : 0.001;
-  return w.value * increment;
-}
-
-double Interpreter::Impl::offset_total(int axis) const noexcept {
-  double o = (work_offsets[0][axis] + work_offsets[static_cast<std::size_t>(modal.work)][axis]) *
-                 offset_unit_mm(*this) +
-             shifts.get().local_shift[axis] + shifts.get().g92_shift[axis] +
-             shifts.get().tool_pos_offset[axis] + shifts.get().lathe_tool_offset[axis];
-  if (axis == length_axis) o += length_offset;
-  return o;
-}
-
 double Interpreter::Impl::work_of(int axis, double machine_mm) const noexcept {
   return (machine_mm * axis_scale[static_cast<std::size_t>(axis)] - offset_total(axis)) / unit_mm();
 }
@@ -43,10 +27,6 @@ double Interpreter::Impl::position_var(int axis, double machine_mm,
                                        bool tool_offsets) const noexcept {
   const double w = work_of(axis, machine_mm);
   return tool_offsets ? w + tool_offset_total(axis) / unit_mm() : w;
-}
-
-double Interpreter::Impl::machine_of(int axis, double work_units) const noexcept {
-  return (work_units * unit_mm() + offset_total(axis)) / axis_scale[static_cast<std::size_t>(axis)];
 }
 
 Flow<void> Interpreter::Impl::set_tool_length(const Words& words, LengthComp mode) {
