@@ -63,13 +63,13 @@ struct AxisShifts {
   // A G45-G48 change or a T offset the next move carries (Impl::axis_targets):
   // any of them not +0.0 to the bit.
   bool moves_pending() const noexcept {
-    for (int i = 0; i < kMaxAxes; ++i) {
-      if ((std::bit_cast<std::uint64_t>(g45_delta[i]) |
-           std::bit_cast<std::uint64_t>(tool_offset_pending[i])) != 0) {
-        return true;
-      }
-    }
-    return false;
+    return !plus_zero(g45_delta) || !plus_zero(tool_offset_pending);
+  }
+  // Every value +0.0 to the bit (-0.0 is not: a write of +0.0 over it changes it).
+  static bool plus_zero(const AxisVec& v) noexcept {
+    std::uint64_t bits = 0;
+    for (int i = 0; i < kMaxAxes; ++i) bits |= std::bit_cast<std::uint64_t>(v[i]);
+    return bits == 0;
   }
 };
 

@@ -297,7 +297,13 @@ struct Interpreter::Impl : BlockState, OffsetTables {
                      cur_line, column};
   }
   // The statement limit; `column` names the block in its alarm.
-  Flow<void> count_statement(std::uint32_t column);
+  Flow<void> count_statement(std::uint32_t column) {
+    if (++statements > mc.limits.max_macro_statements) [[unlikely]] {
+      return statement_limit(column);
+    }
+    return {};
+  }
+  Flow<void> statement_limit(std::uint32_t column) const;
 
   // macro_flow.cpp
   Flow<Step> execute_statement();
@@ -355,7 +361,7 @@ struct Interpreter::Impl : BlockState, OffsetTables {
   void init_plain();
   bool plain_code(GCode code) const;
   bool plain_block(const Words& words, CommandSink& out);
-  int plain_move(const Words& words, AxisVec& target, canon::Command& cmd);
+  const AxisVec* plain_move(const Words& words, canon::Command& cmd, const AxisVec& fallback);
   canon::Stamped plain_out;  // the plain block's command (reused)
   bool block_calls(const Words& words, const BlockPlan& plan) const noexcept;
   void begin_tables(bool calls);
@@ -486,7 +492,9 @@ struct Interpreter::Impl : BlockState, OffsetTables {
   // machine coordinates; `moved` gets the axes that have a word.
   Flow<void> axis_targets(const Words& words, bool g53, AxisVec& target, AxisMask& moved);
   Flow<void> lathe_axis_words(const Words& words) const;  // X and U (Z and W) in one block
-  void axis_target(int axis, const WordVal& w, bool incremental, bool g53, AxisVec& target);
+  void axis_target(int axis, const WordVal& w, bool inc_word, bool g53, AxisVec& target);
+  void mill_axis_words(const Words& words, std::uint32_t letters, bool g53, AxisVec& target,
+                       AxisMask& moved);
   bool has_axis_word(const Words& words) const noexcept;
   char incremental_letter(int axis) const noexcept;  // U W H on a lathe, 0 otherwise
   double spindle_rpm_at(const AxisVec& machine) const noexcept;

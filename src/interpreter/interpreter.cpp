@@ -133,14 +133,11 @@ Flow<void> Interpreter::Impl::warn(const char* code, std::string text, SourceLoc
   return {};
 }
 
-Flow<void> Interpreter::Impl::count_statement(std::uint32_t column) {
-  if (++statements > mc.limits.max_macro_statements) {
-    return fail(AlarmId::kLoopLimit,
-                "more than " + std::to_string(mc.limits.max_macro_statements) +
-                    " blocks executed (limits.max_macro_statements)",
-                loc(column));
-  }
-  return {};
+Flow<void> Interpreter::Impl::statement_limit(std::uint32_t column) const {
+  return fail(AlarmId::kLoopLimit,
+              "more than " + std::to_string(mc.limits.max_macro_statements) +
+                  " blocks executed (limits.max_macro_statements)",
+              loc(column));
 }
 
 // Reads the next block of the running frame into `blk`. False at the end of

@@ -64,9 +64,10 @@ Flow<void> Interpreter::Impl::lathe_axis_words(const Words& words) const {
   return {};
 }
 
-// One axis word's target, machine coordinates; `incremental`: U W H.
-void Interpreter::Impl::axis_target(int i, const WordVal& w, bool inc_word, bool g53,
-                                    AxisVec& target) {
+// One axis word's target, machine coordinates; `inc_word`: U W H.
+[[gnu::always_inline]] inline void Interpreter::Impl::axis_target(int i, const WordVal& w,
+                                                                  bool inc_word, bool g53,
+                                                                  AxisVec& target) {
   const double scale = axis_scale[static_cast<std::size_t>(i)];
   const bool incremental = inc_word || modal.distance == Distance::kIncremental;
   const double v = word_length(w);
@@ -82,6 +83,18 @@ void Interpreter::Impl::axis_target(int i, const WordVal& w, bool inc_word, bool
   }
   if (!zero_bits(shifts.get().tool_offset_pending[i])) {
     shifts.write().tool_offset_pending[i] = 0.0;
+  }
+}
+
+// A mill's axis words of `letters` (an axis word is its axis's letter), one
+// by one.
+void Interpreter::Impl::mill_axis_words(const Words& words, std::uint32_t letters, bool g53,
+                                        AxisVec& target, AxisMask& moved) {
+  for (std::uint32_t rest = letters; rest != 0; rest &= rest - 1) {
+    const int letter = std::countr_zero(rest);
+    const int i = axis_of_letter[static_cast<std::size_t>(letter)];
+    axis_target(i, words.at(static_cast<char>('A' + letter)), false, g53, target);
+    moved.set(i);
   }
 }
 
@@ -105,21 +118,13 @@ Flow<void> Interpreter::Impl::axis_targets(const Words& words, bool g53, AxisVec
       moved.set(i);
     }
   } else {
-    // A mill's axis words, one by one (an axis word is its own letter).
-    for (std::uint32_t rest = words.letters & axis_letters; rest != 0; rest &= rest - 1) {
-      const int letter = std::countr_zero(rest);
-      const char c = static_cast<char>('A' + letter);
-      if (framed && (c == 'X' || c == 'Y' || c == 'Z')) continue;
-      const int i = axis_of_letter[static_cast<std::size_t>(letter)];
-      axis_target(i, words.at(c), false, g53, target);
-      moved.set(i);
-    }
+    constexpr std::uint32_t kXyz = 1u << ('X' - 'A') | 1u << ('Y' - 'A') | 1u << ('Z' - 'A');
+    mill_axis_words(words, words.letters & axis_letters & (framed ? ~kXyz : ~0u), g53, target,
+                    moved);
   }
   // Written only when it is not already all +0.0: a write copies the shifts
   // for the block's undo (BlockSaved), and nearly every block has none.
-  bool g45_zero = true;
-  for (int i = 0; i < kMaxAxes; ++i) g45_zero = g45_zero && zero_bits(shifts.get().g45_delta[i]);
-  if (!g45_zero) shifts.write().g45_delta = AxisVec{};
+  if (!AxisShifts::plus_zero(shifts.get().g45_delta)) shifts.write().g45_delta = AxisVec{};
   return {};
 }
 

@@ -199,17 +199,37 @@ struct ArcGeometry {
   return {};
 }
 
+// LinuxCNC's tolerance (interp_arc.cc): 2 * 0.01 mm * sqrt(2), 2 * 0.001
+// inch * sqrt(2) in G20.
+[[gnu::always_inline]] inline double linuxcnc_arc_tolerance(const Interpreter::Impl& im) noexcept {
+  return (im.modal.units == Units::kInch ? 0.001 * 25.4 : 0.01) * 2.0 * std::sqrt(2.0);
+}
+
 // Whether the start and end radii differ too much, under the language's rule.
 [[gnu::always_inline]] inline bool radius_error(const Interpreter::Impl& im, double r0, double r1,
                                                 double tol) noexcept {
   if (!im.lang->rules.arc_radius_linuxcnc) return std::fabs(r1 - r0) > tol;
   // LinuxCNC (interp_arc.cc): refused when the radii differ by more than
-  // 100 times the tolerance, or by more than the tolerance and 0.1 %;
-  // the tolerance is 2 * 0.01 mm * sqrt(2) (2 * 0.001 inch * sqrt(2) in G20).
-  const double abs_tol =
-      (im.modal.units == Units::kInch ? 0.001 * 25.4 : 0.01) * 2.0 * std::sqrt(2.0);
+  // 100 times the tolerance, or by more than the tolerance and 0.1 %.
+  const double abs_tol = linuxcnc_arc_tolerance(im);
   const double err = std::fabs(r1 - r0);
   return err > 100.0 * abs_tol || (err / std::max(r0, r1) > 0.001 && err > abs_tol);
+}
+
+// Whether the radii of an arc (start and end to the centre) are surely
+// accepted: their difference, from sqrt(x * x + y * y), is below the
+// tolerance by far more than the few units in the last place between that
+// and std::hypot (no square overflows below 1e150; none underflows to
+// matter above 2e-9). Where this is not sure the radii come from std::hypot.
+[[gnu::always_inline]] inline bool radii_surely_accepted(const Interpreter::Impl& im,
+                                                         const ArcGeometry& g, double cx,
+                                                         double cy) noexcept {
+  const double a = g.sx - cx, b = g.sy - cy, c = g.ex - cx, d = g.ey - cy;
+  const double q0 = std::sqrt(a * a + b * b), q1 = std::sqrt(c * c + d * d);
+  // Under LinuxCNC's rule a difference below its tolerance is never refused.
+  const double limit = im.lang->rules.arc_radius_linuxcnc ? linuxcnc_arc_tolerance(im) : g.tol;
+  return q0 > 2e-9 && q0 < 1e150 && q1 < 1e150 &&
+         std::fabs(q1 - q0) + 1e-12 * std::max(q0, q1) < limit;
 }
 
 // The centre of an arc given by I, J, K (G90.1: absolute in work coordinates).
@@ -232,6 +252,7 @@ struct ArcGeometry {
   }
   cx = g.sx + oi;
   cy = g.sy + oj;
+  if (radii_surely_accepted(im, g, cx, cy)) return {};
   const double r0 = std::hypot(g.sx - cx, g.sy - cy);
   const double r1 = std::hypot(g.ex - cx, g.ey - cy);
   if (r0 < 1e-9) return fail(AlarmId::kArcBadCenter, "the arc's centre is its start point", at);
@@ -296,7 +317,7 @@ Flow<void> Interpreter::Impl::arc_move(const Words& words, const AxisVec& target
   } else {
     return fail(AlarmId::kArcBadCenter, "G02/G03 needs R or the centre (I, J, K)", at);
   }
-  a.target = target;
+  if (&a.target != &target) a.target = target;
   a.center0 = cx;
   a.center1 = cy;
   a.plane = pl;

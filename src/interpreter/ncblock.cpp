@@ -95,13 +95,13 @@ Flow<void> Interpreter::Impl::collect_words(Words& words) {
       words.m[static_cast<std::size_t>(words.m_count++)] = static_cast<int>(m);
       continue;
     }
-    auto& slot = words.slot(w.letter);
-    if (slot) {
+    const std::uint32_t bit = 1u << (w.letter - 'A');  // a slot is set where its bit is
+    if ((words.letters & bit) != 0) {
       return fail(AlarmId::kWordRepeated,
                   std::string("address ") + w.letter + " twice in one block", loc(w.column));
     }
-    slot = v;
-    words.letters |= 1u << (w.letter - 'A');
+    words.slot(w.letter).emplace(v);
+    words.letters |= bit;
   }
   return {};
 }
@@ -236,25 +236,33 @@ bool Interpreter::Impl::plain_code(GCode code) const {
   return set == want;
 }
 
-// The plain block's move, changing nothing: 1 with its target and command,
-// 0 when the block does not move, -1 when the move would alarm or warn.
-int Interpreter::Impl::plain_move(const Words& words, AxisVec& target, canon::Command& cmd) {
+// The plain block's move into `cmd`, changing nothing: its target; null
+// when the block does not move, `fallback` when the move would alarm or warn.
+const AxisVec* Interpreter::Impl::plain_move(const Words& words, canon::Command& cmd,
+                                             const AxisVec& fallback) {
   const bool arc = modal.motion == Motion::kCwArc || modal.motion == Motion::kCcwArc;
   const bool arc_words =
       arc && (words.has('I') || words.has('J') || words.has('K') || words.has('R'));
-  if ((words.letters & axis_letters) == 0 && !arc_words) return 0;
-  AxisMask moved;
-  if (!axis_targets(words, false, target, moved)) return -1;
-  if (arc) return arc_move(words, target, cmd.emplace<canon::Arc>()) ? 1 : -1;
+  if ((words.letters & axis_letters) == 0 && !arc_words) return nullptr;
+  // axis_targets without a frame, G53 or U W H: the axis words one by one.
+  auto targets = [&](AxisVec& target) -> AxisVec* {
+    target = pos;
+    AxisMask moved;
+    mill_axis_words(words, words.letters & axis_letters, false, target, moved);
+    return &target;
+  };
+  if (arc) {
+    canon::Arc& a = cmd.emplace<canon::Arc>();
+    return arc_move(words, *targets(a.target), a) ? &a.target : &fallback;
+  }
   if (modal.motion == Motion::kRapid) {
-    cmd.emplace<canon::Rapid>(canon::Rapid{target, block_params.linear_rapid});
-    return 1;
+    return targets(cmd.emplace<canon::Rapid>(canon::Rapid{{}, block_params.linear_rapid}).target);
   }
   // G01: without a feed, or faster than an axis may go (check_feeds' warning).
   const double f = feed_mm_per_min();
-  if (f <= 0.0 || f > plain.slowest_feed) return -1;
-  cmd.emplace<canon::Feed>(canon::Feed{target, f, modal.path == PathMode::kExactStop});
-  return 1;
+  if (f <= 0.0 || f > plain.slowest_feed) return &fallback;
+  return targets(
+      cmd.emplace<canon::Feed>(canon::Feed{{}, f, modal.path == PathMode::kExactStop}).target);
 }
 
 // True when the block was a plain block and has run, its command sent to
@@ -287,18 +295,17 @@ bool Interpreter::Impl::plain_block(const Words& words, CommandSink& out) {
   const double was_feed = modal.feed;
   modal.motion = motion;
   modal.feed = feed;
-  AxisVec target;
-  const int moves = plain_move(words, target, plain_out.cmd);
-  if (moves < 0) {
+  const AxisVec* target = plain_move(words, plain_out.cmd, pos);
+  if (target == &pos) {
     modal.motion = was_motion;
     modal.feed = was_feed;
     return false;
   }
   commit_messages();
   skip_state.step = 0;
-  if (moves == 0) return true;
+  if (target == nullptr) return true;
   if (motion != Motion::kRapid) skip_state.last_cut_feed = feed;
-  pos = target;
+  pos = *target;
   motion_since_sync = true;
   stamp(plain_out);
   out.emit(plain_out);
