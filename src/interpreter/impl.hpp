@@ -87,23 +87,26 @@ struct WordVal {
   std::uint32_t column = 0;
 };
 
-// The words of one block, by address.
+// The words of one block, by address: w[c] holds address 'A' + c where
+// bit c of `letters` is set (and is stale elsewhere).
 struct Words {
-  std::array<std::optional<WordVal>, 26> w;
-  std::uint32_t letters = 0;  // bit c set: w[c] holds a word
+  std::array<WordVal, 26> w;
+  std::uint32_t letters = 0;
   int g_count = 0;
   std::array<GCode, 16> g{};
   std::array<std::uint32_t, 16> g_col{};
   int m_count = 0;
   std::array<int, 3> m{};
-  bool has(char c) const noexcept { return w[static_cast<std::size_t>(c - 'A')].has_value(); }
-  const WordVal& at(char c) const noexcept { return *w[static_cast<std::size_t>(c - 'A')]; }
-  std::optional<WordVal>& slot(char c) noexcept { return w[static_cast<std::size_t>(c - 'A')]; }
-  // Empties the slots in use (a cleared Words is as a new one).
+  static std::uint32_t bit(char c) noexcept { return 1u << (c - 'A'); }
+  bool has(char c) const noexcept { return (letters & bit(c)) != 0; }
+  const WordVal& at(char c) const noexcept { return w[static_cast<std::size_t>(c - 'A')]; }
+  void set(char c, const WordVal& v) noexcept {
+    w[static_cast<std::size_t>(c - 'A')] = v;
+    letters |= bit(c);
+  }
+  void erase(char c) noexcept { letters &= ~bit(c); }
+  // A cleared Words is as a new one.
   void clear() noexcept {
-    for (std::uint32_t rest = letters; rest != 0; rest &= rest - 1) {
-      w[static_cast<std::size_t>(std::countr_zero(rest))].reset();
-    }
     letters = 0;
     g_count = 0;
     m_count = 0;
@@ -158,6 +161,9 @@ struct PlainBlock {
   std::uint32_t letters = 0;          // bit c: address 'A' + c may be in a plain block
   std::array<bool, 4> motion_code{};  // G00-G03 are this control's motion codes
   double slowest_feed = 0.0;          // the lowest max_feed of the axes, mm/min (check_feeds)
+  // Found again when Impl::shifts or Impl::program_frame changed (take_changed):
+  bool moves_pending = false;  // a G45-G48 change or T offset to carry (AxisShifts)
+  bool framed = false;         // a G68 / G51 / G51.1 / G68 I J K / G54.4 frame
 };
 
 // The parameters every motion block reads, read once at the start of the
@@ -355,6 +361,7 @@ struct Interpreter::Impl : BlockState, OffsetTables {
   // ncblock.cpp (the transaction), block_plan.cpp (plan_*), block_commit.cpp
   // (commit_*), offsets.cpp (the offsets, G43, G10)
   Flow<void> collect_words(Words& words);
+  Flow<void> code_word(Words& words, const gcode::Word& w, double value) const;
   Flow<Step> execute_nc(const Words& words, CommandSink& out);
   PlainBlock plain;
   BlockParams block_params;

@@ -100,8 +100,12 @@ class BlockSaved {
       before_ = value_;
       saved_ = true;
     }
+    changed_ = true;
     return value_;
   }
+  // Whether the value may have changed (a write, a roll back) since the
+  // last call: what is derived from it is found again only then.
+  bool take_changed() noexcept { return std::exchange(changed_, false); }
 
   void begin_block() noexcept {
     recording_ = true;
@@ -109,7 +113,10 @@ class BlockSaved {
   }
   void commit() noexcept { recording_ = false; }
   void roll_back() noexcept {
-    if (saved_) value_ = before_;
+    if (saved_) {
+      value_ = before_;
+      changed_ = true;
+    }
     recording_ = false;
     saved_ = false;
   }
@@ -119,6 +126,7 @@ class BlockSaved {
   T before_{};
   bool recording_ = false;
   bool saved_ = false;
+  bool changed_ = true;
 };
 
 }  // namespace skipnc::interp

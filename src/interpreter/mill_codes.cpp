@@ -759,8 +759,7 @@ Flow<Step> Interpreter::Impl::canned_cycle(const Words& words, CommandSink& out)
   SKIPNC_TRY(c);
   // The hole's position: the block's axis words but Z (the hole data).
   Words position = words;
-  position.slot('Z').reset();
-  position.letters &= ~(1u << ('Z' - 'A'));
+  position.erase('Z');
   for (int k = 0; k < *repeats; ++k) {
     AxisVec target;
     AxisMask moved;

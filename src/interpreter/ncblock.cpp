@@ -23,6 +23,34 @@
 
 namespace skipnc::interp {
 
+// A G or M word of the block, its value evaluated.
+Flow<void> Interpreter::Impl::code_word(Words& words, const gcode::Word& w, double value) const {
+  if (w.letter == 'G') {
+    if (words.g_count == static_cast<int>(words.g.size())) {
+      return fail(AlarmId::kGCodeConflict, "too many G codes in one block", loc(w.column));
+    }
+    // G0-G999 whole as GCode::of_value finds them, without its rounding.
+    const bool small = value >= 0.0 && value < 1000.0;
+    const int whole = small ? static_cast<int>(value) : 0;
+    const std::optional<GCode> code =
+        small && whole == value ? std::optional<GCode>(GCode(whole)) : GCode::of_value(value);
+    if (!code) return fail(AlarmId::kUnknownGCode, "G" + fmt::format("{}", value), loc(w.column));
+    words.g[static_cast<std::size_t>(words.g_count)] = *code;
+    words.g_col[static_cast<std::size_t>(words.g_count++)] = w.column;
+    return {};
+  }
+  if (words.m_count == 3) {
+    return fail(AlarmId::kTooManyMCodes, "more than 3 M codes in one block", loc(w.column));
+  }
+  // A value in brackets is rounded (M[3.5] is M4); a literal must be whole.
+  const double m = w.is_expr ? std::round(value) : value;
+  if (m != std::trunc(m) || m < 0 || m > 99999999) {
+    return fail(AlarmId::kUnknownMCode, "M" + fmt::format("{}", value), loc(w.column));
+  }
+  words.m[static_cast<std::size_t>(words.m_count++)] = static_cast<int>(m);
+  return {};
+}
+
 // Evaluates the words of an NC block. In a G65/G66 block every address but
 // G, P and L is a macro argument (see collect_argument); elsewhere an
 // address may appear once.
@@ -71,37 +99,15 @@ Flow<void> Interpreter::Impl::collect_words(Words& words) {
       if (!a) return a;
       continue;
     }
-    if (w.letter == 'G') {
-      if (words.g_count == static_cast<int>(words.g.size())) {
-        return fail(AlarmId::kGCodeConflict, "too many G codes in one block", loc(w.column));
-      }
-      const std::optional<GCode> code = GCode::of_value(v.value);
-      if (!code) {
-        return fail(AlarmId::kUnknownGCode, "G" + fmt::format("{}", v.value), loc(w.column));
-      }
-      words.g[static_cast<std::size_t>(words.g_count)] = *code;
-      words.g_col[static_cast<std::size_t>(words.g_count++)] = w.column;
+    if (w.letter == 'G' || w.letter == 'M') {
+      SKIPNC_TRY(code_word(words, w, v.value));
       continue;
     }
-    if (w.letter == 'M') {
-      if (words.m_count == 3) {
-        return fail(AlarmId::kTooManyMCodes, "more than 3 M codes in one block", loc(w.column));
-      }
-      // A value in brackets is rounded (M[3.5] is M4); a literal must be whole.
-      const double m = w.is_expr ? std::round(v.value) : v.value;
-      if (m != std::trunc(m) || m < 0 || m > 99999999) {
-        return fail(AlarmId::kUnknownMCode, "M" + fmt::format("{}", v.value), loc(w.column));
-      }
-      words.m[static_cast<std::size_t>(words.m_count++)] = static_cast<int>(m);
-      continue;
-    }
-    const std::uint32_t bit = 1u << (w.letter - 'A');  // a slot is set where its bit is
-    if ((words.letters & bit) != 0) {
+    if (words.has(w.letter)) {
       return fail(AlarmId::kWordRepeated,
                   std::string("address ") + w.letter + " twice in one block", loc(w.column));
     }
-    words.slot(w.letter).emplace(v);
-    words.letters |= bit;
+    words.set(w.letter, v);
   }
   return {};
 }
@@ -283,9 +289,12 @@ bool Interpreter::Impl::plain_block(const Words& words, CommandSink& out) {
   }
   if (motion > Motion::kCcwArc || modal.cycle != Cycle::kNone || modal.cutter != CutterComp::kOff ||
       !comp.idle() || modal.modal_macro || modal.feed_mode != FeedMode::kPerMinute ||
-      frame_active() || shifts.get().moves_pending()) {
+      frame_codes.polar) {
     return false;
   }
+  if (shifts.take_changed()) plain.moves_pending = shifts.get().moves_pending();
+  if (program_frame.take_changed()) plain.framed = frame().active();
+  if (plain.moves_pending || plain.framed) return false;
   double feed = modal.feed;
   if (words.has('F')) {
     feed = words.at('F').value;
