@@ -28,6 +28,23 @@ std::string improper_g(GCode code, const CodeDef* refusal, bool lathe) {
   return code_name(code);
 }
 
+// A code this control does not have (absent: `unknown`) or that skipnc does
+// not simulate, by the dialect's lists; `name` writes the code.
+template <class Code, class Name>
+Flow<void> refuse_listed(const Interpreter::Impl& im, const std::vector<Code>& absent,
+                         const std::vector<Code>& not_simulated, Code code, Name name,
+                         AlarmId unknown, std::uint32_t col) {
+  if (std::find(absent.begin(), absent.end(), code) != absent.end()) {
+    return fail(unknown, name(code) + " is not a code of this control", im.loc(col));
+  }
+  if (std::find(not_simulated.begin(), not_simulated.end(), code) != not_simulated.end()) {
+    return fail(AlarmId::kNotSimulated,
+                name(code) + " is a code of this control that skipnc does not simulate",
+                im.loc(col));
+  }
+  return {};
+}
+
 }  // namespace
 
 // Finds each G word in the code table, puts it in its group's slot and
@@ -73,16 +90,9 @@ Flow<void> Interpreter::Impl::plan_g_codes(const Words& words, BlockPlan& plan) 
 // this control does not have or skipnc does not simulate.
 Flow<const CodeDef*> Interpreter::Impl::g_code_def(GCode code, std::uint32_t col) const {
   const bool lathe = mc.lathe();
-  if (std::find(dialect.absent_g.begin(), dialect.absent_g.end(), code) != dialect.absent_g.end()) {
-    return fail(AlarmId::kUnknownGCode, code_name(code) + " is not a code of this control",
-                loc(col));
-  }
-  if (std::find(dialect.not_simulated_g.begin(), dialect.not_simulated_g.end(), code) !=
-      dialect.not_simulated_g.end()) {
-    return fail(AlarmId::kNotSimulated,
-                code_name(code) + " is a code of this control that skipnc does not simulate",
-                loc(col));
-  }
+  SKIPNC_TRY(refuse_listed(
+      *this, dialect.absent_g, dialect.not_simulated_g, code, [](GCode c) { return code_name(c); },
+      AlarmId::kUnknownGCode, col));
   const CodeDef* def = find_g(code, lathe);
   if (def == nullptr || def->handler == Handler::kRefused) {
     return fail(AlarmId::kUnknownGCode, improper_g(code, def, lathe), loc(col));
@@ -285,17 +295,9 @@ Flow<void> Interpreter::Impl::plan_block(const Words& words, BlockPlan& plan) {
   auto g = plan_g_codes(words, plan);
   if (!g) return g;
   for (int i = 0; i < words.m_count; ++i) {
-    const int m = words.m[static_cast<std::size_t>(i)];
-    if (std::find(dialect.absent_m.begin(), dialect.absent_m.end(), m) != dialect.absent_m.end()) {
-      return fail(AlarmId::kUnknownMCode, m_code_name(m) + " is not a code of this control",
-                  loc(cur_col));
-    }
-    if (std::find(dialect.not_simulated_m.begin(), dialect.not_simulated_m.end(), m) !=
-        dialect.not_simulated_m.end()) {
-      return fail(AlarmId::kNotSimulated,
-                  m_code_name(m) + " is a code of this control that skipnc does not simulate",
-                  loc(cur_col));
-    }
+    SKIPNC_TRY(refuse_listed(
+        *this, dialect.absent_m, dialect.not_simulated_m, words.m[static_cast<std::size_t>(i)],
+        [](int m) { return m_code_name(m); }, AlarmId::kUnknownMCode, cur_col));
   }
   auto m = plan_mill(plan);
   if (!m) return m;

@@ -1,7 +1,7 @@
 // The interpreter's small state that an NC block may change, as one value.
 // `Interpreter::Impl` derives from it (the members keep their names); a
 // block starts from a copy of it and an alarmed block puts the copy back
-// with one assignment (ncblock.cpp execute_nc, docs/architecture.md "The
+// with one assignment (ncblock.cpp run_block, docs/architecture.md "The
 // block transaction"). No member owns memory: the copy is a plain memcpy
 // of a few hundred bytes. The large tables a block may write (work
 // offsets, tool offsets, variables, the call stack) are journaled instead

@@ -362,7 +362,12 @@ struct Interpreter::Impl : BlockState, OffsetTables {
   // (commit_*), offsets.cpp (the offsets, G43, G10)
   Flow<void> collect_words(Words& words);
   Flow<void> code_word(Words& words, const gcode::Word& w, double value) const;
-  Flow<Step> execute_nc(const Words& words, CommandSink& out);
+  // An NC block: a plain motion block (plain_block) or the transaction.
+  Flow<Step> execute_nc(const Words& words, CommandSink& out) {
+    if (plain_block(words, out)) return Step::kContinue;
+    return run_block(words, out);
+  }
+  Flow<Step> run_block(const Words& words, CommandSink& out);
   PlainBlock plain;
   BlockParams block_params;
   void init_plain();

@@ -8,7 +8,7 @@
 //           control's order, one function per step, emitting into the
 //           block's buffer.
 // A block that raises an alarm in either stage emits nothing and leaves
-// the interpreter as it was (execute_nc, below: the block's small state
+// the interpreter as it was (run_block, below: the block's small state
 // is copied before and put back, the tables' journals rolled back, the
 // buffer dropped; docs/architecture.md "The block transaction").
 #include <fmt/format.h>
@@ -168,8 +168,7 @@ void Interpreter::Impl::roll_back_tables(bool calls) {
 // `out` only when the whole block succeeded. An alarmed block puts back
 // the small state it started from by one assignment, truncates the logs it
 // appended to and rolls the tables' journals back.
-Flow<Step> Interpreter::Impl::execute_nc(const Words& words, CommandSink& out) {
-  if (plain_block(words, out)) return Step::kContinue;
+Flow<Step> Interpreter::Impl::run_block(const Words& words, CommandSink& out) {
   BlockPlan plan;
   SKIPNC_TRY(plan_block(words, plan));
   const BlockState before = *this;
