@@ -24,12 +24,11 @@
 
 namespace skipnc::interp {
 
-void Interpreter::Impl::commit_messages() {
+void Interpreter::Impl::comment_messages() {
   for (const auto& c : blk.comments) {
     const std::string& t = blk.names[static_cast<std::size_t>(c.text)];
     if (t.size() >= 4 && t.compare(0, 4, "MSG,") == 0) add_message(t.substr(4));
   }
-  if (blk.has_n) modal.seq = static_cast<int>(blk.n % 100000000);
 }
 
 // G65: call now; G66: remember the macro for the blocks that move.

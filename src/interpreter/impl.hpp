@@ -281,7 +281,16 @@ struct Interpreter::Impl : BlockState, OffsetTables {
 
   // interpreter.cpp
   Flow<void> init(const AxisVec& start);
-  Flow<Step> step(CommandSink& out);
+  // One block; at a point where the machine must catch up (a sync) or at
+  // the end, what cutter compensation holds goes out first (flush_held).
+  Flow<Step> step(CommandSink& out) {
+    auto r = step_block(out);
+    if (r && (*r == Step::kSync || *r == Step::kEnd) && !comp.idle()) {
+      SKIPNC_TRY(flush_held(*r, out));
+    }
+    return r;
+  }
+  Flow<void> flush_held(Step why, CommandSink& out);
   Flow<Step> step_block(CommandSink& out);
   void init_axes();
   void init_tables();
@@ -398,7 +407,12 @@ struct Interpreter::Impl : BlockState, OffsetTables {
   Flow<void> plan_modal(const Words& words, BlockPlan& plan);
   Flow<int> offset_number(const Words& words, char letter) const;
   Flow<Step> commit_block(const Words& words, const BlockPlan& plan, CommandSink& out);
-  void commit_messages();
+  // The block's (MSG, ...) comments, then its N (#4114).
+  void commit_messages() {
+    if (!blk.comments.empty()) comment_messages();
+    if (blk.has_n) modal.seq = static_cast<int>(blk.n % 100000000);
+  }
+  void comment_messages();
   Flow<Step> commit_call(const BlockPlan& plan);
   void commit_modal(const Words& words, const BlockPlan& plan, CommandSink& out);
   Flow<void> commit_tool(const Words& words, const ModalState& before, CommandSink& out);
@@ -517,7 +531,12 @@ struct Interpreter::Impl : BlockState, OffsetTables {
   void emit_spindle(CommandSink& out);
   Flow<void> turning_cycle(const Words& words, AxisVec& target, AxisMask moved, CommandSink& out);
   void emit(CommandSink& out, canon::Command cmd);
-  void stamp(canon::Stamped& st) const noexcept;  // the block's line, context and N
+  // The block's line, context and N on a command.
+  void stamp(canon::Stamped& st) const noexcept {
+    st.line = cur_line;
+    st.source = programs.frames.back().context;
+    st.n = blk.has_n ? static_cast<std::int32_t>(blk.n % 100000000) : -1;
+  }
 };
 
 // Read for every axis word (inline: a few times per block).

@@ -157,24 +157,20 @@ Flow<bool> Interpreter::Impl::read_block() {
   return true;
 }
 
-// One block; at a point where the machine must catch up (a sync) or at the
-// end, what cutter compensation holds goes out first.
-Flow<Step> Interpreter::Impl::step(CommandSink& out) {
-  auto r = step_block(out);
-  if (r && (*r == Step::kSync || *r == Step::kEnd)) {
-    if (const std::uint32_t held = flush_comp(out); held != 0) {
-      auto w = warn("comp_lookahead",
-                    "cutter compensation: the move of line " + std::to_string(held) +
-                        " ends perpendicular to its end point because " +
-                        (*r == Step::kEnd ? std::string("the program ends in G41/G42")
-                                          : std::string("the interpreter waits for the machine "
-                                                        "here (a live read, M00/M01, G31)")) +
-                        "; the control does the same and the next move may overcut",
-                    loc(cur_col));
-      SKIPNC_TRY(w);
-    }
+// At a sync or the end: what cutter compensation holds goes out, and the
+// warning says which move ends perpendicular.
+Flow<void> Interpreter::Impl::flush_held(Step why, CommandSink& out) {
+  if (const std::uint32_t held = flush_comp(out); held != 0) {
+    return warn("comp_lookahead",
+                "cutter compensation: the move of line " + std::to_string(held) +
+                    " ends perpendicular to its end point because " +
+                    (why == Step::kEnd ? std::string("the program ends in G41/G42")
+                                       : std::string("the interpreter waits for the machine "
+                                                     "here (a live read, M00/M01, G31)")) +
+                    "; the control does the same and the next move may overcut",
+                loc(cur_col));
   }
-  return r;
+  return {};
 }
 
 // The end of the running file: a subprogram returns, the main program ends.

@@ -320,12 +320,6 @@ bool Interpreter::Impl::plain_block(const Words& words, CommandSink& out) {
   return true;
 }
 
-void Interpreter::Impl::stamp(canon::Stamped& st) const noexcept {
-  st.line = cur_line;
-  st.source = programs.frames.back().context;
-  st.n = blk.has_n ? static_cast<std::int32_t>(blk.n % 100000000) : -1;
-}
-
 void Interpreter::Impl::emit(CommandSink& out, canon::Command cmd) {
   canon::Stamped st{std::move(cmd)};
   stamp(st);
