@@ -384,10 +384,10 @@ def compare_records(a, b, tol):
 # ----------------------------------------------------------------------------
 # running the two interpreters
 
-def run(cmd, cwd=None, timeout=60):
+def run(cmd, cwd=None, timeout=60, env=None):
     try:
         p = subprocess.run(cmd, cwd=cwd, capture_output=True, text=True,
-                           timeout=timeout, stdin=subprocess.DEVNULL)
+                           timeout=timeout, stdin=subprocess.DEVNULL, env=env)
     except subprocess.TimeoutExpired:
         return None, "", "timed out after %d s" % timeout
     except OSError as e:
@@ -404,16 +404,20 @@ def clean_message(stderr):
 def run_rs274(rs274, program, tool_table):
     # rs274 may write a parameter file in its working folder: give it a
     # fresh one, so that no state carries over from program to program.
-    # rs274 itself is sometimes killed by a signal on a loaded machine (seen
-    # as exit -7, SIGBUS, on programs it runs cleanly alone): such a run is
-    # tried again, up to twice; an ordinary error is not.
+    # LinuxCNC 2.9 keeps the loaded tool table in a file it maps,
+    # $HOME/.tool.mmap (libtooldata's tooldata_mmap.cc), shared by every
+    # rs274 of that HOME: two comparisons run at once (ctest -j2) truncated
+    # each other's table, which showed as "Requested tool 1 not found in the
+    # tool table" or a SIGBUS. Each run gets the fresh folder as its HOME.
+    # A run killed by a signal is still tried again, up to twice; an
+    # ordinary error is not.
     for _ in range(3):
         with tempfile.TemporaryDirectory(prefix="rs274-") as tmp:
             cmd = [rs274]
             if tool_table:
                 cmd += ["-t", tool_table]
             cmd += ["-g", os.path.abspath(program)]
-            rc, out, err = run(cmd, cwd=tmp)
+            rc, out, err = run(cmd, cwd=tmp, env=dict(os.environ, HOME=tmp))
         if rc is None or rc >= 0:
             break
     if rc != 0:
