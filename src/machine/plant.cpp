@@ -97,7 +97,8 @@ void Plant::advance(Tick k, const AxisVec& from, const AxisVec& to,
     still = from[i] == to[i] && before[i] == actual_[i];
     if (!still) moving_axis_ = i;
   }
-  if (!sources_.empty()) source_edges(k, before, in);
+  // Most periods: no trigger or pulse in the scene and no probing edge.
+  if (timed_sources_ != 0 || !probing_.edges().empty()) source_edges(k, before, in);
   still_ = still && in.edge_count == 0 ? std::min(still_ + 1, 2) : 0;
 }
 

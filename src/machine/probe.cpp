@@ -78,7 +78,7 @@ double TouchProbe::deflection_at(geo::Vec3 p) const noexcept {
 }
 
 void TouchProbe::reset(geo::Vec3 ball) noexcept {
-  anchor_clear_ = -1.0;
+  anchor_margin_ = -1.0;
   raw_ = signed_deflection(ball);
   deflection_ = std::max(0.0, raw_);
   state_ = State::kFree;
@@ -88,32 +88,36 @@ void TouchProbe::reset(geo::Vec3 ball) noexcept {
   }
 }
 
-// True when every point of the path a -> b is more than the deflection's
-// search cap (2 r, signed_deflection) from the material, with 1 nm to spare:
-// then no contact can start and the distance search would return its cap.
-// The clearance of a point moved by s is at least its clearance less s, and
-// the point of a segment farthest from the anchor is one of its ends.
+// True when every point of the path a -> b is farther than the ball's
+// radius from the material, with some spare: then the ball of radius r can
+// touch nothing in the period (first_contact finds no contact) and it ends
+// clear (signed_deflection < 0), which is all advance() takes from those
+// searches while the ball is free. The spare covers the contact searches'
+// own tolerances (a point within kOnSurface of a solid, a rim's contact
+// within 1e-6 (1 + r) of the radius) many times over. The clearance of a
+// point moved by s is at least its clearance less s, and the point of a
+// segment farthest from the anchor is one of its ends.
 bool TouchProbe::far_from_material(geo::Vec3 a, geo::Vec3 b) noexcept {
-  constexpr double kSpare = 1e-6;  // mm
-  const double need = 2.0 * spec_.ball_radius + kSpare;
-  // Both ends within clearance - need of the anchor (squared: no root).
+  // Both ends within the margin of the anchor (squared: no root).
   const auto holds = [&] {
-    const double m = anchor_clear_ - need;
     const geo::Vec3 da = a - anchor_, db = b - anchor_;
-    return m > 0.0 && std::max(geo::dot(da, da), geo::dot(db, db)) < m * m;
+    return std::max(geo::dot(da, da), geo::dot(db, db)) < anchor_margin_sq_;
   };
-  if (anchor_clear_ >= 0.0 && holds()) return true;
+  if (anchor_margin_ > 0.0 && holds()) return true;
+  const double need = spec_.ball_radius + 1e-5 * (1.0 + spec_.ball_radius);
   anchor_ = a;
-  anchor_clear_ = solids_.clearance(a);
-  return holds();
+  anchor_margin_ = solids_.clearance(a) - need;
+  anchor_margin_sq_ = anchor_margin_ * anchor_margin_;
+  return anchor_margin_ > 0.0 && holds();
 }
 
 int TouchProbe::advance(geo::Vec3 a, geo::Vec3 b, SensorEdge* edges) noexcept {
   int n = 0;
   const double r = spec_.ball_radius;
   if (state_ == State::kFree && far_from_material(a, b)) {
-    // What the searches below give there: no contact, the capped distance.
-    raw_ = r - 2.0 * r;
+    // What the searches below give there: no contact, clear of the
+    // material (raw_ is only ever compared with 0 and the switch point).
+    raw_ = -r;
     deflection_ = 0.0;
     return 0;
   }

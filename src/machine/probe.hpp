@@ -60,6 +60,14 @@ class TouchProbe {
   // Pre-travel for a contact whose normal (surface toward ball) is `normal`,
   // lobing included, scatter not.
   double pre_travel_for(geo::Vec3 normal) const noexcept;
+  // How far the ball, free and centred at b, may still move (any way) and
+  // stay clear of the material by more than its radius, by the anchor of
+  // far_from_material; <= 0: not known to be clear. Within that travel its
+  // advance() finds nothing and changes nothing (ProbeScene's rest).
+  double free_travel(geo::Vec3 b) const noexcept {
+    if (state_ != State::kFree || !(anchor_margin_ > 0.0)) return 0.0;
+    return anchor_margin_ - geo::length(b - anchor_);
+  }
   // Deflection of a free ball centred at p (0 when not touching).
   double deflection_at(geo::Vec3 p) const noexcept;
   // The same, negative by the gap when the ball is clear of the material.
@@ -78,11 +86,13 @@ class TouchProbe {
   double deflection_ = 0.0;
   double raw_ = -1.0;
   geo::Contact contact_;
-  // A point and a lower bound of the distance from it to the material
-  // (Solids::clearance; < 0: none yet). While the ball's path stays farther
-  // than its deflection search reaches, a free ball needs no search.
+  // A point and how far the ball may go from it while it stays clear of the
+  // material by more than its radius (Solids::clearance less the radius and
+  // a spare; <= 0: none), with its square (far_from_material). While it
+  // does, a free ball needs no search.
   geo::Vec3 anchor_;
-  double anchor_clear_ = -1.0;
+  double anchor_margin_ = -1.0;
+  double anchor_margin_sq_ = 0.0;
 };
 
 class SetterSensor {

@@ -24,6 +24,11 @@ double first_true(P&& pred) noexcept {
   return hi;
 }
 
+// The middle of a column, the centre of the sphere column_clear keeps clear.
+geo::Vec3 column_mid(const geo::Column& c) noexcept {
+  return geo::Vec3{c.x, c.y, c.bottom + 0.5 * (c.top - c.bottom)};
+}
+
 }  // namespace
 
 ProbeScene::ProbeScene(const Probing& spec, const config::MachineConfig& m)
@@ -75,6 +80,7 @@ void ProbeScene::reset(const AxisVec& actual) noexcept {
   edge_count_ = 0;
   touch_on_ = false;
   column_margin_ = -1.0;
+  rest_travel_sq_ = 0.0;
   pending_tool_.reset();
   pending_power_.reset();
   powered_ = !(spec_.probe && spec_.probe->on_m != 0);
@@ -166,6 +172,7 @@ void ProbeScene::advance_sensors(const AxisVec& before, const AxisVec& after) no
     check_crash(before, after);
   }
   check_collision(before, after);
+  arm_rest(after);
 }
 
 void ProbeScene::check_crash(const AxisVec& before, const AxisVec& after) noexcept {
@@ -234,13 +241,7 @@ void ProbeScene::check_collision(const AxisVec& before, const AxisVec& after) no
   const bool stock_hits = !stock_.empty() && !cuts_now_;
   // The column that must not touch a part: the probe body or the tool.
   auto column_at = [&](const AxisVec& at, geo::Column& c) {
-    if (probe_in_spindle()) {
-      const ProbeSpec& p = *spec_.probe;
-      if (p.body_radius <= 0.0 || p.length <= p.stylus_length) return false;
-      const geo::Vec3 ball = ball_at(at);
-      c = geo::Column{ball.x, ball.y, p.body_radius, ball.z + p.stylus_length, ball.z + p.length};
-      return true;
-    }
+    if (probe_in_spindle()) return probe_body(ball_at(at), c);
     const ToolSpec* t = tool_in_spindle();
     if (t == nullptr) return false;
     c = tool_column(*t, at);
@@ -273,7 +274,7 @@ void ProbeScene::check_collision(const AxisVec& before, const AxisVec& after) no
 // and cutting only removes stock). Parts on a turning table have none.
 bool ProbeScene::column_clear(const geo::Column& c) noexcept {
   const double h = 0.5 * (c.top - c.bottom);
-  const geo::Vec3 mid{c.x, c.y, c.bottom + h};
+  const geo::Vec3 mid = column_mid(c);
   if (column_margin_ > 0.0) {
     const geo::Vec3 d = mid - column_anchor_;
     if (geo::dot(d, d) < column_margin_sq_) return true;
@@ -287,6 +288,42 @@ bool ProbeScene::column_clear(const geo::Column& c) noexcept {
   column_margin_ = clear - need;
   column_margin_sq_ = column_margin_ * column_margin_;
   return column_margin_ > 0.0;
+}
+
+bool ProbeScene::probe_body(geo::Vec3 ball, geo::Column& c) const noexcept {
+  const ProbeSpec& p = *spec_.probe;
+  if (p.body_radius <= 0.0 || p.length <= p.stylus_length) return false;
+  c = geo::Column{ball.x, ball.y, p.body_radius, ball.z + p.stylus_length, ball.z + p.length};
+  return true;
+}
+
+// The probe, its body, the setter and a switch can change only through
+// advance_sensors' searches, a tool change or a power switch (which disarm
+// the rest). The ball and the body move with the spindle: moved by less
+// than the travel left to either anchor (TouchProbe::free_travel, and
+// column_clear's), the ball stays farther than its radius from the
+// material (no contact, no deflection: its advance() returns at its far
+// test) and the body stays clear (check_collision returns at column_clear);
+// the setter, with no tool in the spindle, stays off and unpressed. 1 nm is
+// taken off for the rounding of the points (the anchors keep 1e-6 mm and
+// more to spare besides).
+void ProbeScene::arm_rest(const AxisVec& after) noexcept {
+  constexpr double kRounding = 1e-9;  // mm
+  if (!probe_ || !probe_in_spindle() || fault_.kind != PlantFault::Kind::kNone || touch_on_ ||
+      !gauges_.empty() || !stock_.empty() || material_.turns() || (setter_ && setter_->on())) {
+    return;
+  }
+  const geo::Vec3 ball = ball_at(after);
+  double travel = probe_->free_travel(ball);
+  geo::Column c;
+  if (!material_.empty() && probe_body(ball, c)) {
+    if (!(column_margin_ > 0.0)) return;
+    travel = std::min(travel, column_margin_ - geo::length(column_mid(c) - column_anchor_));
+  }
+  travel -= kRounding;
+  if (!(travel > 0.0)) return;
+  rest_at_ = point(after);
+  rest_travel_sq_ = travel * travel;
 }
 
 }  // namespace skipnc::machine

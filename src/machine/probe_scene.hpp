@@ -56,8 +56,18 @@ class ProbeScene {
   void advance(const AxisVec& before, const AxisVec& after) noexcept {
     edge_count_ = 0;
     touch_on_ = false;
+    if (rest_travel_sq_ > 0.0) {
+      // At rest (arm_rest): nothing to do while the spindle stays within
+      // the travel that keeps the probe and its body clear of everything.
+      const geo::Vec3 d = point(after) - rest_at_;
+      if (geo::dot(d, d) < rest_travel_sq_) return;
+      rest_travel_sq_ = 0.0;
+    }
     if (pending_tool_ || senses_) advance_sensors(before, after);
   }
+  // The probe and its body are at rest: the coming periods are passed on a
+  // distance test until the spindle has moved too far (arm_rest).
+  bool at_rest() const noexcept { return rest_travel_sq_ > 0.0; }
   // Nothing to sense, cut or collide with, and no tool change waiting:
   // advance() does nothing (Plant::can_cruise).
   bool inert() const noexcept { return !pending_tool_ && !senses_; }
@@ -76,7 +86,10 @@ class ProbeScene {
   }
   // A switched probe (ProbeSpec::on_m): whether its input can come on.
   // Takes effect at the next period.
-  void set_probe_power(bool on) noexcept { pending_power_ = on; }
+  void set_probe_power(bool on) noexcept {
+    pending_power_ = on;
+    rest_travel_sq_ = 0.0;
+  }
 
   struct Edge {
     std::size_t source = 0;
@@ -90,7 +103,10 @@ class ProbeScene {
   const AxisVec& touch_position() const noexcept { return touch_at_; }
 
   // Tool changes (M06): takes effect at the next period.
-  void set_spindle_tool(int tool) noexcept { pending_tool_ = tool; }
+  void set_spindle_tool(int tool) noexcept {
+    pending_tool_ = tool;
+    rest_travel_sq_ = 0.0;
+  }
   int spindle_tool() const noexcept { return spindle_tool_; }
   // The tool in the spindle once a change set but not yet made has been made.
   int next_spindle_tool() const noexcept { return pending_tool_ ? *pending_tool_ : spindle_tool_; }
@@ -155,6 +171,12 @@ class ProbeScene {
   void apply_power() noexcept;
   void change_tool(const AxisVec& at) noexcept;
   void check_collision(const AxisVec& before, const AxisVec& after) noexcept;
+  // The probe's body, a column above the stylus, for a ball centred at
+  // `ball`; false when the probe has none.
+  bool probe_body(geo::Vec3 ball, geo::Column& c) const noexcept;
+  // After a period that found nothing: arms the rest (rest_travel_sq_) when
+  // every sensor is idle and the probe and its body are known clear.
+  void arm_rest(const AxisVec& after) noexcept;
   // True when the column cannot touch a part or the stock: its bounding
   // sphere is inside the clearance of an anchor point it has not left (as
   // TouchProbe::far_from_material does for the ball).
@@ -195,6 +217,13 @@ class ProbeScene {
   double column_margin_sq_ = 0.0;
   AxisVec touch_at_;
   PlantFault fault_;
+  // The rest: the probe in the spindle, free, clear of the material by more
+  // than its radius and its body clear of it; the setter off; no gauge,
+  // stock, turning part or fault. advance() is then a test of the distance
+  // from rest_at_ (the spindle's X, Y, Z when armed), against the travel
+  // that keeps it so, squared (0: not at rest).
+  geo::Vec3 rest_at_;
+  double rest_travel_sq_ = 0.0;
 };
 
 }  // namespace skipnc::machine

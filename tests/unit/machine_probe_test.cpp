@@ -1,13 +1,22 @@
 // The scene's sensors on their own: the touch probe's switch point
 // (pre-travel, lobing, seeded scatter), its release, the tool setter and the
-// multi-step diameter gauge, each with the exact instant of its edges.
+// multi-step diameter gauge, each with the exact instant of its edges. Then
+// the probing scene's rest (ProbeScene::at_rest): periods in which the probe
+// is free and it and its body are clear of every part are passed on a
+// distance test; a probe that comes from far away fast must still touch and
+// collide at the same micrometre as one checked in every period (positions
+// worked out by hand from the geometry).
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <numbers>
 #include <vector>
 
+#include "config/dialect.hpp"
+#include "config/machine_config.hpp"
 #include "machine/probe.hpp"
+#include "machine/probe_scene.hpp"
+#include "machine/scene.hpp"
 
 namespace skipnc::machine {
 namespace {
@@ -166,6 +175,95 @@ TEST(GaugeSensor, EachStepSwitchesWhenTheDiameterReachesItsSize) {
   ASSERT_EQ(seen.size(), 3U);
   EXPECT_NEAR(seen[1].second, (125.3 - 125.05) / 0.4, 1e-9);
   EXPECT_NEAR(seen[2].second, (125.3 - 125.0) / 0.4, 1e-9);
+}
+
+// A block X0..50, Y0..40, Z-100..-60; the probe's ball centre is 100 mm
+// below the spindle, its body (radius 10) from 30 mm above the ball centre
+// to the spindle. No pre-travel: the probe switches at the first touch.
+const Scene& rest_block_scene() {
+  static const auto m = config::builtin_machine("mill3");
+  static const auto d = config::builtin_dialect("fanuc");
+  static const config::Parameters p(&*d);
+  static const Scene s = *parse_scene(R"(spindle_tool = 20
+[[box]]
+part = "block"
+min = [0, 0, -100]
+max = [50, 40, -60]
+[probe]
+signal = "SKIP"
+tool = 20
+ball_radius = 1.0
+length = 100
+stylus_length = 30
+body_radius = 10
+pre_travel = 0.0
+max_overtravel = 2.0
+)",
+                                      "block.scene.toml", *m, *d, p);
+  return s;
+}
+
+const config::MachineConfig& rest_mill3() {
+  static const auto m = config::builtin_machine("mill3");
+  return *m;
+}
+
+AxisVec rest_at(double x, double y, double z) {
+  AxisVec v;
+  v[0] = x;
+  v[1] = y;
+  v[2] = z;
+  return v;
+}
+
+// Moves the spindle along X from x0 in steps of `step` mm a period (Y and Z
+// fixed) until the probe switches or something collides, or x1 is passed.
+// Returns whether the scene was at rest in some period on the way.
+bool rest_sweep_x(ProbeScene& ps, double x0, double x1, double step, double y, double z) {
+  ps.reset(rest_at(x0, y, z));
+  bool rested = false;
+  for (double x = x0; x < x1; x += step) {
+    ps.advance(rest_at(x, y, z), rest_at(x + step, y, z));
+    rested = rested || ps.at_rest();
+    if (ps.touch_switched_on() || ps.fault().kind != PlantFault::Kind::kNone) break;
+  }
+  return rested;
+}
+
+TEST(ProbeRest, AFastApproachFromFarTouchesTheFaceAtTheSameMicrometre) {
+  ProbeScene ps(rest_block_scene().probing, rest_mill3());
+  // 60 m/min in 1 ms periods toward the -X face, the ball at Z-80 (inside
+  // the face), the body above the block. The ball's centre touches at X-1.
+  EXPECT_TRUE(rest_sweep_x(ps, -60.25, 10.0, 1.0, 20.0, 20.0));
+  ASSERT_TRUE(ps.touch_switched_on());
+  EXPECT_NEAR(ps.touch_position()[0], -1.0, 1e-9);
+  EXPECT_EQ(ps.fault().kind, PlantFault::Kind::kNone);
+}
+
+TEST(ProbeRest, ABallPassingAPartsEdgeTouchesTheEdge) {
+  ProbeScene ps(rest_block_scene().probing, rest_mill3());
+  // Half a millimetre outside the block's Y0 face: the ball meets the
+  // vertical edge at X0 Y0 when its centre is 1 mm from it in XY.
+  EXPECT_TRUE(rest_sweep_x(ps, -60.25, 10.0, 1.0, -0.5, 20.0));
+  ASSERT_TRUE(ps.touch_switched_on());
+  EXPECT_NEAR(ps.touch_position()[0], -std::sqrt(0.75), 1e-9);
+  EXPECT_NEAR(ps.touch_position()[1], -0.5, 1e-12);
+  // 1.5 mm outside it the ball passes by: no touch along the whole block.
+  ProbeScene by(rest_block_scene().probing, rest_mill3());
+  EXPECT_TRUE(rest_sweep_x(by, -60.25, 80.0, 1.0, -1.5, 20.0));
+  EXPECT_FALSE(by.touch_switched_on());
+  EXPECT_EQ(by.fault().kind, PlantFault::Kind::kNone);
+}
+
+TEST(ProbeRest, TheBodyComingFastCollidesWhereItsSideMeetsTheFace) {
+  ProbeScene ps(rest_block_scene().probing, rest_mill3());
+  // The ball at Z-100, the body from Z-70 up: its side (radius 10) meets
+  // the -X face at X-10, before the ball could reach it at X-1.
+  EXPECT_TRUE(rest_sweep_x(ps, -80.25, 10.0, 1.0, 20.0, 0.0));
+  ASSERT_EQ(ps.fault().kind, PlantFault::Kind::kCollision);
+  EXPECT_EQ(ps.fault().tool, -1);  // the probe body
+  EXPECT_NEAR(ps.fault().at[0], -10.0, 1e-6);
+  EXPECT_FALSE(ps.touch_switched_on());
 }
 
 }  // namespace
