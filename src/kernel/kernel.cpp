@@ -79,6 +79,20 @@ bool Kernel::check_servo(const TickInput& in) noexcept {
   return false;
 }
 
+// Whether check_servo or check_stroke could find a fault: some axis's
+// following error beyond its limit, the command beyond a stroke end, or the
+// in-position wait beyond its timeout (the same comparisons as theirs).
+bool Kernel::may_fault(const TickInput& in) const noexcept {
+  const FaultLimits& f = cfg_.faults;
+  bool out = static_cast<double>(inpos_wait_) * cfg_.clock.period_s() > f.in_position_timeout_s;
+  for (int i = 0; i < cfg_.limits.axis_count; ++i) {
+    const auto k = static_cast<std::size_t>(i);
+    out |= (std::fabs(cmd_prev_[i] - in.actual[i]) > f.excess_error[k]) |
+           (cmd_[i] > f.stroke_max[k]) | (cmd_[i] < f.stroke_min[k]);
+  }
+  return out;
+}
+
 // The stroke limits on the command for the next period, over all axes
 // without a branch; the axis is looked for only when one is out. The command
 // beyond the end is not given: the kernel holds the one before.
@@ -503,8 +517,9 @@ void Kernel::tick(const TickInput& in, TickOutput& out) noexcept {
   out.passed_dwell_line = interpolator_.passed_dwell_line();
   out.passed_dwell_source = interpolator_.passed_dwell_source();
   // Faults last: the servo's on the period that ended, then the stroke on
-  // the command for the next one.
-  if (check_servo(in) || check_stroke()) out.commanded = cmd_;
+  // the command for the next one. Most periods have none: one pass over the
+  // axes without a branch says so, and only then are they looked at in turn.
+  if (may_fault(in) && (check_servo(in) || check_stroke())) out.commanded = cmd_;
   out.fault = fault_;
 }
 

@@ -302,6 +302,7 @@ class Kernel {
   bool followed_up_ = false;  // this tick moved the command to the actual position
   Fault fault_;
   // The fault checks of tick(): true when one was found (fault_ set).
+  [[gnu::always_inline]] inline bool may_fault(const TickInput& in) const noexcept;
   bool check_servo(const TickInput& in) noexcept;
   bool check_stroke() noexcept;
   bool skip_latch_pending_ = false;  // sampled latch: waiting for the delay
