@@ -20,10 +20,6 @@ bool still_front(planner::SegmentQueue& q, const planner::Segment* seg) noexcept
 Interpolator::Interpolator(planner::SegmentQueue& queue) noexcept
     : queue_(queue), pos_(queue.tail_position()) {}
 
-bool Interpolator::idle() const noexcept {
-  return seg_ == nullptr && !ramp_ && queue_.empty() && !hold_;
-}
-
 std::int64_t Interpolator::quiet_ticks() const noexcept {
   if (ramp_ || hold_ || seg_ == nullptr || queue_.front() != seg_ || !seg_->started) return 0;
   const double period = queue_.limits().period_s;

@@ -26,7 +26,9 @@ class Interpolator {
   double path_speed() const noexcept { return speed_; }
   // True when no segment is active, the queue is empty and no in-position
   // check is pending.
-  bool idle() const noexcept;
+  bool idle() const noexcept {  // inline: asked several times a period
+    return seg_ == nullptr && !ramp_ && queue_.empty() && !hold_;
+  }
   // In-position check: a segment that asks for it has ended (or the next
   // one waits for it), and the command stays at that point, at rest, until
   // release_in_position(). The rest of the period is not carried over: the
