@@ -183,7 +183,8 @@ Result<void> take_persistent(config::MachineConfig& m,
 }
 
 Result<RunOutcome> run_variation(const Session& s, const RunRequest& rq, const Variation& v,
-                                 sim::TraceSink* trace, const std::atomic<bool>* interrupt) {
+                                 sim::TraceSink* trace, const std::atomic<bool>* interrupt,
+                                 bool with_report) {
   config::MachineConfig m = s.machine;
   config::Parameters params = *s.params;
   auto variables = prepare(s, rq, v, m, params);
@@ -214,7 +215,7 @@ Result<RunOutcome> run_variation(const Session& s, const RunRequest& rq, const V
     if (!check.pass) out.failed_expectations.push_back(check.message);
   }
   out.exit_code = c->exit_code;
-  out.report_json = report::to_json(in);
+  if (with_report) out.report_json = report::to_json(in);
   out.variables = in.variables;
   return out;
 }

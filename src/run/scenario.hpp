@@ -62,7 +62,7 @@ struct RunRequest {
 // The run, made while its simulator exists: an alarm's location points into
 // the simulator's program store, so everything that shows it is written here.
 struct RunOutcome {
-  std::string report_json;  // report::to_json, as `skipnc run --report`
+  std::string report_json;  // report::to_json, as `skipnc run --report` (with_report)
   sim::RunStatus status = sim::RunStatus::kCompleted;
   int alarm = 0;           // the dialect's number, 0 without an alarm
   std::string alarm_text;  // describe(): "file:line:column: alarm CODE (N): message"
@@ -81,10 +81,13 @@ struct RunOutcome {
 
 // Runs once. A returned error is a run that could not start (a bad change,
 // an unreadable program): exit status 2 for the CLI. Never writes files
-// (no persistent variables, no DPRNT file).
+// (no persistent variables, no DPRNT file). Without `with_report` the
+// report's JSON is not made (a sweep's row takes what it needs from the
+// outcome's other fields).
 [[nodiscard]] Result<RunOutcome> run_variation(const Session& s, const RunRequest& rq,
                                                const Variation& v, sim::TraceSink* trace = nullptr,
-                                               const std::atomic<bool>* interrupt = nullptr);
+                                               const std::atomic<bool>* interrupt = nullptr,
+                                               bool with_report = true);
 
 // What the report of a finished run of session `s` is made from: the
 // program's name, the dialect, the machine and the result (variables and

@@ -517,7 +517,8 @@ ScenarioRow run_scenario(const SweepPlan& plan, std::int64_t index,
   row.index = index;
   const Variation v = scenario_variation(plan, index, row.chosen, row.probe_seed);
   row.values.assign(plan.request.vars.size(), std::nullopt);
-  auto res = run_variation(plan.session, plan.request, v, nullptr, interrupt);
+  auto res = run_variation(plan.session, plan.request, v, nullptr, interrupt,
+                           /*with_report=*/false);
   if (!res) {
     row.status = "error";
     const report::AlarmView view = report::view_alarm(res.error(), &plan.session.dialect);
