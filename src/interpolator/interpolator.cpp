@@ -67,9 +67,10 @@ AxisVec Interpolator::cruise_step() const noexcept {
 }
 
 // The helpers of tick() are inlined into it (gnu::always_inline in the
-// header): split for reading, the tick compiles as one function.
+// header), but for the ramp and a segment's end (gnu::noinline): split for
+// reading, the common path compiles as one function.
 
-inline const AxisVec& Interpolator::tick_ramp(double period) noexcept {
+const AxisVec& Interpolator::tick_ramp(double period) noexcept {
   ++ramp_ticks_;
   const double t = static_cast<double>(ramp_ticks_) * period;
   const double t_stop = ramp_v0_ / ramp_decel_;
@@ -137,7 +138,7 @@ inline bool Interpolator::advance(double period) noexcept {
   return false;
 }
 
-inline bool Interpolator::end_segment(double t_end, double slack) noexcept {
+bool Interpolator::end_segment(double t_end, double slack) noexcept {
   // The segment ends inside this period: land exactly on its end point and
   // carry the rest of the period into the next one.
   const double rest = std::max(0.0, t_end - seg_->duration);

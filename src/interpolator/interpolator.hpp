@@ -99,9 +99,11 @@ class Interpolator {
   std::uint32_t passed_dwell_source() const noexcept { return passed_source_; }
 
  private:
-  // The steps of tick(), inlined into it.
+  // The steps of tick(), inlined into it, but for the two that few periods
+  // take (a skip stop's ramp, a segment's end): called, so that the common
+  // path keeps its registers.
   // The deceleration ramp of a skip stop: the position at this period's end.
-  [[gnu::always_inline]] const AxisVec& tick_ramp(double period) noexcept;
+  [[gnu::noinline]] const AxisVec& tick_ramp(double period) noexcept;
   // Without an active segment, the queue's front becomes it; false when it
   // waits for the axes in position (the interpolator holds).
   [[gnu::always_inline]] bool start_front() noexcept;
@@ -112,7 +114,7 @@ class Interpolator {
   [[gnu::always_inline]] bool advance(double period) noexcept;
   // Ends the active segment at `t_end` (the period's end in its time); true
   // when the next one takes the rest of the period.
-  [[gnu::always_inline]] bool end_segment(double t_end, double slack) noexcept;
+  [[gnu::noinline]] bool end_segment(double t_end, double slack) noexcept;
   // Position, velocity and block of the active segment (there is one) at
   // this period's end.
   [[gnu::always_inline]] void sample_active() noexcept;

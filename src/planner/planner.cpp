@@ -422,12 +422,24 @@ AxisVec Segment::velocity_at(double t) const noexcept {
   return tangent_at(t) * speed_at(t);
 }
 
+namespace {
+
+// sample() outside a line, rapid or arc's inside (a dwell, a non-linear
+// rapid, the ends): not inlined, so that the common path keeps its
+// registers.
+[[gnu::noinline]] void sample_apart(const Segment& seg, double t, AxisVec& position,
+                                    AxisVec& velocity, double& speed) noexcept {
+  position = seg.position_at(t);
+  velocity = seg.velocity_at(t);
+  speed = seg.speed_at(t);
+}
+
+}  // namespace
+
 void Segment::sample(double t, int axis_count, AxisVec& position, AxisVec& velocity,
                      double& speed) const noexcept {
   if (kind == Kind::kDwell || kind == Kind::kRapidNonLinear || !(t > 0.0) || t >= duration) {
-    position = position_at(t);
-    velocity = velocity_at(t);
-    speed = speed_at(t);
+    sample_apart(*this, t, position, velocity, speed);
     return;
   }
   // Inside a line, rapid or arc: distance and speed from one phase of the profile.
