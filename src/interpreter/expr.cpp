@@ -323,7 +323,8 @@ struct MacroBRules {
   }
   // #x on the fast path: local, common and persistent variables (false:
   // the general path reads it).
-  static bool plain_var(const Interpreter::Impl& im, double x, Value& out) noexcept {
+  [[gnu::always_inline]] static bool plain_var(const Interpreter::Impl& im, double x,
+                                               Value& out) noexcept {
     if (!(std::fabs(x) < 1e9)) return false;
     int num = static_cast<int>(x);
     if (num != x) num = static_cast<int>(round_half_away(x));  // #[1.6] is #2
@@ -397,6 +398,30 @@ struct NgcRules {
 // general way, which gives the same value or the alarm; nothing here has a
 // side effect, so the second pass is safe.
 template <class R>
+bool plain(const Interpreter::Impl& im, gcode::ExprId id, Value& out) noexcept;
+
+// An operand of plain(): a number or "#n" (n written as a number), the
+// leaves of nearly every tree, read here without a call; anything else
+// through plain(). The same value as plain() gives.
+template <class R>
+[[gnu::always_inline]] inline bool operand(const Interpreter::Impl& im, gcode::ExprId id,
+                                           Value& out) noexcept {
+  const auto size = im.blk.nodes.size();
+  if (id >= 0 && static_cast<std::size_t>(id) < size) [[likely]] {
+    const gcode::ExprNode& n = im.blk.nodes[static_cast<std::size_t>(id)];
+    if (n.op == gcode::Op::kNumber) {
+      out = Value::of(n.value);
+      return true;
+    }
+    if (n.op == gcode::Op::kVar && n.a >= 0 && static_cast<std::size_t>(n.a) < size) {
+      const gcode::ExprNode& k = im.blk.nodes[static_cast<std::size_t>(n.a)];
+      if (k.op == gcode::Op::kNumber) return R::plain_var(im, k.value, out);
+    }
+  }
+  return plain<R>(im, id, out);
+}
+
+template <class R>
 bool plain(const Interpreter::Impl& im, gcode::ExprId id, Value& out) noexcept {
   if (id < 0 || static_cast<std::size_t>(id) >= im.blk.nodes.size()) return false;
   const gcode::ExprNode& n = im.blk.nodes[static_cast<std::size_t>(id)];
@@ -407,10 +432,10 @@ bool plain(const Interpreter::Impl& im, gcode::ExprId id, Value& out) noexcept {
       out = Value::of(n.value);
       return true;
     case Op::kVar:
-      if (!plain<R>(im, n.a, a)) return false;
+      if (!operand<R>(im, n.a, a)) return false;
       return R::plain_var(im, a.num(), out);
     case Op::kNeg:
-      if (!plain<R>(im, n.a, a)) return false;
+      if (!operand<R>(im, n.a, a)) return false;
       out = Value::of(0.0 - a.num());
       return true;
     case Op::kFunc:
@@ -418,17 +443,17 @@ bool plain(const Interpreter::Impl& im, gcode::ExprId id, Value& out) noexcept {
     case Op::kNamedVar:
       return false;
     default: {
-      if (!plain<R>(im, n.a, a) || !plain<R>(im, n.b, b)) return false;
+      if (!operand<R>(im, n.a, a) || !operand<R>(im, n.b, b)) return false;
       double r = 0.0;
       if (R::binary(n.op, a, b, r)) return false;
       out = Value::of(r + 0.0);
       return true;
     }
   }
-  if (!plain<R>(im, n.a, a)) return false;
+  if (!operand<R>(im, n.a, a)) return false;
   double y = 0.0;
   if (n.b != gcode::kNoExpr) {
-    if (!plain<R>(im, n.b, b)) return false;
+    if (!operand<R>(im, n.b, b)) return false;
     y = b.num();
   }
   double r = 0.0;

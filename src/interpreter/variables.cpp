@@ -57,13 +57,6 @@ void VariableStore::set_local_named(const std::string& name, Value v) {
   named_local_.back()[name] = v;
 }
 
-Value VariableStore::get(int n) const noexcept {
-  if (is_local(n)) return locals_.back()[static_cast<std::size_t>(n)];
-  if (is_common(n)) return common_[static_cast<std::size_t>(n - 100)];
-  if (is_persistent(n)) return persistent_[static_cast<std::size_t>(n - 500)];
-  return Value::null();
-}
-
 void VariableStore::set(int n, Value v) {
   if (recording_) [[unlikely]] {
     record(Undo::kNumbered, n);

@@ -42,7 +42,13 @@ class VariableStore {
   static bool is_local(int n) noexcept { return n >= 1 && n <= kLocalCount; }
   static bool is_common(int n) noexcept { return n >= 100 && n <= 199; }
   static bool is_persistent(int n) noexcept { return n >= 500 && n <= 999; }
-  Value get(int n) const noexcept;
+  // Inline: each variable read of an expression's fast path comes here.
+  Value get(int n) const noexcept {
+    if (is_local(n)) return locals_.back()[static_cast<std::size_t>(n)];
+    if (is_common(n)) return common_[static_cast<std::size_t>(n - 100)];
+    if (is_persistent(n)) return persistent_[static_cast<std::size_t>(n - 500)];
+    return Value::null();
+  }
   void set(int n, Value v);
 
   // Named variables (#<name>), created on first write.
