@@ -62,6 +62,68 @@ constexpr std::array<std::uint64_t, kFuncs.size()> kFuncMasks = make_func_masks(
 static_assert(std::ranges::all_of(kFuncs,
                                   [](const FuncName& f) { return f.name.size() <= kMaxFuncName; }));
 
+// The names by their keys: a table of 64 slots indexed by a multiplicative
+// hash of the key, with a multiplier under which no two names share a slot
+// (found at compile time). A slot holds its name's key and its index in
+// kFuncs, or an index of -1.
+constexpr unsigned kFuncHashBits = 6;
+struct FuncSlot {
+  std::uint64_t key = 0;
+  std::int8_t index = -1;
+};
+constexpr std::size_t func_slot(std::uint64_t key, std::uint64_t mul) {
+  return static_cast<std::size_t>((key * mul) >> (64 - kFuncHashBits));
+}
+// Candidates from the splitmix64 sequence (neighbouring odd numbers would
+// spread the names alike).
+constexpr std::uint64_t splitmix64(std::uint64_t& state) {
+  std::uint64_t z = (state += 0x9E3779B97F4A7C15u);
+  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9u;
+  z = (z ^ (z >> 27)) * 0x94D049BB133111EBu;
+  return z ^ (z >> 31);
+}
+constexpr std::uint64_t make_func_mul() {
+  for (std::uint64_t state = 0;;) {
+    const std::uint64_t mul = splitmix64(state) | 1u;
+    std::array<bool, std::size_t{1} << kFuncHashBits> used{};
+    bool clash = false;
+    for (std::size_t i = 0; i < kFuncs.size() && !clash; ++i) {
+      const std::size_t s = func_slot(kFuncKeys[i], mul);
+      clash = used[s];
+      used[s] = true;
+    }
+    if (!clash) return mul;
+  }
+}
+constexpr std::uint64_t kFuncMul = make_func_mul();
+constexpr std::array<FuncSlot, std::size_t{1} << kFuncHashBits> make_func_slots() {
+  std::array<FuncSlot, std::size_t{1} << kFuncHashBits> t{};
+  for (std::size_t i = 0; i < kFuncs.size(); ++i) {
+    FuncSlot& s = t[func_slot(kFuncKeys[i], kFuncMul)];
+    s.key = kFuncKeys[i];
+    s.index = static_cast<std::int8_t>(i);
+  }
+  return t;
+}
+constexpr auto kFuncSlots = make_func_slots();
+
+// How many of the 8 bytes of w (the first lowest) are letters (as
+// is_letter says) before the first that is not: all bytes at once.
+constexpr std::size_t leading_letters(std::uint64_t w) {
+  constexpr std::uint64_t kOnes = 0x0101010101010101u;
+  constexpr std::uint64_t kHigh = 0x80 * kOnes;
+  const std::uint64_t low = (w | 0x20 * kOnes) & ~kHigh;        // lower case, high bits cleared
+  const std::uint64_t from_a = low + (0x80 - 'a') * kOnes;      // high bit: >= 'a'
+  const std::uint64_t past_z = low + (0x80 - 'z' - 1) * kOnes;  // high bit: > 'z'
+  const std::uint64_t other = ~(from_a & ~past_z & ~w) & kHigh;
+  return other == 0 ? 8 : static_cast<std::size_t>(std::countr_zero(other)) / 8;
+}
+static_assert(leading_letters(name_key("SIN[#1]]")) == 3);
+static_assert(leading_letters(name_key("sqrt[2]]")) == 4);
+static_assert(leading_letters(name_key("ABCDEFGH")) == 8);
+static_assert(leading_letters(name_key("Z@`{[z0]")) == 1);
+static_assert(leading_letters(0xC1C1C1C1C1C1C141u) == 1);  // 'A', then bytes >= 0x80
+
 // Expression trees of a variable reference "#n" are two levels deep.
 static_assert(kMaxExprDepth >= 2);
 
@@ -312,24 +374,35 @@ const FuncName* Parser::find_function(int c) {
   // space follows them (a name may be spelt "S I N"), the function is the
   // first of its group whose name they begin with, as match_kw would find.
   const char* const at = p_;
-  const auto max = std::min(static_cast<std::size_t>(end_ - at), kMaxFuncName);
   std::size_t n = 1;
-  while (n < max && is_letter(at[n])) ++n;
-  if (n < kMaxFuncName && at + n != end_ && is_space(at[n])) [[unlikely]] {
-    return find_function_spaced(g);
-  }
   // The bytes at p_ with letters upper-cased. A name is letters only, so
   // the bytes after the n letters can never match one.
   std::uint64_t key = 0;
   if (end_ - at >= 8) {
     std::memcpy(&key, at, 8);
     if constexpr (std::endian::native == std::endian::big) key = std::byteswap(key);
+    n = std::min(leading_letters(key), kMaxFuncName);
   } else {
+    const auto max = std::min(static_cast<std::size_t>(end_ - at), kMaxFuncName);
+    while (n < max && is_letter(at[n])) ++n;
     for (std::size_t i = 0; i < n; ++i) {
       key |= std::uint64_t{static_cast<unsigned char>(at[i])} << (8 * i);
     }
   }
+  if (n < kMaxFuncName && at + n != end_ && is_space(at[n])) [[unlikely]] {
+    return find_function_spaced(g);
+  }
   key &= 0xDFDFDFDFDFDFDFDFu;  // upper case: n letters, then anything
+  // The usual case: the n letters are a name. It is the one the search
+  // below finds too: of two names, only SQR is the beginning of another
+  // (SQRT), and SQRT comes first.
+  const std::uint64_t letters = key & ((std::uint64_t{1} << (8 * n)) - 1);
+  const FuncSlot& slot = kFuncSlots[func_slot(letters, kFuncMul)];
+  if (slot.key == letters && slot.index >= 0) [[likely]] {
+    const FuncName& f = kFuncs[static_cast<std::size_t>(slot.index)];
+    p_ = at + f.name.size();
+    return &f;
+  }
   for (std::size_t i = 0; i < g.count; ++i) {
     const std::size_t f = g.index[i];
     // Equal bytes are letters: the name is among the n letters.

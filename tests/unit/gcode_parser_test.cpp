@@ -1,6 +1,7 @@
 #include <gtest/gtest.h>
 
 #include <bit>
+#include <cctype>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -618,6 +619,36 @@ TEST(GcodeParser, FunctionNamesAsWritten) {
   expect_error("#1=LN", AlarmId::kMacroFormat, 6);
 }
 
+// A function name is looked up two ways: by its letters when 8 or more
+// bytes are left in the block (all of them at once), and letter by letter
+// nearer the end. Both give the same function, the same errors.
+TEST(GcodeParser, FunctionNamesFarFromAndNearTheEnd) {
+  const std::pair<const char*, const char*> kNames[] = {
+      {"SIN", "sin"},     {"COS", "cos"},   {"TAN", "tan"},   {"ASIN", "asin"}, {"ACOS", "acos"},
+      {"ATAN", "atan"},   {"ATN", "atan"},  {"SQRT", "sqrt"}, {"SQR", "sqrt"},  {"ABS", "abs"},
+      {"ROUND", "round"}, {"RND", "round"}, {"FIX", "fix"},   {"FUP", "fup"},   {"LN", "ln"},
+      {"EXP", "exp"},     {"BIN", "bin"},   {"BCD", "bcd"},   {"ADP", "adp"}};
+  for (const auto& [name, shown] : kNames) {
+    const std::string call = std::string(name) + "[1]";
+    EXPECT_EQ(rhs("#1=" + call), std::string("(") + shown + " 1)") << name;
+    EXPECT_EQ(rhs("#1=" + call + "+12345678"), std::string("(+ (") + shown + " 1) 12345678)")
+        << name;
+    std::string lower = call;
+    for (char& c : lower) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    EXPECT_EQ(rhs("#1=" + lower + "*#12345"), std::string("(* (") + shown + " 1) #12345)") << name;
+  }
+  EXPECT_EQ(rhs("#1=POW[2,3]+12345678"), "(+ (pow 2 3) 12345678)");
+  // Not a name: the letters run on, or stop short of one.
+  for (const std::string tail : {"", "+12345678"}) {
+    expect_error("#1=SINE[1]" + tail, AlarmId::kMacroFormat, 7);
+    expect_error("#1=SQ[1]" + tail, AlarmId::kMacroFormat, 4);
+    expect_error("#1=SQRTX[1]" + tail, AlarmId::kMacroFormat, 8);
+    expect_error("#1=FOO[1]" + tail, AlarmId::kMacroFormat, 4);
+    expect_error("#1=SIN\xC3[1]" + tail, AlarmId::kMacroFormat, 7);
+    EXPECT_EQ(rhs("#1=S IN[1]" + tail), tail.empty() ? "(sin 1)" : "(+ (sin 1) 12345678)");
+  }
+}
+
 TEST(GcodeParser, OperatorsGroupByPrecedence) {
   EXPECT_EQ(rhs("#1=1*2+3*4 GT 5 AND 6 OR 7"), "(gt (+ (* 1 2) (* 3 4)) (or (and 5 6) 7))");
   EXPECT_EQ(rhs("#1=1 EQ 2 NE 3"), "(ne (eq 1 2) 3)");
@@ -926,6 +957,7 @@ TEST(GcodeParserNgc, PrecedenceIsLinuxCncs) {
   EXPECT_EQ(ngc_rhs("#1=[7 MOD 3*2]"), "(* (mod 7 3) 2)");
   EXPECT_EQ(ngc_rhs("#1=[-2**2]"), "(** (neg 2) 2)");
   EXPECT_EQ(ngc_rhs("#1=EXISTS[#<abc>]"), "(exists #<ABC>)");
+  EXPECT_EQ(ngc_rhs("#1=EXISTS[#<abc>]+12345678"), "(+ (exists #<ABC>) 12345678)");
   // The same text under Macro B: AND binds as *, and ** is no operator.
   EXPECT_EQ(rhs("#1=[2+3 GT 4 AND 1]"), "(gt (+ 2 3) (and 4 1))");
   parse_err("#1=[2**3]");
