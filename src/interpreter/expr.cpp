@@ -60,12 +60,6 @@ std::optional<Fault> trig_value(gcode::Func fn, double x, const double* y, bool 
   using gcode::Func;
   auto bad = [](const char* what) { return Fault{AlarmId::kIllegalArgument, what}; };
   switch (fn) {
-    case Func::kSin:
-      r = std::sin(x * kRad);
-      return std::nullopt;
-    case Func::kCos:
-      r = std::cos(x * kRad);
-      return std::nullopt;
     case Func::kTan:
       if (std::fmod(std::fabs(x), 180.0) == 90.0) {
         return Fault{AlarmId::kDivisionByZero, "TAN of an odd multiple of 90 degrees"};
@@ -92,6 +86,30 @@ std::optional<Fault> trig_value(gcode::Func fn, double x, const double* y, bool 
       return std::nullopt;
     default:
       return Fault{AlarmId::kMacroFormat, "function not available in this control"};
+  }
+}
+
+// SIN, COS, ABS and SQRT of a value not negative at x, in r (the
+// functions of nearly every program, inlined into the fast path; the
+// others and SQRT's fault are function_value's). False for any other.
+[[gnu::always_inline]] inline bool common_function(gcode::Func fn, double x, double& r) noexcept {
+  using gcode::Func;
+  switch (fn) {
+    case Func::kSin:
+      r = std::sin(x * kRad);
+      return true;
+    case Func::kCos:
+      r = std::cos(x * kRad);
+      return true;
+    case Func::kAbs:
+      r = std::fabs(x);
+      return true;
+    case Func::kSqrt:
+      if (x < 0.0) return false;
+      r = std::sqrt(x);
+      return true;
+    default:
+      return false;
   }
 }
 
@@ -154,21 +172,19 @@ template <class R>
 std::optional<Fault> function_value(gcode::Func fn, double x, const double* y,
                                     const FuncContext& cx, double& r) noexcept {
   using gcode::Func;
+  if (common_function(fn, x, r)) return std::nullopt;
   switch (fn) {
-    case Func::kSin:
-    case Func::kCos:
     case Func::kTan:
     case Func::kAsin:
     case Func::kAcos:
     case Func::kAtan:
       return trig_value(fn, x, y, cx.nat, r);
-    case Func::kSqrt:
-      if (x < 0.0) return Fault{AlarmId::kIllegalArgument, "SQRT of a negative value"};
-      r = std::sqrt(x);
-      return std::nullopt;
+    case Func::kSqrt:  // of a negative value (common_function takes the others)
+      return Fault{AlarmId::kIllegalArgument, "SQRT of a negative value"};
+    case Func::kSin:
+    case Func::kCos:
     case Func::kAbs:
-      r = std::fabs(x);
-      return std::nullopt;
+      break;  // common_function's
     case Func::kRound:
       r = cx.round_increment > 0.0 ? round_half_away(x / cx.round_increment) * cx.round_increment
                                    : round_half_away(x);
@@ -451,12 +467,17 @@ bool plain(const Interpreter::Impl& im, gcode::ExprId id, Value& out) noexcept {
     }
   }
   if (!operand<R>(im, n.a, a)) return false;
+  double r = 0.0;
+  if (n.b == gcode::kNoExpr && common_function(n.fn, a.num(), r)) {
+    if (!std::isfinite(r)) return false;
+    out = Value::of(r + 0.0);
+    return true;
+  }
   double y = 0.0;
   if (n.b != gcode::kNoExpr) {
     if (!operand<R>(im, n.b, b)) return false;
     y = b.num();
   }
-  double r = 0.0;
   if (function_value<R>(n.fn, a.num(), n.b != gcode::kNoExpr ? &y : nullptr, R::context(im), r)) {
     return false;  // EXISTS too: it names a parameter (general)
   }
@@ -536,10 +557,18 @@ const ExprRules kNgcExpr{&plain<NgcRules>, &general<NgcRules>};
 
 Flow<int> Interpreter::Impl::var_number(gcode::ExprId lhs) {
   const gcode::ExprNode& n = blk.nodes[static_cast<std::size_t>(lhs)];
-  auto v = eval(n.a);
-  SKIPNC_TRY(v);
-  // #[#i] with #i vacant is #0; a fraction is rounded.
-  const double x = round_half_away(v->num());
+  double x = 0.0;
+  if (n.a >= 0 && static_cast<std::size_t>(n.a) < blk.nodes.size() &&
+      blk.nodes[static_cast<std::size_t>(n.a)].op == gcode::Op::kNumber) {
+    x = blk.nodes[static_cast<std::size_t>(n.a)].value;  // "#n", as eval() would give it
+  } else {
+    auto v = eval(n.a);
+    SKIPNC_TRY(v);
+    x = v->num();
+  }
+  // #[#i] with #i vacant is #0; a fraction is rounded (a whole number is
+  // its own rounding: no call).
+  if (!(std::fabs(x) < 1e9) || static_cast<int>(x) != x) x = round_half_away(x);
   if (!(std::fabs(x) < 1e9)) {
     return fail(AlarmId::kIllegalVariable, "variable number out of range", loc(n.column));
   }
