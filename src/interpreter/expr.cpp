@@ -416,22 +416,41 @@ struct NgcRules {
 template <class R>
 bool plain(const Interpreter::Impl& im, gcode::ExprId id, Value& out) noexcept;
 
-// An operand of plain(): a number or "#n" (n written as a number), the
-// leaves of nearly every tree, read here without a call; anything else
-// through plain(). The same value as plain() gives.
+// A leaf of plain()'s trees: a number, or "#n" (n written as a number) of
+// a variable plain_var() reads. False for anything else.
+template <class R>
+[[gnu::always_inline]] inline bool leaf(const Interpreter::Impl& im, gcode::ExprId id,
+                                        Value& out) noexcept {
+  const auto size = im.blk.nodes.size();
+  if (id < 0 || static_cast<std::size_t>(id) >= size) return false;
+  const gcode::ExprNode& n = im.blk.nodes[static_cast<std::size_t>(id)];
+  if (n.op == gcode::Op::kNumber) {
+    out = Value::of(n.value);
+    return true;
+  }
+  if (n.op == gcode::Op::kVar && n.a >= 0 && static_cast<std::size_t>(n.a) < size) {
+    const gcode::ExprNode& k = im.blk.nodes[static_cast<std::size_t>(n.a)];
+    if (k.op == gcode::Op::kNumber) return R::plain_var(im, k.value, out);
+  }
+  return false;
+}
+
+// An operand of plain(): a leaf, or SIN COS ABS SQRT of a leaf (nearly
+// every operand), read here without a call; anything else, and any of
+// these plain() gives up on, through plain(). The same value as plain()
+// gives.
 template <class R>
 [[gnu::always_inline]] inline bool operand(const Interpreter::Impl& im, gcode::ExprId id,
                                            Value& out) noexcept {
-  const auto size = im.blk.nodes.size();
-  if (id >= 0 && static_cast<std::size_t>(id) < size) [[likely]] {
+  if (leaf<R>(im, id, out)) return true;
+  if (id >= 0 && static_cast<std::size_t>(id) < im.blk.nodes.size()) {
     const gcode::ExprNode& n = im.blk.nodes[static_cast<std::size_t>(id)];
-    if (n.op == gcode::Op::kNumber) {
-      out = Value::of(n.value);
+    Value x;
+    double r = 0.0;
+    if (n.op == gcode::Op::kFunc && n.b == gcode::kNoExpr && leaf<R>(im, n.a, x) &&
+        common_function(n.fn, x.num(), r) && std::isfinite(r)) {
+      out = Value::of(r + 0.0);
       return true;
-    }
-    if (n.op == gcode::Op::kVar && n.a >= 0 && static_cast<std::size_t>(n.a) < size) {
-      const gcode::ExprNode& k = im.blk.nodes[static_cast<std::size_t>(n.a)];
-      if (k.op == gcode::Op::kNumber) return R::plain_var(im, k.value, out);
     }
   }
   return plain<R>(im, id, out);
