@@ -43,7 +43,7 @@ class VariableStore {
   static bool is_common(int n) noexcept { return n >= 100 && n <= 199; }
   static bool is_persistent(int n) noexcept { return n >= 500 && n <= 999; }
   // Inline: each variable read of an expression's fast path comes here.
-  Value get(int n) const noexcept {
+  [[gnu::always_inline]] Value get(int n) const noexcept {
     if (is_local(n)) return locals_.back()[static_cast<std::size_t>(n)];
     if (is_common(n)) return common_[static_cast<std::size_t>(n - 100)];
     if (is_persistent(n)) return persistent_[static_cast<std::size_t>(n - 500)];
