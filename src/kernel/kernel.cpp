@@ -84,13 +84,16 @@ bool Kernel::check_servo(const TickInput& in) noexcept {
 // in-position wait beyond its timeout (the same comparisons as theirs).
 bool Kernel::may_fault(const TickInput& in) const noexcept {
   const FaultLimits& f = cfg_.faults;
-  bool out = static_cast<double>(inpos_wait_) * cfg_.clock.period_s() > f.in_position_timeout_s;
+  // Comparisons as 0 or 1, or-ed without a branch.
+  auto bit = [](bool b) { return static_cast<unsigned>(b); };
+  unsigned out =
+      bit(static_cast<double>(inpos_wait_) * cfg_.clock.period_s() > f.in_position_timeout_s);
   for (int i = 0; i < cfg_.limits.axis_count; ++i) {
     const auto k = static_cast<std::size_t>(i);
-    out |= (std::fabs(cmd_prev_[i] - in.actual[i]) > f.excess_error[k]) |
-           (cmd_[i] > f.stroke_max[k]) | (cmd_[i] < f.stroke_min[k]);
+    out |= bit(std::fabs(cmd_prev_[i] - in.actual[i]) > f.excess_error[k]) |
+           bit(cmd_[i] > f.stroke_max[k]) | bit(cmd_[i] < f.stroke_min[k]);
   }
-  return out;
+  return out != 0;
 }
 
 // The stroke limits on the command for the next period, over all axes
