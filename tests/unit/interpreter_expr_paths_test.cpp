@@ -25,8 +25,11 @@ namespace {
 using test::Collect;
 using test::Mill;
 
-// The program run to its end or its first alarm.
+// The program run to its end or its first alarm. The interpreter keeps
+// pointers to its machine, dialect and parameters: the Mill lives as long
+// as it does (declared first, destroyed last).
 struct ExprRun {
+  std::unique_ptr<Mill> mill;
   std::unique_ptr<Interpreter> in;
   std::optional<Error> alarm;
   bool completed() const { return in && !alarm; }
@@ -39,8 +42,9 @@ struct ExprRun {
 };
 
 ExprRun run_program(const std::string& program) {
-  const Mill m;
-  ExprRun r{m.start(program), std::nullopt};
+  auto mill = std::make_unique<Mill>();
+  auto in = mill->start(program);
+  ExprRun r{std::move(mill), std::move(in), std::nullopt};
   if (!r.in) return r;
   Collect out;
   for (int guard = 0; guard < 1000; ++guard) {
