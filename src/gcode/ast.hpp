@@ -21,6 +21,7 @@ inline constexpr ExprId kNoExpr = -1;
 enum class Op : std::uint8_t {
   kNumber,    // value
   kVar,       // #a          (a: expression giving the variable number)
+  kVarNum,    // #n          (n written as a number: value; two levels deep, as #a)
   kNamedVar,  // #<name> or #_NAME   (name: index into Block::names)
   kNeg,       // -a
   kAdd, kSub, kMul, kDiv, kMod, kAnd, kOr, kXor,  // a op b

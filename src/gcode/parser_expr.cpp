@@ -467,7 +467,8 @@ ExprId Parser::parse_function(Func fn, const char* at) {
   const char* open = p_;
   if (!enter(open)) return kFail;
   ++p_;
-  const ExprId a = parse_expr();
+  ExprId a = lone_operand();
+  if (a == kNoExpr) a = parse_expr();
   if (a == kFail) return kFail;
   ExprId b = kNoExpr;
   if (peek() == ',') {
@@ -584,7 +585,7 @@ ExprId Parser::parse_var_general(bool raw) {
       bool any = false;
       if (!parse_uint(v, "variable number", any)) return kFail;
     }
-    return add_var_number(v, col(q), col(at));
+    return add_var_number(v, col(at));
   }
   if (q < end_ && c == '[') {
     p_ = q;

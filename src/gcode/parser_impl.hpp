@@ -294,10 +294,9 @@ class Parser {
   ExprId add_number(double v, std::uint32_t column) {
     return push_node(Op::kNumber, column, kNoExpr, kNoExpr, 1, v);
   }
-  // "#n": the number node, then the variable node.
-  ExprId add_var_number(std::int64_t n, std::uint32_t num_column, std::uint32_t var_column) {
-    const ExprId num = add_number(static_cast<double>(n), num_column);
-    return push_node(Op::kVar, var_column, num, kNoExpr, 2);
+  // "#n": one node holding n, counted two levels deep as "#[n]" is.
+  ExprId add_var_number(std::int64_t n, std::uint32_t var_column) {
+    return push_node(Op::kVarNum, var_column, kNoExpr, kNoExpr, 2, static_cast<double>(n));
   }
   std::int32_t add_name(std::string s) {
     out_.names.push_back(std::move(s));
@@ -394,11 +393,11 @@ class Parser {
     w.column = col(at);
     return true;
   }
-  // "#n" at p_ written together, few enough digits to be no error, no digit
-  // or point after the spaces that follow: its nodes, p_ past it and those
-  // spaces. False, nothing consumed, for anything else.
-  [[gnu::always_inline]] bool var_number_fast(ExprId& id) {
-    const char* const at = p_;
+  // "#n" at `at` written together, few enough digits to be no error, no
+  // digit or point after the spaces that follow: n, and `after` past those
+  // spaces. False for anything else: the general path reads it.
+  [[gnu::always_inline]] bool read_var_fast(const char* at, std::int64_t& n,
+                                            const char*& after) const noexcept {
     const char* const d = at + 1;
     const char* const lim = d + std::min<std::ptrdiff_t>(end_ - d, uint_digits_);
     const char* q = d;
@@ -407,13 +406,42 @@ class Parser {
     if (q == d) [[unlikely]] {
       return false;
     }
-    const char* after = skip(q);
+    after = skip(q);
     if (after < end_ && (is_digit(*after) || *after == '.')) [[unlikely]] {
       return false;
     }
-    p_ = after;
-    id = add_var_number(v, col(d), col(at));
+    n = v;
     return true;
+  }
+  // "#n" at p_ as read_var_fast takes it: its node, p_ past it and the
+  // spaces that follow. False, nothing consumed, for anything else.
+  [[gnu::always_inline]] bool var_number_fast(ExprId& id) {
+    const char* const at = p_;
+    std::int64_t v = 0;
+    const char* after = nullptr;
+    if (!read_var_fast(at, v, after)) return false;
+    p_ = after;
+    id = add_var_number(v, col(at));
+    return true;
+  }
+  // A lone "#n" or number the fast readers take, then ']' (SIN[#12],
+  // ABS[2.5]): its node, p_ at the ']'. kNoExpr, nothing consumed, for
+  // anything else: parse_expr reads it, to the same node.
+  [[gnu::always_inline]] ExprId lone_operand() {
+    const char* const at = skip(p_);
+    if (at == end_) return kNoExpr;
+    const char* after = nullptr;
+    if (*at == '#') {
+      std::int64_t v = 0;
+      if (!read_var_fast(at, v, after) || after == end_ || *after != ']') return kNoExpr;
+      p_ = after;
+      return add_var_number(v, col(at));
+    }
+    double x = 0.0;
+    bool point = false;
+    if (!read_fast(at, x, point, after) || after == end_ || *after != ']') return kNoExpr;
+    p_ = after;
+    return add_number(x, col(at));
   }
 
   // ---- literals

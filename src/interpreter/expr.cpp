@@ -389,10 +389,14 @@ struct NgcRules {
   // number (#0-#5602).
   static Flow<Value> exists(Interpreter::Impl& im, const gcode::ExprNode& n) {
     const gcode::ExprNode& v = im.blk.nodes[static_cast<std::size_t>(n.a)];
-    if (v.op == gcode::Op::kVar) {
-      auto num = general<NgcRules>(im, v.a);
-      if (!num) return num;
-      const double k = std::round(num->num());
+    if (v.op == gcode::Op::kVar || v.op == gcode::Op::kVarNum) {
+      double x = v.value;
+      if (v.op == gcode::Op::kVar) {
+        auto num = general<NgcRules>(im, v.a);
+        if (!num) return num;
+        x = num->num();
+      }
+      const double k = std::round(x);
       return Value::of(k >= 0 && k < VariableStore::kNgcParams ? 1.0 : 0.0);
     }
     if (v.op != gcode::Op::kNamedVar) {
@@ -421,17 +425,13 @@ bool plain(const Interpreter::Impl& im, gcode::ExprId id, Value& out) noexcept;
 template <class R>
 [[gnu::always_inline]] inline bool leaf(const Interpreter::Impl& im, gcode::ExprId id,
                                         Value& out) noexcept {
-  const auto size = im.blk.nodes.size();
-  if (id < 0 || static_cast<std::size_t>(id) >= size) return false;
+  if (id < 0 || static_cast<std::size_t>(id) >= im.blk.nodes.size()) return false;
   const gcode::ExprNode& n = im.blk.nodes[static_cast<std::size_t>(id)];
   if (n.op == gcode::Op::kNumber) {
     out = Value::of(n.value);
     return true;
   }
-  if (n.op == gcode::Op::kVar && n.a >= 0 && static_cast<std::size_t>(n.a) < size) {
-    const gcode::ExprNode& k = im.blk.nodes[static_cast<std::size_t>(n.a)];
-    if (k.op == gcode::Op::kNumber) return R::plain_var(im, k.value, out);
-  }
+  if (n.op == gcode::Op::kVarNum) return R::plain_var(im, n.value, out);
   return false;
 }
 
@@ -466,6 +466,8 @@ bool plain(const Interpreter::Impl& im, gcode::ExprId id, Value& out) noexcept {
     case Op::kNumber:
       out = Value::of(n.value);
       return true;
+    case Op::kVarNum:
+      return R::plain_var(im, n.value, out);
     case Op::kVar:
       if (!operand<R>(im, n.a, a)) return false;
       return R::plain_var(im, a.num(), out);
@@ -537,7 +539,8 @@ Flow<Value> general(Interpreter::Impl& im, gcode::ExprId id) {
   switch (n.op) {
     case Op::kNumber:
       return Value::of(n.value);
-    case Op::kVar: {
+    case Op::kVar:
+    case Op::kVarNum: {
       auto num = im.var_number(id);
       SKIPNC_TRY(num);
       return im.read_var(*num, im.loc(n.column));
@@ -577,9 +580,11 @@ const ExprRules kNgcExpr{&plain<NgcRules>, &general<NgcRules>};
 Flow<int> Interpreter::Impl::var_number(gcode::ExprId lhs) {
   const gcode::ExprNode& n = blk.nodes[static_cast<std::size_t>(lhs)];
   double x = 0.0;
-  if (n.a >= 0 && static_cast<std::size_t>(n.a) < blk.nodes.size() &&
-      blk.nodes[static_cast<std::size_t>(n.a)].op == gcode::Op::kNumber) {
-    x = blk.nodes[static_cast<std::size_t>(n.a)].value;  // "#n", as eval() would give it
+  if (n.op == gcode::Op::kVarNum) {
+    x = n.value;  // "#n"
+  } else if (n.a >= 0 && static_cast<std::size_t>(n.a) < blk.nodes.size() &&
+             blk.nodes[static_cast<std::size_t>(n.a)].op == gcode::Op::kNumber) {
+    x = blk.nodes[static_cast<std::size_t>(n.a)].value;  // "#[n]", as eval() would give it
   } else {
     auto v = eval(n.a);
     SKIPNC_TRY(v);

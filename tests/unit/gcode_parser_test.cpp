@@ -53,6 +53,8 @@ std::string show(const Block& b, ExprId id) {
       return num(n.value);
     case Op::kVar:
       return "#" + show(b, n.a);
+    case Op::kVarNum:
+      return "#" + num(n.value);
     case Op::kNamedVar:
       return "#<" + b.names.at(static_cast<std::size_t>(n.name)) + ">";
     case Op::kNeg:
@@ -266,8 +268,9 @@ TEST(GcodeParser, WordsWithVariablesAndExpressions) {
   EXPECT_EQ(b.words[1].column, 5u);
   EXPECT_EQ(b.nodes.at(static_cast<std::size_t>(b.words[1].expr)).column, 6u);  // '-'
   const ExprNode& var = b.nodes.at(static_cast<std::size_t>(b.words[0].expr));
-  EXPECT_EQ(var.column, 2u);                                          // '#'
-  EXPECT_EQ(b.nodes.at(static_cast<std::size_t>(var.a)).column, 3u);  // '1'
+  EXPECT_EQ(var.column, 2u);  // '#'
+  EXPECT_EQ(var.op, Op::kVarNum);
+  EXPECT_EQ(var.value, 1.0);
 }
 
 TEST(GcodeParser, NamedVariableInWord) {
@@ -520,7 +523,7 @@ TEST(GcodeParser, UnaryOperators) {
   // (kMaxExprDepth levels) like any other, at the first sign.
   const auto n = static_cast<std::size_t>(kMaxExprDepth - 1);
   const Block b = parse_ok("#1=" + std::string(n, '-') + "1");
-  EXPECT_EQ(b.nodes.size(), n + 3u);
+  EXPECT_EQ(b.nodes.size(), n + 2u);  // #1, the signs, 1
   expect_error("#1=" + std::string(100000, '-') + "1", AlarmId::kMacroFormat, 4);
 }
 
