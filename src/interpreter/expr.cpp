@@ -355,6 +355,17 @@ struct MacroBRules {
     out = im.vars.get(num);
     return true;
   }
+  // "#n = v" on the fast path: the variables write_macro_var (sysvars.cpp)
+  // stores in the variable store as they are, local, common and persistent
+  // (false: write_var writes the others, with their rules and alarms).
+  static bool plain_store(Interpreter::Impl& im, int n, Value v) {
+    if (!VariableStore::is_local(n) && !VariableStore::is_common(n) &&
+        !VariableStore::is_persistent(n)) {
+      return false;
+    }
+    im.vars.set(n, v);
+    return true;
+  }
   static Flow<Value> exists(Interpreter::Impl& im, const gcode::ExprNode& n) {
     return fail(AlarmId::kMacroFormat, "function not available in this control", im.loc(n.column));
   }
@@ -572,10 +583,14 @@ Flow<Value> general(Interpreter::Impl& im, gcode::ExprId id) {
 struct ExprRules {
   bool (*plain)(const Interpreter::Impl&, gcode::ExprId, Value&) noexcept;
   Flow<Value> (*general)(Interpreter::Impl&, gcode::ExprId);
+  // An assignment's store without the language's write_param, where its
+  // rules allow (nullptr: never).
+  bool (*plain_store)(Interpreter::Impl&, int, Value);
 };
 
-const ExprRules kMacroBExpr{&plain<MacroBRules>, &general<MacroBRules>};
-const ExprRules kNgcExpr{&plain<NgcRules>, &general<NgcRules>};
+const ExprRules kMacroBExpr{&plain<MacroBRules>, &general<MacroBRules>, &MacroBRules::plain_store};
+// RS274NGC's numbered parameters are written by Rs274ngc::write_param.
+const ExprRules kNgcExpr{&plain<NgcRules>, &general<NgcRules>, nullptr};
 
 Flow<int> Interpreter::Impl::var_number(gcode::ExprId lhs) {
   const gcode::ExprNode& n = blk.nodes[static_cast<std::size_t>(lhs)];
@@ -609,6 +624,7 @@ Flow<void> Interpreter::Impl::assign(gcode::ExprId lhs, Value v) {
   }
   auto num = var_number(lhs);
   SKIPNC_TRY(num);
+  if (lang->expr.plain_store != nullptr && lang->expr.plain_store(*this, *num, v)) return {};
   return write_var(*num, v, loc(n.column));
 }
 
