@@ -48,6 +48,11 @@ enum class OKind : std::uint8_t {
 };
 // clang-format on
 
+// A node of an expression tree. In a block the parser gives out, an
+// operator's operands (a, and b where it has two) are nodes of the same
+// block: their indices are valid (the evaluator's fast path relies on it).
+// Only a function's b may be kNoExpr (one argument); numbers and variables
+// have no operand nodes.
 struct ExprNode {      // 32 bytes: the largest member first
   double value = 0.0;  // kNumber
   ExprId a = kNoExpr;

@@ -428,16 +428,22 @@ struct NgcRules {
 // variable. eval() then evaluates the expression the
 // general way, which gives the same value or the alarm; nothing here has a
 // side effect, so the second pass is safe.
+//
+// plain() checks the root's index; below it, the walk follows the operands
+// the parser wrote (gcode/ast.hpp: an operator's operands are valid nodes
+// of the same block), with the block's node array at hand.
 template <class R>
 bool plain(const Interpreter::Impl& im, gcode::ExprId id, Value& out) noexcept;
+
+template <class R>
+bool plain_node(const Interpreter::Impl& im, const gcode::ExprNode* nodes, const gcode::ExprNode& n,
+                Value& out) noexcept;
 
 // A leaf of plain()'s trees: a number, or "#n" (n written as a number) of
 // a variable plain_var() reads. False for anything else.
 template <class R>
-[[gnu::always_inline]] inline bool leaf(const Interpreter::Impl& im, gcode::ExprId id,
+[[gnu::always_inline]] inline bool leaf(const Interpreter::Impl& im, const gcode::ExprNode& n,
                                         Value& out) noexcept {
-  if (id < 0 || static_cast<std::size_t>(id) >= im.blk.nodes.size()) return false;
-  const gcode::ExprNode& n = im.blk.nodes[static_cast<std::size_t>(id)];
   if (n.op == gcode::Op::kNumber) {
     out = Value::of(n.value);
     return true;
@@ -448,29 +454,35 @@ template <class R>
 
 // An operand of plain(): a leaf, or SIN COS ABS SQRT of a leaf (nearly
 // every operand), read here without a call; anything else, and any of
-// these plain() gives up on, through plain(). The same value as plain()
-// gives.
+// these plain() gives up on, through plain_node(). The same value as
+// plain() gives.
 template <class R>
-[[gnu::always_inline]] inline bool operand(const Interpreter::Impl& im, gcode::ExprId id,
+[[gnu::always_inline]] inline bool operand(const Interpreter::Impl& im,
+                                           const gcode::ExprNode* nodes, gcode::ExprId id,
                                            Value& out) noexcept {
-  if (leaf<R>(im, id, out)) return true;
-  if (id >= 0 && static_cast<std::size_t>(id) < im.blk.nodes.size()) {
-    const gcode::ExprNode& n = im.blk.nodes[static_cast<std::size_t>(id)];
-    Value x;
-    double r = 0.0;
-    if (n.op == gcode::Op::kFunc && n.b == gcode::kNoExpr && leaf<R>(im, n.a, x) &&
-        common_function(n.fn, x.num(), r) && std::isfinite(r)) {
-      out = Value::of(r + 0.0);
-      return true;
-    }
+  const gcode::ExprNode& n = nodes[static_cast<std::size_t>(id)];
+  if (leaf<R>(im, n, out)) return true;
+  Value x;
+  double r = 0.0;
+  if (n.op == gcode::Op::kFunc && n.b == gcode::kNoExpr &&
+      leaf<R>(im, nodes[static_cast<std::size_t>(n.a)], x) && common_function(n.fn, x.num(), r) &&
+      std::isfinite(r)) {
+    out = Value::of(r + 0.0);
+    return true;
   }
-  return plain<R>(im, id, out);
+  return plain_node<R>(im, nodes, n, out);
 }
 
 template <class R>
 bool plain(const Interpreter::Impl& im, gcode::ExprId id, Value& out) noexcept {
   if (id < 0 || static_cast<std::size_t>(id) >= im.blk.nodes.size()) return false;
-  const gcode::ExprNode& n = im.blk.nodes[static_cast<std::size_t>(id)];
+  const gcode::ExprNode* nodes = im.blk.nodes.data();
+  return plain_node<R>(im, nodes, nodes[static_cast<std::size_t>(id)], out);
+}
+
+template <class R>
+bool plain_node(const Interpreter::Impl& im, const gcode::ExprNode* nodes, const gcode::ExprNode& n,
+                Value& out) noexcept {
   using gcode::Op;
   Value a, b;
   switch (n.op) {
@@ -480,10 +492,10 @@ bool plain(const Interpreter::Impl& im, gcode::ExprId id, Value& out) noexcept {
     case Op::kVarNum:
       return R::plain_var(im, n.value, out);
     case Op::kVar:
-      if (!operand<R>(im, n.a, a)) return false;
+      if (!operand<R>(im, nodes, n.a, a)) return false;
       return R::plain_var(im, a.num(), out);
     case Op::kNeg:
-      if (!operand<R>(im, n.a, a)) return false;
+      if (!operand<R>(im, nodes, n.a, a)) return false;
       out = Value::of(0.0 - a.num());
       return true;
     case Op::kFunc:
@@ -491,14 +503,14 @@ bool plain(const Interpreter::Impl& im, gcode::ExprId id, Value& out) noexcept {
     case Op::kNamedVar:
       return false;
     default: {
-      if (!operand<R>(im, n.a, a) || !operand<R>(im, n.b, b)) return false;
+      if (!operand<R>(im, nodes, n.a, a) || !operand<R>(im, nodes, n.b, b)) return false;
       double r = 0.0;
       if (R::binary(n.op, a, b, r)) return false;
       out = Value::of(r + 0.0);
       return true;
     }
   }
-  if (!operand<R>(im, n.a, a)) return false;
+  if (!operand<R>(im, nodes, n.a, a)) return false;
   double r = 0.0;
   if (n.b == gcode::kNoExpr && common_function(n.fn, a.num(), r)) {
     if (!std::isfinite(r)) return false;
@@ -507,7 +519,7 @@ bool plain(const Interpreter::Impl& im, gcode::ExprId id, Value& out) noexcept {
   }
   double y = 0.0;
   if (n.b != gcode::kNoExpr) {
-    if (!operand<R>(im, n.b, b)) return false;
+    if (!operand<R>(im, nodes, n.b, b)) return false;
     y = b.num();
   }
   if (function_value<R>(n.fn, a.num(), n.b != gcode::kNoExpr ? &y : nullptr, R::context(im), r)) {
@@ -622,10 +634,16 @@ Flow<void> Interpreter::Impl::assign(gcode::ExprId lhs, Value v) {
   if (n.op == gcode::Op::kNamedVar) {
     return write_named_var(blk.names[static_cast<std::size_t>(n.name)], v, loc(n.column));
   }
-  auto num = var_number(lhs);
-  SKIPNC_TRY(num);
-  if (lang->expr.plain_store != nullptr && lang->expr.plain_store(*this, *num, v)) return {};
-  return write_var(*num, v, loc(n.column));
+  int num = 0;
+  if (n.op == gcode::Op::kVarNum && n.value < 1e9) {
+    num = static_cast<int>(n.value);  // "#n": n is a whole number written in the block
+  } else {
+    auto k = var_number(lhs);
+    SKIPNC_TRY(k);
+    num = *k;
+  }
+  if (lang->expr.plain_store != nullptr && lang->expr.plain_store(*this, num, v)) return {};
+  return write_var(num, v, loc(n.column));
 }
 
 Flow<Value> Interpreter::Impl::eval(gcode::ExprId id) {
