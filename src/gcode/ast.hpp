@@ -53,13 +53,12 @@ enum class OKind : std::uint8_t {
 // block: their indices are valid (the evaluator's fast path relies on it).
 // Only a function's b may be kNoExpr (one argument); numbers and variables
 // have no operand nodes.
-struct ExprNode {      // 32 bytes: the largest member first
-  double value = 0.0;  // kNumber
+struct ExprNode {      // 32 bytes (26 and padding): the largest member first
+  double value = 0.0;  // kNumber; kVarNum: the variable's number
   ExprId a = kNoExpr;
   ExprId b = kNoExpr;
   std::int32_t name = -1;    // kNamedVar
   std::uint32_t column = 0;  // 1-based column of the node's first character
-  std::uint16_t depth = 1;   // levels of the tree from this node down (<= kMaxExprDepth)
   Op op = Op::kNumber;
   Func fn = Func::kNone;
 };
@@ -97,8 +96,9 @@ class NodeArray {
 };
 
 // Expression trees are at most this deep (operators, signs, brackets and
-// variable references counted together). Evaluation recurses over the tree;
-// the bound keeps its stack small whatever a block holds ("1+1+...+1").
+// variable references counted together, "#n" as two levels). Evaluation
+// recurses over the tree; the bound keeps its stack small whatever a block
+// holds ("1+1+...+1").
 inline constexpr int kMaxExprDepth = 1000;
 
 // One address word: a letter and a value, either a literal number or an

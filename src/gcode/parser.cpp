@@ -587,9 +587,18 @@ Result<void> parse_block(std::string_view text, SourceLoc loc, std::uint64_t off
       }
     }
   }
-  detail::Parser parser(text, loc, out, limits);
+  detail::Parser parser(text, loc, out, limits, false);
   auto r = parser.run();
   parser.finish();
+  if (parser.depth_needed()) [[unlikely]] {
+    // Many nodes: again, measuring the depth of each tree.
+    out.clear();
+    out.loc = loc;
+    out.offset = offset;
+    detail::Parser tracked(text, loc, out, limits, true);
+    r = tracked.run();
+    tracked.finish();
+  }
   return r;
 }
 

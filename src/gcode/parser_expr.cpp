@@ -243,7 +243,10 @@ inline int Parser::binary_op_fanuc(Op& op) {
 // operators waiting for their right-hand side are kept on a small stack, at
 // most one per precedence level. Binary operators group from the left; a
 // binary node's column is that of its left operand's first character.
-ExprId Parser::parse_expr() {
+// `kTrack`: with depths tracked (track_depth_), the code of the usual parse
+// being the one without.
+template <bool kTrack>
+ExprId Parser::parse_expr_t() {
   struct Pending {
     ExprId lhs;
     std::uint32_t start;  // column of lhs
@@ -259,21 +262,21 @@ ExprId Parser::parse_expr() {
     p_ = at;
     const int c = at_char(at);
     ExprId a = kFail;
-    int depth = 1;  // of a
+    int depth = 1;  // of a, while depths are tracked
     if (c == '#') {
       if (var_number_fast(a)) {
         depth = 2;
       } else {
         a = parse_var_general(false);
         if (a == kFail) return kFail;
-        depth = depth_of(a);
+        if constexpr (kTrack) depth = depth_of(a);
         p_ = skip(p_);
       }
     } else if (is_digit(c) || c == '.') {
       double v = 0.0;
       bool point = false;
       if (number_fast(v, point)) {
-        a = add_number(v, col(at));
+        a = push_node<kTrack>(Op::kNumber, col(at), kNoExpr, kNoExpr, 1, v);
       } else {
         a = parse_number_node();
         if (a == kFail) return kFail;
@@ -285,14 +288,14 @@ ExprId Parser::parse_expr() {
       a = parse_expr();
       if (a == kFail || !close_bracket(at)) return kFail;
       leave();
-      depth = depth_of(a);
+      if constexpr (kTrack) depth = depth_of(a);
       p_ = skip(p_);
     } else {
       const FuncName* f = nullptr;
       if (is_upper(c & ~0x20)) f = find_function(c & ~0x20);
       a = f != nullptr ? parse_function(f->fn, at) : parse_operand(c);
       if (a == kFail) return kFail;
-      depth = depth_of(a);
+      if constexpr (kTrack) depth = depth_of(a);
       p_ = skip(p_);
     }
     // The next operator; the waiting ones that bind at least as tightly get
@@ -302,12 +305,14 @@ ExprId Parser::parse_expr() {
     const int prec = binary_op(op);
     while (n > 0 && stack[n - 1].prec >= prec) {
       const Pending& t = stack[--n];
-      depth = 1 + std::max<int>(t.depth, depth);
-      if (depth > kMaxExprDepth) [[unlikely]] {
-        too_deep(t.start);
-        return kFail;
+      if constexpr (kTrack) {
+        depth = 1 + std::max<int>(t.depth, depth);
+        if (depth > kMaxExprDepth) {
+          too_deep(t.start);
+          return kFail;
+        }
       }
-      a = push_node(t.op, t.start, t.lhs, a, depth);
+      a = push_node<kTrack>(t.op, t.start, t.lhs, a, depth);
       start = t.start;
     }
     if (prec == 0) return a;
@@ -315,6 +320,9 @@ ExprId Parser::parse_expr() {
         Pending{a, start, static_cast<std::uint16_t>(depth), op, static_cast<std::uint8_t>(prec)};
   }
 }
+
+template ExprId Parser::parse_expr_t<false>();
+template ExprId Parser::parse_expr_t<true>();
 
 ExprId Parser::parse_number_node() {
   const char* at = p_;
@@ -352,6 +360,7 @@ ExprId Parser::parse_signed() {
   if (operand == kFail) return kFail;
   if (last == kNoExpr) return operand;
   node(last).a = operand;
+  if (!track_depth_) return first;
   // The chain's depths, now that its operand is known.
   int signs = 0;
   for (ExprId i = first; i != operand; i = node(i).a) ++signs;
@@ -360,9 +369,7 @@ ExprId Parser::parse_signed() {
     too_deep(node(first).column);
     return kFail;
   }
-  for (ExprId i = first; i != operand; i = node(i).a) {
-    node(i).depth = static_cast<std::uint16_t>(depth--);
-  }
+  for (ExprId i = first; i != operand; i = node(i).a) set_depth(i, depth--);
   return first;
 }
 

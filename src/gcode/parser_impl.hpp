@@ -152,7 +152,10 @@ class NodeSlots {
 
 class Parser {
  public:
-  Parser(std::string_view text, SourceLoc loc, Block& out, const ParseLimits& limits)
+  // `track_depth`: measure each tree's depth against kMaxExprDepth (see
+  // depth_needed()).
+  Parser(std::string_view text, SourceLoc loc, Block& out, const ParseLimits& limits,
+         bool track_depth)
       : begin_(text.data()),
         p_(text.data()),
         end_(text.data() + text.size()),
@@ -164,7 +167,8 @@ class Parser {
         max_depth_(std::clamp(limits.max_bracket_depth, 0, kMaxNestingHard)),
         ngc_(limits.syntax == Syntax::kRs274ngc),
         grbl_(limits.syntax == Syntax::kGrbl),
-        conditional_m99_(limits.conditional_m99) {
+        conditional_m99_(limits.conditional_m99),
+        track_depth_(track_depth) {
     // Typical blocks never grow the arrays past this: no reallocation while
     // the first blocks of a program are parsed.
     if (out_.words.capacity() < 16) out_.words.reserve(16);
@@ -179,6 +183,15 @@ class Parser {
   bool check_condition(const char* at);
   // Leaves exactly the nodes built in the block (whether run() succeeded or not).
   void finish() { nodes_.finish(); }
+  // A tree is at most twice as deep as it has nodes ("#n", one node, counts
+  // as two levels), so a block of no more than kMaxExprDepth / 2 nodes holds
+  // no tree too deep, and a parse that did not track depths gave what one
+  // that did would give, error or not (that error would have come at a node
+  // past that count). True when the block has more nodes than that: it is
+  // to be parsed again with depths tracked.
+  bool depth_needed() const noexcept {
+    return !track_depth_ && nodes_.size() > static_cast<std::size_t>(kMaxExprDepth / 2);
+  }
 
  private:
   // ---- characters
@@ -264,10 +277,20 @@ class Parser {
   [[gnu::noinline, gnu::cold]] bool bad_block_char(const char* at);
 
   // ---- node building
-  int depth_of(ExprId id) const noexcept { return id >= 0 ? node(id).depth : 0; }
   ExprNode& node(ExprId id) noexcept { return nodes_[static_cast<std::size_t>(id)]; }
   const ExprNode& node(ExprId id) const noexcept { return nodes_[static_cast<std::size_t>(id)]; }
-  // A node whose depth is known to be within kMaxExprDepth.
+  // Levels of the tree from a node down (0: none), while depths are tracked.
+  int depth_of(ExprId id) const noexcept {
+    return id >= 0 ? depths_[static_cast<std::size_t>(id)] : 0;
+  }
+  [[gnu::noinline]] void set_depth(ExprId id, int depth) {
+    const auto i = static_cast<std::size_t>(id);
+    if (depths_.size() <= i) depths_.resize(i + 1);
+    depths_[i] = static_cast<std::uint16_t>(depth);
+  }
+  // A node whose depth is known to be within kMaxExprDepth; `kTrack`: the
+  // depth is kept (track_depth_).
+  template <bool kTrack>
   ExprId push_node(Op op, std::uint32_t column, ExprId a, ExprId b, int depth, double value = 0.0) {
     // Written field by field in place: no node put together aside and copied.
     ExprNode& x = nodes_.add();
@@ -276,20 +299,30 @@ class Parser {
     x.b = b;
     x.name = -1;
     x.column = column;
-    x.depth = static_cast<std::uint16_t>(depth);
     x.op = op;
     x.fn = Func::kNone;
-    return static_cast<ExprId>(nodes_.size() - 1);
+    const auto id = static_cast<ExprId>(nodes_.size() - 1);
+    if constexpr (kTrack) set_depth(id, depth);
+    return id;
+  }
+  ExprId push_node(Op op, std::uint32_t column, ExprId a, ExprId b, int depth, double value = 0.0) {
+    if (track_depth_) [[unlikely]] {
+      return push_node<true>(op, column, a, b, depth, value);
+    }
+    return push_node<false>(op, column, a, b, depth, value);
   }
   // kFail when the tree would be deeper than kMaxExprDepth.
   ExprId add_node(Op op, std::uint32_t column, ExprId a = kNoExpr, ExprId b = kNoExpr) {
     if (a == kFail || b == kFail) return kFail;
-    const int depth = 1 + std::max(depth_of(a), depth_of(b));
-    if (depth > kMaxExprDepth) [[unlikely]] {
-      too_deep(column);
-      return kFail;
+    if (track_depth_) [[unlikely]] {
+      const int depth = 1 + std::max(depth_of(a), depth_of(b));
+      if (depth > kMaxExprDepth) {
+        too_deep(column);
+        return kFail;
+      }
+      return push_node<true>(op, column, a, b, depth);
     }
-    return push_node(op, column, a, b, depth);
+    return push_node<false>(op, column, a, b, 0);
   }
   ExprId add_number(double v, std::uint32_t column) {
     return push_node(Op::kNumber, column, kNoExpr, kNoExpr, 1, v);
@@ -459,7 +492,14 @@ class Parser {
   bool parse_sequence_number(bool strict);
 
   // ---- expressions
-  ExprId parse_expr();
+  ExprId parse_expr() {
+    if (track_depth_) [[unlikely]] {
+      return parse_expr_t<true>();
+    }
+    return parse_expr_t<false>();
+  }
+  template <bool kTrack>
+  ExprId parse_expr_t();
   [[gnu::always_inline]] int binary_op(Op& op);  // inlined into parse_expr's loop
   [[gnu::always_inline]] int binary_op_fanuc(Op& op);
   ExprId parse_number_node();   // p_ at a digit or '.'
@@ -508,7 +548,9 @@ class Parser {
   const char* condition_at_ = nullptr;  // its '['
   int depth_ = 0;
   NodeSlots nodes_{out_.nodes};
-  std::optional<Error> err_;  // the first error
+  const bool track_depth_;
+  std::vector<std::uint16_t> depths_;  // by node, while track_depth_
+  std::optional<Error> err_;           // the first error
 };
 
 }  // namespace skipnc::gcode::detail

@@ -527,6 +527,32 @@ TEST(GcodeParser, UnaryOperators) {
   expect_error("#1=" + std::string(100000, '-') + "1", AlarmId::kMacroFormat, 4);
 }
 
+// Depths are measured only in blocks of more than kMaxExprDepth / 2 nodes
+// (a smaller block cannot hold a tree too deep); such a block is read again
+// with depths measured, and what it gives is what one reading would.
+TEST(GcodeParser, DepthBoundInLargeBlocks) {
+  const auto k = static_cast<std::size_t>(kMaxExprDepth);
+  // "#2" is two levels: k - 2 signs over it make a tree k levels deep.
+  const Block at = parse_ok("#1=" + std::string(k - 2, '-') + "#2");
+  EXPECT_EQ(at.nodes.size(), k);  // #1, the signs, #2
+  expect_error("#1=" + std::string(k - 1, '-') + "#2", AlarmId::kMacroFormat, 4);
+  // A left-deep chain: n terms, n - 1 operators, n levels.
+  auto chain = [](std::size_t n) {
+    std::string s = "#1=1";
+    for (std::size_t i = 1; i < n; ++i) s += "+1";
+    return s;
+  };
+  EXPECT_EQ(parse_ok(chain(k)).nodes.size(), 2 * k);
+  expect_error(chain(k + 1), AlarmId::kMacroFormat, 4);
+  // The first error of the block is the tree's depth, not the stray ']'
+  // after it; a small block's error is its own.
+  expect_error("#1=[" + chain(k + 1).substr(3) + "]] X1", AlarmId::kMacroFormat, 5);
+  expect_error("#1=[1+1]] X1", AlarmId::kBracketNesting, 9);
+  // Many nodes, every tree shallow: no error.
+  const Block many = parse_ok("G1 X[#1*2+#3*4] Y[" + chain(300).substr(3) + "]");
+  EXPECT_EQ(many.nodes.size(), 7u + 599u);
+}
+
 TEST(GcodeParser, Functions) {
   EXPECT_EQ(rhs("#1=SIN[30]"), "(sin 30)");
   EXPECT_EQ(rhs("#1=COS[#2]"), "(cos #2)");
