@@ -475,18 +475,22 @@ ExprId Parser::parse_function(Func fn, const char* at) {
   if (!enter(open)) return kFail;
   ++p_;
   ExprId a = lone_operand();
-  if (a == kNoExpr) a = parse_expr();
-  if (a == kFail) return kFail;
   ExprId b = kNoExpr;
-  if (peek() == ',') {
-    if (fn != Func::kAtan && fn != Func::kPow) {
-      return error_expr(AlarmId::kMacroFormat, "this function takes one argument", p_);
+  if (a != kNoExpr) {
+    ++p_;  // the ']' after it
+  } else {
+    a = parse_expr();
+    if (a == kFail) return kFail;
+    if (peek() == ',') {
+      if (fn != Func::kAtan && fn != Func::kPow) {
+        return error_expr(AlarmId::kMacroFormat, "this function takes one argument", p_);
+      }
+      ++p_;
+      b = parse_expr();
+      if (b == kFail) return kFail;
     }
-    ++p_;
-    b = parse_expr();
-    if (b == kFail) return kFail;
+    if (!close_bracket(open)) return kFail;
   }
-  if (!close_bracket(open)) return kFail;
   leave();
   if (fn == Func::kAtan && b == kNoExpr) {
     // Fanuc form ATAN[a]/[b]: a '/' directly followed by '['.
