@@ -348,12 +348,18 @@ struct MacroBRules {
       out = Value::null();
       return true;
     }
-    if (!VariableStore::is_local(num) && !VariableStore::is_common(num) &&
-        !VariableStore::is_persistent(num)) {
-      return false;
+    return im.vars.find(num, out);
+  }
+  // The same for "#n", n written in the block: a whole number >= 0.
+  [[gnu::always_inline]] static bool plain_var_number(const Interpreter::Impl& im, double x,
+                                                      Value& out) noexcept {
+    if (!(x < 1e9)) return false;
+    const int num = static_cast<int>(x);
+    if (num == 0) {
+      out = Value::null();
+      return true;
     }
-    out = im.vars.get(num);
-    return true;
+    return im.vars.find(num, out);
   }
   // "#n = v" on the fast path: the variables write_macro_var (sysvars.cpp)
   // stores in the variable store as they are, local, common and persistent
@@ -393,6 +399,14 @@ struct NgcRules {
     const double k = std::round(x);
     if (!(k >= 1.0 && k < 5061.0)) return false;
     const int num = static_cast<int>(k);
+    out = Value::of(num <= 30 ? im.vars.get(num).num() : im.vars.ngc_param(num));
+    return true;
+  }
+  // The same for "#n", n written in the block: a whole number >= 0, its
+  // own rounding.
+  static bool plain_var_number(const Interpreter::Impl& im, double x, Value& out) noexcept {
+    if (!(x >= 1.0 && x < 5061.0)) return false;
+    const int num = static_cast<int>(x);
     out = Value::of(num <= 30 ? im.vars.get(num).num() : im.vars.ngc_param(num));
     return true;
   }
@@ -448,7 +462,7 @@ template <class R>
     out = Value::of(n.value);
     return true;
   }
-  if (n.op == gcode::Op::kVarNum) return R::plain_var(im, n.value, out);
+  if (n.op == gcode::Op::kVarNum) return R::plain_var_number(im, n.value, out);
   return false;
 }
 
@@ -490,7 +504,7 @@ bool plain_node(const Interpreter::Impl& im, const gcode::ExprNode* nodes, const
       out = Value::of(n.value);
       return true;
     case Op::kVarNum:
-      return R::plain_var(im, n.value, out);
+      return R::plain_var_number(im, n.value, out);
     case Op::kVar:
       if (!operand<R>(im, nodes, n.a, a)) return false;
       return R::plain_var(im, a.num(), out);

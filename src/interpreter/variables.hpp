@@ -49,6 +49,20 @@ class VariableStore {
     if (is_persistent(n)) return persistent_[static_cast<std::size_t>(n - 500)];
     return Value::null();
   }
+  // An ordinary variable's value: false, `out` untouched, when n is not
+  // one (the expression fast path's read, one test of each range).
+  [[gnu::always_inline]] bool find(int n, Value& out) const noexcept {
+    if (is_local(n)) {
+      out = locals_.back()[static_cast<std::size_t>(n)];
+    } else if (is_common(n)) {
+      out = common_[static_cast<std::size_t>(n - 100)];
+    } else if (is_persistent(n)) {
+      out = persistent_[static_cast<std::size_t>(n - 500)];
+    } else {
+      return false;
+    }
+    return true;
+  }
   void set(int n, Value v);
 
   // Named variables (#<name>), created on first write.
