@@ -292,7 +292,7 @@ ExprId Parser::parse_expr_t() {
       p_ = skip(p_);
     } else {
       const FuncName* f = nullptr;
-      if (is_upper(c & ~0x20)) f = find_function(c & ~0x20);
+      if (is_upper(c & ~0x20)) f = find_function_here(c & ~0x20);
       a = f != nullptr ? parse_function(f->fn, at) : parse_operand(c);
       if (a == kFail) return kFail;
       if constexpr (kTrack) depth = depth_of(a);
@@ -376,6 +376,11 @@ ExprId Parser::parse_signed() {
 // The function whose name is at p_ (`c`: its first letter, upper-cased),
 // p_ past the name; nullptr, p_ unchanged, when there is none.
 const FuncName* Parser::find_function(int c) {
+  return find_function_here(c);
+}
+
+// find_function(), inlined into parse_expr.
+inline const FuncName* Parser::find_function_here(int c) {
   const FuncGroup& g = kFuncGroups[static_cast<std::size_t>(c - 'A')];
   // The letters written together at p_, up to the longest name. Unless a
   // space follows them (a name may be spelt "S I N"), the function is the

@@ -508,6 +508,7 @@ class Parser {
   ExprId parse_primary(int c);  // c: the upper-cased character at p_
   ExprId parse_bracket();       // p_ at '['
   const FuncName* find_function(int c);
+  [[gnu::always_inline]] const FuncName* find_function_here(int c);  // parser_expr.cpp
   [[gnu::noinline]] const FuncName* find_function_spaced(const FuncGroup& g);
   ExprId parse_function(Func fn, const char* at);
   ExprId parse_var(bool raw);  // p_ at '#'
