@@ -489,7 +489,8 @@ inline Result<void> Parser::run() {
     } else if (c == '#') {
       ok = begin_stmt(StmtKind::kAssign, at);
       if (ok) {
-        const ExprId lhs = parse_var(false);
+        ExprId lhs = kNoExpr;
+        if (!var_number_fast(lhs)) lhs = parse_var_general(false);
         ok = lhs != kFail && parse_assign_tail(lhs);
       }
     } else if (c == '[' && conditional_m99_ && out_.words.empty() &&
