@@ -554,4 +554,8 @@ class Parser {
   std::optional<Error> err_;           // the first error
 };
 
+// Both are compiled once, in parser_expr.cpp.
+extern template ExprId Parser::parse_expr_t<false>();
+extern template ExprId Parser::parse_expr_t<true>();
+
 }  // namespace skipnc::gcode::detail
