@@ -489,8 +489,7 @@ inline Result<void> Parser::run() {
     } else if (c == '#') {
       ok = begin_stmt(StmtKind::kAssign, at);
       if (ok) {
-        ExprId lhs = kNoExpr;
-        if (!var_number_fast(lhs)) lhs = parse_var_general(false);
+        const ExprId lhs = parse_var(false);
         ok = lhs != kFail && parse_assign_tail(lhs);
       }
     } else if (c == '[' && conditional_m99_ && out_.words.empty() &&
@@ -592,7 +591,8 @@ Result<void> parse_block(std::string_view text, SourceLoc loc, std::uint64_t off
   auto r = parser.run();
   parser.finish();
   if (parser.depth_needed()) [[unlikely]] {
-    // Many nodes: again, measuring the depth of each tree.
+    // Many nodes: again, measuring the depth of each tree. (Written out
+    // twice: a shared lambda or loop cost the usual block 0.3-0.8 %.)
     out.clear();
     out.loc = loc;
     out.offset = offset;

@@ -276,6 +276,7 @@ ExprId Parser::parse_expr_t() {
       double v = 0.0;
       bool point = false;
       if (number_fast(v, point)) {
+        // add_number, with the depth's keeping decided when compiled
         a = push_node<kTrack>(Op::kNumber, col(at), kNoExpr, kNoExpr, 1, v);
       } else {
         a = parse_number_node();
@@ -571,14 +572,6 @@ bool Parser::parse_named(std::string& name, bool raw) {
     p_ = q + 1;
   }
   return true;
-}
-
-// Variable reference at p_ ('#'): #123, #[expr], ##1, #<name>, #_NAME[i].
-// `raw`: inside DPRNT text, where spaces end the variable number.
-ExprId Parser::parse_var(bool raw) {
-  ExprId id = kNoExpr;
-  if (!raw && var_number_fast(id)) return id;
-  return parse_var_general(raw);
 }
 
 // The general case of parse_var.

@@ -344,17 +344,17 @@ struct MacroBRules {
     if (!(std::fabs(x) < 1e9)) return false;
     int num = static_cast<int>(x);
     if (num != x) num = static_cast<int>(round_half_away(x));  // #[1.6] is #2
-    if (num == 0) {
-      out = Value::null();
-      return true;
-    }
-    return im.vars.find(num, out);
+    return whole_var(im, num, out);
   }
   // The same for "#n", n written in the block: a whole number >= 0.
   [[gnu::always_inline]] static bool plain_var_number(const Interpreter::Impl& im, double x,
                                                       Value& out) noexcept {
     if (!(x < 1e9)) return false;
-    const int num = static_cast<int>(x);
+    return whole_var(im, static_cast<int>(x), out);
+  }
+  // #num: #0 is vacant, the ordinary variables are read.
+  [[gnu::always_inline]] static bool whole_var(const Interpreter::Impl& im, int num,
+                                               Value& out) noexcept {
     if (num == 0) {
       out = Value::null();
       return true;

@@ -42,15 +42,8 @@ class VariableStore {
   static bool is_local(int n) noexcept { return n >= 1 && n <= kLocalCount; }
   static bool is_common(int n) noexcept { return n >= 100 && n <= 199; }
   static bool is_persistent(int n) noexcept { return n >= 500 && n <= 999; }
-  // Inline: each variable read of an expression's fast path comes here.
-  [[gnu::always_inline]] Value get(int n) const noexcept {
-    if (is_local(n)) return locals_.back()[static_cast<std::size_t>(n)];
-    if (is_common(n)) return common_[static_cast<std::size_t>(n - 100)];
-    if (is_persistent(n)) return persistent_[static_cast<std::size_t>(n - 500)];
-    return Value::null();
-  }
   // An ordinary variable's value: false, `out` untouched, when n is not
-  // one (the expression fast path's read, one test of each range).
+  // one. Inline: each variable read of an expression's fast path comes here.
   [[gnu::always_inline]] bool find(int n, Value& out) const noexcept {
     if (is_local(n)) {
       out = locals_.back()[static_cast<std::size_t>(n)];
@@ -62,6 +55,12 @@ class VariableStore {
       return false;
     }
     return true;
+  }
+  // An ordinary variable's value, vacant for any other n.
+  [[gnu::always_inline]] Value get(int n) const noexcept {
+    Value v = Value::null();
+    find(n, v);
+    return v;
   }
   void set(int n, Value v);
 
