@@ -574,6 +574,14 @@ bool Parser::parse_named(std::string& name, bool raw) {
   return true;
 }
 
+// Variable reference at p_ ('#'): #123, #[expr], ##1, #<name>, #_NAME[i].
+// `raw`: inside DPRNT text, where spaces end the variable number.
+ExprId Parser::parse_var(bool raw) {
+  ExprId id = kNoExpr;
+  if (!raw && var_number_fast(id)) return id;
+  return parse_var_general(raw);
+}
+
 // The general case of parse_var.
 ExprId Parser::parse_var_general(bool raw) {
   const char* at = p_;

@@ -511,14 +511,7 @@ class Parser {
   [[gnu::always_inline]] const FuncName* find_function_here(int c);  // parser_expr.cpp
   [[gnu::noinline]] const FuncName* find_function_spaced(const FuncGroup& g);
   ExprId parse_function(Func fn, const char* at);
-  // Variable reference at p_ ('#'): #123, #[expr], ##1, #<name>, #_NAME[i].
-  // `raw`: inside DPRNT text, where spaces end the variable number. The
-  // fast path inline, the others in parse_var_general.
-  ExprId parse_var(bool raw) {
-    ExprId id = kNoExpr;
-    if (!raw && var_number_fast(id)) return id;
-    return parse_var_general(raw);
-  }
+  ExprId parse_var(bool raw);  // p_ at '#'
   ExprId parse_var_general(bool raw);
   bool parse_named(std::string& name, bool raw);
 
